@@ -1,0 +1,122 @@
+# aeroeval — multirotor UAV sizing compiler.
+#
+# Read top to bottom: settings, flags, the library every program links,
+# the programs, the tests, then the housekeeping targets.
+#
+#   make example   install missing Debian packages, build, compile examples/ into out/
+#   make test      install missing Debian packages, build, run every test
+#   make install   PREFIX=/usr/local DESTDIR= honoured
+
+# ---- settings ---------------------------------------------------------------
+PREFIX   ?= /usr/local
+DESTDIR  ?=
+BUILD    ?= build
+CC       ?= cc
+VERSION  := 0.1.0
+
+# Debian packages the build, the tests and the examples need.  `deps` installs
+# only the ones missing, so a machine that has them never needs root.
+DEB_PKGS := gcc make pkg-config libcjson-dev libhpdf-dev libcairo2-dev \
+            libfontconfig-dev libcmocka-dev fonts-dejavu-core poppler-utils
+
+# ---- flags ------------------------------------------------------------------
+# Recursively expanded on purpose: pkg-config runs when a recipe needs the
+# flags, i.e. after `deps` has installed it on a fresh machine.
+PKG_CFLAGS = $(shell pkg-config --cflags cairo libcjson fontconfig 2>/dev/null)
+PKG_LIBS   = $(shell pkg-config --libs cairo libcjson fontconfig 2>/dev/null) -lhpdf -lm -lpthread
+
+WARN := -Wall
+WARN += -Wextra
+WARN += -Wshadow
+WARN += -Wstrict-prototypes
+WARN += -Wmissing-prototypes
+WARN += -Wwrite-strings
+WARN += -Wundef
+WARN += -Wformat=2
+WARN += -Wvla
+WARN += -Werror
+
+OPT      ?= -O2 -g
+CFLAGS   += -std=c11 $(OPT) $(WARN)
+CPPFLAGS += -D_DEFAULT_SOURCE -DAEROEVAL_VERSION='"$(VERSION)"' -Isrc
+
+# ---- the library ------------------------------------------------------------
+# Every src/*.c except main.c goes into libaeroeval.a, which the program and
+# every test link.  The layer of each module is named by its prefix (see
+# README "Source map"); `make check-layers` keeps physics free of I/O headers.
+LIB_SRCS := $(filter-out src/main.c,$(wildcard src/*.c))
+LIB_OBJS := $(LIB_SRCS:src/%.c=$(BUILD)/obj/%.o)
+LIB      := $(BUILD)/libaeroeval.a
+BIN      := $(BUILD)/aeroeval
+
+TEST_SRCS := $(wildcard tests/test_*.c)
+TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
+
+.PHONY: all deps test unit example install clean check-layers bench
+
+all: $(BIN) aeroeval
+
+# The program is built out of tree; ./aeroeval is a convenience link.
+aeroeval: $(BIN)
+	ln -sf $(BIN) aeroeval
+
+deps:
+	@missing=""; for p in $(DEB_PKGS); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'ok installed' || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "deps: installing$$missing"; \
+	  SUDO=""; [ "$$(id -u)" -ne 0 ] && SUDO=sudo; \
+	  $$SUDO apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+$(BUILD)/obj/%.o: src/%.c | $(BUILD)/obj
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -MMD -MP -c $< -o $@
+
+$(LIB): $(LIB_OBJS)
+	rm -f $@
+	ar rcs $@ $^
+
+$(BIN): $(BUILD)/obj/main.o $(LIB)
+	$(CC) $(CFLAGS) -o $@ $^ $(PKG_LIBS)
+
+$(BUILD)/tests/%: tests/%.c $(LIB) | $(BUILD)/tests
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -Itests -MMD -MP -o $@ $< $(LIB) $(PKG_LIBS) -lcmocka
+
+$(BUILD)/obj $(BUILD)/tests:
+	mkdir -p $@
+
+-include $(wildcard $(BUILD)/obj/*.d $(BUILD)/tests/*.d)
+
+# ---- tests ------------------------------------------------------------------
+# Unit tests (one cmocka program per module) then the whole-compiler tests
+# (tests/cli_*.sh); tests/run_all.sh prints one closing "N passed, N failed".
+test: deps
+	$(MAKE) all $(TEST_BINS)
+	sh tests/run_all.sh $(BUILD)
+
+unit: $(TEST_BINS)
+	sh tests/run_all.sh $(BUILD) unit
+
+# ---- examples ---------------------------------------------------------------
+example: deps
+	$(MAKE) all
+	./$(BIN) build -o out examples/*.json
+
+# ---- housekeeping -----------------------------------------------------------
+install: all
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/aeroeval
+	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/aeroeval
+	cp -R data templates $(DESTDIR)$(PREFIX)/share/aeroeval/
+
+# Physics modules must not see JSON, PDF or cairo: they are pure functions.
+PHYS_HDRS := src/atmo.h src/aero.h src/batt.h src/therm.h src/structure.h \
+             src/mission.h src/sizing.h src/role.h src/feasibility.h
+check-layers:
+	@if grep -l -E '#include *[<"](cJSON|cjson/|hpdf|cairo)' $(wildcard $(PHYS_HDRS) $(PHYS_HDRS:.h=.c)); then \
+	  echo "check-layers: physics module includes an I/O library"; exit 1; fi
+	@echo "check-layers: ok"
+
+clean:
+	rm -rf $(BUILD) aeroeval

@@ -1,0 +1,14 @@
+/* main.c — argv, subcommand dispatch, exit status.  Drives; computes nothing. */
+#include <stdio.h>
+#include <string.h>
+
+int
+main(int argc, char **argv)
+{
+	if (argc >= 2 && strcmp(argv[1], "--version") == 0) {
+		printf("aeroeval %s\n", AEROEVAL_VERSION);
+		return 0;
+	}
+	fprintf(stderr, "usage: aeroeval build|solve|check|schema|validate|calibrate|sensitivity ...\n");
+	return 2;
+}
