@@ -151,8 +151,8 @@ X(BASELINE_T_FORWARD_S, "baseline_t_forward_s", SPEC_NUM, baseline_t_forward_s, 
   "Forward time of the baseline run (default: t_forward_s)") \
 X(ALTITUDE_M, "altitude_m", SPEC_NUM, altitude_m, "m", 0, 0, 20000, 0, NULL, \
   "Operating altitude above mean sea level (ISA pressure)") \
-X(AMBIENT_TEMP_C, "ambient_temp_c", SPEC_NUM, ambient_temp_c, "degC", 15, -40, 55, 0, NULL, \
-  "Ambient air temperature at the operating altitude") \
+X(AMBIENT_TEMP_C, "ambient_temp_c", SPEC_NUM, ambient_temp_c, "degC", 15, -40, 55, SPEC_F_DERIVED, NULL, \
+  "Ambient air temperature at the operating altitude (default: ISA temperature there, 15 degC at sea level)") \
 \
 X(BATTERY_CHEMISTRY, "battery_chemistry", SPEC_STR, battery_chemistry, "", 0, 0, 0, SPEC_F_DERIVED, NULL, \
   "Chemistry profile name from data/chemistries.json (default LiPo)") \

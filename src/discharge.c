@@ -1,0 +1,206 @@
+/* discharge.c — time-step discharge simulation (see discharge.h). */
+#include "discharge.h"
+
+#include <string.h>
+
+#include "therm.h"
+#include "units.h"
+
+#define MIN_STEPS_PER_PHASE 4
+#define ENDURANCE_STEPS     240   /* steps of an endurance run */
+#define ENDURANCE_MAX_STEPS 4000  /* hard bound, whatever the estimate */
+
+const char *const discharge_end_text[DIS_END_MAX] = {
+	"mission completed",
+	"battery depleted before the end of the mission",
+	"terminal voltage fell below the cut-off",
+	"voltage collapse: the pack cannot deliver the power",
+	"power overflow: the demand is not physical",
+	"thermal runaway: pack above 60 °C",
+};
+
+/* Battery state carried between steps. */
+struct cell_state {
+	double soc;
+	double temp_c;
+	double c_rate;          /* of the previous step, for B_eff */
+};
+
+/* One step: draw power_w for dt_s.  Returns DIS_COMPLETED when the step
+ * was flown, another end code when it was not. */
+static enum discharge_end
+step(const struct discharge_pack *p, double ambient_c, double power_w,
+     double dt_s, struct cell_state *st, double *current_a, double *v_oc_v,
+     double *v_term_v)
+{
+	double r_sys = batt_r_sys_ohm(p->chem, p->cells, p->capacity_ah,
+	    st->temp_c, p->cycles, p->n_rotors);
+	double r_esc = BATT_RDS_ON_OHM / (double)p->n_rotors;
+	double v_oc = (double)p->cells * batt_ocv_cell(p->chem, st->soc, st->c_rate);
+	double i;
+	enum batt_status bs = batt_current_a(v_oc, r_sys, power_w, &i);
+	if (bs == BATT_OVERFLOW)
+		return DIS_OVERFLOW;
+	if (bs == BATT_COLLAPSE)
+		return DIS_COLLAPSE;
+	double v_term = v_oc - i * r_sys;
+	*current_a = i;
+	*v_oc_v = v_oc;
+	*v_term_v = v_term;
+	if (v_term < (double)p->cells * p->chem->v_cutoff)
+		return DIS_VOLTAGE_FLOOR;
+	/* Only the cells heat the pack; the MOSFET loss stays in the ESC. */
+	double heat_w = i * i * (r_sys - r_esc);
+	st->temp_c = therm_step_c(st->temp_c, ambient_c, heat_w,
+	    therm_hac_w_k(p->mass_kg, p->h_conv_w_m2k), p->mass_kg, dt_s);
+	st->soc -= i * dt_s / (S_PER_H * p->capacity_ah);
+	st->c_rate = i / p->capacity_ah;
+	if (st->temp_c > THERM_RUNAWAY_C)
+		return DIS_THERMAL;
+	if (st->soc <= BATT_SOC_MIN)
+		return DIS_DEPLETED;
+	return DIS_COMPLETED;
+}
+
+static void
+record(struct res_sample *trace, int max_trace, int *n_trace, double t,
+       const struct cell_state *st, double v_oc, double v_term, double i,
+       double power_w, double mass_kg, int phase)
+{
+	if (trace == NULL || *n_trace >= max_trace)
+		return;
+	struct res_sample *s = &trace[(*n_trace)++];
+	s->t_s = t;
+	s->soc = st->soc > 0.0 ? st->soc : 0.0;
+	s->v_oc_v = v_oc;
+	s->v_term_v = v_term;
+	s->current_a = i;
+	s->power_w = power_w;
+	s->temp_c = st->temp_c;
+	s->mass_kg = mass_kg;
+	s->phase = phase;
+}
+
+void
+discharge_run(const struct discharge_pack *pack,
+              const struct discharge_mission *mis, int steps,
+              struct res_sample *trace, int max_trace, int *n_trace,
+              struct discharge_out *out)
+{
+	struct cell_state st = { 1.0, mis->ambient_c, 0.0 };
+	double total_s = 0.0;
+	int dummy = 0;
+	if (n_trace == NULL)
+		n_trace = &dummy;
+	*n_trace = 0;
+	memset(out, 0, sizeof *out);
+	out->end = DIS_COMPLETED;
+	out->peak_temp_c = st.temp_c;
+	out->min_v_term_v = (double)pack->cells * pack->chem->v_full;
+	for (int ph = 0; ph < PHASE_MAX; ph++)
+		total_s += mis->duration_s[ph];
+
+	double t = 0.0;
+	bool first = true;
+	for (int ph = 0; ph < PHASE_MAX && out->end == DIS_COMPLETED; ph++) {
+		double dur = mis->duration_s[ph];
+		if (!(dur > 0.0))
+			continue;
+		int n = total_s > 0.0 ? (int)((double)steps * dur / total_s) : 0;
+		if (n < MIN_STEPS_PER_PHASE)
+			n = MIN_STEPS_PER_PHASE;
+		double dt = dur / (double)n;
+		double v_climb = ph == PHASE_CLIMB ? mis->speed_ms[ph] : 0.0;
+		double v_fwd = ph == PHASE_FORWARD ? mis->speed_ms[ph] : 0.0;
+		bool sheds = mis->shed.kind != SHED_NONE;
+		struct mission_power pw;
+		double mass = mis->dry_mass_kg + role_payload_at(&mis->shed, t);
+		mission_power(mis->model, mass, v_climb, v_fwd, &pw);
+		double e_wh = 0.0, q_ah = 0.0, p_sum = 0.0;
+		int flown = 0;
+		for (int k = 0; k < n; k++) {
+			if (sheds) {
+				/* Mid-step mass: the payload shed during the step. */
+				mass = mis->dry_mass_kg
+				    + role_payload_at(&mis->shed, t + 0.5 * dt);
+				mission_power(mis->model, mass, v_climb, v_fwd, &pw);
+			}
+			double i = 0.0, v_oc = 0.0, v_term = 0.0;
+			enum discharge_end e = step(pack, mis->ambient_c,
+			    pw.electrical_w, dt, &st, &i, &v_oc, &v_term);
+			if (e == DIS_OVERFLOW || e == DIS_COLLAPSE) {
+				out->end = e;
+				break;
+			}
+			if (first) {
+				record(trace, max_trace, n_trace, 0.0, &(struct cell_state){ 1.0, mis->ambient_c, 0.0 },
+				    v_oc, v_term, i, pw.electrical_w, mass, ph);
+				first = false;
+			}
+			t += dt;
+			flown++;
+			e_wh += pw.electrical_w * dt / S_PER_H;
+			q_ah += i * dt / S_PER_H;
+			p_sum += pw.electrical_w;
+			if (i > out->peak_current_a)
+				out->peak_current_a = i;
+			if (v_term < out->min_v_term_v)
+				out->min_v_term_v = v_term;
+			if (st.temp_c > out->peak_temp_c)
+				out->peak_temp_c = st.temp_c;
+			record(trace, max_trace, n_trace, t, &st, v_oc, v_term, i,
+			    pw.electrical_w, mass, ph);
+			if (e != DIS_COMPLETED) {
+				out->end = e;
+				break;
+			}
+		}
+		out->phase_energy_wh[ph] = e_wh;
+		out->wh_used += e_wh;
+		out->ah_used += q_ah;
+		if (flown > 0) {
+			double span = dt * (double)flown;
+			out->phase_mean_current_a[ph] = q_ah * S_PER_H / span;
+			out->phase_mean_power_w[ph] = p_sum / (double)flown;
+		}
+	}
+	out->t_end_s = t;
+	out->end_soc = st.soc > 0.0 ? st.soc : 0.0;
+}
+
+double
+discharge_hover_endurance_s(const struct discharge_pack *pack,
+                            const struct mission_model *model, double mass_kg,
+                            double ambient_c, double reserve_soc)
+{
+	struct mission_power pw;
+	mission_power(model, mass_kg, 0.0, 0.0, &pw);
+	double v_nom = (double)pack->cells * pack->chem->v_nom;
+	if (!(pw.electrical_w > 0.0) || !(v_nom > 0.0))
+		return 0.0;
+	/* First estimate from nominal energy sets the step. */
+	double est_s = pack->capacity_ah * (1.0 - reserve_soc) * v_nom
+	    * S_PER_H / pw.electrical_w;
+	double dt = est_s / ENDURANCE_STEPS;
+	if (!(dt > 0.0))
+		return 0.0;
+	struct cell_state st = { 1.0, ambient_c, 0.0 };
+	double t = 0.0;
+	for (int k = 0; k < ENDURANCE_MAX_STEPS; k++) {
+		double i, v_oc, v_term;
+		double soc0 = st.soc;
+		enum discharge_end e = step(pack, ambient_c, pw.electrical_w, dt,
+		    &st, &i, &v_oc, &v_term);
+		if (e == DIS_OVERFLOW || e == DIS_COLLAPSE || e == DIS_VOLTAGE_FLOOR)
+			return t;
+		if (st.soc <= reserve_soc) {
+			/* Interpolate the crossing inside the step. */
+			double frac = (soc0 - reserve_soc) / (soc0 - st.soc);
+			return t + dt * frac;
+		}
+		t += dt;
+		if (e != DIS_COMPLETED)
+			return t;
+	}
+	return t;
+}

@@ -1,0 +1,108 @@
+/* mission.c — three-phase mission power model (see mission.h). */
+#include "mission.h"
+
+#include "units.h"
+
+static void
+finish(const struct mission_model *m, struct mission_power *out)
+{
+	out->shaft_w = out->rotor.p_shaft_w * (double)m->n_rotors;
+	/* Paper eq. (powerbudget): ½ f_pwm C_oss V² per ESC. */
+	out->switching_w = 0.5 * MISSION_F_PWM_HZ * MISSION_C_OSS_F
+	    * m->bus_voltage_v * m->bus_voltage_v * (double)m->n_rotors;
+	out->electrical_w = out->shaft_w / m->eta_drive + out->switching_w + m->aux_w;
+}
+
+/* Coaxial pairs: the lower rotor works in the upper one's wake. */
+static void
+apply_coaxial(const struct mission_model *m, struct aero_point *p)
+{
+	if (!m->coaxial)
+		return;
+	double extra = (MISSION_COAX_INDUCED - 1.0) * p->p_induced_w;
+	p->p_induced_w += extra;
+	p->p_shaft_w += extra;
+}
+
+void
+mission_power(const struct mission_model *m, double mass_kg, double v_climb_ms,
+              double v_fwd_ms, struct mission_power *out)
+{
+	double weight_n = mass_kg * G0_M_S2;
+	double n = (double)m->n_rotors;
+	double rho = m->air.rho_kg_m3;
+	double parasite_w = 0.0;
+
+	out->pitch_deg = 0.0;
+	out->drag_n = 0.0;
+	if (v_fwd_ms > 0.0) {
+		/* Mapping LiDAR's multiplier acts in forward flight only. */
+		double s_ref = aero_ref_area_m2(m->f_scale, mass_kg, m->added_drag_m2)
+		    * m->fwd_drag_mult;
+		out->drag_n = aero_drag_n(rho, v_fwd_ms, m->cd_h, s_ref);
+		out->pitch_deg = atan(out->drag_n / weight_n) * 180.0 / M_PI;
+		out->thrust_per_rotor_n = sqrt(weight_n * weight_n
+		    + out->drag_n * out->drag_n) / n;
+		parasite_w = out->drag_n * v_fwd_ms / n;
+	} else if (v_climb_ms > 0.0) {
+		double s_ref = aero_ref_area_m2(m->f_scale, mass_kg, m->added_drag_m2);
+		out->drag_n = aero_drag_n(rho, v_climb_ms, m->cd_v, s_ref);
+		out->thrust_per_rotor_n = (weight_n + out->drag_n) / n;
+	} else {
+		out->thrust_per_rotor_n = weight_n / n;
+	}
+	aero_rotor_power(&m->rotor, &m->air, out->thrust_per_rotor_n,
+	    v_climb_ms > 0.0 && v_fwd_ms <= 0.0 ? v_climb_ms : 0.0,
+	    v_fwd_ms > 0.0 ? v_fwd_ms : 0.0, parasite_w, &out->rotor);
+	apply_coaxial(m, &out->rotor);
+	finish(m, out);
+}
+
+void
+mission_peak_power(const struct mission_model *m, double thrust_per_rotor_n,
+                   struct mission_power *out)
+{
+	out->thrust_per_rotor_n = thrust_per_rotor_n;
+	out->drag_n = 0.0;
+	out->pitch_deg = 0.0;
+	aero_rotor_power(&m->rotor, &m->air, thrust_per_rotor_n, 0.0, 0.0, 0.0,
+	    &out->rotor);
+	apply_coaxial(m, &out->rotor);
+	finish(m, out);
+}
+
+int
+mission_speed_sweep(const struct mission_model *m, double mass_kg,
+                    double max_thrust_per_rotor_n, double *v_ms,
+                    double *power_w, int max_points, double *v_min_power_ms,
+                    double *v_max_ms)
+{
+	int n = 0;
+	double best = 0.0;
+	bool limited = false;
+	*v_min_power_ms = MISSION_SWEEP_V0_MS;
+	*v_max_ms = MISSION_SWEEP_V1_MS;
+	int steps = (int)((MISSION_SWEEP_V1_MS - MISSION_SWEEP_V0_MS)
+	    / MISSION_SWEEP_STEP_MS + 0.5);
+	for (int i = 0; i <= steps; i++) {
+		double v = MISSION_SWEEP_V0_MS + MISSION_SWEEP_STEP_MS * (double)i;
+		struct mission_power p;
+		mission_power(m, mass_kg, 0.0, v, &p);
+		if (n < max_points) {
+			v_ms[n] = v;
+			power_w[n] = p.electrical_w;
+			n++;
+		}
+		bool over = p.thrust_per_rotor_n > max_thrust_per_rotor_n
+		    || p.pitch_deg > MISSION_PITCH_MAX_DEG;
+		if (over && !limited) {
+			limited = true;
+			*v_max_ms = v - MISSION_SWEEP_STEP_MS;
+		}
+		if (!over && (i == 0 || p.electrical_w < best)) {
+			best = p.electrical_w;
+			*v_min_power_ms = v;
+		}
+	}
+	return n;
+}

@@ -1,0 +1,66 @@
+/* structure.h — CFRP arm sizing, cantilever resonance, frame mass.
+ *
+ * Paper §V-A..C: hollow circular CFRP cantilever arms of length W/2 sized
+ * for root bending (eq. dout) at σ_all = 720·0.40/1.5 = 192 MPa (eq.
+ * sigallow), a minimum wall thickness, the CG-offset thrust, the size-
+ * dependent minimum structural fraction, C_body and the class overhead γ,
+ * and the Rayleigh–Ritz natural frequency (eq. fnat) checked against 1.5×
+ * the blade-pass frequency.  Beyond the paper, an arm that fails the
+ * resonance check is stiffened (larger diameter, same wall ratio) until it
+ * passes, and the result records which criterion sized it.
+ */
+#ifndef AEROEVAL_STRUCTURE_H
+#define AEROEVAL_STRUCTURE_H
+
+#include <stdbool.h>
+
+#define STRUCT_SIGMA_ULT_PA   720e6  /* CFRP ultimate bending strength, Pa */
+#define STRUCT_FATIGUE        0.40   /* fatigue knock-down, - */
+#define STRUCT_FOS            1.5    /* factor of safety, - */
+#define STRUCT_RHO_CF_KG_M3   1600.0 /* CFRP density, kg/m^3 */
+#define STRUCT_E_CF_PA        70e9   /* CFRP modulus, Pa */
+#define STRUCT_MIN_WALL_M     0.0005 /* thinnest roll-wrapped CFRP tube wall, m */
+#define STRUCT_RESONANCE_MARGIN 1.5  /* f_nat >= 1.5 f_bpf */
+
+/* σ_all = σ_ult f_fat / FoS, Pa (192 MPa). */
+double structure_sigma_allow_pa(void);
+
+/* Thrust of the most loaded motor with the payload CG offset x_cg:
+ * (M g / N_r)(1 + x_cg / d_y), d_y = L_arm cos(π/N_r).  Returns false when
+ * x_cg >= d_y (the design is rejected). */
+bool structure_cg_thrust_n(double mass_kg, int n_rotors, double arm_length_m,
+                           double cg_shift_m, double *thrust_n);
+
+/* Size-dependent minimum structural mass fraction
+ * max(0.06, min(0.20, 0.05 + 0.05 W)). */
+double structure_min_fraction(double wheelbase_m);
+
+struct structure_arm {
+	double length_m;         /* L_arm = W / 2 */
+	double root_moment_nm;   /* M_b = F_arm L_arm */
+	double d_out_m;          /* outer diameter */
+	double d_in_m;           /* inner diameter */
+	double wall_m;           /* wall thickness */
+	double area_m2;          /* wall cross-section */
+	double i_x_m4;           /* second moment of area */
+	double stress_pa;        /* root bending stress at the design load */
+	double mass_kg;          /* one arm tube */
+	double f_nat_hz;         /* first bending frequency with the tip mass */
+	double d_out_strength_m; /* diameter needed for strength alone */
+	bool wall_floor_binds;   /* the minimum wall set the wall */
+	bool stiffness_binds;    /* the resonance check set the diameter */
+};
+
+/* Arm tube sized for strength (eq. dout, with the wall floor) for a design
+ * force force_n at the tip, then stiffened if its first frequency with
+ * tip_mass_kg is below 1.5 × f_bpf_hz (pass 0 to skip).  alpha_w is the
+ * inner/outer ratio. */
+void structure_size_arm(double force_n, double length_m, double alpha_w,
+                        double tip_mass_kg, double f_bpf_hz,
+                        struct structure_arm *out);
+
+/* Natural frequency of a cantilever tube, eq. (fnat), Hz. */
+double structure_natural_freq_hz(double i_x_m4, double length_m,
+                                 double tip_mass_kg, double mu_kg_m);
+
+#endif

@@ -1,0 +1,28 @@
+/* therm.h — transient battery thermal model and motor winding resistance.
+ *
+ * Paper §VI-G, eq. (hacool): C_th dT/dt = I² R - hA (T - T_a), with
+ * C_th = M_bat C_p and the scale-invariant cooling hA = h · 6 (M_bat/2400 g)^(2/3)
+ * (h = 12 W/m²K, 120 for racing).  Thermal runaway is declared above 60 °C.
+ * Paper §V-D: R_m(T) = R_nom (1 + α_Cu (T - 25)).
+ */
+#ifndef AEROEVAL_THERM_H
+#define AEROEVAL_THERM_H
+
+#define THERM_CP_J_KGK        795.0  /* pack specific heat, J/(kg K) */
+#define THERM_H_DEFAULT       12.0   /* convective coefficient, W/(m² K) */
+#define THERM_H_RACING        120.0  /* exposed high-speed airflow, W/(m² K) */
+#define THERM_RUNAWAY_C       60.0   /* thermal-runaway termination, °C */
+#define THERM_ALPHA_CU_PER_K  0.00393 /* copper resistance coefficient, 1/K */
+
+/* Convective conductance hA_c of a pack of mass_kg, W/K. */
+double therm_hac_w_k(double battery_mass_kg, double h_w_m2k);
+
+/* Advance the pack temperature over dt_s with heat input heat_w, exactly
+ * (exponential solution of the linear ODE, stable for any dt), °C. */
+double therm_step_c(double temp_c, double ambient_c, double heat_w,
+                    double hac_w_k, double battery_mass_kg, double dt_s);
+
+/* Winding resistance at temp_c from its 25 °C value, ohm. */
+double therm_winding_resistance_ohm(double r_nom_ohm, double temp_c);
+
+#endif
