@@ -326,7 +326,7 @@ catalog_load_should_name_file_entry_and_field_for_each_error_kind(void **state)
 }
 
 static void
-catalog_load_should_report_every_error_of_a_file(void **state)
+catalog_load_should_report_the_errors_of_every_file(void **state)
 {
 	(void)state;
 	char dir[64];
@@ -343,6 +343,36 @@ catalog_load_should_report_every_error_of_a_file(void **state)
 	free(msg);
 }
 
+/* One file with many errors: every one is reported, in file order. */
+static void
+catalog_load_should_report_all_errors_of_one_file(void **state)
+{
+	(void)state;
+	static const char *const want[] = {
+		"motors[0] \"fx-motor-a\".mass_g: must be > 0 (got 0)\n",
+		"motors[1] \"fx-motor-b\".integrated: must be true or false (got a string)\n",
+		"motors[1] \"fx-motor-b\".confidence: must be \"high\", \"medium\" or \"low\" (got \"unsure\")\n",
+		"motors[1] \"fx-motor-b\".uncertain: element 0 names no field of motors (got \"kv\")\n",
+		"motors[2] \"FX System\".id: must be a lowercase slug of a-z, 0-9 and '-' (got \"FX System\")\n",
+		"motors[2] \"FX System\".price_usd: duplicate key\n",
+		"motors[2] \"FX System\".source: must not be empty\n",
+		"motors[2] \"FX System\".integrated_prop_in: required when integrated is true (null if unknown)\n",
+		"motors[3]: must be an object (got an array)\n",
+	};
+	char dir[64];
+	int n_err = 0;
+	char *msg = load_bad("many_errors", NULL, dir, &n_err);
+	const char *at = msg;
+	for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
+		const char *hit = strstr(at, want[i]);
+		if (hit == NULL)
+			fail_msg("missing or out of order: %s in\n%s", want[i], msg);
+		at = hit;
+	}
+	assert_int_equal(n_err, (int)(sizeof want / sizeof want[0]));
+	free(msg);
+}
+
 int
 main(void)
 {
@@ -353,7 +383,8 @@ main(void)
 		cmocka_unit_test(catalog_load_should_read_a_minimal_catalogue),
 		cmocka_unit_test(catalog_load_should_accept_a_caller_chemistry_list),
 		cmocka_unit_test(catalog_load_should_name_file_entry_and_field_for_each_error_kind),
-		cmocka_unit_test(catalog_load_should_report_every_error_of_a_file),
+		cmocka_unit_test(catalog_load_should_report_the_errors_of_every_file),
+		cmocka_unit_test(catalog_load_should_report_all_errors_of_one_file),
 	};
 	return cmocka_run_group_tests_name("catalog", tests, NULL, NULL);
 }
