@@ -10,7 +10,8 @@
  *     DIR/escs.json        {"escs":       [ ... ]}
  *
  * Every key of an entry must be present (JSON null = "not published / not
- * found"); data/catalog/README.md lists them.  Values are converted to SI on
+ * found"); only integrated motor systems add `integrated_prop_in`.
+ * data/catalog/README.md lists the keys.  Values are converted to SI on
  * load, except where a part is specified in other units by convention
  * (propeller inches, KV, mAh-derived Ah, Wh), and those keep the unit in the
  * field name.  An unknown number is stored as 0; an entry with any unknown
@@ -97,7 +98,8 @@ struct catalog_esc {
 struct catalog;                /* opaque: the loaded catalogue */
 
 /* Loads DIR/motors.json, DIR/propellers.json, DIR/batteries.json and
- * DIR/escs.json and validates every entry.  known_chemistries is a
+ * DIR/escs.json (dir must not be NULL; a trailing '/' is fine) and validates
+ * every entry.  known_chemistries is a
  * NULL-terminated list of accepted battery chemistry names; NULL means the
  * built-in list (catalog_default_chemistries).
  *
