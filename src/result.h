@@ -176,7 +176,9 @@ struct res_run {
 	double min_terminal_voltage_v;
 	double voltage_floor_v;
 	double end_soc;
-	double winding_temp_c;    /* motor winding estimate at hover */
+	double winding_temp_c;    /* motor winding at hover (ambient + 40 K, assumed) */
+	double motor_winding_resistance_ohm; /* R_m(T) of the real motor, 0 = unknown */
+	double motor_copper_loss_w; /* per motor at hover, 0 = unknown */
 	int n_trace;
 	struct res_sample trace[RES_MAX_TRACE];
 

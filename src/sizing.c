@@ -1,0 +1,729 @@
+/* sizing.c — the Banach fixed-point mass loop (see sizing.h). */
+#include "sizing.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "aero.h"
+#include "discharge.h"
+#include "mission.h"
+#include "structure.h"
+#include "therm.h"
+#include "units.h"
+
+#define LOOP_STEPS        120   /* discharge steps per loop iteration */
+#define BLADE_INCIDENCE_DEG 4.0 /* best-L/D incidence at blade Reynolds numbers */
+#define S_SCALE_LO_KG     0.3   /* S_scale = 0.25 below this M_ref */
+#define S_SCALE_HI_KG     1.8   /* S_scale = 1 above this M_ref */
+#define S_SCALE_MIN       0.25
+#define MIN_THROTTLE      0.20  /* t_hover floor of paper §V-D */
+#define LIPSCHITZ_STEP    0.01  /* ±1 % of M for dF/dM */
+#define GAMMA_BISECT      8     /* bisection steps of the goal relaxation */
+#define ENDURANCE_SCALES  RES_MAX_ENDURANCE
+#define EXPLORER_MAX_ITER 80
+
+/* Loop state carried from one iteration to the next. */
+struct loop_state {
+	int cells;            /* series cells in use */
+	double arm_width_m;   /* arm outer diameter (rotor-arm interference) */
+	double gamma_time;    /* goal relaxation factor */
+};
+
+/* Everything evaluated at one takeoff mass. */
+struct eval {
+	double mass_kg;                 /* M at which it was evaluated */
+	double capacity_ah;             /* capacity used */
+	struct mission_model model;
+	double v_fwd_ms;
+	double v_min_power_ms, v_max_ms;
+	struct mission_power ph[PHASE_MAX];
+	struct mission_power peak;
+	double throttle;                /* hover throttle target */
+	double t_hover_n, t_peak_n;     /* per rotor */
+	double rps_hover, rps_peak;
+	double fom_inst, k_int;
+	double overlap_limit_m;
+	double pitch_m;
+	int cells;
+	double kv;
+	double eta_pkg;
+	bool power_binds;               /* battery sized by power, not energy */
+	struct structure_arm arm;
+	bool cg_ok;
+	bool min_fraction_binds;
+	struct res_mass mass;
+	double peak_current_a;
+	struct discharge_out dis;
+	double c_target_ah;
+};
+
+double
+sizing_reserve_soc(void)
+{
+	/* A 20 % capacity margin leaves 1 - 1/1.2 of the pack at the end. */
+	return 1.0 - 1.0 / SIZING_CAP_MARGIN;
+}
+
+double
+sizing_seed_kg(double payload_kg, double rho_kg_m3)
+{
+	double base = payload_kg > 0.05 ? payload_kg : 0.05;
+	double scale = sqrt(RHO_SL_KG_M3 / rho_kg_m3);
+	/* Paper: applied only when the factor exceeds 1. */
+	return base / SIZING_SEED_FRACTION * (scale > 1.0 ? scale : 1.0);
+}
+
+int
+sizing_auto_cells(double peak_power_w, double mass_kg, double v_nom_cell,
+                  int lo, int hi)
+{
+	double budget_a = SIZING_CURRENT_BUDGET_A * sqrt(mass_kg > 0.0 ? mass_kg : 0.0);
+	double s = budget_a > 0.0 ? peak_power_w / (v_nom_cell * budget_a) : hi;
+	int cells = (int)ceil(s);
+	if (cells > 6 && cells % 2 != 0)
+		cells++; /* packs above 6S come in even counts */
+	if (cells < lo)
+		cells = lo;
+	if (cells > hi)
+		cells = hi;
+	return cells;
+}
+
+double
+sizing_pitch_m(double diameter_m, double induced_ms, double rps)
+{
+	double r75 = 0.375 * diameter_m;
+	double omega_r = 2.0 * M_PI * rps * r75;
+	if (!(omega_r > 0.0))
+		return 0.4 * diameter_m;
+	double phi = atan(induced_ms / omega_r);
+	double theta = phi + BLADE_INCIDENCE_DEG * M_PI / 180.0;
+	return 2.0 * M_PI * r75 * tan(theta);
+}
+
+static int
+n_arms(const struct sizing_params *p)
+{
+	return p->coaxial ? p->n_rotors / 2 : p->n_rotors;
+}
+
+static double
+s_scale(double m_ref_kg)
+{
+	/* Paper §VI-E: light configurations get lighter ESCs and harnesses. */
+	if (m_ref_kg <= S_SCALE_LO_KG)
+		return S_SCALE_MIN;
+	if (m_ref_kg >= S_SCALE_HI_KG)
+		return 1.0;
+	return S_SCALE_MIN + (1.0 - S_SCALE_MIN)
+	    * (m_ref_kg - S_SCALE_LO_KG) / (S_SCALE_HI_KG - S_SCALE_LO_KG);
+}
+
+/* Phase durations after goal relaxation. */
+static void
+durations(const struct sizing_params *p, double gamma_time, double *d)
+{
+	for (int i = 0; i < PHASE_MAX; i++)
+		d[i] = p->duration_s[i] * gamma_time;
+}
+
+static double
+total_duration(const struct sizing_params *p, double gamma_time)
+{
+	double d[PHASE_MAX], t = 0.0;
+	durations(p, gamma_time, d);
+	for (int i = 0; i < PHASE_MAX; i++)
+		t += d[i];
+	return t;
+}
+
+static void
+shedding(const struct sizing_params *p, double gamma_time,
+         struct role_shedding *s)
+{
+	double t_total = total_duration(p, gamma_time);
+	memset(s, 0, sizeof *s);
+	s->kind = p->shed;
+	s->payload0_kg = p->payload_kg;
+	s->drop_mass_kg = p->drop_mass_kg < p->payload_kg ? p->drop_mass_kg : p->payload_kg;
+	s->drop_time_s = p->drop_ratio * t_total;
+	s->spray_mass_kg = p->payload_kg;
+	s->spray_rate_kg_s = p->spray_rate_kg_s > 0.0 ? p->spray_rate_kg_s
+	    : (t_total > 0.0 ? p->payload_kg / t_total : 0.0);
+}
+
+/* The battery that the loop state describes. */
+static void
+pack_of(const struct sizing_params *p, const struct eval *e,
+        struct discharge_pack *pk)
+{
+	pk->chem = p->chem;
+	pk->cells = e->cells;
+	pk->capacity_ah = e->capacity_ah;
+	pk->mass_kg = e->mass.battery_kg;
+	pk->cycles = p->cycles;
+	pk->n_rotors = p->n_rotors;
+	pk->h_conv_w_m2k = p->h_conv_w_m2k;
+}
+
+/*
+ * Evaluate every subsystem at takeoff mass M with capacity C: the map f of
+ * eq. (implicit).  `steps` sets the discharge resolution; trace/sweep are
+ * filled only when given (the final evaluation).
+ */
+static void
+evaluate(const struct sizing_params *p, const struct loop_state *ls,
+         double mass_kg, double capacity_ah, int steps, struct res_run *rec,
+         struct eval *e)
+{
+	const struct atmo_state *air = &p->air;
+	int nr = p->n_rotors;
+	memset(e, 0, sizeof *e);
+	e->mass_kg = mass_kg;
+
+	/* Propeller: the largest the overlap limit allows, unless locked. */
+	e->overlap_limit_m = aero_overlap_limit_m(p->wheelbase_m, n_arms(p),
+	    AERO_TIP_CLEARANCE);
+	double d = p->prop_locked ? p->prop_diameter_m : e->overlap_limit_m;
+
+	/* Thrust targets: T/W = 1 / θ² (paper §II-E). */
+	e->throttle = 1.0 - p->thrust_margin;
+	if (e->throttle < MIN_THROTTLE)
+		e->throttle = MIN_THROTTLE;
+	e->t_hover_n = mass_kg * G0_M_S2 / (double)nr;
+	e->t_peak_n = e->t_hover_n / (e->throttle * e->throttle);
+	e->rps_hover = aero_rps_for_thrust(e->t_hover_n, p->ct, air->rho_kg_m3, d);
+	e->rps_peak = e->rps_hover / e->throttle;
+
+	/* Installed FoM at the hover tip Reynolds number, with interference. */
+	double re = aero_tip_reynolds(air, M_PI * d * e->rps_hover,
+	    aero_chord_m(d, p->n_blades));
+	e->fom_inst = p->fom_override > 0.0 ? p->fom_override
+	    : aero_fom_installed(p->fom_isolated, p->kappa, p->fom_isolated_mode, re);
+	e->k_int = aero_interference(p->interference_c, ls->arm_width_m, d);
+
+	struct mission_model *m = &e->model;
+	m->air = *air;
+	m->rotor.diameter_m = d;
+	m->rotor.ct = p->ct;
+	m->rotor.fom = e->fom_inst / e->k_int;
+	m->rotor.n_blades = p->n_blades;
+	m->n_rotors = nr;
+	m->coaxial = p->coaxial;
+	m->f_scale = p->f_scale;
+	m->added_drag_m2 = p->added_drag_m2;
+	m->fwd_drag_mult = p->fwd_drag_mult;
+	m->cd_h = p->cd_h;
+	m->cd_v = p->cd_v;
+	m->eta_drive = p->eta_drive;
+	m->aux_w = p->aux_w;
+	m->bus_voltage_v = (double)ls->cells * p->chem->v_nom;
+
+	/* Forward speed: the minimum-power speed when "auto". */
+	e->v_fwd_ms = p->v_forward_ms;
+	if (p->v_auto || rec != NULL) {
+		double vbuf[RES_MAX_SWEEP], pbuf[RES_MAX_SWEEP];
+		double *vv = rec ? rec->sweep_v_ms : vbuf;
+		double *pp = rec ? rec->sweep_power_w : pbuf;
+		int n = mission_speed_sweep(m, mass_kg, e->t_peak_n, vv, pp,
+		    RES_MAX_SWEEP, &e->v_min_power_ms, &e->v_max_ms);
+		if (rec)
+			rec->n_sweep = n;
+		if (p->v_auto)
+			e->v_fwd_ms = e->v_min_power_ms;
+	}
+
+	mission_power(m, mass_kg, p->v_climb_ms, 0.0, &e->ph[PHASE_CLIMB]);
+	mission_power(m, mass_kg, 0.0, e->v_fwd_ms, &e->ph[PHASE_FORWARD]);
+	mission_power(m, mass_kg, 0.0, 0.0, &e->ph[PHASE_HOVER]);
+	mission_peak_power(m, e->t_peak_n, &e->peak);
+	e->pitch_m = p->prop_locked ? p->prop_pitch_m
+	    : sizing_pitch_m(d, e->ph[PHASE_HOVER].rotor.induced_ms, e->rps_hover);
+
+	/* Series cells: locked, set by a locked KV, or from the current budget. */
+	if (p->parts.active && p->parts.cells > 0)
+		e->cells = p->parts.cells;
+	else if (p->cells_fixed > 0)
+		e->cells = p->cells_fixed;
+	else if (p->kv_locked)
+		e->cells = (int)ceil(60.0 * e->rps_peak / (p->kv * p->chem->v_full));
+	else
+		e->cells = ls->cells;
+	if (e->cells < 1)
+		e->cells = 1;
+	double v_nom = (double)e->cells * p->chem->v_nom;
+	e->kv = p->kv_locked ? p->kv
+	    : 60.0 * e->rps_peak / ((double)e->cells * p->chem->v_full);
+	e->peak_current_a = e->peak.electrical_w / v_nom;
+
+	/* Battery: energy-sized capacity, floored by the power the cells can
+	 * deliver (specific power), unless locked or a real part. */
+	e->capacity_ah = capacity_ah;
+	if (p->parts.active && p->parts.battery_kg > 0.0)
+		e->capacity_ah = p->parts.capacity_ah;
+	else if (p->capacity_locked)
+		e->capacity_ah = p->capacity_locked_ah;
+	double pack_mah = e->capacity_ah * 1000.0 / (double)p->pack_count;
+	e->eta_pkg = batt_packaging_factor(p->chem, p->packaging_base, e->cells,
+	    pack_mah, p->pack_count, p->wheelbase_m, p->consumer_or_micro,
+	    p->enterprise);
+	double e_nom_wh = e->capacity_ah * v_nom;
+	double m_energy = batt_mass_kg(e_nom_wh, p->e_spec_wh_kg, e->eta_pkg);
+	double m_power = e->peak.electrical_w / p->chem->p_spec_w_kg * e->eta_pkg;
+	if (p->parts.active && p->parts.battery_kg > 0.0) {
+		e->mass.battery_kg = p->parts.battery_kg;
+	} else if (!p->capacity_locked && m_power > m_energy) {
+		e->power_binds = true;
+		e->mass.battery_kg = m_power;
+		e->capacity_ah = m_power / e->eta_pkg * p->e_spec_wh_kg / v_nom;
+	} else {
+		e->mass.battery_kg = m_energy;
+	}
+
+	/* Motors and propellers (per unit), needed for the arm tip mass. */
+	double motor_total = p->parts.active && p->parts.motor_kg_each > 0.0
+	    ? p->parts.motor_kg_each * (double)nr
+	    : fmax(SIZING_MOTOR_MIN_KG,
+	        (double)nr * e->t_peak_n * SIZING_MOTOR_KG_PER_N * p->c_motor);
+	double prop_each = p->parts.active && p->parts.prop_kg_each > 0.0
+	    ? p->parts.prop_kg_each
+	    : p->prop_kg_per_m22 * pow(d, SIZING_PROP_EXPONENT)
+	        * (double)p->n_blades / 2.0;
+	e->mass.motor_kg = motor_total;
+	e->mass.prop_kg = prop_each * (double)nr;
+
+	/* Arms: strength at max(load factor × CG thrust, full thrust), then
+	 * stiffness against 1.5 × blade-pass frequency. */
+	double arm_len = 0.5 * p->wheelbase_m;
+	double t_cg;
+	e->cg_ok = structure_cg_thrust_n(mass_kg, nr, arm_len, p->cg_shift_m, &t_cg);
+	double per_arm = p->coaxial ? 2.0 : 1.0;
+	double force = fmax(p->load_factor * t_cg, e->t_peak_n) * per_arm;
+	double tip_kg = (motor_total / (double)nr + prop_each) * per_arm;
+	double f_bpf = (double)p->n_blades * e->rps_peak;
+	structure_size_arm(force, arm_len, p->alpha_w, tip_kg, f_bpf, &e->arm);
+	double arms = (double)n_arms(p) * e->arm.mass_kg;
+	double floor_kg = mass_kg * structure_min_fraction(p->wheelbase_m) / p->c_body;
+	e->min_fraction_binds = floor_kg > arms;
+	double arms_eff = fmax(arms, floor_kg);
+	double spar = p->c_body * arms_eff;
+	double frame_total = p->lambda * spar * (1.0 + p->gamma);
+	if (p->fixed_frame_kg > 0.0)
+		frame_total = p->fixed_frame_kg;
+	/* Split the structure: tubes, centre plates/joints, body and gear. */
+	double unit = frame_total / ((1.0 + p->gamma) * p->c_body);
+	e->mass.arm_kg = unit;
+	e->mass.frame_kg = unit * (p->c_body - 1.0);
+	e->mass.other_kg = unit * p->c_body * p->gamma;
+
+	/* ESCs and harness scale with the current they carry (paper §VI-E). */
+	double scale = s_scale(frame_total + p->payload_kg);
+	double i_rotor = fmax(SIZING_ESC_MIN_A,
+	    SIZING_ESC_RATING * e->peak_current_a / (double)nr);
+	e->mass.esc_kg = p->parts.active && p->parts.esc_kg_total > 0.0
+	    ? p->parts.esc_kg_total
+	    : SIZING_ESC_KG_PER_A * i_rotor * (double)nr * p->c_esc * scale;
+	e->mass.wiring_kg = p->wire_coef * e->peak_current_a * p->wheelbase_m * scale;
+	e->mass.avionics_kg = p->avionics_kg;
+	e->mass.role_aux_kg = p->role_aux_kg;
+	e->mass.payload_kg = p->payload_kg;
+	e->mass.total_kg = e->mass.payload_kg + e->mass.battery_kg
+	    + e->mass.frame_kg + e->mass.arm_kg + e->mass.motor_kg
+	    + e->mass.prop_kg + e->mass.esc_kg + e->mass.wiring_kg
+	    + e->mass.avionics_kg + e->mass.role_aux_kg + e->mass.other_kg;
+
+	/* Fly the mission at this mass and capacity. */
+	struct discharge_pack pk;
+	pack_of(p, e, &pk);
+	struct discharge_mission dm;
+	dm.model = m;
+	dm.dry_mass_kg = mass_kg - p->payload_kg;
+	shedding(p, ls->gamma_time, &dm.shed);
+	durations(p, ls->gamma_time, dm.duration_s);
+	dm.speed_ms[PHASE_CLIMB] = p->v_climb_ms;
+	dm.speed_ms[PHASE_FORWARD] = e->v_fwd_ms;
+	dm.speed_ms[PHASE_HOVER] = 0.0;
+	dm.ambient_c = p->ambient_c;
+	discharge_run(&pk, &dm, steps, rec ? rec->trace : NULL,
+	    rec ? RES_MAX_TRACE : 0, rec ? &rec->n_trace : NULL, &e->dis);
+
+	/* Capacity the mission needs, with the 20 % margin. */
+	double t_req = total_duration(p, ls->gamma_time);
+	switch (e->dis.end) {
+	case DIS_COMPLETED:
+		e->c_target_ah = SIZING_CAP_MARGIN * e->dis.ah_used;
+		break;
+	case DIS_DEPLETED:
+	case DIS_VOLTAGE_FLOOR:
+	case DIS_THERMAL: {
+		/* Extrapolate the charge to the whole mission. */
+		double frac = t_req > 0.0 && e->dis.t_end_s > 0.0
+		    ? t_req / e->dis.t_end_s : 2.0;
+		e->c_target_ah = SIZING_CAP_MARGIN * fmax(e->dis.ah_used * frac,
+		    e->capacity_ah * 1.1);
+		break;
+	}
+	case DIS_COLLAPSE:
+	case DIS_OVERFLOW:
+	default:
+		/* More capacity lowers R_sys (C_ref / C) and the sag. */
+		e->c_target_ah = 1.5 * e->capacity_ah;
+		break;
+	}
+}
+
+/* Initial capacity: nominal energy of the mission at the seed mass. */
+static double
+seed_capacity_ah(const struct sizing_params *p, const struct loop_state *ls,
+                 double mass_kg)
+{
+	struct eval e;
+	evaluate(p, ls, mass_kg, 1.0, 8, NULL, &e);
+	double d[PHASE_MAX], wh = 0.0;
+	durations(p, ls->gamma_time, d);
+	for (int i = 0; i < PHASE_MAX; i++)
+		wh += e.ph[i].electrical_w * d[i] / S_PER_H;
+	double v = (double)ls->cells * p->chem->v_nom;
+	double c = SIZING_CAP_MARGIN * wh / v;
+	return c > 0.05 ? c : 0.05;
+}
+
+/* Initial cells from the peak power at the seed mass. */
+static int
+seed_cells(const struct sizing_params *p, int lo, int hi, double mass_kg,
+           struct loop_state *ls)
+{
+	ls->cells = lo;
+	struct eval e;
+	for (int k = 0; k < 3; k++) {
+		evaluate(p, ls, mass_kg, 1.0, 8, NULL, &e);
+		ls->cells = sizing_auto_cells(e.peak.electrical_w, mass_kg,
+		    p->chem->v_nom, lo, hi);
+	}
+	return ls->cells;
+}
+
+/* Run the fixed-point iteration at a given goal-relaxation factor. */
+static enum sizing_status
+iterate(const struct sizing_params *p, int cells_lo, int cells_hi,
+        double gamma_time, struct res_run *out, struct eval *last,
+        double *m_star, double *c_star, struct loop_state *ls_out)
+{
+	struct loop_state ls = { 0, 0.0, gamma_time };
+	double m = sizing_seed_kg(p->payload_kg, p->air.rho_kg_m3);
+	bool auto_cells = p->cells_fixed <= 0 && !p->kv_locked
+	    && !(p->parts.active && p->parts.cells > 0);
+	ls.cells = p->cells_fixed > 0 ? p->cells_fixed
+	    : seed_cells(p, cells_lo, cells_hi, m, &ls);
+	ls.arm_width_m = 0.02 * p->wheelbase_m;
+	double c = p->capacity_locked ? p->capacity_locked_ah
+	    : seed_capacity_ah(p, &ls, m);
+	double c_failed = 0.0;
+	int max_iter = p->max_iter > 0 ? p->max_iter : SIZING_MAX_ITER;
+	enum sizing_status st = SIZING_MAX_ITERATIONS;
+
+	out->n_history = 0;
+	for (int k = 1; k <= max_iter; k++) {
+		evaluate(p, &ls, m, c, LOOP_STEPS, NULL, last);
+		double f = last->mass.total_kg;
+		if (out->n_history < RES_MAX_HISTORY)
+			out->history_kg[out->n_history++] = f;
+		out->iterations = k;
+		bool flown = last->dis.end == DIS_COMPLETED;
+		if (!flown && last->capacity_ah > c_failed)
+			c_failed = last->capacity_ah;
+		double c_used = last->capacity_ah;
+		if (!p->capacity_locked && !(p->parts.active && p->parts.battery_kg > 0.0)) {
+			/* Eq. (relaxation) with the ratchet floor. */
+			c = SIZING_RELAX_ALPHA * last->c_target_ah
+			    + (1.0 - SIZING_RELAX_ALPHA) * c_used;
+			if (c_failed > 0.0 && c < SIZING_RATCHET * c_failed)
+				c = SIZING_RATCHET * c_failed;
+		}
+		if (!isfinite(f) || f > SIZING_RUNAWAY_KG) {
+			st = SIZING_RUNAWAY;
+			break;
+		}
+		/* The next iteration sees this one's arm and cell count. */
+		ls.arm_width_m = last->arm.d_out_m;
+		if (auto_cells)
+			ls.cells = sizing_auto_cells(last->peak.electrical_w, f,
+			    p->chem->v_nom, cells_lo, cells_hi);
+		bool cap_steady = p->capacity_locked
+		    || fabs(c - c_used) <= 1e-4 * c_used;
+		if (fabs(f - m) < SIZING_TOL_KG && cap_steady) {
+			m = f;
+			st = flown ? SIZING_CONVERGED : SIZING_DISCHARGE_FAIL;
+			break;
+		}
+		/* With a locked battery the capacity cannot grow: stop once the
+		 * mass has settled and report the failed discharge. */
+		m = f;
+	}
+	if (st == SIZING_MAX_ITERATIONS && p->capacity_locked
+	    && last->dis.end != DIS_COMPLETED)
+		st = SIZING_DISCHARGE_FAIL;
+	*m_star = m;
+	*c_star = p->capacity_locked ? p->capacity_locked_ah : last->capacity_ah;
+	*ls_out = ls;
+	return st;
+}
+
+/* dF/dM at the fixed point by central differences, with the capacity
+ * re-targeted at each side (the full coupling of eq. lipschitz). */
+static double
+lipschitz(const struct sizing_params *p, const struct loop_state *ls,
+          double m_star, double c_star)
+{
+	double h = LIPSCHITZ_STEP * m_star;
+	struct eval a, b;
+	double ca = c_star, cb = c_star;
+	for (int k = 0; k < 3; k++) {
+		evaluate(p, ls, m_star + h, ca, LOOP_STEPS, NULL, &a);
+		evaluate(p, ls, m_star - h, cb, LOOP_STEPS, NULL, &b);
+		if (p->capacity_locked)
+			break;
+		ca = a.c_target_ah;
+		cb = b.c_target_ah;
+	}
+	return (a.mass.total_kg - b.mass.total_kg) / (2.0 * h);
+}
+
+/* Copy the evaluated design into the run record. */
+static void
+record_run(const struct sizing_params *p, const struct eval *e,
+           const struct loop_state *ls, struct res_run *out)
+{
+	double d[PHASE_MAX];
+	durations(p, ls->gamma_time, d);
+	out->mass = e->mass;
+	snprintf(out->chemistry, sizeof out->chemistry, "%s", p->chem->name);
+	out->cell_count = e->cells;
+	out->pack_count = p->pack_count;
+	out->capacity_mah = e->capacity_ah * 1000.0;
+	out->nominal_voltage_v = (double)e->cells * p->chem->v_nom;
+	out->energy_wh = e->capacity_ah * out->nominal_voltage_v;
+	out->packaging_factor = e->eta_pkg;
+	out->time_scale = ls->gamma_time;
+	out->flight_time_s = 0.0;
+	for (int i = 0; i < PHASE_MAX; i++) {
+		struct res_phase *r = &out->phase[i];
+		const struct mission_power *mp = &e->ph[i];
+		out->approved_time_s[i] = d[i];
+		out->flight_time_s += d[i];
+		r->duration_s = d[i];
+		r->speed_ms = i == PHASE_CLIMB ? p->v_climb_ms
+		    : i == PHASE_FORWARD ? e->v_fwd_ms : 0.0;
+		r->thrust_per_rotor_n = mp->thrust_per_rotor_n;
+		r->shaft_power_w = mp->shaft_w;
+		r->power_w = e->dis.phase_mean_power_w[i] > 0.0
+		    ? e->dis.phase_mean_power_w[i] : mp->electrical_w;
+		r->current_a = e->dis.phase_mean_current_a[i];
+		r->energy_wh = e->dis.phase_energy_wh[i];
+		r->rpm = mp->rotor.rps * 60.0;
+		r->throttle = e->rps_peak > 0.0 ? mp->rotor.rps / e->rps_peak : 0.0;
+		r->pitch_deg = mp->pitch_deg;
+		r->tip_mach = mp->rotor.tip_mach;
+	}
+	out->optimal_speed_ms = e->v_fwd_ms;
+	out->v_min_power_ms = e->v_min_power_ms;
+	out->v_max_ms = e->v_max_ms;
+
+	out->thrust_to_weight = 1.0 / (e->throttle * e->throttle);
+	out->hover_throttle = e->throttle;
+	out->forward_pitch_deg = e->ph[PHASE_FORWARD].pitch_deg;
+	double area = 0.25 * M_PI * e->model.rotor.diameter_m * e->model.rotor.diameter_m;
+	out->disk_loading_n_m2 = e->mass_kg * G0_M_S2 / ((double)p->n_rotors * area);
+	out->downwash_ms = aero_downwash_ms(e->mass_kg, p->air.rho_kg_m3,
+	    p->n_rotors, area);
+	out->fom_installed = e->fom_inst;
+	out->interference = e->k_int;
+	out->reynolds_tip = e->ph[PHASE_HOVER].rotor.reynolds_tip;
+	out->rpm_hover = e->rps_hover * 60.0;
+	out->rpm_peak = e->rps_peak * 60.0;
+	out->tip_mach_peak = M_PI * e->model.rotor.diameter_m * e->rps_peak
+	    / p->air.sound_m_s;
+	out->overlap_limit_in = m_to_in(e->overlap_limit_m);
+	out->peak_power_w = e->peak.electrical_w;
+	out->peak_current_a = e->peak_current_a;
+	out->peak_c_rate = e->capacity_ah > 0.0 ? e->peak_current_a / e->capacity_ah : 0.0;
+	out->opt.prop_diameter_in = m_to_in(e->model.rotor.diameter_m);
+	out->opt.prop_pitch_in = m_to_in(e->pitch_m);
+	out->opt.motor_kv = e->kv;
+	out->opt.motor_mass_kg = e->mass.motor_kg / (double)p->n_rotors;
+	out->opt.motor_peak_current_a = e->peak_current_a / (double)p->n_rotors;
+	out->opt.motor_peak_power_w = e->peak.shaft_w / (double)p->n_rotors
+	    / p->eta_drive;
+
+	out->arm_length_m = e->arm.length_m;
+	out->arm_outer_diameter_mm = e->arm.d_out_m * 1000.0;
+	out->arm_wall_thickness_mm = e->arm.wall_m * 1000.0;
+	out->arm_stress_mpa = e->arm.stress_pa / 1e6;
+	out->arm_stress_allow_mpa = structure_sigma_allow_pa() / 1e6;
+	out->arm_natural_frequency_hz = e->arm.f_nat_hz;
+	out->blade_pass_frequency_hz = (double)p->n_blades * e->rps_peak;
+	out->resonance_margin = out->blade_pass_frequency_hz > 0.0
+	    ? e->arm.f_nat_hz / (STRUCT_RESONANCE_MARGIN * out->blade_pass_frequency_hz) - 1.0
+	    : 0.0;
+	out->arm_stiffness_binds = e->arm.stiffness_binds;
+	out->arm_wall_floor_binds = e->arm.wall_floor_binds;
+	out->min_fraction_binds = e->min_fraction_binds;
+
+	out->max_battery_temp_c = e->dis.peak_temp_c;
+	out->thermal_margin_c = THERM_RUNAWAY_C - e->dis.peak_temp_c;
+	out->min_terminal_voltage_v = e->dis.min_v_term_v;
+	out->voltage_floor_v = (double)e->cells * p->chem->v_cutoff;
+	out->end_soc = e->dis.end_soc;
+	/* Motor copper loss at hover with the winding resistance corrected to
+	 * its running temperature (paper §V-D); needs a real motor's R. */
+	out->winding_temp_c = p->ambient_c + SIZING_WINDING_RISE_K;
+	if (p->parts.active && p->parts.motor_resistance_ohm > 0.0) {
+		double i_m = e->ph[PHASE_HOVER].electrical_w / out->nominal_voltage_v
+		    / (double)p->n_rotors;
+		out->motor_winding_resistance_ohm = therm_winding_resistance_ohm(
+		    p->parts.motor_resistance_ohm, out->winding_temp_c);
+		out->motor_copper_loss_w = i_m * i_m * out->motor_winding_resistance_ohm;
+	}
+	snprintf(out->termination, sizeof out->termination, "%s",
+	    discharge_end_text[e->dis.end]);
+}
+
+/* Endurance explorer: hover endurance vs capacity scale with the mass loop
+ * re-closed at each locked capacity (the mass-growth penalty). */
+static void
+explore(const struct sizing_params *p, const struct loop_state *ls,
+        double c_star, struct res_run *out)
+{
+	struct sizing_params q = *p;
+	q.capacity_locked = true;
+	q.allow_relax = false;
+	q.max_iter = EXPLORER_MAX_ITER;
+	q.parts.active = false;
+	q.cells_fixed = out->cell_count;
+	out->n_endurance = 0;
+	double first_slope = 0.0;
+	out->endurance_inflection_scale = 0.0;
+	for (int i = 0; i < ENDURANCE_SCALES; i++) {
+		double s = 0.25 + 2.75 * (double)i / (double)(ENDURANCE_SCALES - 1);
+		q.capacity_locked_ah = c_star * s;
+		struct loop_state l2 = *ls;
+		double m = sizing_seed_kg(q.payload_kg, q.air.rho_kg_m3);
+		struct eval e;
+		for (int k = 0; k < EXPLORER_MAX_ITER; k++) {
+			evaluate(&q, &l2, m, q.capacity_locked_ah, 40, NULL, &e);
+			l2.arm_width_m = e.arm.d_out_m;
+			double f = e.mass.total_kg;
+			if (!isfinite(f) || f > SIZING_RUNAWAY_KG)
+				break;
+			bool done = fabs(f - m) < SIZING_TOL_KG;
+			m = f;
+			if (done)
+				break;
+		}
+		if (!isfinite(m) || m > SIZING_RUNAWAY_KG)
+			break;
+		struct discharge_pack pk;
+		pack_of(&q, &e, &pk);
+		double t = discharge_hover_endurance_s(&pk, &e.model, m, q.ambient_c,
+		    sizing_reserve_soc());
+		int n = out->n_endurance++;
+		out->endurance_scale[n] = s;
+		out->endurance_time_s[n] = t;
+		out->endurance_mass_kg[n] = m;
+		if (n >= 1) {
+			double slope = (t - out->endurance_time_s[n - 1])
+			    / (s - out->endurance_scale[n - 1]);
+			if (n == 1)
+				first_slope = slope;
+			else if (out->endurance_inflection_scale == 0.0
+			    && first_slope > 0.0 && slope < 0.5 * first_slope)
+				out->endurance_inflection_scale = s;
+		}
+	}
+}
+
+/* Marketing mode: the manufacturer's best case — hover without payload or
+ * auxiliary load, ISA sea level at 25 °C, down to an empty pack. */
+static double
+marketing_endurance_s(const struct sizing_params *p, const struct eval *e,
+                      double m_star)
+{
+	struct mission_model m = e->model;
+	atmo_at(0.0, c_to_k(25.0), &m.air);
+	m.aux_w = 0.0;
+	struct discharge_pack pk;
+	pack_of(p, e, &pk);
+	return discharge_hover_endurance_s(&pk, &m, m_star - p->payload_kg, 25.0,
+	    BATT_SOC_MIN);
+}
+
+enum sizing_status
+sizing_run(const struct sizing_params *p, struct res_run *out)
+{
+	struct eval last;
+	struct loop_state ls;
+	double m_star = 0.0, c_star = 0.0;
+
+	memset(out, 0, sizeof *out);
+	out->ran = true;
+	enum sizing_status st = iterate(p, p->cells_lo, p->cells_hi, 1.0, out,
+	    &last, &m_star, &c_star, &ls);
+
+	if (st != SIZING_CONVERGED && p->allow_relax) {
+		/* Goal relaxation: the largest γ in [0.05, 1) that closes, by
+		 * bisection (the loop is monotone in mission time). */
+		double good = 0.0, lo = SIZING_GAMMA_MIN, hi = 1.0;
+		struct eval e2;
+		struct loop_state l2;
+		double m2, c2;
+		if (iterate(p, p->cells_lo, p->cells_hi, lo, out, &e2, &m2, &c2, &l2)
+		    == SIZING_CONVERGED) {
+			good = lo;
+			for (int k = 0; k < GAMMA_BISECT; k++) {
+				double mid = 0.5 * (lo + hi);
+				if (iterate(p, p->cells_lo, p->cells_hi, mid, out, &e2,
+				    &m2, &c2, &l2) == SIZING_CONVERGED) {
+					good = mid;
+					lo = mid;
+				} else {
+					hi = mid;
+				}
+			}
+		}
+		if (good > 0.0)
+			st = iterate(p, p->cells_lo, p->cells_hi, good, out, &last,
+			    &m_star, &c_star, &ls);
+		else
+			st = iterate(p, p->cells_lo, p->cells_hi, 1.0, out, &last,
+			    &m_star, &c_star, &ls);
+	}
+
+	out->converged = st == SIZING_CONVERGED;
+	if (st == SIZING_RUNAWAY) {
+		/* Nothing physical to record beyond the history. */
+		record_run(p, &last, &ls, out);
+		snprintf(out->termination, sizeof out->termination,
+		    "mass runaway above %.0f kg: every added kilogram demands more "
+		    "than a kilogram of subsystem mass", SIZING_RUNAWAY_KG);
+		return st;
+	}
+	/* The final evaluation at the fixed point keeps the full trace. */
+	struct eval fin;
+	int steps = p->trace_steps > 0 ? p->trace_steps : RES_MAX_TRACE - 8;
+	evaluate(p, &ls, m_star, c_star, steps, out, &fin);
+	record_run(p, &fin, &ls, out);
+	out->lipschitz = lipschitz(p, &ls, m_star, c_star);
+	struct discharge_pack pk;
+	pack_of(p, &fin, &pk);
+	out->hover_endurance_s = discharge_hover_endurance_s(&pk, &fin.model,
+	    m_star, p->ambient_c, sizing_reserve_soc());
+	if (p->marketing)
+		out->marketing_endurance_s = marketing_endurance_s(p, &fin, m_star);
+	if (p->explore)
+		explore(p, &ls, c_star, out);
+	if (st == SIZING_MAX_ITERATIONS)
+		snprintf(out->termination, sizeof out->termination,
+		    "no convergence in %d iterations", out->iterations);
+	return st;
+}
