@@ -92,6 +92,7 @@ struct sizing_params {
 	double drop_mass_kg;
 	double drop_ratio;
 	double spray_rate_kg_s;      /* 0 = payload / mission time */
+	double downwash_cap_ms;      /* agriculture downwash cap, 0 = none */
 	double payload_kg;
 	/* battery */
 	const struct batt_chem *chem;

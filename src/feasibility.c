@@ -1,0 +1,283 @@
+/* feasibility.c — feasibility gate and checks table (see feasibility.h). */
+#include "feasibility.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "aero.h"
+#include "mission.h"
+#include "structure.h"
+#include "therm.h"
+#include "units.h"
+
+/* Fixes are formatted into this scratch before they are copied. */
+#define FIX_LEN RES_TEXT
+
+void
+feasibility_violation(struct solve_result *r, const char *run,
+                      const char *stage, const char *code,
+                      const char *const *fixes, const char *fmt, ...)
+{
+	if (r->n_violations >= RES_MAX_VIOLATIONS)
+		return;
+	struct res_violation *v = &r->violations[r->n_violations++];
+	memset(v, 0, sizeof *v);
+	snprintf(v->run, sizeof v->run, "%s", run);
+	snprintf(v->stage, sizeof v->stage, "%s", stage);
+	snprintf(v->code, sizeof v->code, "%s", code);
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(v->message, sizeof v->message, fmt, ap);
+	va_end(ap);
+	for (int i = 0; fixes != NULL && fixes[i] != NULL && i < RES_MAX_FIXES; i++) {
+		snprintf(v->fixes[i], sizeof v->fixes[i], "%s", fixes[i]);
+		v->n_fixes++;
+	}
+}
+
+static double
+mission_time_s(const struct sizing_params *p)
+{
+	double t = 0.0;
+	for (int i = 0; i < PHASE_MAX; i++)
+		t += p->duration_s[i];
+	return t;
+}
+
+bool
+feasibility_gate(const struct sizing_params *p, const char *run,
+                 struct solve_result *r)
+{
+	bool ok = true;
+	char f1[FIX_LEN], f2[FIX_LEN], f3[FIX_LEN];
+	const char *fx[4] = { f1, f2, f3, NULL };
+
+	if (p->coaxial && (p->n_rotors % 2 != 0 || p->n_rotors < 6)) {
+		snprintf(f1, sizeof f1, "Use an even rotor count of 6 or more (coaxial X8: num_rotors 8)");
+		snprintf(f2, sizeof f2, "Set coaxial_layout to false");
+		fx[2] = NULL;
+		feasibility_violation(r, run, "feasibility", "COAXIAL_LAYOUT", fx,
+		    "A coaxial layout stacks rotors in pairs on at least 3 arms; "
+		    "%d rotors cannot be paired that way.", p->n_rotors);
+		ok = false;
+	}
+	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
+	double limit = arms >= 2 ? aero_overlap_limit_m(p->wheelbase_m, arms,
+	    AERO_TIP_CLEARANCE) : 0.0;
+	if (p->prop_locked && p->prop_diameter_m > limit) {
+		double w_need = p->prop_diameter_m / ((1.0 - AERO_TIP_CLEARANCE)
+		    * sin(M_PI / (double)arms));
+		snprintf(f1, sizeof f1, "Increase max_diameter_m to at least %.3f m", w_need);
+		snprintf(f2, sizeof f2, "Lock a propeller of at most %.1f in", m_to_in(limit));
+		snprintf(f3, sizeof f3, "Use fewer rotors or a coaxial layout");
+		fx[2] = f3;
+		feasibility_violation(r, run, "feasibility", "PROP_OVERLAP", fx,
+		    "The locked %.1f in propeller overlaps its neighbour: a %.0f mm "
+		    "wheelbase with %d arms admits at most %.1f in (5 %% tip clearance).",
+		    m_to_in(p->prop_diameter_m), p->wheelbase_m * 1000.0, arms,
+		    m_to_in(limit));
+		ok = false;
+	}
+	double d_y = 0.5 * p->wheelbase_m * cos(M_PI / (double)p->n_rotors);
+	if (p->cg_shift_m >= d_y) {
+		snprintf(f1, sizeof f1, "Mount the payload within %.3f m of the centre", d_y);
+		snprintf(f2, sizeof f2, "Increase max_diameter_m above %.3f m",
+		    2.0 * p->cg_shift_m / cos(M_PI / (double)p->n_rotors));
+		fx[2] = NULL;
+		feasibility_violation(r, run, "feasibility", "CG_OFFSET", fx,
+		    "The payload CG offset of %.3f m lies outside the rotor polygon "
+		    "(d_y = %.3f m): the aircraft cannot be trimmed.", p->cg_shift_m, d_y);
+		ok = false;
+	}
+	if (!(mission_time_s(p) > 0.0)) {
+		snprintf(f1, sizeof f1, "Give t_hover_s, t_climb_s or t_forward_s");
+		fx[1] = NULL;
+		feasibility_violation(r, run, "feasibility", "NO_MISSION", fx,
+		    "The mission has no flight time: every phase duration is 0.");
+		ok = false;
+	}
+	return ok;
+}
+
+static struct res_check *
+add_check(struct res_run *run, const char *name, const char *unit,
+          double value, double limit, bool upper)
+{
+	if (run->n_checks >= RES_MAX_CHECKS)
+		return NULL;
+	struct res_check *c = &run->checks[run->n_checks++];
+	memset(c, 0, sizeof *c);
+	snprintf(c->name, sizeof c->name, "%s", name);
+	snprintf(c->unit, sizeof c->unit, "%s", unit);
+	c->value = isfinite(value) ? value : 0.0;
+	c->limit = limit;
+	c->upper = upper;
+	double scale = fabs(limit) > 1e-12 ? fabs(limit) : 1.0;
+	c->margin = upper ? (limit - c->value) / scale : (c->value - limit) / scale;
+	c->pass = upper ? c->value <= limit : c->value >= limit;
+	return c;
+}
+
+void
+feasibility_checks(const struct sizing_params *p, enum sizing_status st,
+                   const char *run, struct res_run *o, struct solve_result *r)
+{
+	char f1[FIX_LEN], f2[FIX_LEN], f3[FIX_LEN];
+	const char *fx[4] = { f1, f2, f3, NULL };
+	int n0 = r->n_violations;
+	o->n_checks = 0;
+
+	/* The loop itself. */
+	double last_step = o->n_history >= 2
+	    ? fabs(o->history_kg[o->n_history - 1] - o->history_kg[o->n_history - 2])
+	    : 0.0;
+	struct res_check *c = add_check(o, "Mass loop step at exit", "kg",
+	    last_step, SIZING_TOL_KG, true);
+	if (c && st == SIZING_CONVERGED)
+		c->pass = true;
+	if (st == SIZING_RUNAWAY) {
+		snprintf(f1, sizeof f1, "Reduce payload_kg or the mission times");
+		snprintf(f2, sizeof f2, "Choose a higher specific-energy battery_chemistry");
+		snprintf(f3, sizeof f3, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
+		feasibility_violation(r, run, "mass_loop", "MASS_RUNAWAY", fx,
+		    "The takeoff mass ran away above %.0f kg: each added kilogram "
+		    "needs more than a kilogram of battery, structure and motors "
+		    "(Lipschitz constant >= 1).", SIZING_RUNAWAY_KG);
+	} else if (st == SIZING_MAX_ITERATIONS) {
+		snprintf(f1, sizeof f1, "Shorten the mission or lighten the payload");
+		snprintf(f2, sizeof f2, "Fix the cell count (nominal_cell_count) to stop cell-count cycling");
+		fx[2] = NULL;
+		feasibility_violation(r, run, "mass_loop", "NOT_CONVERGED", fx,
+		    "The mass loop did not converge to 1 g in %d iterations.",
+		    o->iterations);
+		fx[2] = f3;
+	}
+	add_check(o, "Mass-growth Lipschitz constant", "", o->lipschitz, 1.0, true);
+	add_check(o, "Takeoff mass", "kg", o->mass.total_kg, SIZING_RUNAWAY_KG, true);
+
+	/* Mission flown on the battery (discharge simulation). */
+	double need = 0.0, flown = 0.0;
+	for (int i = 0; i < PHASE_MAX; i++)
+		need += o->approved_time_s[i];
+	flown = o->n_trace > 0 ? o->trace[o->n_trace - 1].t_s : 0.0;
+	c = add_check(o, "Mission flown on the battery", "s", flown, need * 0.999, false);
+	if (c && !c->pass && st != SIZING_RUNAWAY) {
+		if (p->capacity_locked) {
+			snprintf(f1, sizeof f1, "Increase locks.locked_capacity_mah above %.0f mAh",
+			    p->capacity_locked_ah * 1000.0 * (need > 0.0 && flown > 0.0 ? need / flown : 2.0) * SIZING_CAP_MARGIN);
+			snprintf(f2, sizeof f2, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
+			snprintf(f3, sizeof f3, "Unlock the battery so the solver can size it");
+		} else {
+			snprintf(f1, sizeof f1, "Add series cells (nominal_cell_count) to lower the current");
+			snprintf(f2, sizeof f2, "Shorten the mission or lighten the payload");
+			snprintf(f3, sizeof f3, "Choose a lower-resistance battery_chemistry");
+		}
+		feasibility_violation(r, run, "discharge", "MISSION_NOT_FLOWN", fx,
+		    "The discharge simulation stopped at %.0f s of %.0f s: %s.",
+		    flown, need, o->termination);
+	}
+
+	/* Propulsion geometry. */
+	c = add_check(o, "Propeller diameter (overlap limit)", "in",
+	    o->opt.prop_diameter_in, o->overlap_limit_in + 1e-9, true);
+	c = add_check(o, "Tip Mach number at full throttle", "", o->tip_mach_peak,
+	    AERO_TIP_MACH_MAX, true);
+	if (c && !c->pass) {
+		snprintf(f1, sizeof f1, "Use a larger propeller (lower rpm for the same thrust)");
+		snprintf(f2, sizeof f2, "Reduce the thrust margin (payload_role.thrust_margin_override)");
+		snprintf(f3, sizeof f3, "Lower the operating altitude or raise the ambient temperature limit");
+		feasibility_violation(r, run, "propulsion", "TIP_MACH", fx,
+		    "The rotor tip reaches Mach %.2f at full throttle (limit %.2f): "
+		    "noise, compressibility losses and blade loads rise sharply.",
+		    o->tip_mach_peak, AERO_TIP_MACH_MAX);
+	}
+
+	/* Electrical and thermal. */
+	c = add_check(o, "Battery peak temperature", "°C", o->max_battery_temp_c,
+	    THERM_RUNAWAY_C, true);
+	if (c && !c->pass) {
+		snprintf(f1, sizeof f1, "Add capacity or parallel packs to lower the C-rate");
+		snprintf(f2, sizeof f2, "Choose a lower-resistance battery_chemistry (LiPo, LiHV)");
+		snprintf(f3, sizeof f3, "Lower the ambient temperature limit of the mission");
+		feasibility_violation(r, run, "discharge", "THERMAL_RUNAWAY", fx,
+		    "The pack reaches %.1f °C, above the %.0f °C thermal-runaway limit.",
+		    o->max_battery_temp_c, THERM_RUNAWAY_C);
+	}
+	c = add_check(o, "Minimum terminal voltage", "V", o->min_terminal_voltage_v,
+	    o->voltage_floor_v, false);
+	if (c && !c->pass) {
+		snprintf(f1, sizeof f1, "Add series cells (nominal_cell_count)");
+		snprintf(f2, sizeof f2, "Add capacity to reduce the voltage sag");
+		fx[2] = NULL;
+		feasibility_violation(r, run, "discharge", "VOLTAGE_FLOOR", fx,
+		    "The terminal voltage falls to %.2f V, below the %.2f V cut-off.",
+		    o->min_terminal_voltage_v, o->voltage_floor_v);
+		fx[2] = f3;
+	}
+	double p_max = p->chem->p_spec_w_kg * o->mass.battery_kg
+	    / (o->packaging_factor > 0.0 ? o->packaging_factor : 1.0);
+	c = add_check(o, "Peak battery power (cell specific power)", "W",
+	    o->peak_power_w, p_max, true);
+	if (c && !c->pass) {
+		snprintf(f1, sizeof f1, "Unlock or enlarge the battery");
+		snprintf(f2, sizeof f2, "Choose a higher-power chemistry such as LiPo or LiHV");
+		snprintf(f3, sizeof f3, "Reduce the thrust margin");
+		feasibility_violation(r, run, "discharge", "BATTERY_POWER", fx,
+		    "Full throttle draws %.0f W, but %.2f kg of %s cells deliver at "
+		    "most %.0f W.", o->peak_power_w, o->mass.battery_kg,
+		    p->chem->name, p_max);
+	}
+
+	/* Structure. */
+	add_check(o, "Arm root bending stress", "MPa", o->arm_stress_mpa,
+	    o->arm_stress_allow_mpa, true);
+	c = add_check(o, "Arm natural frequency vs 1.5 × blade-pass", "Hz",
+	    o->arm_natural_frequency_hz, STRUCT_RESONANCE_MARGIN * o->blade_pass_frequency_hz,
+	    false);
+	if (c && !c->pass) {
+		snprintf(f1, sizeof f1, "Use a larger-diameter arm tube");
+		snprintf(f2, sizeof f2, "Shorten the arms (smaller max_diameter_m)");
+		snprintf(f3, sizeof f3, "Use more blades per propeller only after a modal test");
+		feasibility_violation(r, run, "structure", "ARM_RESONANCE", fx,
+		    "The arm's first bending mode (%.0f Hz) is below 1.5 × the "
+		    "blade-pass frequency (%.0f Hz).", o->arm_natural_frequency_hz,
+		    o->blade_pass_frequency_hz);
+	}
+	double d_y = 0.5 * p->wheelbase_m * cos(M_PI / (double)p->n_rotors);
+	add_check(o, "Payload CG offset", "m", p->cg_shift_m, d_y, true);
+
+	/* Role-specific limits. */
+	if (p->downwash_cap_ms > 0.0) {
+		c = add_check(o, "Downwash (crop and drift limit)", "m/s",
+		    o->downwash_ms, p->downwash_cap_ms, true);
+		if (c && !c->pass) {
+			snprintf(f1, sizeof f1, "Increase max_diameter_m: larger rotors lower the downwash");
+			snprintf(f2, sizeof f2, "Use more rotors (num_rotors)");
+			snprintf(f3, sizeof f3, "Raise payload_role.ag_max_downwash_ms if the crop allows");
+			feasibility_violation(r, run, "feasibility", "DOWNWASH", fx,
+			    "The downwash of %.1f m/s exceeds the %.1f m/s cap against "
+			    "crop damage and spray drift.", o->downwash_ms, p->downwash_cap_ms);
+		}
+	}
+	if (p->duration_s[PHASE_FORWARD] > 0.0) {
+		c = add_check(o, "Forward body pitch", "°", o->forward_pitch_deg,
+		    MISSION_PITCH_MAX_DEG, true);
+		c = add_check(o, "Forward speed within thrust margin", "m/s",
+		    o->optimal_speed_ms, o->v_max_ms, true);
+		if (c && !c->pass) {
+			snprintf(f1, sizeof f1, "Reduce v_forward_ms to %.1f m/s or less", o->v_max_ms);
+			snprintf(f2, sizeof f2, "Use \"auto\" for the minimum-power speed");
+			snprintf(f3, sizeof f3, "Reduce the drag area (payload_role.added_drag_m2)");
+			feasibility_violation(r, run, "mission", "FORWARD_SPEED", fx,
+			    "At %.1f m/s the drag needs more thrust or pitch than the "
+			    "design has; the model diverges beyond %.1f m/s.",
+			    o->optimal_speed_ms, o->v_max_ms);
+		}
+	}
+	o->feasible = r->n_violations == n0;
+	for (int i = 0; i < o->n_checks; i++)
+		if (!o->checks[i].pass)
+			o->feasible = false;
+}

@@ -1,0 +1,36 @@
+/* feasibility.h — the feasibility gate and the checks table.
+ *
+ * Paper §IV-A: cheap geometric and physical checks reject impossible
+ * configurations before the mass loop (coaxial arm count, a locked propeller
+ * that overlaps its neighbour, a CG outside the rotor polygon, no mission,
+ * a locked battery that cannot hold even the mission's lower-bound energy).
+ * After the loop, every constraint becomes one row of the checks table
+ * (value, limit, margin, PASS/FAIL), and each failure becomes a violation
+ * with a plain message and suggested fixes.
+ */
+#ifndef AEROEVAL_FEASIBILITY_H
+#define AEROEVAL_FEASIBILITY_H
+
+#include <stdbool.h>
+
+#include "result.h"
+#include "sizing.h"
+
+/* Pre-loop gate for one run.  Appends violations (run name `run`) to r and
+ * returns true when the run may go on. */
+bool feasibility_gate(const struct sizing_params *p, const char *run,
+                      struct solve_result *r);
+
+/* Fill run->checks from a finished run and append a violation for each
+ * failed check and for the loop status.  Sets run->feasible. */
+void feasibility_checks(const struct sizing_params *p, enum sizing_status st,
+                        const char *run, struct res_run *run_out,
+                        struct solve_result *r);
+
+/* Append one violation; fixes is a NULL-terminated list (may be NULL). */
+void feasibility_violation(struct solve_result *r, const char *run,
+                           const char *stage, const char *code,
+                           const char *const *fixes, const char *fmt, ...)
+    __attribute__((format(printf, 6, 7)));
+
+#endif
