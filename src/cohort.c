@@ -156,6 +156,24 @@ equal_nocase(const char *a, const char *b)
 	return *a == *b;
 }
 
+/* Looks s up in the NULL-terminated spelling table, accepting indices from
+ * `first` on.  Returns the index, or -1 after an error that lists the
+ * accepted spellings. */
+static int
+read_enum(struct cohort *c, const char *file, size_t line, const struct col *cl,
+          const char *s, const char *const *table, int first, const char *what)
+{
+	int k = spec_enum_index(table, s);
+	if (k >= first)
+		return k;
+	struct strbuf list = STRBUF_INIT;
+	for (int i = first; table[i] != NULL; i++)
+		strbuf_printf(&list, "%s%s", i > first ? ", " : "", table[i]);
+	add_error(c, file, line, cl->name, "unknown %s \"%s\" (%s)", what, s, strbuf_str(&list));
+	strbuf_free(&list);
+	return -1;
+}
+
 /* Reads one non-empty cell s (already trimmed) of column cl into row.
  * Returns 0, or -1 after adding an error message. */
 static int
@@ -204,30 +222,22 @@ read_cell(struct cohort *c, const char *file, size_t line, const struct col *cl,
 		}
 		break;
 	case K_CLASS:
-		k = spec_enum_index(spec_enum_airframe, s);
-		if (k < 0) {
-			add_error(c, file, line, cl->name, "unknown airframe class \"%s\" "
-			          "(MicroAIO, ConsumerFolding, EnterpriseRugged, Agricultural)", s);
+		if ((k = read_enum(c, file, line, cl, s, spec_enum_airframe, 0,
+		                   "airframe class")) < 0)
 			return -1;
-		}
 		*(enum airframe_class *)(base + cl->off) = (enum airframe_class)k;
 		break;
 	case K_ROLE:
-		k = spec_enum_index(spec_enum_role, s);
-		if (k <= ROLE_NONE) {
-			add_error(c, file, line, cl->name, "unknown role \"%s\" (imaging, "
-			          "delivery, agriculture, racing, inspection, mapping)", s);
+		/* "none" is a mission default, not a role a real aircraft has. */
+		if ((k = read_enum(c, file, line, cl, s, spec_enum_role, ROLE_NONE + 1,
+		                   "role")) < 0)
 			return -1;
-		}
 		*(enum role_type *)(base + cl->off) = (enum role_type)k;
 		break;
 	case K_CONF:
-		k = spec_enum_index(confidence_names, s);
-		if (k < 0) {
-			add_error(c, file, line, cl->name,
-			          "unknown confidence \"%s\" (high, medium, low)", s);
+		if ((k = read_enum(c, file, line, cl, s, confidence_names, 0,
+		                   "confidence")) < 0)
 			return -1;
-		}
 		*(enum cohort_confidence *)(base + cl->off) = (enum cohort_confidence)k;
 		break;
 	}
