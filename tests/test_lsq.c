@@ -16,9 +16,11 @@ struct data {
 	double fail_below_c; /* the model "is not defined" for c below this */
 };
 
+/* The data set and default options every test starts from. */
 static void
-make_data(struct data *d)
+make_data(struct data *d, struct lsq_options *o)
 {
+	lsq_options_default(o);
 	memset(d, 0, sizeof *d);
 	d->fail_below_c = -1e300;
 	for (int i = 0; i < N_PTS; i++) {
@@ -56,8 +58,7 @@ lsq_should_recover_the_parameters_of_a_power_law(void **state)
 	struct data d;
 	struct lsq_options o;
 	struct lsq_result res;
-	make_data(&d);
-	lsq_options_default(&o);
+	make_data(&d, &o);
 	double th[3] = { 1.0, 1.0, 0.1 };
 	assert_int_equal(lsq_minimize(power_model, &d, N_PTS, 3, th, &o, &res), LSQ_OK);
 	assert_true(res.converged);
@@ -78,8 +79,7 @@ lsq_prior_should_pull_the_fit_toward_it(void **state)
 	struct lsq_options o;
 	struct lsq_result res;
 	const double prior[3] = { 2.0, 1.0, 1.0 };
-	make_data(&d);
-	lsq_options_default(&o);
+	make_data(&d, &o);
 	o.mu = 2.5;
 	o.prior = prior;
 	double th[3] = { 1.0, 1.0, 0.1 };
@@ -116,8 +116,7 @@ lsq_should_clamp_to_bounds(void **state)
 	struct lsq_options o;
 	struct lsq_result res;
 	const double lo[3] = { 0.1, 0.5, -5 }, hi[3] = { 10, 1.2, 5 };
-	make_data(&d);
-	lsq_options_default(&o);
+	make_data(&d, &o);
 	o.theta_lo = lo;
 	o.theta_hi = hi;
 	double th[3] = { 20.0, 1.0, 0.1 }; /* a starts outside: clamped to 10 */
@@ -152,8 +151,7 @@ lsq_should_stop_at_max_iter_with_the_best_point(void **state)
 	struct data d;
 	struct lsq_options o;
 	struct lsq_result res;
-	make_data(&d);
-	lsq_options_default(&o);
+	make_data(&d, &o);
 	o.max_iter = 2;
 	double th[3] = { 1.0, 1.0, 0.1 };
 	assert_int_equal(lsq_minimize(power_model, &d, N_PTS, 3, th, &o, &res), LSQ_MAXITER);
@@ -173,9 +171,8 @@ lsq_should_reject_steps_where_the_model_fails(void **state)
 	 * the solver must back off such steps and still get there. */
 	struct data d;
 	struct lsq_options o;
-	make_data(&d);
+	make_data(&d, &o);
 	d.fail_below_c = 0.2;
-	lsq_options_default(&o);
 	double th[3] = { 1.0, 1.0, 0.3 };
 	assert_int_equal(lsq_minimize(power_model, &d, N_PTS, 3, th, &o, NULL), LSQ_OK);
 	assert_rel(th[0], TRUE_A, 1e-6);
@@ -189,8 +186,7 @@ lsq_should_refuse_bad_arguments_and_bad_models(void **state)
 	struct data d;
 	struct lsq_options o;
 	struct lsq_result res;
-	make_data(&d);
-	lsq_options_default(&o);
+	make_data(&d, &o);
 	double th[3] = { 1.0, 1.0, 0.1 };
 	const double start[3] = { 1.0, 1.0, 0.1 };
 	assert_int_equal(lsq_minimize(power_model, &d, N_PTS, 0, th, &o, &res), LSQ_EINVAL);
