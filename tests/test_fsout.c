@@ -4,6 +4,7 @@
 #include "fsout.h"
 
 #include <dirent.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -201,6 +202,55 @@ fsout_failed_rename_should_remove_the_temporary_file(void **state)
 	assert_int_equal(count_entries(fx->dir), 2);
 }
 
+/* One writer thread: 40 complete versions of the same file. */
+struct writer {
+	const char *path;
+	char tag;   /* every byte this writer writes */
+	int n_fail;
+};
+
+static void *
+writer_main(void *arg)
+{
+	struct writer *w = arg;
+	char buf[4096], err[256];
+	memset(buf, w->tag, sizeof buf);
+	for (int i = 0; i < 40; i++)
+		if (fsout_write_atomic(w->path, buf, sizeof buf, err, sizeof err) != 0)
+			w->n_fail++;
+	return NULL;
+}
+
+static void
+fsout_concurrent_writers_should_never_mix_or_leave_temps(void **state)
+{
+	struct fixture *fx = *state;
+	char p[128];
+	path_in(fx, "result.json", p, sizeof p);
+	/* Six threads (as under -j 6) replace one file 240 times in all; the
+	 * survivor must be one writer's complete 4096 bytes. */
+	pthread_t th[6];
+	struct writer w[6];
+	for (int i = 0; i < 6; i++) {
+		w[i] = (struct writer){ p, (char)('A' + i), 0 };
+		assert_int_equal(pthread_create(&th[i], NULL, writer_main, &w[i]), 0);
+	}
+	for (int i = 0; i < 6; i++) {
+		assert_int_equal(pthread_join(th[i], NULL), 0);
+		assert_int_equal(w[i].n_fail, 0);
+	}
+	unsigned char *buf;
+	size_t n;
+	char err[256];
+	assert_int_equal(fsout_read_file(p, 1 << 20, &buf, &n, err, sizeof err), 0);
+	assert_int_equal(n, 4096);
+	assert_true(buf[0] >= 'A' && buf[0] <= 'F');
+	for (size_t i = 1; i < n; i++)
+		assert_int_equal(buf[i], buf[0]);
+	free(buf);
+	assert_int_equal(count_entries(fx->dir), 1);
+}
+
 static void
 fsout_mkdirs_should_create_every_missing_parent(void **state)
 {
@@ -363,6 +413,7 @@ main(void)
 		cmocka_unit_test_setup_teardown(fsout_write_into_missing_directory_should_fail_cleanly, setup, teardown),
 		cmocka_unit_test_setup_teardown(fsout_write_into_readonly_directory_should_keep_previous_file, setup, teardown),
 		cmocka_unit_test_setup_teardown(fsout_failed_rename_should_remove_the_temporary_file, setup, teardown),
+		cmocka_unit_test_setup_teardown(fsout_concurrent_writers_should_never_mix_or_leave_temps, setup, teardown),
 		cmocka_unit_test_setup_teardown(fsout_mkdirs_should_create_every_missing_parent, setup, teardown),
 		cmocka_unit_test_setup_teardown(fsout_read_file_should_add_a_nul_and_respect_the_cap, setup, teardown),
 		cmocka_unit_test_setup_teardown(fsout_resolve_date_should_prefer_report_then_epoch_then_mtime, setup, teardown),
