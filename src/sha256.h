@@ -1,0 +1,39 @@
+/* sha256.h — SHA-256 (FIPS 180-4), written from the standard.
+ *
+ * Used to fingerprint inputs (mission, catalogue, template) in result.json
+ * and the dossier, so a reader can tell which inputs produced an output.
+ * Any module may include this.  No allocation; a struct sha256_ctx is a
+ * plain value on the caller's stack.
+ */
+#ifndef AEROEVAL_SHA256_H
+#define AEROEVAL_SHA256_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define SHA256_DIGEST_LEN 32  /* bytes in a digest */
+#define SHA256_HEX_LEN 65     /* bytes of hex text including the NUL */
+
+struct sha256_ctx {
+	uint32_t h[8];        /* running hash value H(i) (FIPS 180-4 §6.2) */
+	uint64_t n_bytes;     /* message bytes consumed so far */
+	unsigned char block[64]; /* partial block not yet compressed */
+	size_t n_block;       /* bytes in block (0..63) */
+};
+
+/* Starts a new hash with the initial value of FIPS 180-4 §5.3.3. */
+void sha256_init(struct sha256_ctx *c);
+
+/* Adds n bytes of message; may be called any number of times with any
+ * split.  data may be NULL when n == 0. */
+void sha256_update(struct sha256_ctx *c, const void *data, size_t n);
+
+/* Pads, finishes and writes the 32-byte digest.  c must be re-initialised
+ * before it is used again. */
+void sha256_final(struct sha256_ctx *c, unsigned char out[SHA256_DIGEST_LEN]);
+
+/* One shot: the lowercase hex digest of data[0..n) into out (64 hex digits
+ * and a NUL). */
+void sha256_hex(const void *data, size_t n, char out[SHA256_HEX_LEN]);
+
+#endif

@@ -1,0 +1,131 @@
+/* test_numfmt.c — shortest round-trip and fixed-point number text. */
+#include "test_util.h"
+#include "numfmt.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void
+numfmt_shortest_should_prefer_fifteen_digits(void **state)
+{
+	(void)state;
+	char b[NUMFMT_SHORTEST_LEN];
+	assert_int_equal(numfmt_shortest(b, 0.1), 3);
+	assert_string_equal(b, "0.1");
+	numfmt_shortest(b, 2.385);
+	assert_string_equal(b, "2.385");
+	numfmt_shortest(b, -1282.0);
+	assert_string_equal(b, "-1282");
+	numfmt_shortest(b, 1e-5);
+	assert_string_equal(b, "1e-05");
+	numfmt_shortest(b, 6.02214076e23);
+	assert_string_equal(b, "6.02214076e+23");
+}
+
+static void
+numfmt_shortest_should_use_more_digits_only_when_needed(void **state)
+{
+	(void)state;
+	char b[NUMFMT_SHORTEST_LEN];
+	/* 0.1 + 0.2 = 0.30000000000000004 needs all 17 digits. */
+	numfmt_shortest(b, 0.1 + 0.2);
+	assert_string_equal(b, "0.30000000000000004");
+	/* 1/3 needs 16 digits: %.15g "0.333333333333333" is another double. */
+	numfmt_shortest(b, 1.0 / 3.0);
+	assert_string_equal(b, "0.3333333333333333");
+	/* DBL_MAX and the smallest subnormal round-trip too. */
+	numfmt_shortest(b, 1.7976931348623157e308);
+	assert_true(strtod(b, NULL) == 1.7976931348623157e308);
+	numfmt_shortest(b, 4.9406564584124654e-324);
+	assert_true(strtod(b, NULL) == 4.9406564584124654e-324);
+}
+
+static void
+numfmt_shortest_should_round_trip_many_values(void **state)
+{
+	(void)state;
+	char b[NUMFMT_SHORTEST_LEN];
+	/* A deterministic walk over many magnitudes and mantissas. */
+	double x = 0.7390851332151607;
+	for (int i = 0; i < 20000; i++) {
+		x = x * 1.6180339887498949 + 0.318309886183790671;
+		if (x > 1e12)
+			x *= 3.14159e-17;
+		int k = numfmt_shortest(b, x);
+		assert_true(k > 0 && k < NUMFMT_SHORTEST_LEN);
+		assert_true(strtod(b, NULL) == x);
+	}
+}
+
+static void
+numfmt_shortest_should_refuse_non_finite_and_unsign_zero(void **state)
+{
+	(void)state;
+	char b[NUMFMT_SHORTEST_LEN] = "junk";
+	assert_int_equal(numfmt_shortest(b, NAN), 0);
+	assert_string_equal(b, "");
+	assert_int_equal(numfmt_shortest(b, INFINITY), 0);
+	assert_int_equal(numfmt_shortest(b, -INFINITY), 0);
+	assert_string_equal(b, "");
+	assert_int_equal(numfmt_shortest(b, -0.0), 1);
+	assert_string_equal(b, "0");
+}
+
+static void
+numfmt_fixed_should_round_to_the_given_decimals(void **state)
+{
+	(void)state;
+	char b[32];
+	assert_int_equal(numfmt_fixed(b, sizeof b, 2.385, 1), 3);
+	assert_string_equal(b, "2.4");
+	numfmt_fixed(b, sizeof b, -17.3456, 2);
+	assert_string_equal(b, "-17.35");
+	numfmt_fixed(b, sizeof b, 1282.49, 0);
+	assert_string_equal(b, "1282");
+	numfmt_fixed(b, sizeof b, 0.5, -3); /* clamped to 0 decimals */
+	assert_string_equal(b, "0");
+}
+
+static void
+numfmt_fixed_should_never_print_negative_zero(void **state)
+{
+	(void)state;
+	char b[32];
+	numfmt_fixed(b, sizeof b, -0.004, 2);
+	assert_string_equal(b, "0.00");
+	numfmt_fixed(b, sizeof b, -0.0, 3);
+	assert_string_equal(b, "0.000");
+	assert_int_equal(numfmt_fixed(b, sizeof b, -0.4, 0), 1);
+	assert_string_equal(b, "0");
+	numfmt_fixed(b, sizeof b, -0.006, 2); /* rounds away from zero: keeps sign */
+	assert_string_equal(b, "-0.01");
+}
+
+static void
+numfmt_fixed_should_refuse_non_finite_and_short_buffers(void **state)
+{
+	(void)state;
+	char b[8] = "junk";
+	assert_int_equal(numfmt_fixed(b, sizeof b, NAN, 2), 0);
+	assert_string_equal(b, "");
+	assert_int_equal(numfmt_fixed(b, sizeof b, -INFINITY, 2), 0);
+	assert_int_equal(numfmt_fixed(b, sizeof b, 12345.678, 3), 0); /* 9 bytes */
+	assert_string_equal(b, "");
+	assert_int_equal(numfmt_fixed(b, 0, 1.5, 1), 0);
+}
+
+int
+main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(numfmt_shortest_should_prefer_fifteen_digits),
+		cmocka_unit_test(numfmt_shortest_should_use_more_digits_only_when_needed),
+		cmocka_unit_test(numfmt_shortest_should_round_trip_many_values),
+		cmocka_unit_test(numfmt_shortest_should_refuse_non_finite_and_unsign_zero),
+		cmocka_unit_test(numfmt_fixed_should_round_to_the_given_decimals),
+		cmocka_unit_test(numfmt_fixed_should_never_print_negative_zero),
+		cmocka_unit_test(numfmt_fixed_should_refuse_non_finite_and_short_buffers),
+	};
+	return cmocka_run_group_tests_name("numfmt", tests, NULL, NULL);
+}
