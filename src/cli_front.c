@@ -17,7 +17,7 @@
 
 /* The chemistry names of data/chemistries.json
  * ({"chemistries":[{"name":"LiPo",...},...]}), NULL-terminated, or NULL
- * when the file is missing or unreadable: then battery_chemistry is not
+ * when the file is missing, unreadable or names nothing: then battery_chemistry is not
  * checked against it (the engine's own loader reports a broken file).
  * Stands in until the data layer's chemistry loader is merged.
  * Ownership: free with cli_free_names(). */
@@ -48,6 +48,11 @@ cli_chemistry_names(void)
 			const cJSON *nm = cJSON_GetObjectItemCaseSensitive(c, "name");
 			if (cJSON_IsString(nm))
 				names[n++] = xstrdup(nm->valuestring);
+		}
+		if (n == 0) {
+			/* No usable names: better no check than rejecting all. */
+			free(names);
+			names = NULL;
 		}
 	}
 	cJSON_Delete(root);

@@ -279,6 +279,25 @@ jp_add_entry(struct jp_scan *s, int key_line, int key_col)
 
 static void jp_value(struct jp_scan *s, int key_line, int key_col);
 
+/* After a member or element: consume a comma and return true (another one
+ * follows), or consume the closing bracket and return false.  Anything else
+ * is malformed: mark it and return false. */
+static bool
+jp_next(struct jp_scan *s, char close)
+{
+	jp_skip_ws(s);
+	if (jp_at(s, ',')) {
+		jp_adv(s);
+		jp_skip_ws(s);
+		return true;
+	}
+	if (jp_at(s, close))
+		jp_adv(s);
+	else
+		s->failed = true;
+	return false;
+}
+
 static void
 jp_object(struct jp_scan *s)
 {
@@ -308,16 +327,8 @@ jp_object(struct jp_scan *s)
 		jp_str_put(&s->path, s->key.s != NULL ? s->key.s : "", s->key.len);
 		jp_value(s, kl, kc);
 		jp_str_truncate(&s->path, base);
-		jp_skip_ws(s);
-		if (jp_at(s, ',')) {
-			jp_adv(s);
-			jp_skip_ws(s);
-		} else if (jp_at(s, '}')) {
-			jp_adv(s);
+		if (!jp_next(s, '}'))
 			return;
-		} else {
-			s->failed = true;
-		}
 	}
 }
 
@@ -337,16 +348,8 @@ jp_array(struct jp_scan *s)
 		jp_str_put(&s->path, idx, (size_t)n);
 		jp_value(s, 0, 0);
 		jp_str_truncate(&s->path, base);
-		jp_skip_ws(s);
-		if (jp_at(s, ',')) {
-			jp_adv(s);
-			jp_skip_ws(s);
-		} else if (jp_at(s, ']')) {
-			jp_adv(s);
+		if (!jp_next(s, ']'))
 			return;
-		} else {
-			s->failed = true;
-		}
 	}
 }
 

@@ -120,6 +120,39 @@ mio_join(const char *const *list, char *buf, size_t n)
 
 /* ---- value checks -------------------------------------------------------- */
 
+/* True when s is a number as JSON spells it: -?(0|[1-9][0-9]*)(.[0-9]+)?
+ * ([eE][+-]?[0-9]+)?.  cJSON also takes "012" and "1." (STACK.md §7); a
+ * strict parser does not. */
+static bool
+mio_json_number_ok(const char *s)
+{
+	if (*s == '-')
+		s++;
+	if (*s == '0')
+		s++;
+	else if (*s >= '1' && *s <= '9')
+		while (*s >= '0' && *s <= '9')
+			s++;
+	else
+		return false;
+	if (*s == '.') {
+		if (!(*++s >= '0' && *s <= '9'))
+			return false;
+		while (*s >= '0' && *s <= '9')
+			s++;
+	}
+	if (*s == 'e' || *s == 'E') {
+		s++;
+		if (*s == '+' || *s == '-')
+			s++;
+		if (!(*s >= '0' && *s <= '9'))
+			return false;
+		while (*s >= '0' && *s <= '9')
+			s++;
+	}
+	return *s == '\0';
+}
+
 /* A finite number within the field's range, else a diagnostic. */
 static bool
 mio_check_number(const struct mio *m, const struct spec_field_info *f,
@@ -130,6 +163,12 @@ mio_check_number(const struct mio *m, const struct spec_field_info *f,
 	double v = item->valuedouble;
 
 	mio_source(m, path, nth, src, sizeof src);
+	if (!mio_json_number_ok(src)) {
+		char q[96];
+		diag_quote(src, strlen(src), 32, q, sizeof q);
+		diag_report(m->dg, DIAG_SYNTAX, &loc, NULL, " near %s (not a JSON number)", q);
+		return false;
+	}
 	if (!isfinite(v)) {
 		diag_report(m->dg, DIAG_OVERFLOW, &loc, path, ": %s", src);
 		return false;

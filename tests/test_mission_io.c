@@ -469,6 +469,21 @@ mission_io_should_report_syntax_errors_near_their_position(void **state)
 }
 
 static void
+mission_io_should_reject_numbers_cjson_tolerates(void **state)
+{
+	(void)state;
+	struct mission_spec s;
+	expect("{\"num_rotors\": 012, \"payload_kg\": 1.,\n \"t_hover_s\": -00}",
+	       "m.json:1:16: error: malformed JSON near \"012\" (not a JSON number)\n"
+	       "m.json:1:35: error: malformed JSON near \"1.\" (not a JSON number)\n"
+	       "m.json:2:15: error: malformed JSON near \"-00\" (not a JSON number)\n", 3);
+	parse_ok("{\"payload_kg\": 0.5, \"t_hover_s\": 1.2E+3, \"ambient_temp_c\": -0, "
+	         "\"altitude_m\": 1e-2}", &s);
+	assert_rel(s.t_hover_s, 1200, 0);
+	assert_rel(s.altitude_m, 0.01, 0);
+}
+
+static void
 mission_io_should_report_trailing_garbage_and_keep_checking(void **state)
 {
 	(void)state;
@@ -697,6 +712,7 @@ main(void)
 		cmocka_unit_test(mission_io_should_reject_impossible_dates),
 		cmocka_unit_test(mission_io_should_reject_numbers_that_overflow),
 		cmocka_unit_test(mission_io_should_report_syntax_errors_near_their_position),
+		cmocka_unit_test(mission_io_should_reject_numbers_cjson_tolerates),
 		cmocka_unit_test(mission_io_should_report_trailing_garbage_and_keep_checking),
 		cmocka_unit_test(mission_io_should_reject_a_group_that_is_not_an_object),
 		cmocka_unit_test(mission_io_should_reject_a_top_level_that_is_not_an_object),
