@@ -17,8 +17,9 @@
 
 /* The chemistry names of data/chemistries.json
  * ({"chemistries":[{"name":"LiPo",...},...]}), NULL-terminated, or NULL
- * when the file is missing, unreadable or names nothing: then battery_chemistry is not
- * checked against it (the engine's own loader reports a broken file).
+ * when the file is missing, unreadable or names nothing: then
+ * battery_chemistry is not checked against it (the engine's own loader
+ * reports a broken file).
  * Stands in until the data layer's chemistry loader is merged.
  * Ownership: free with cli_free_names(). */
 static char **

@@ -232,6 +232,28 @@ mio_date_ok(const char *s)
 	return d <= mdays[mo - 1] + (mo == 2 && mio_leap(y));
 }
 
+/* False (with a diagnostic) when the source text of the string value at
+ * path holds an unescaped control character, e.g. a literal TAB. */
+static bool
+mio_no_raw_controls(const struct mio *m, const char *path, int nth)
+{
+	const struct json_pos_entry *e = json_pos_find(m->jp, path, nth);
+	if (e == NULL)
+		return true;
+	for (size_t i = e->val_off; i < e->val_end; i++) {
+		unsigned char c = (unsigned char)m->buf[i];
+		if (c < 0x20) {
+			struct diag_loc loc = { m->file, 0, 0 };
+			json_pos_line_col(m->buf, m->len, i, &loc.line, &loc.col);
+			diag_report(m->dg, DIAG_SYNTAX, &loc, NULL,
+			            " near byte 0x%02x (control characters in strings "
+			            "must be escaped)", c);
+			return false;
+		}
+	}
+	return true;
+}
+
 /* Check item against field f and store it in m->out.  Returns true when
  * the value was valid and stored. */
 static bool
@@ -241,6 +263,11 @@ mio_field(struct mio *m, const struct spec_field_info *f, const cJSON *item,
 	struct diag_loc loc = mio_loc(m, path, nth, false);
 	void *p = spec_member(m->out, f);
 	char q[96], list[512];
+
+	/* cJSON lets raw control characters through inside strings; JSON
+	 * requires them escaped. */
+	if (cJSON_IsString(item) && !mio_no_raw_controls(m, path, nth))
+		return false;
 
 	/* The one type that accepts two JSON types. */
 	if (f->type == SPEC_SPEED && cJSON_IsString(item)) {

@@ -484,6 +484,20 @@ mission_io_should_reject_numbers_cjson_tolerates(void **state)
 }
 
 static void
+mission_io_should_reject_raw_control_characters_in_strings(void **state)
+{
+	(void)state;
+	struct mission_spec s;
+	expect("{\"name\": \"a\tb\",\n \"report\": {\"title\": \"two\nlines\"}}",
+	       "m.json:1:12: error: malformed JSON near byte 0x09 (control characters in "
+	       "strings must be escaped)\n"
+	       "m.json:2:26: error: malformed JSON near byte 0x0a (control characters in "
+	       "strings must be escaped)\n", 2);
+	parse_ok("{\"name\": \"a\\tb\"}", &s); /* escaped: fine */
+	assert_string_equal(s.name, "a\tb");
+}
+
+static void
 mission_io_should_report_trailing_garbage_and_keep_checking(void **state)
 {
 	(void)state;
@@ -713,6 +727,7 @@ main(void)
 		cmocka_unit_test(mission_io_should_reject_numbers_that_overflow),
 		cmocka_unit_test(mission_io_should_report_syntax_errors_near_their_position),
 		cmocka_unit_test(mission_io_should_reject_numbers_cjson_tolerates),
+		cmocka_unit_test(mission_io_should_reject_raw_control_characters_in_strings),
 		cmocka_unit_test(mission_io_should_report_trailing_garbage_and_keep_checking),
 		cmocka_unit_test(mission_io_should_reject_a_group_that_is_not_an_object),
 		cmocka_unit_test(mission_io_should_reject_a_top_level_that_is_not_an_object),
