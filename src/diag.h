@@ -47,6 +47,7 @@ X(BAD_ENUM,     DIAG_ERROR, 2, "unknown value") \
 X(BAD_CHEMISTRY, DIAG_ERROR, 2, "unknown battery chemistry") \
 X(TOO_LONG,     DIAG_ERROR, 2, "string too long") \
 X(BAD_UTF8,     DIAG_ERROR, 2, "string is not valid UTF-8") \
+X(NUL_IN_STRING, DIAG_ERROR, 2, "string contains a NUL character") \
 X(BAD_DATE,     DIAG_ERROR, 2, "invalid date") \
 X(INTERNAL,     DIAG_ERROR, 3, "internal error")
 

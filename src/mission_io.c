@@ -233,23 +233,33 @@ mio_date_ok(const char *s)
 }
 
 /* False (with a diagnostic) when the source text of the string value at
- * path holds an unescaped control character, e.g. a literal TAB. */
+ * path holds what cJSON lets through or loses: an unescaped control
+ * character (e.g. a literal TAB), or an escaped NUL (\u0000), at which
+ * cJSON's C string silently ends. */
 static bool
-mio_no_raw_controls(const struct mio *m, const char *path, int nth)
+mio_string_source_ok(const struct mio *m, const char *path, int nth)
 {
 	const struct json_pos_entry *e = json_pos_find(m->jp, path, nth);
 	if (e == NULL)
 		return true;
 	for (size_t i = e->val_off; i < e->val_end; i++) {
 		unsigned char c = (unsigned char)m->buf[i];
+		struct diag_loc loc = { m->file, 0, 0 };
 		if (c < 0x20) {
-			struct diag_loc loc = { m->file, 0, 0 };
 			json_pos_line_col(m->buf, m->len, i, &loc.line, &loc.col);
 			diag_report(m->dg, DIAG_SYNTAX, &loc, NULL,
 			            " near byte 0x%02x (control characters in strings "
 			            "must be escaped)", c);
 			return false;
 		}
+		if (c != '\\')
+			continue;
+		if (e->val_end - i >= 6 && memcmp(m->buf + i, "\\u0000", 6) == 0) {
+			loc = mio_loc(m, path, nth, false);
+			diag_report(m->dg, DIAG_NUL_IN_STRING, &loc, path, " (\\u0000)");
+			return false;
+		}
+		i++; /* skip the escaped character, so JSON "\\u0000" stays text */
 	}
 	return true;
 }
@@ -264,9 +274,7 @@ mio_field(struct mio *m, const struct spec_field_info *f, const cJSON *item,
 	void *p = spec_member(m->out, f);
 	char q[96], list[512];
 
-	/* cJSON lets raw control characters through inside strings; JSON
-	 * requires them escaped. */
-	if (cJSON_IsString(item) && !mio_no_raw_controls(m, path, nth))
+	if (cJSON_IsString(item) && !mio_string_source_ok(m, path, nth))
 		return false;
 
 	/* The one type that accepts two JSON types. */

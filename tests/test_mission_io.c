@@ -495,6 +495,10 @@ mission_io_should_reject_raw_control_characters_in_strings(void **state)
 	       "strings must be escaped)\n", 2);
 	parse_ok("{\"name\": \"a\\tb\"}", &s); /* escaped: fine */
 	assert_string_equal(s.name, "a\tb");
+	expect("{\"report\": {\"title\": \"ab\\u0000cd\"}}",
+	       "m.json:1:22: error: report.title: string contains a NUL character (\\u0000)\n", 1);
+	parse_ok("{\"name\": \"x\\\\u0000\"}", &s); /* an escaped backslash, then text */
+	assert_string_equal(s.name, "x\\u0000");
 }
 
 static void
