@@ -2,6 +2,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_front.h"
+
 int
 main(int argc, char **argv)
 {
@@ -9,6 +11,10 @@ main(int argc, char **argv)
 		printf("aeroeval %s\n", AEROEVAL_VERSION);
 		return 0;
 	}
+	if (argc >= 2 && strcmp(argv[1], "check") == 0)
+		return cli_check(argc - 1, argv + 1);
+	if (argc >= 2 && strcmp(argv[1], "schema") == 0)
+		return cli_schema(argc - 1, argv + 1);
 	fprintf(stderr, "usage: aeroeval build|solve|check|schema|validate|calibrate|sensitivity ...\n");
 	return 2;
 }

@@ -1,0 +1,201 @@
+/* test_json_pos.c — the path -> line:col index and offset conversion. */
+#include "test_util.h"
+#include "json_pos.h"
+
+#include <string.h>
+
+static const struct json_pos_entry *
+find(const struct json_pos *jp, const char *path, int nth)
+{
+	const struct json_pos_entry *e = json_pos_find(jp, path, nth);
+	if (e == NULL)
+		fail_msg("no entry for %s #%d", path, nth);
+	return e;
+}
+
+static void
+json_pos_should_index_keys_and_values_of_nested_objects(void **state)
+{
+	(void)state;
+	const char *t =
+		"{\n"
+		"  \"payload_kg\": 2.385,\n"
+		"  \"locks\": {\n"
+		"    \"is_motor_locked\": true,\n"
+		"    \"locked_kv\":       920\n"
+		"  }\n"
+		"}\n";
+	struct json_pos *jp = json_pos_alloc(t, strlen(t));
+	const struct json_pos_entry *e = find(jp, "", 0);
+	assert_int_equal(e->val_line, 1);
+	assert_int_equal(e->val_col, 1);
+	assert_int_equal(e->key_line, 0);
+	e = find(jp, "payload_kg", 0);
+	assert_int_equal(e->key_line, 2);
+	assert_int_equal(e->key_col, 3);
+	assert_int_equal(e->val_line, 2);
+	assert_int_equal(e->val_col, 17);
+	assert_int_equal(e->val_end - e->val_off, 5);
+	assert_memory_equal(t + e->val_off, "2.385", 5);
+	e = find(jp, "locks.locked_kv", 0);
+	assert_int_equal(e->key_line, 5);
+	assert_int_equal(e->key_col, 5);
+	assert_int_equal(e->val_line, 5);
+	assert_int_equal(e->val_col, 24);
+	e = find(jp, "locks", 0);
+	assert_int_equal(e->val_line, 3);
+	assert_int_equal(e->val_col, 12);
+	assert_int_equal(t[e->val_end - 1], '}');
+	assert_int_equal(json_pos_count(jp), 5);
+	assert_string_equal(json_pos_entry_at(jp, 2)->path, "locks");
+	assert_null(json_pos_entry_at(jp, 5));
+	assert_null(json_pos_find(jp, "locked_kv", 0));
+	json_pos_free(jp);
+}
+
+static void
+json_pos_should_name_array_elements_by_index(void **state)
+{
+	(void)state;
+	const char *t = "{\"a\": [10, {\"b\": [true, null]}, \"s\", [], {}, -1e3]}";
+	struct json_pos *jp = json_pos_alloc(t, strlen(t));
+	assert_int_equal(find(jp, "a[0]", 0)->val_col, 8);
+	assert_int_equal(find(jp, "a[1].b[1]", 0)->val_col, 25);
+	assert_int_equal(find(jp, "a[2]", 0)->val_col, 33);
+	const struct json_pos_entry *e = find(jp, "a[5]", 0);
+	assert_int_equal(e->val_col, 46);
+	assert_memory_equal(t + e->val_off, "-1e3", e->val_end - e->val_off);
+	assert_int_equal(find(jp, "a[3]", 0)->key_line, 0);
+	json_pos_free(jp);
+}
+
+static void
+json_pos_should_count_characters_not_bytes(void **state)
+{
+	(void)state;
+	/* "é" and "°" are two bytes each, "€" three: one column each. */
+	const char *t = "{\"t\": \"\xc3\xa9\xc2\xb0\xe2\x82\xac\", \"x\": 1}";
+	struct json_pos *jp = json_pos_alloc(t, strlen(t));
+	assert_int_equal(find(jp, "x", 0)->key_col, 14);
+	assert_int_equal(find(jp, "x", 0)->val_col, 19);
+	int line, col;
+	json_pos_line_col(t, strlen(t), (size_t)(strstr(t, "1}") - t), &line, &col);
+	assert_int_equal(line, 1);
+	assert_int_equal(col, 19);
+	json_pos_free(jp);
+}
+
+static void
+json_pos_should_keep_every_duplicate_in_order(void **state)
+{
+	(void)state;
+	const char *t = "{\"k\": 1,\n \"k\": 2,\n  \"k\": 3}";
+	struct json_pos *jp = json_pos_alloc(t, strlen(t));
+	assert_int_equal(find(jp, "k", 0)->key_line, 1);
+	assert_int_equal(find(jp, "k", 1)->key_line, 2);
+	assert_int_equal(find(jp, "k", 1)->key_col, 2);
+	assert_int_equal(find(jp, "k", 2)->key_col, 3);
+	assert_null(json_pos_find(jp, "k", 3));
+	json_pos_free(jp);
+}
+
+static void
+json_pos_should_decode_escaped_keys_like_cjson(void **state)
+{
+	(void)state;
+	const char *t = "{\"a\\u00e9\\\"b\\n\": 1, \"\\ud83d\\ude00\": 2, \"q\": \"x\\\"}y\"}";
+	struct json_pos *jp = json_pos_alloc(t, strlen(t));
+	assert_non_null(json_pos_find(jp, "a\xc3\xa9\"b\n", 0));
+	assert_non_null(json_pos_find(jp, "\xf0\x9f\x98\x80", 0));
+	const struct json_pos_entry *e = find(jp, "q", 0);
+	assert_int_equal(e->val_end - e->val_off, 7); /* "x\"}y" */
+	json_pos_free(jp);
+}
+
+static void
+json_pos_should_skip_a_byte_order_mark(void **state)
+{
+	(void)state;
+	const char *t = "\xef\xbb\xbf{\"a\": 1}";
+	struct json_pos *jp = json_pos_alloc(t, strlen(t));
+	assert_int_equal(find(jp, "", 0)->val_col, 1);
+	assert_int_equal(find(jp, "a", 0)->key_col, 2);
+	int line, col;
+	json_pos_line_col(t, strlen(t), 4, &line, &col);
+	assert_int_equal(col, 2);
+	json_pos_free(jp);
+}
+
+static void
+json_pos_should_stop_quietly_on_malformed_text(void **state)
+{
+	(void)state;
+	const char *bad[] = { "", "{", "{\"a\" 1}", "{\"a\": [1 2]}", "{\"a\":", "[\"\\x\"]", "{\"a\": \"unterminated" };
+	for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+		struct json_pos *jp = json_pos_alloc(bad[i], strlen(bad[i]));
+		assert_non_null(jp);
+		json_pos_free(jp);
+	}
+	/* The part before the error is indexed. */
+	const char *t = "{\"a\": 1, \"b\": [2, }";
+	struct json_pos *jp = json_pos_alloc(t, strlen(t));
+	assert_non_null(json_pos_find(jp, "b[0]", 0));
+	json_pos_free(jp);
+	json_pos_free(NULL);
+}
+
+static void
+json_pos_line_col_should_follow_newlines_and_clamp(void **state)
+{
+	(void)state;
+	const char *t = "ab\ncd\n\nxyz";
+	int line, col;
+	json_pos_line_col(t, strlen(t), 0, &line, &col);
+	assert_int_equal(line, 1);
+	assert_int_equal(col, 1);
+	json_pos_line_col(t, strlen(t), 4, &line, &col);
+	assert_int_equal(line, 2);
+	assert_int_equal(col, 2);
+	json_pos_line_col(t, strlen(t), 9, &line, &col);
+	assert_int_equal(line, 4);
+	assert_int_equal(col, 3);
+	json_pos_line_col(t, strlen(t), 999, &line, &col);
+	assert_int_equal(line, 4);
+	assert_int_equal(col, 4);
+}
+
+static void
+json_pos_utf8_seq_should_reject_invalid_sequences(void **state)
+{
+	(void)state;
+	assert_int_equal(json_pos_utf8_seq("a", 1), 1);
+	assert_int_equal(json_pos_utf8_seq("\xc3\xa9", 2), 2);
+	assert_int_equal(json_pos_utf8_seq("\xe2\x82\xac", 3), 3);
+	assert_int_equal(json_pos_utf8_seq("\xf0\x9f\x98\x80", 4), 4);
+	assert_int_equal(json_pos_utf8_seq("\xc3\xa9", 1), 0);       /* cut short */
+	assert_int_equal(json_pos_utf8_seq("\x80", 1), 0);           /* lone continuation */
+	assert_int_equal(json_pos_utf8_seq("\xc0\xaf", 2), 0);       /* overlong '/' */
+	assert_int_equal(json_pos_utf8_seq("\xe0\x80\xaf", 3), 0);   /* overlong */
+	assert_int_equal(json_pos_utf8_seq("\xed\xa0\x80", 3), 0);   /* surrogate */
+	assert_int_equal(json_pos_utf8_seq("\xf4\x90\x80\x80", 4), 0); /* > U+10FFFF */
+	assert_int_equal(json_pos_utf8_seq("\xff", 1), 0);
+	assert_int_equal(json_pos_utf8_seq("\xc3(", 2), 0);
+	assert_int_equal(json_pos_utf8_seq("", 0), 0);
+}
+
+int
+main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(json_pos_should_index_keys_and_values_of_nested_objects),
+		cmocka_unit_test(json_pos_should_name_array_elements_by_index),
+		cmocka_unit_test(json_pos_should_count_characters_not_bytes),
+		cmocka_unit_test(json_pos_should_keep_every_duplicate_in_order),
+		cmocka_unit_test(json_pos_should_decode_escaped_keys_like_cjson),
+		cmocka_unit_test(json_pos_should_skip_a_byte_order_mark),
+		cmocka_unit_test(json_pos_should_stop_quietly_on_malformed_text),
+		cmocka_unit_test(json_pos_line_col_should_follow_newlines_and_clamp),
+		cmocka_unit_test(json_pos_utf8_seq_should_reject_invalid_sequences),
+	};
+	return cmocka_run_group_tests_name("json_pos", tests, NULL, NULL);
+}
