@@ -164,9 +164,10 @@ struct res_run {
 	double arm_stress_mpa;
 	double arm_stress_allow_mpa;
 	double arm_natural_frequency_hz;
-	double blade_pass_frequency_hz;
-	double resonance_margin;   /* f_nat / (1.5 f_bpf) - 1 */
-	bool arm_stiffness_binds;
+	double blade_pass_frequency_hz; /* at full-throttle rpm */
+	double blade_pass_low_hz;  /* at the lowest in-flight rpm (0.7 × hover) */
+	double resonance_margin;   /* >= 0: mode clear of the band (structure.h) */
+	double arm_tip_mass_kg;    /* motor(s) + propeller(s) at one arm tip */
 	bool arm_wall_floor_binds;
 	bool min_fraction_binds;
 

@@ -293,16 +293,15 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	e->mass.motor_kg = motor_total;
 	e->mass.prop_kg = prop_each * (double)nr;
 
-	/* Arms: strength at max(load factor × CG thrust, full thrust), then
-	 * stiffness against 1.5 × blade-pass frequency. */
+	/* Arms: strength at max(load factor × CG thrust, full thrust); the
+	 * resonance is checked afterwards (feasibility.c). */
 	double arm_len = 0.5 * p->wheelbase_m;
 	double t_cg;
 	e->cg_ok = structure_cg_thrust_n(mass_kg, nr, arm_len, p->cg_shift_m, &t_cg);
 	double per_arm = p->coaxial ? 2.0 : 1.0;
 	double force = fmax(p->load_factor * t_cg, e->t_peak_n) * per_arm;
 	double tip_kg = (motor_total / (double)nr + prop_each) * per_arm;
-	double f_bpf = (double)p->n_blades * e->rps_peak;
-	structure_size_arm(force, arm_len, p->alpha_w, tip_kg, f_bpf, &e->arm);
+	structure_size_arm(force, arm_len, p->alpha_w, tip_kg, &e->arm);
 	double arms = (double)n_arms(p) * e->arm.mass_kg;
 	double floor_kg = mass_kg * structure_min_fraction(p->wheelbase_m) / p->c_body;
 	e->min_fraction_binds = floor_kg > arms;
@@ -404,32 +403,26 @@ seed_cells(const struct sizing_params *p, int lo, int hi, double mass_kg,
 	return ls->cells;
 }
 
-/* Run the fixed-point iteration at a given goal-relaxation factor. */
+/* The fixed-point iteration with the series-cell count held at `cells`. */
 static enum sizing_status
-iterate(const struct sizing_params *p, int cells_lo, int cells_hi,
-        double gamma_time, struct res_run *out, struct eval *last,
-        double *m_star, double *c_star, struct loop_state *ls_out)
+iterate_cells(const struct sizing_params *p, int cells, double gamma_time,
+              struct res_run *out, struct eval *last, double *m_star,
+              double *c_star, struct loop_state *ls_out)
 {
-	struct loop_state ls = { 0, 0.0, gamma_time };
+	struct loop_state ls = { cells, 0.02 * p->wheelbase_m, gamma_time };
 	double m = sizing_seed_kg(p->payload_kg, p->air.rho_kg_m3);
-	bool auto_cells = p->cells_fixed <= 0 && !p->kv_locked
-	    && !(p->parts.active && p->parts.cells > 0);
-	ls.cells = p->cells_fixed > 0 ? p->cells_fixed
-	    : seed_cells(p, cells_lo, cells_hi, m, &ls);
-	ls.arm_width_m = 0.02 * p->wheelbase_m;
 	double c = p->capacity_locked ? p->capacity_locked_ah
 	    : seed_capacity_ah(p, &ls, m);
 	double c_failed = 0.0;
 	int max_iter = p->max_iter > 0 ? p->max_iter : SIZING_MAX_ITER;
 	enum sizing_status st = SIZING_MAX_ITERATIONS;
 
-	out->n_history = 0;
 	for (int k = 1; k <= max_iter; k++) {
 		evaluate(p, &ls, m, c, LOOP_STEPS, NULL, last);
 		double f = last->mass.total_kg;
 		if (out->n_history < RES_MAX_HISTORY)
 			out->history_kg[out->n_history++] = f;
-		out->iterations = k;
+		out->iterations++;
 		bool flown = last->dis.end == DIS_COMPLETED;
 		if (!flown && last->capacity_ah > c_failed)
 			c_failed = last->capacity_ah;
@@ -445,28 +438,73 @@ iterate(const struct sizing_params *p, int cells_lo, int cells_hi,
 			st = SIZING_RUNAWAY;
 			break;
 		}
-		/* The next iteration sees this one's arm and cell count. */
+		/* The next iteration sees this one's arm (rotor-arm interference). */
 		ls.arm_width_m = last->arm.d_out_m;
-		if (auto_cells)
-			ls.cells = sizing_auto_cells(last->peak.electrical_w, f,
-			    p->chem->v_nom, cells_lo, cells_hi);
 		bool cap_steady = p->capacity_locked
+		    || (p->parts.active && p->parts.battery_kg > 0.0)
 		    || fabs(c - c_used) <= 1e-4 * c_used;
 		if (fabs(f - m) < SIZING_TOL_KG && cap_steady) {
 			m = f;
 			st = flown ? SIZING_CONVERGED : SIZING_DISCHARGE_FAIL;
 			break;
 		}
-		/* With a locked battery the capacity cannot grow: stop once the
-		 * mass has settled and report the failed discharge. */
 		m = f;
 	}
-	if (st == SIZING_MAX_ITERATIONS && p->capacity_locked
-	    && last->dis.end != DIS_COMPLETED)
+	if (st == SIZING_MAX_ITERATIONS && last->dis.end != DIS_COMPLETED
+	    && (p->capacity_locked || p->parts.active))
 		st = SIZING_DISCHARGE_FAIL;
 	*m_star = m;
-	*c_star = p->capacity_locked ? p->capacity_locked_ah : last->capacity_ah;
+	*c_star = last->capacity_ah;
 	*ls_out = ls;
+	return st;
+}
+
+/* Outer loop over the series-cell count: converge the mass at fixed cells,
+ * re-apply the current-budget rule at the fixed point, and repeat until the
+ * rule agrees.  Integer cell counts can cycle (paper §II-D: step
+ * discontinuities); on a repeat the higher count, with the lower current,
+ * is kept. */
+#define CELL_PASSES 6
+
+static enum sizing_status
+iterate(const struct sizing_params *p, int cells_lo, int cells_hi,
+        double gamma_time, struct res_run *out, struct eval *last,
+        double *m_star, double *c_star, struct loop_state *ls_out)
+{
+	out->n_history = 0;
+	out->iterations = 0;
+	bool auto_cells = p->cells_fixed <= 0 && !p->kv_locked
+	    && !(p->parts.active && p->parts.cells > 0);
+	if (!auto_cells) {
+		int cells = p->cells_fixed > 0 ? p->cells_fixed : 1;
+		if (p->parts.active && p->parts.cells > 0)
+			cells = p->parts.cells;
+		return iterate_cells(p, cells, gamma_time, out, last, m_star,
+		    c_star, ls_out);
+	}
+	struct loop_state seed = { cells_lo, 0.02 * p->wheelbase_m, gamma_time };
+	int cells = seed_cells(p, cells_lo, cells_hi,
+	    sizing_seed_kg(p->payload_kg, p->air.rho_kg_m3), &seed);
+	bool tried[32] = { false };
+	enum sizing_status st = SIZING_MAX_ITERATIONS;
+	for (int pass = 0; pass < CELL_PASSES; pass++) {
+		tried[cells] = true;
+		st = iterate_cells(p, cells, gamma_time, out, last, m_star, c_star,
+		    ls_out);
+		if (st == SIZING_RUNAWAY)
+			break;
+		int want = sizing_auto_cells(last->peak.electrical_w, *m_star,
+		    p->chem->v_nom, cells_lo, cells_hi);
+		if (want == cells)
+			break;
+		if (tried[want]) {
+			if (want > cells)
+				st = iterate_cells(p, want, gamma_time, out, last,
+				    m_star, c_star, ls_out);
+			break;
+		}
+		cells = want;
+	}
 	return st;
 }
 
@@ -563,10 +601,12 @@ record_run(const struct sizing_params *p, const struct eval *e,
 	out->arm_stress_allow_mpa = structure_sigma_allow_pa() / 1e6;
 	out->arm_natural_frequency_hz = e->arm.f_nat_hz;
 	out->blade_pass_frequency_hz = (double)p->n_blades * e->rps_peak;
-	out->resonance_margin = out->blade_pass_frequency_hz > 0.0
-	    ? e->arm.f_nat_hz / (STRUCT_RESONANCE_MARGIN * out->blade_pass_frequency_hz) - 1.0
-	    : 0.0;
-	out->arm_stiffness_binds = e->arm.stiffness_binds;
+	out->blade_pass_low_hz = (double)p->n_blades * SIZING_LOW_FLIGHT_RPM
+	    * e->rps_hover;
+	out->resonance_margin = structure_resonance_margin(e->arm.f_nat_hz,
+	    out->blade_pass_low_hz, out->blade_pass_frequency_hz);
+	out->arm_tip_mass_kg = (e->mass.motor_kg / (double)p->n_rotors
+	    + e->mass.prop_kg / (double)p->n_rotors) * (p->coaxial ? 2.0 : 1.0);
 	out->arm_wall_floor_binds = e->arm.wall_floor_binds;
 	out->min_fraction_binds = e->min_fraction_binds;
 

@@ -37,6 +37,7 @@
 #define SIZING_ESC_RATING       1.2    /* ESC rating over the peak current */
 #define SIZING_PROP_EXPONENT    2.2    /* blade mass ~ D^2.2 */
 #define SIZING_CURRENT_BUDGET_A 60.0   /* bus current budget at 1 kg, A (× sqrt(M)) */
+#define SIZING_LOW_FLIGHT_RPM   0.7    /* lowest in-flight rpm / hover rpm (descent) */
 #define SIZING_WINDING_RISE_K   40.0   /* winding above ambient at hover, K (assumed) */
 
 /* What the loop stopped on. */

@@ -3,10 +3,6 @@
 
 #include "units.h"
 
-/* Stiffening search: diameter growth per step and the most steps taken. */
-#define STIFFEN_STEP   1.02
-#define STIFFEN_MAX    400
-
 double
 structure_sigma_allow_pa(void)
 {
@@ -73,31 +69,27 @@ tube_section(double d_out, double alpha_w, double length_m,
 
 void
 structure_size_arm(double force_n, double length_m, double alpha_w,
-                   double tip_mass_kg, double f_bpf_hz,
-                   struct structure_arm *out)
+                   double tip_mass_kg, struct structure_arm *out)
 {
 	out->length_m = length_m;
 	out->root_moment_nm = force_n * length_m;
-	/* Paper eq. (dout). */
+	/* Paper eq. (dout).  With the wall floor the same diameter has a
+	 * thicker wall and so a lower stress: the strength sizing stays valid. */
 	double a4 = alpha_w * alpha_w * alpha_w * alpha_w;
 	double d = cbrt(32.0 * out->root_moment_nm
 	    / (M_PI * (1.0 - a4) * structure_sigma_allow_pa()));
-	out->d_out_strength_m = d;
-	out->stiffness_binds = false;
 	tube_section(d, alpha_w, length_m, out);
-	/* With the wall floor, the same diameter has a thicker wall and so a
-	 * lower stress; the strength sizing stays valid. */
-	if (f_bpf_hz > 0.0) {
-		double need = STRUCT_RESONANCE_MARGIN * f_bpf_hz;
-		for (int i = 0; i < STIFFEN_MAX; i++) {
-			out->f_nat_hz = structure_natural_freq_hz(out->i_x_m4, length_m,
-			    tip_mass_kg, STRUCT_RHO_CF_KG_M3 * out->area_m2);
-			if (out->f_nat_hz >= need)
-				break;
-			out->stiffness_binds = true;
-			tube_section(out->d_out_m * STIFFEN_STEP, alpha_w, length_m, out);
-		}
-	}
 	out->f_nat_hz = structure_natural_freq_hz(out->i_x_m4, length_m,
 	    tip_mass_kg, STRUCT_RHO_CF_KG_M3 * out->area_m2);
+}
+
+double
+structure_resonance_margin(double f_nat_hz, double f_bpf_low_hz,
+                           double f_bpf_peak_hz)
+{
+	if (!(f_nat_hz > 0.0))
+		return -1.0;
+	double stiff = f_nat_hz / (STRUCT_RESONANCE_MARGIN * f_bpf_peak_hz) - 1.0;
+	double soft = (f_bpf_low_hz / STRUCT_RESONANCE_MARGIN) / f_nat_hz - 1.0;
+	return stiff > soft ? stiff : soft;
 }

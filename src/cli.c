@@ -1,0 +1,80 @@
+/* cli.c — shared command set-up (see cli.h). */
+#include "cli.h"
+
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "catalog.h"
+#include "model_io.h"
+
+static int
+is_dir_with(const char *dir, const char *file)
+{
+	char path[4200];
+	struct stat st;
+	snprintf(path, sizeof path, "%s/%s", dir, file);
+	return stat(path, &st) == 0;
+}
+
+void
+cli_data_dir(char *out, size_t n)
+{
+	const char *env = getenv("AEROEVAL_DATA");
+	if (env != NULL && *env != '\0') {
+		snprintf(out, n, "%s", env);
+		return;
+	}
+	char exe[PATH_MAX];
+	ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
+	if (len > 0) {
+		exe[len] = '\0';
+		char *slash = strrchr(exe, '/');
+		if (slash != NULL) {
+			*slash = '\0';
+			/* build/aeroeval -> ../data; bin/aeroeval -> ../share/aeroeval/data */
+			static const char *const rel[] = { "/../data",
+				"/../share/aeroeval/data", "/data", NULL };
+			for (int i = 0; rel[i] != NULL; i++) {
+				char cand[PATH_MAX + 32];
+				snprintf(cand, sizeof cand, "%s%s", exe, rel[i]);
+				if (is_dir_with(cand, "chemistries.json")) {
+					char real[PATH_MAX];
+					snprintf(out, n, "%s", realpath(cand, real) ? real : cand);
+					return;
+				}
+			}
+		}
+	}
+	snprintf(out, n, "data");
+}
+
+int
+cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
+             FILE *err)
+{
+	memset(env, 0, sizeof *env);
+	cli_data_dir(env->data_dir, sizeof env->data_dir);
+	if (db_dir != NULL)
+		snprintf(env->db_dir, sizeof env->db_dir, "%s", db_dir);
+	else
+		snprintf(env->db_dir, sizeof env->db_dir, "%s/catalog", env->data_dir);
+	if (model_io_load(env->data_dir, &env->model, err) != 0)
+		return 2;
+	if (want_catalog) {
+		int n_err = 0;
+		env->cat = catalog_load(env->db_dir, env->model.chem_names, err, &n_err);
+		if (env->cat == NULL)
+			return 2;
+	}
+	return 0;
+}
+
+void
+cli_env_free(struct cli_env *env)
+{
+	catalog_free(env->cat);
+	env->cat = NULL;
+}
