@@ -547,7 +547,7 @@ doc_heading(struct doc *d, int level, const char *text)
 		double size = 1.75 * base;
 		bookmark(d, 1, text, d->y);
 		flow_text(d, d->bold, size, d->left, d->right, text, d->tpl.primary);
-		hrule(d, d->left, d->right, d->y + 0.15 * size, 0.8, d->tpl.primary);
+		hrule(d, d->left, d->right, d->y + 0.04 * size, 0.8, d->tpl.primary);
 		d->y -= 0.7 * base;
 	} else {
 		double size = level == 2 ? 1.25 * base : 1.05 * base;

@@ -30,6 +30,7 @@
 #define PANEL_GAP 8.0       /* between panels of a grid */
 #define TICK_TARGET_X 7     /* about this many ticks on an x axis */
 #define TICK_TARGET_Y 6
+#define AXIS_PAD 0.03    /* automatic range headroom, fraction of the span */
 #define COLOUR_WHITE 200   /* internal: text on dark bar segments */
 
 enum item_kind {
@@ -751,6 +752,7 @@ struct layout {
 	enum plot_legend le_where;      /* resolved: AUTO means inside at le_x/le_y */
 	double le_x, le_y;              /* inside/right legend box top-left */
 	int n_cat;                      /* categories of bars/tornado */
+	int has_xtitle;                 /* the x axis has a title */
 };
 
 static void
@@ -809,6 +811,24 @@ xy_ranges(const struct plot_panel *pp, double *x0, double *x1, double *y0, doubl
 	}
 }
 
+/* Widens [lo, hi] by AXIS_PAD of its span (a factor on log axes), without
+ * pushing a non-negative range below zero. */
+static void
+pad_range(double *lo, double *hi, int log10)
+{
+	if (!isfinite(*lo) || !isfinite(*hi) || *hi <= *lo)
+		return;
+	if (log10) {
+		double f = pow(*hi / *lo, AXIS_PAD);
+		*lo /= f;
+		*hi *= f;
+		return;
+	}
+	double pad = AXIS_PAD * (*hi - *lo);
+	*lo = (*lo >= 0 && *lo - pad < 0) ? 0.0 : *lo - pad;
+	*hi = (*hi <= 0 && *hi + pad > 0) ? 0.0 : *hi + pad;
+}
+
 static void
 axis_ticks(const struct plot_panel *pp, int a, double d0, double d1, int target,
            struct plot_ticks *t)
@@ -857,7 +877,9 @@ legend_collect(const struct plot_panel *pp, struct layout *L)
 			e->open_marker = it->open_marker;
 			e->alpha = it->alpha;
 		} else if (it->kind == IT_BARS || it->kind == IT_TORNADO) {
-			for (int s = 0; s < it->n_stack && L->n_le < MAX_LEGEND; s++) {
+			for (int j = 0; j < it->n_stack && L->n_le < MAX_LEGEND; j++) {
+				/* Bars list the top segment first, as the eye meets them. */
+				int s = it->kind == IT_BARS ? it->n_stack - 1 - j : j;
 				struct legend_entry *e = &L->le[L->n_le++];
 				memset(e, 0, sizeof *e);
 				e->label = it->stack_labels[s];
@@ -979,7 +1001,7 @@ layout_panel(const struct rctx *c, const struct plot_panel *pp, struct layout *L
 			top = fmax(top, s);
 		}
 		L->n_cat = cat->n_cat;
-		axis_ticks(pp, 1, 0.0, top * 1.08, TICK_TARGET_Y, &L->ty);
+		axis_ticks(pp, 1, 0.0, top * 1.04, TICK_TARGET_Y, &L->ty);
 		memset(&L->tx, 0, sizeof L->tx);
 	} else if (pp->kind == PK_TORNADO && cat != NULL) {
 		x0 = x1 = cat->px;
@@ -992,6 +1014,14 @@ layout_panel(const struct rctx *c, const struct plot_panel *pp, struct layout *L
 		memset(&L->ty, 0, sizeof L->ty);
 	} else {
 		xy_ranges(pp, &x0, &x1, &y0, &y1);
+		/* Headroom so that data and reference lines never sit on the frame;
+		 * x only when markers could be cut in half at the edges. */
+		pad_range(&y0, &y1, pp->log10[1]);
+		for (int k = 0; k < pp->n_items; k++)
+			if (pp->items[k].kind == IT_SERIES && pp->items[k].marker != PLOT_MARKER_NONE) {
+				pad_range(&x0, &x1, pp->log10[0]);
+				break;
+			}
 		axis_ticks(pp, 0, x0, x1, TICK_TARGET_X, &L->tx);
 		axis_ticks(pp, 1, y0, y1, TICK_TARGET_Y, &L->ty);
 	}
@@ -1017,6 +1047,7 @@ layout_panel(const struct rctx *c, const struct plot_panel *pp, struct layout *L
 		last_xlab_w = text_width(c->r->font, FS_TICK, buf);
 	}
 
+	L->has_xtitle = pp->axis_title[0] != NULL;
 	legend_collect(pp, L);
 	L->le_where = L->n_le == 0 ? PLOT_LEGEND_NONE : pp->legend;
 	L->le_w = 0.0;
@@ -1059,7 +1090,7 @@ layout_panel(const struct rctx *c, const struct plot_panel *pp, struct layout *L
 	}
 	if (L->le_where == PLOT_LEGEND_BELOW) {
 		L->le_rows = legend_rows(c, L, L->cx + L->cw - L->l);
-		L->b -= L->le_rows * LE_ROW + 3.0;
+		L->b -= L->le_rows * LE_ROW + 6.0;
 		set_scales(L, pp);
 	} else if (L->le_where == PLOT_LEGEND_RIGHT) {
 		L->le_x = L->r + 8.0;
@@ -1312,6 +1343,15 @@ draw_refs(struct rctx *c, const struct layout *L, const struct item *it)
 	}
 }
 
+/* A white rectangle under an annotation label. */
+static void
+label_ground(struct rctx *c, double x0, double y0, double x1, double y1)
+{
+	rect_path(c, x0, y0, x1, y1);
+	cairo_set_source_rgb(c->cr, 1, 1, 1);
+	rp_apply(c, RP_FILL);
+}
+
 /* Labels of annotations (outside the clip so they are never cut). */
 static void
 draw_annotation_text(struct rctx *c, const struct layout *L, const struct item *it)
@@ -1321,20 +1361,24 @@ draw_annotation_text(struct rctx *c, const struct layout *L, const struct item *
 	if (it->label == NULL)
 		return;
 	double w = text_width(f, FS_NOTE, it->label);
+	double bx, by;
 	switch (it->kind) {
 	case IT_HLINE:
 		if (!isfinite(Y) || Y < L->t - 0.5 || Y > L->b + 0.5)
 			return;
-		/* Above the line at the right end; below it if near the top. */
-		draw_text(c, f, FS_NOTE, L->r - 3.0, Y - 2.5 < L->t + FS_NOTE ? Y + FS_NOTE + 1.5 : Y - 2.5,
-		          it->label, PLOT_ALIGN_RIGHT, 0, it->colour);
+		/* Above the line at the right end; below it if near the top.  A
+		 * white ground keeps it legible over grid lines and other lines. */
+		by = Y - 3.0 < L->t + FS_NOTE ? Y + FS_NOTE + 2.0 : Y - 3.0;
+		label_ground(c, L->r - 4.0 - w, by - 0.75 * FS_NOTE, L->r - 2.0, by + 0.2 * FS_NOTE);
+		draw_text(c, f, FS_NOTE, L->r - 3.0, by, it->label, PLOT_ALIGN_RIGHT, 0, it->colour);
 		break;
 	case IT_VLINE:
 		if (!isfinite(X) || X < L->l - 0.5 || X > L->r + 0.5)
 			return;
 		/* Along the line, reading upwards, on its right (left if no room). */
-		draw_text(c, f, FS_NOTE, X + 2.0 + 0.76 * FS_NOTE > L->r ? X - 2.0 : X + 2.0 + 0.76 * FS_NOTE,
-		          L->t + 3.0, it->label, PLOT_ALIGN_RIGHT, 1, it->colour);
+		bx = X + 2.0 + 0.76 * FS_NOTE > L->r ? X - 2.0 : X + 2.0 + 0.76 * FS_NOTE;
+		label_ground(c, bx - 0.75 * FS_NOTE, L->t + 2.0, bx + 0.2 * FS_NOTE, L->t + 4.0 + w);
+		draw_text(c, f, FS_NOTE, bx, L->t + 3.0, it->label, PLOT_ALIGN_RIGHT, 1, it->colour);
 		break;
 	case IT_CROSS:
 	case IT_PLABEL:
@@ -1386,7 +1430,8 @@ draw_legend(struct rctx *c, const struct layout *L)
 	if (L->le_where == PLOT_LEGEND_NONE || L->n_le == 0)
 		return;
 	if (L->le_where == PLOT_LEGEND_BELOW) {
-		double x = L->l, y = L->b + TICK_LEN + FS_TICK + 4.0 + FS_AXIS + 9.0;
+		double x = L->l, y = L->b + TICK_LEN + FS_TICK + 4.0 +
+		           (L->has_xtitle ? FS_AXIS + 5.0 : 0.0) + FS_LEGEND + 3.0;
 		double right = L->cx + L->cw;
 		for (int i = 0; i < L->n_le; i++) {
 			double ew = legend_entry_w(c, &L->le[i]) + 10.0;

@@ -96,7 +96,7 @@ fig_motors(struct doc *d)
 	double di[] = { 1050 }, dim[] = { 240 };
 	plot_scatter(pp, di, dim, 1, "Diamond", PLOT_MARKER_DIAMOND, PLOT_COLOUR_AUTO);
 	plot_crosshair(pp, 560, 140, "continuous optimum", PLOT_COLOUR_ACCENT);
-	plot_point_label(pp, 500, 150, "T-Motor MN5008 (J = 0.82)");
+	plot_point_label(pp, 690, 110, "T-Motor MN5008 (J = 0.82)");
 	plot_point_label(pp, 1100, 70, "edge label");
 	plot_text(pp, 330, 80, "free text at (330, 80)", PLOT_ALIGN_LEFT);
 	doc_figure(d, p, "Motor selection: every catalogue motor, the continuous optimum "
@@ -121,6 +121,8 @@ fig_loglog(struct doc *d)
 	struct plot_panel *pp = plot_panel(p, 0, 0);
 	plot_axis_log(pp, PLOT_X, 1);
 	plot_axis_log(pp, PLOT_Y, 1);
+	plot_axis_range(pp, PLOT_X, 0.2, 100);
+	plot_axis_range(pp, PLOT_Y, 0.2, 100);
 	plot_axis_title(pp, PLOT_X, "Actual takeoff mass (kg)");
 	plot_axis_title(pp, PLOT_Y, "Predicted takeoff mass (kg)");
 	plot_band(pp, line, lo25, hi25, 2, "±25 %", PLOT_COLOUR_MUTED, 0.15);
