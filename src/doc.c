@@ -764,29 +764,24 @@ row_draw(struct doc *d, const struct tstate *ts, const enum doc_cell *styles,
 	advance(d, h);
 }
 
-static void
-header_draw(struct doc *d, const struct tstate *ts, struct lines *L)
-{
-	const char *titles[64];
-	enum doc_cell st[64];
-	for (int c = 0; c < ts->t->n_cols; c++) {
-		titles[c] = ts->t->cols[c].title != NULL ? ts->t->cols[c].title : "";
-		st[c] = DOC_CELL_BOLD;
-	}
-	double h = row_layout(d, ts, titles, st, L);
-	row_draw(d, ts, st, L, h, &d->tpl.primary, 1);
-}
-
+/* Lays out the header row (column titles, bold); returns its height. */
 static double
-header_height(struct doc *d, const struct tstate *ts, struct lines *L)
+header_layout(struct doc *d, const struct tstate *ts, struct lines *L, enum doc_cell *st)
 {
 	const char *titles[64];
-	enum doc_cell st[64];
 	for (int c = 0; c < ts->t->n_cols; c++) {
 		titles[c] = ts->t->cols[c].title != NULL ? ts->t->cols[c].title : "";
 		st[c] = DOC_CELL_BOLD;
 	}
 	return row_layout(d, ts, titles, st, L);
+}
+
+static void
+header_draw(struct doc *d, const struct tstate *ts, struct lines *L)
+{
+	enum doc_cell st[64];
+	double h = header_layout(d, ts, L, st);
+	row_draw(d, ts, st, L, h, &d->tpl.primary, 1);
 }
 
 int
@@ -809,7 +804,8 @@ doc_table(struct doc *d, const struct doc_table *t)
 		              (t->cols[c].weight > 0 ? t->cols[c].weight : 1.0) / wsum;
 	struct lines *L = xcalloc((size_t)t->n_cols, sizeof *L);
 	int n_rows = t->n_cells / t->n_cols;   /* an incomplete last row is dropped */
-	double hh = t->no_header ? 0.0 : header_height(d, &ts, L);
+	enum doc_cell hst[64];
+	double hh = t->no_header ? 0.0 : header_layout(d, &ts, L, hst);
 	struct template_colour zebra = mix_white(d->tpl.grid, 0.35);
 	const char **cells = xmalloc((size_t)t->n_cols * sizeof *cells);
 	enum doc_cell *st = xmalloc((size_t)t->n_cols * sizeof *st);
