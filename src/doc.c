@@ -802,8 +802,12 @@ doc_table(struct doc *d, const struct doc_table *t)
 	for (int c = 0; c < t->n_cols; c++)
 		ts.x[c + 1] = ts.x[c] + (d->right - d->left) *
 		              (t->cols[c].weight > 0 ? t->cols[c].weight : 1.0) / wsum;
+	if (t->n_cells % t->n_cols != 0) {
+		doc_fail(d, "table: %d cells do not fill rows of %d columns", t->n_cells, t->n_cols);
+		return -1;
+	}
 	struct lines *L = xcalloc((size_t)t->n_cols, sizeof *L);
-	int n_rows = t->n_cells / t->n_cols;   /* an incomplete last row is dropped */
+	int n_rows = t->n_cells / t->n_cols;
 	enum doc_cell hst[64];
 	double hh = t->no_header ? 0.0 : header_layout(d, &ts, L, hst);
 	struct template_colour zebra = mix_white(d->tpl.grid, 0.35);

@@ -162,13 +162,18 @@ int doc_code(struct doc *d, const char *text);
 int doc_bullets(struct doc *d, const char *const *items, int n);
 /* Two-column table: kv[2i] the key, kv[2i+1] the value, n_pairs rows. */
 int doc_kv_table(struct doc *d, const char *const *kv, int n_pairs);
+/* Draws the table across the text width; rows never split, the header is
+ * repeated on every page the table reaches.  A cell count that does not
+ * fill whole rows is an error. */
 int doc_table(struct doc *d, const struct doc_table *t);
 /* A tinted box with a bar in the style colour: title big and bold (may be
  * NULL), text wrapped below (may be NULL). */
 int doc_callout(struct doc *d, enum doc_callout_style style, const char *title,
                 const char *text);
-/* Places the figure (full text width if its width is 0) with the caption
- * "Figure n: caption" under it; returns n, or -1. */
+/* Places the figure (full text width if its width is 0, never wider) with
+ * the caption "Figure n: caption" under it, on a new page if it does not fit
+ * in what is left of this one; returns n, or -1.  A figure taller than the
+ * text block is not scaled down: keep heights under about 600 pt. */
 int doc_figure(struct doc *d, const struct plot *p, const char *caption);
 /* The number the next doc_figure will get (for "see Figure 3" ahead). */
 int doc_next_figure_number(const struct doc *d);

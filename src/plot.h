@@ -94,8 +94,9 @@ enum plot_align {
 	PLOT_ALIGN_RIGHT
 };
 
-/* How a general series looks (plot_series).  Zero-initialised means: auto
- * colour, solid 1.2 pt line, no marker. */
+/* How a general series looks (plot_series).  Zero-initialised means:
+ * palette colour 0, solid 1.2 pt line, no marker; set auto_colour to take
+ * the panel's next palette colour instead.  A NULL style means auto colour. */
 struct plot_style {
 	int colour;               /* enum plot_colour or palette index; 0 is palette 0 */
 	int auto_colour;          /* nonzero: ignore colour, take the next palette colour */

@@ -4,6 +4,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
+
+#include <cairo.h>
 
 #include "doc.h"
 #include "plot.h"
@@ -315,8 +318,28 @@ doc_letter_template_should_build(void **state)
 	unsigned char *a = NULL;
 	size_t na = 0;
 	int pages = 0;
+	/* With a logo on the cover: a tiny PNG drawn here with cairo. */
+	cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 48, 48);
+	cairo_t *cr = cairo_create(s);
+	cairo_set_source_rgb(cr, 0.12, 0.23, 0.37);
+	cairo_arc(cr, 24, 24, 20, 0, 2 * M_PI);
+	cairo_fill(cr);
+	cairo_destroy(cr);
+	char png[] = "/tmp/aeroeval-logo-XXXXXX";
+	int fd = mkstemp(png);
+	assert_true(fd >= 0);
+	close(fd);
+	assert_int_equal(cairo_surface_write_to_png(s, png), CAIRO_STATUS_SUCCESS);
+	cairo_surface_destroy(s);
+	snprintf(tpl->logo, sizeof tpl->logo, "%s", png);
 	assert_int_equal(build_demo(tpl, &a, &na, &pages), 0);
+	unlink(png);
 	assert_true(pages >= DEMO_PAGES - 2 && pages <= DEMO_PAGES + 2);
+	FILE *f = fopen("build/doc_demo_letter.pdf", "wb");
+	if (f != NULL) {
+		fwrite(a, 1, na, f);
+		fclose(f);
+	}
 	free(a);
 	template_free(tpl);
 }
@@ -355,6 +378,17 @@ doc_bad_inputs_should_be_sticky_errors(void **state)
 	assert_int_equal(doc_attach(d, "dir/mission.json", "{}", 2), -1);
 	assert_non_null(strstr(doc_error(d), "bare file name"));
 	doc_free(d);
+
+	static const struct doc_column cols[2] = { { "a", 1, DOC_ALIGN_LEFT },
+	                                           { "b", 1, DOC_ALIGN_LEFT } };
+	struct doc_table t;
+	doc_table_init(&t, cols, 2);
+	doc_table_cell(&t, DOC_CELL_NORMAL, "%d", 1);
+	d = doc_alloc(tpl, NULL);
+	assert_int_equal(doc_table(d, &t), -1);   /* half a row */
+	assert_non_null(strstr(doc_error(d), "table"));
+	doc_free(d);
+	doc_table_clear(&t);
 
 	d = doc_alloc(tpl, NULL);
 	unsigned char *out;
