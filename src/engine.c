@@ -211,8 +211,9 @@ engine_params(const struct mission_spec *s, const struct model_data *md,
 	p->c_motor = ro->c_motor;
 	p->c_esc = cls->small_platform ? fmin(ro->c_esc, md->role[ROLE_RACING].c_esc) : ro->c_esc;
 	p->h_conv_w_m2k = ro->h_conv_w_m2k;
+	p->burst_factor = ro->burst_factor;
 	p->small_platform = cls->small_platform || role == ROLE_RACING;
-	p->shed = baseline ? SHED_NONE : ro->shedding;
+	p->shed = baseline || !pr->mass_shedding ? SHED_NONE : ro->shedding;
 	p->drop_mass_kg = pr->delivery_drop_mass_kg;
 	p->drop_ratio = pr->delivery_drop_time_ratio;
 	p->spray_rate_kg_s = pr->spray_rate_kg_per_s;

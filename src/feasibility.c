@@ -220,9 +220,9 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 		    o->min_terminal_voltage_v, o->voltage_floor_v);
 		fx[2] = f3;
 	}
-	double p_max = p->chem->p_spec_w_kg * o->mass.battery_kg
+	double p_max = p->burst_factor * p->chem->p_spec_w_kg * o->mass.battery_kg
 	    / (o->packaging_factor > 0.0 ? o->packaging_factor : 1.0);
-	c = add_check(o, "Peak battery power (cell specific power)", "W",
+	c = add_check(o, "Full-throttle battery power (burst capability)", "W",
 	    o->peak_power_w, p_max, true);
 	if (c && !c->pass) {
 		snprintf(f1, sizeof f1, "Unlock or enlarge the battery");
@@ -230,8 +230,9 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 		snprintf(f3, sizeof f3, "Reduce the thrust margin");
 		feasibility_violation(r, run, "discharge", "BATTERY_POWER", fx,
 		    "Full throttle draws %.0f W, but %.2f kg of %s cells deliver at "
-		    "most %.0f W.", o->peak_power_w, o->mass.battery_kg,
-		    p->chem->name, p_max);
+		    "most %.0f W in a 10 s burst (%.0f × their continuous specific "
+		    "power).", o->peak_power_w, o->mass.battery_kg, p->chem->name,
+		    p_max, p->burst_factor);
 	}
 
 	/* Structure. */

@@ -26,6 +26,7 @@ struct model_role {
 	double c_motor;                 /* continuous motor-mass factor */
 	double c_esc;                   /* continuous ESC-mass factor */
 	double h_conv_w_m2k;            /* battery convection coefficient */
+	double burst_factor;            /* 10 s burst / continuous battery power */
 	enum shed_kind shedding;        /* payload shedding */
 };
 

@@ -257,7 +257,7 @@ load_roles(struct rd *r, const cJSON *root, struct model_data *m)
 	static const char *const keys[] = { "name", "thrust_margin", "load_factor",
 		"aux_power_w", "added_drag_m2", "forward_drag_multiplier",
 		"integration_overhead_frac", "c_motor", "c_esc", "h_conv_w_m2k",
-		"shedding", "note", NULL };
+		"battery_burst_factor", "shedding", "note", NULL };
 	static const char *const shed[] = { "none", "drop", "spray", NULL };
 	bool seen[ROLE_MAX] = { false };
 	const cJSON *a = rd_array(r, root, "roles");
@@ -288,6 +288,7 @@ load_roles(struct rd *r, const cJSON *root, struct model_data *m)
 		ro->c_motor = rd_num(r, it, "c_motor", 0.01, 10);
 		ro->c_esc = rd_num(r, it, "c_esc", 0.01, 10);
 		ro->h_conv_w_m2k = rd_num(r, it, "h_conv_w_m2k", 1, 1000);
+		ro->burst_factor = rd_num(r, it, "battery_burst_factor", 1, 10);
 		int s = rd_enum(r, it, "shedding", shed);
 		ro->shedding = s < 0 ? SHED_NONE : (enum shed_kind)s;
 	}

@@ -270,7 +270,16 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	    p->enterprise);
 	double e_nom_wh = e->capacity_ah * v_nom;
 	double m_energy = batt_mass_kg(e_nom_wh, p->e_spec_wh_kg, e->eta_pkg);
-	double m_power = e->peak.electrical_w / p->chem->p_spec_w_kg * e->eta_pkg;
+	/* Cells deliver their specific power continuously and about twice it
+	 * in a 10 s burst: the pack must carry the highest sustained phase
+	 * power and the full-throttle burst (the check of feasibility.c). */
+	double p_sustained = 0.0;
+	for (int i = 0; i < PHASE_MAX; i++)
+		if (p->duration_s[i] > 0.0 && e->ph[i].electrical_w > p_sustained)
+			p_sustained = e->ph[i].electrical_w;
+	double m_power = fmax(p_sustained,
+	    e->peak.electrical_w / p->burst_factor)
+	    / p->chem->p_spec_w_kg * e->eta_pkg;
 	if (p->parts.active && p->parts.battery_kg > 0.0) {
 		e->mass.battery_kg = p->parts.battery_kg;
 	} else if (!p->capacity_locked && m_power > m_energy) {
@@ -303,11 +312,14 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	double tip_kg = (motor_total / (double)nr + prop_each) * per_arm;
 	structure_size_arm(force, arm_len, p->alpha_w, tip_kg, &e->arm);
 	double arms = (double)n_arms(p) * e->arm.mass_kg;
-	double floor_kg = mass_kg * structure_min_fraction(p->wheelbase_m) / p->c_body;
-	e->min_fraction_binds = floor_kg > arms;
-	double arms_eff = fmax(arms, floor_kg);
-	double spar = p->c_body * arms_eff;
-	double frame_total = p->lambda * spar * (1.0 + p->gamma);
+	/* The minimum structural fraction floors the whole structure.  (The
+	 * paper floors the spar and then adds γ on top, which puts an
+	 * agricultural frame at >= 40 % of takeoff mass and makes every
+	 * spraying mission diverge; see README "Where aeroeval departs".) */
+	double sized = p->c_body * arms * (1.0 + p->gamma);
+	double floor_kg = mass_kg * structure_min_fraction(p->wheelbase_m);
+	e->min_fraction_binds = floor_kg > sized;
+	double frame_total = p->lambda * fmax(sized, floor_kg);
 	if (p->fixed_frame_kg > 0.0)
 		frame_total = p->fixed_frame_kg;
 	/* Split the structure: tubes, centre plates/joints, body and gear. */
@@ -440,8 +452,11 @@ iterate_cells(const struct sizing_params *p, int cells, double gamma_time,
 		}
 		/* The next iteration sees this one's arm (rotor-arm interference). */
 		ls.arm_width_m = last->arm.d_out_m;
+		/* A power-bound battery is as large as the peak power needs; its
+		 * energy target is then below it and has no further say. */
 		bool cap_steady = p->capacity_locked
 		    || (p->parts.active && p->parts.battery_kg > 0.0)
+		    || (last->power_binds && last->c_target_ah <= c_used)
 		    || fabs(c - c_used) <= 1e-4 * c_used;
 		if (fabs(f - m) < SIZING_TOL_KG && cap_steady) {
 			m = f;

@@ -88,6 +88,7 @@ struct sizing_params {
 	double c_motor;
 	double c_esc;
 	double h_conv_w_m2k;
+	double burst_factor;         /* 10 s burst / continuous battery power */
 	bool small_platform;         /* racing/small wiring coefficient */
 	enum shed_kind shed;
 	double drop_mass_kg;

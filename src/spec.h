@@ -218,6 +218,8 @@ X(ROLE_THRUST_MARGIN, "payload_role.thrust_margin_override", SPEC_NUM, payload_r
   "Thrust margin; hover throttle = 1 - margin, T/W = 1/throttle^2 (default from the role)") \
 X(ROLE_DRAG_MULT, "payload_role.drag_area_multiplier", SPEC_NUM, payload_role.drag_area_multiplier, "", 1, 0.1, 10, SPEC_F_DERIVED, NULL, \
   "Forward-flight drag-area multiplier (mapping LiDAR 1.5 by default)") \
+X(ROLE_MASS_SHEDDING, "payload_role.mass_shedding", SPEC_BOOL, payload_role.mass_shedding, "", 1, 0, 1, SPEC_F_BEYOND, NULL, \
+  "Model payload leaving the aircraft (delivery drop, spray); false sizes for the full payload throughout (static sizing)") \
 X(ROLE_INTEGRATION_KG, "payload_role.integration_overhead_kg", SPEC_NUM, payload_role.integration_overhead_kg, "kg", 0, 0, 100, SPEC_F_DERIVED, NULL, \
   "Mounts, pumps, release mechanisms added by the role (default from the role)") \
 \
@@ -315,6 +317,7 @@ struct spec_role {
 	double thrust_margin_override;   /* 1 - hover throttle */
 	double drag_area_multiplier;     /* forward-flight S_ref multiplier */
 	double integration_overhead_kg;  /* role hardware mass, kg */
+	bool mass_shedding;              /* drop/spray modelled (false = static) */
 };
 
 struct spec_structural {
