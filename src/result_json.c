@@ -441,7 +441,7 @@ put_mission(struct jw *w, const struct mission_spec *s)
 		}
 		jw_close(w);
 	}
-	jw_arr_packed(w, "defaulted");
+	jw_arr(w, "defaulted");
 	for (size_t i = 0; i < SPEC_N_FIELDS; i++)
 		if (!s->given[i])
 			jw_str(w, NULL, spec_fields[i].path, strlen(spec_fields[i].path));
