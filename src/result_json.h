@@ -9,8 +9,8 @@
  * ends, one final newline, numbers printed as the shortest of %.15g/%.16g/
  * %.17g that strtod() reads back to the same double (so a reader recovers
  * every value exactly and two runs give identical bytes), integers as
- * integers, and -0 as 0.  Arrays of plain numbers are packed ten to a line
- * to keep the time series small.  Strings are escaped per RFC 8259; valid
+ * integers, and -0 as 0.  Arrays of plain numbers (and the phase column of
+ * the time series) are packed ten to a line to keep the file small.  Strings are escaped per RFC 8259; valid
  * UTF-8 passes through, an invalid byte becomes U+FFFD.
  *
  * NaN and Infinity never appear.  A non-finite double (or an enum or count
@@ -41,6 +41,7 @@ struct result_json_faults {
 
 /* Renders result.json for r.  Ownership: the caller frees the text with
  * free().  Never returns NULL (allocation failure exits, see xalloc.h).
+ * aeroeval_version must not be NULL (the program passes AEROEVAL_VERSION).
  * faults receives the count and first path of invalid values; the caller must
  * treat n_invalid > 0 as an internal error and not publish the text.  Use
  * this one in the program. */

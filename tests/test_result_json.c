@@ -11,9 +11,13 @@
 #include "xalloc.h"
 
 #include <cjson/cJSON.h>
+#include <fcntl.h>
 #include <float.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #define GOLDEN "tests/fixtures/outputs/result.json.expected"
 #define VERSION "9.8.7-test"
@@ -730,6 +734,37 @@ result_json_should_report_non_finite_value_as_null_with_path(void **state)
 	free(r);
 }
 
+/* The unchecked render is for callers that cannot fail: in a debug build a
+ * NaN must stop the program (after naming the path), not slip out as null.
+ * Run in a child so the abort does not end the test program. */
+static void
+result_json_unchecked_render_should_abort_on_nan_in_debug(void **state)
+{
+	(void)state;
+#ifdef NDEBUG
+	skip();
+#else
+	struct solve_result *r = fixture_new(&SMALL);
+	r->custom.energy_wh = NAN;
+	fflush(NULL);
+	pid_t pid = fork();
+	assert_true(pid >= 0);
+	if (pid == 0) {
+		signal(SIGABRT, SIG_DFL);
+		int devnull = open("/dev/null", O_WRONLY);
+		if (devnull >= 0)
+			dup2(devnull, STDERR_FILENO);
+		free(result_json_render(r, VERSION));
+		_exit(0);
+	}
+	int status = 0;
+	assert_int_equal(waitpid(pid, &status, 0), pid);
+	assert_true(WIFSIGNALED(status));
+	assert_int_equal(WTERMSIG(status), SIGABRT);
+	free(r);
+#endif
+}
+
 static void
 result_json_should_write_ran_false_run_and_null_parts(void **state)
 {
@@ -898,6 +933,7 @@ main(void)
 		cmocka_unit_test(result_json_time_series_should_have_n_trace_entries),
 		cmocka_unit_test(result_json_mission_should_spell_auto_enums_and_defaulted),
 		cmocka_unit_test(result_json_should_report_non_finite_value_as_null_with_path),
+		cmocka_unit_test(result_json_unchecked_render_should_abort_on_nan_in_debug),
 		cmocka_unit_test(result_json_should_write_ran_false_run_and_null_parts),
 		cmocka_unit_test(result_json_renders_should_be_byte_identical),
 		cmocka_unit_test(result_json_numbers_should_print_shortest_exact_form),
