@@ -10,8 +10,9 @@
  * %.17g that strtod() reads back to the same double (so a reader recovers
  * every value exactly and two runs give identical bytes), integers as
  * integers, and -0 as 0.  Arrays of plain numbers (and the phase column of
- * the time series) are packed ten to a line to keep the file small.  Strings are escaped per RFC 8259; valid
- * UTF-8 passes through, an invalid byte becomes U+FFFD.
+ * the time series) are packed ten to a line to keep the file small.
+ * Strings are escaped per RFC 8259; valid UTF-8 passes through, an invalid
+ * byte becomes U+FFFD.
  *
  * NaN and Infinity never appear.  A non-finite double (or an enum or count
  * outside its range) is a programming error in the engine: it is written as
