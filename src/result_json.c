@@ -630,8 +630,9 @@ put_run(struct jw *w, const char *key, const struct res_run *run)
 	jw_num(w, "arm_stress_allow_mpa", run->arm_stress_allow_mpa);
 	jw_num(w, "arm_natural_frequency_hz", run->arm_natural_frequency_hz);
 	jw_num(w, "blade_pass_frequency_hz", run->blade_pass_frequency_hz);
+	jw_num(w, "blade_pass_low_hz", run->blade_pass_low_hz);
 	jw_num(w, "resonance_margin", run->resonance_margin);
-	jw_bool(w, "arm_stiffness_binds", run->arm_stiffness_binds);
+	jw_num(w, "arm_tip_mass_kg", run->arm_tip_mass_kg);
 	jw_bool(w, "arm_wall_floor_binds", run->arm_wall_floor_binds);
 	jw_bool(w, "min_fraction_binds", run->min_fraction_binds);
 
