@@ -100,9 +100,11 @@ unit: $(TEST_BINS)
 	sh tests/run_all.sh $(BUILD) unit
 
 # ---- examples ---------------------------------------------------------------
+# Exit status 1 means "compiled, some design infeasible": the outputs are
+# written and say why, so it does not fail the target.
 example: deps
 	$(MAKE) all
-	./$(BIN) build -o out examples/*.json
+	./$(BIN) build -o out examples/ || [ $$? -eq 1 ]
 
 # ---- housekeeping -----------------------------------------------------------
 install: all

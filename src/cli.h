@@ -17,6 +17,7 @@ struct cli_env {
 	char db_dir[4200];          /* parts catalogue */
 	struct model_data model;    /* chemistries, roles, classes, calibration */
 	struct catalog *cat;        /* parts, or NULL when not loaded */
+	char catalogue_sha256[65];  /* of the four catalogue files, "" when not loaded */
 };
 
 /* Where data/ is: $AEROEVAL_DATA, else next to the program (build tree or

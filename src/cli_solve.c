@@ -5,9 +5,8 @@
 #include <string.h>
 
 #include "cli.h"
-#include "diag.h"
-#include "engine.h"
-#include "mission_io.h"
+#include "pipeline.h"
+#include "result_json.h"
 #include "xalloc.h"
 
 static void
@@ -65,10 +64,9 @@ cli_solve(int argc, char **argv)
 			db = argv[++i];
 		else if (strcmp(argv[i], "--summary") == 0)
 			summary = 1;
-		else if (argv[i][0] == '-' || path != NULL) {
-			fprintf(stderr, "usage: aeroeval solve [--db DIR] [--summary] MISSION.json\n");
-			return 2;
-		} else
+		else if (argv[i][0] == '-' || path != NULL)
+			path = NULL, i = argc;
+		else
 			path = argv[i];
 	}
 	if (path == NULL) {
@@ -76,27 +74,30 @@ cli_solve(int argc, char **argv)
 		return 2;
 	}
 	struct cli_env *env = xcalloc(1, sizeof *env);
-	int rc = cli_env_load(env, db, 0, stderr);
+	int rc = cli_env_load(env, db, 1, stderr);
 	if (rc != 0) {
+		cli_env_free(env);
 		free(env);
 		return rc;
 	}
-	struct diag *dg = diag_alloc(stderr);
-	struct mission_spec spec;
-	int n_err = mission_io_load(path, env->model.chem_names, dg, &spec);
-	diag_flush(dg);
-	diag_free(dg);
-	if (n_err > 0) {
-		cli_env_free(env);
-		free(env);
-		return 2;
-	}
-	struct solve_result *r = xcalloc(1, sizeof *r);
-	rc = engine_solve(&spec, &env->model, env->cat, r);
-	if (rc == 0) {
-		if (summary)
+	struct solve_result *r = xmalloc(sizeof *r);
+	enum pipeline_status st = pipeline_solve(env, path, r, stderr, NULL, NULL);
+	rc = (int)st;
+	if (st == PIPE_FEASIBLE || st == PIPE_INFEASIBLE) {
+		if (summary) {
 			print_summary(stdout, r);
-		rc = r->feasible ? 0 : 1;
+		} else {
+			struct result_json_faults jf;
+			char *json = result_json_render_checked(r, AEROEVAL_VERSION, &jf);
+			if (jf.n_invalid > 0) {
+				fprintf(stderr, "%s: internal error: non-finite value at %s\n",
+				    path, jf.first_path);
+				rc = 3;
+			} else {
+				fputs(json, stdout);
+			}
+			free(json);
+		}
 	}
 	free(r);
 	cli_env_free(env);

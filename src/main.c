@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli_build.h"
 #include "cli_front.h"
 #include "cli_solve.h"
 
@@ -16,6 +17,8 @@ main(int argc, char **argv)
 		return cli_check(argc - 1, argv + 1);
 	if (argc >= 2 && strcmp(argv[1], "schema") == 0)
 		return cli_schema(argc - 1, argv + 1);
+	if (argc >= 2 && strcmp(argv[1], "build") == 0)
+		return cli_build(argc - 1, argv + 1);
 	if (argc >= 2 && strcmp(argv[1], "solve") == 0)
 		return cli_solve(argc - 1, argv + 1);
 	fprintf(stderr, "usage: aeroeval build|solve|check|schema|validate|calibrate|sensitivity ...\n");

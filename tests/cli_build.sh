@@ -1,0 +1,49 @@
+#!/bin/sh
+# Whole-compiler tests of `aeroeval build` and `aeroeval solve`: outputs,
+# exit statuses, reproducibility, nothing written for a bad mission.
+# Prints "ok NAME" / "not ok NAME"; run by tests/run_all.sh with $AEROEVAL.
+AE=${AEROEVAL:-build/aeroeval}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+check() { if [ "$1" -eq 0 ]; then echo "ok $2"; else echo "not ok $2"; fi; }
+
+# Every example compiles to result.json and bom.csv.
+"$AE" build -o "$T/a" examples/ 2>"$T/a.err"; rc=$?
+[ "$rc" -le 1 ]; check $? "build_examples_exit_status_is_0_or_1"
+for f in examples/*.json; do
+	n=$(basename "$f" .json)
+	[ -s "$T/a/$n/result.json" ] && [ -s "$T/a/$n/bom.csv" ]
+	check $? "build_writes_outputs_$n"
+done
+grep -q "build: 9 compiled" "$T/a.err"; check $? "build_summary_counts_missions"
+
+# Reproducible: a second build is byte-identical.
+"$AE" build -o "$T/b" examples/ 2>/dev/null
+diff -r "$T/a" "$T/b" >/dev/null; check $? "build_is_byte_reproducible"
+
+# A bad mission: exit 2, nothing written, previous outputs intact.
+mkdir -p "$T/m"
+cp examples/sar_imaging_quad.json "$T/m/good.json"
+"$AE" build -o "$T/c" "$T/m/good.json" 2>/dev/null
+cp "$T/c/good/result.json" "$T/keep.json"
+printf '{ "payload_kg": -1 }\n' > "$T/m/good.json"
+"$AE" build -o "$T/c" "$T/m/good.json" 2>"$T/bad.err"; rc=$?
+[ "$rc" -eq 2 ]; check $? "bad_mission_exits_2"
+cmp -s "$T/c/good/result.json" "$T/keep.json"; check $? "bad_mission_keeps_previous_outputs"
+grep -q "good.json:1:17: error: payload_kg" "$T/bad.err"; check $? "bad_mission_diagnostic_has_position"
+
+# solve prints the result JSON with every run key.
+"$AE" solve examples/lidar_mapping_quad.json >"$T/s.json"; rc=$?
+[ "$rc" -eq 0 ]; check $? "solve_feasible_exits_0"
+for k in aeroeval_version input_sha256 catalogue_sha256 mission baseline custom role_overhead status violations total_mass_kg convergence_history lipschitz_estimate time_series arm_natural_frequency_hz; do
+	grep -q "\"$k\"" "$T/s.json"; check $? "solve_json_has_$k"
+done
+! grep -qiE '[:,[] *-?(nan|inf)' "$T/s.json"; check $? "solve_json_has_no_nan_or_inf"
+
+# Name clashes are refused before anything is written.
+mkdir -p "$T/d1" "$T/d2"
+cp examples/lidar_mapping_quad.json "$T/d1/x.json"
+cp examples/lidar_mapping_quad.json "$T/d2/x.json"
+"$AE" build -o "$T/e" "$T/d1/x.json" "$T/d2/x.json" 2>/dev/null; rc=$?
+[ "$rc" -eq 2 ] && [ ! -e "$T/e" ]; check $? "name_clash_is_an_error_before_writing"
+exit 0
