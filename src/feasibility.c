@@ -141,6 +141,8 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	    last_step, SIZING_TOL_KG, true);
 	if (c && st == SIZING_CONVERGED)
 		c->pass = true;
+	if (c)
+		c->sized = true;
 	if (st == SIZING_RUNAWAY) {
 		snprintf(f1, sizeof f1, "Reduce payload_kg or the mission times");
 		snprintf(f2, sizeof f2, "Choose a higher specific-energy battery_chemistry");
@@ -167,6 +169,8 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 		need += o->approved_time_s[i];
 	flown = o->n_trace > 0 ? o->trace[o->n_trace - 1].t_s : 0.0;
 	c = add_check(o, "Mission flown on the battery", "s", flown, need * 0.999, false);
+	if (c)
+		c->sized = !p->capacity_locked;
 	if (c && !c->pass && st != SIZING_RUNAWAY) {
 		if (p->capacity_locked) {
 			snprintf(f1, sizeof f1, "Increase locks.locked_capacity_mah above %.0f mAh",
@@ -186,6 +190,8 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	/* Propulsion geometry. */
 	c = add_check(o, "Propeller diameter (overlap limit)", "in",
 	    o->opt.prop_diameter_in, o->overlap_limit_in + 1e-9, true);
+	if (c)
+		c->sized = !p->prop_locked;
 	c = add_check(o, "Tip Mach number at full throttle", "", o->tip_mach_peak,
 	    AERO_TIP_MACH_MAX, true);
 	if (c && !c->pass) {
@@ -224,6 +230,8 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	    / (o->packaging_factor > 0.0 ? o->packaging_factor : 1.0);
 	c = add_check(o, "Full-throttle battery power (burst capability)", "W",
 	    o->peak_power_w, p_max, true);
+	if (c)
+		c->sized = o->battery_power_binds;
 	if (c && !c->pass) {
 		snprintf(f1, sizeof f1, "Unlock or enlarge the battery");
 		snprintf(f2, sizeof f2, "Choose a higher-power chemistry such as LiPo or LiHV");
@@ -236,8 +244,10 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	}
 
 	/* Structure. */
-	add_check(o, "Arm root bending stress", "MPa", o->arm_stress_mpa,
+	c = add_check(o, "Arm root bending stress", "MPa", o->arm_stress_mpa,
 	    o->arm_stress_allow_mpa, true);
+	if (c)
+		c->sized = true;
 	c = add_check(o, "Arm mode clear of the blade-pass band", "",
 	    o->resonance_margin, 0.0, false);
 	if (c && !c->pass) {

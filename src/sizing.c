@@ -558,6 +558,7 @@ record_run(const struct sizing_params *p, const struct eval *e,
 	out->nominal_voltage_v = (double)e->cells * p->chem->v_nom;
 	out->energy_wh = e->capacity_ah * out->nominal_voltage_v;
 	out->packaging_factor = e->eta_pkg;
+	out->battery_power_binds = e->power_binds;
 	out->time_scale = ls->gamma_time;
 	out->flight_time_s = 0.0;
 	for (int i = 0; i < PHASE_MAX; i++) {
@@ -586,10 +587,12 @@ record_run(const struct sizing_params *p, const struct eval *e,
 	out->thrust_to_weight = 1.0 / (e->throttle * e->throttle);
 	out->hover_throttle = e->throttle;
 	out->forward_pitch_deg = e->ph[PHASE_FORWARD].pitch_deg;
+	/* A coaxial pair pushes its whole thrust through one disk: loading and
+	 * downwash count distinct disks (arms), not rotors. */
 	double area = 0.25 * M_PI * e->model.rotor.diameter_m * e->model.rotor.diameter_m;
-	out->disk_loading_n_m2 = e->mass_kg * G0_M_S2 / ((double)p->n_rotors * area);
+	out->disk_loading_n_m2 = e->mass_kg * G0_M_S2 / ((double)n_arms(p) * area);
 	out->downwash_ms = aero_downwash_ms(e->mass_kg, p->air.rho_kg_m3,
-	    p->n_rotors, area);
+	    n_arms(p), area);
 	out->fom_installed = e->fom_inst;
 	out->interference = e->k_int;
 	out->reynolds_tip = e->ph[PHASE_HOVER].rotor.reynolds_tip;
