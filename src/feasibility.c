@@ -92,6 +92,33 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 		    "(d_y = %.3f m): the aircraft cannot be trimmed.", p->cg_shift_m, d_y);
 		ok = false;
 	}
+	/* A locked battery that cannot hover even its own mass plus the
+	 * payload for the mission with ideal rotors (FoM = 1, the largest
+	 * propellers the wheelbase admits) can never close: say so now. */
+	if (p->capacity_locked && !p->allow_relax && arms >= 2 && limit > 0.0) {
+		double v_nom = (double)p->cells_fixed * p->chem->v_nom;
+		double e_avail_wh = p->capacity_locked_ah * v_nom;
+		double m_bat = e_avail_wh / p->e_spec_wh_kg;
+		double m_min = p->payload_kg + m_bat;
+		double d = p->prop_locked ? p->prop_diameter_m : limit;
+		double area = 0.25 * M_PI * d * d * (double)arms;
+		double w = m_min * G0_M_S2;
+		double p_ideal_w = w * sqrt(w / (2.0 * p->air.rho_kg_m3 * area));
+		double e_min_wh = p_ideal_w * mission_time_s(p) / 3600.0;
+		if (e_min_wh > e_avail_wh) {
+			snprintf(f1, sizeof f1, "Increase locks.locked_capacity_mah above %.0f mAh",
+			    1000.0 * e_min_wh / v_nom);
+			snprintf(f2, sizeof f2, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
+			snprintf(f3, sizeof f3, "Shorten the mission");
+			fx[2] = f3;
+			feasibility_violation(r, run, "feasibility", "LOCKED_BATTERY_ENERGY", fx,
+			    "The locked %.0f Wh battery cannot fly this mission even with "
+			    "ideal rotors: hovering its own %.2f kg and the payload for "
+			    "%.0f s needs at least %.0f Wh.", e_avail_wh, m_bat,
+			    mission_time_s(p), e_min_wh);
+			ok = false;
+		}
+	}
 	if (!(mission_time_s(p) > 0.0)) {
 		snprintf(f1, sizeof f1, "Give t_hover_s, t_climb_s or t_forward_s");
 		fx[1] = NULL;
