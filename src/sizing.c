@@ -291,10 +291,11 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	}
 
 	/* Motors and propellers (per unit), needed for the arm tip mass. */
+	double p_motor_w = e->peak.shaft_w / (double)nr / p->eta_drive;
 	double motor_total = p->parts.active && p->parts.motor_kg_each > 0.0
 	    ? p->parts.motor_kg_each * (double)nr
-	    : fmax(SIZING_MOTOR_MIN_KG,
-	        (double)nr * e->t_peak_n * SIZING_MOTOR_KG_PER_N * p->c_motor);
+	    : fmax(SIZING_MOTOR_MIN_KG, (double)nr * p->c_motor * SIZING_MOTOR_K
+	        * pow(p_motor_w, SIZING_MOTOR_EXP));
 	double prop_each = p->parts.active && p->parts.prop_kg_each > 0.0
 	    ? p->parts.prop_kg_each
 	    : p->prop_kg_per_m22 * pow(d, SIZING_PROP_EXPONENT)
