@@ -271,7 +271,7 @@ write_missions(const char *dir, const struct cohort *c, const struct validate_re
 
 static int
 write_report(const char *pdf_path, const char *cohort_path, const struct cohort *c,
-             const struct validate_report *v)
+             const struct validate_report *v, const struct model_calibration *cal)
 {
 	char date[11], err[512];
 	if (fsout_resolve_date("", cohort_path, date, err, sizeof err) < 0) {
@@ -280,7 +280,7 @@ write_report(const char *pdf_path, const char *cohort_path, const struct cohort 
 	}
 	unsigned char *pdf = NULL;
 	size_t n = 0;
-	if (valreport_render(c, v, cohort_path, date, &pdf, &n, err, sizeof err) != 0) {
+	if (valreport_render(c, v, cal, cohort_path, date, &pdf, &n, err, sizeof err) != 0) {
 		fprintf(stderr, "error: %s: %s\n", pdf_path, err);
 		return -1;
 	}
@@ -336,7 +336,7 @@ cli_validate(int argc, char **argv)
 		}
 		if (missions != NULL && write_missions(missions, &c, &v) != 0)
 			rc = 2;
-		if (report != NULL && write_report(report, path, &c, &v) != 0)
+		if (report != NULL && write_report(report, path, &c, &v, &env->model.cal) != 0)
 			rc = 2;
 	}
 	validate_report_free(&v);

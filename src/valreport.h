@@ -12,16 +12,20 @@
 #include <stddef.h>
 
 #include "cohort.h"
+#include "model.h"
 #include "validate.h"
 
-/* The rule of validate.h as paragraphs for people (also for the README). */
+/* The rule of validate.h in words, NULL-terminated: one bullet each (the
+ * README's text says the same). */
 extern const char *const valreport_rule_text[];
 
-/* Renders the dossier for v (computed from cohort c read from cohort_name)
- * into a new buffer *pdf of *n bytes (free with free()).  date is
- * "YYYY-MM-DD" or NULL.  Returns 0, or -1 with a message in err. */
+/* Renders the dossier for v (computed from cohort c read from cohort_name,
+ * with the coefficients cal) into a new buffer *pdf of *n bytes (free with
+ * free()).  date is "YYYY-MM-DD" or NULL.  Returns 0, or -1 with a message
+ * in err. */
 int valreport_render(const struct cohort *c, const struct validate_report *v,
-                     const char *cohort_name, const char *date,
-                     unsigned char **pdf, size_t *n, char *err, size_t errlen);
+                     const struct model_calibration *cal, const char *cohort_name,
+                     const char *date, unsigned char **pdf, size_t *n,
+                     char *err, size_t errlen);
 
 #endif
