@@ -105,7 +105,7 @@ mape_of(const double *actual, const double *pred, size_t n)
 
 int
 calibrate_fit_missions(const struct mission_spec *specs, const double *actual_kg,
-                       size_t n, const struct model_data *md,
+                       size_t n, const struct model_data *md, double mu,
                        struct calibrate_result *out)
 {
 	memset(out, 0, sizeof *out);
@@ -159,14 +159,15 @@ calibrate_fit_missions(const struct mission_spec *specs, const double *actual_kg
 
 	struct lsq_options opt;
 	lsq_options_default(&opt);
-	opt.mu = CALIBRATE_MU;
+	opt.mu = mu;
 	opt.prior = calibrate_prior;
 	opt.theta_lo = calibrate_lo;
 	opt.theta_hi = calibrate_hi;
 	opt.max_iter = 60;
-	/* The mass loop converges to 1 g: a difference step far below that
-	 * resolution would differentiate solver noise. */
-	opt.fd_step_rel = 1e-4;
+	/* The mass loop stops at a 1 g step, so the prediction jumps by about
+	 * 1e-5 of itself where the iteration count changes; a 0.1 % step moves
+	 * ln(MTOW) by 1e-4 or more for every coefficient, well above that. */
+	opt.fd_step_rel = 1e-3;
 	opt.epsrel_cost = 1e-8;
 	opt.epsrel_step = 1e-6;
 	struct lsq_result lr;
@@ -210,7 +211,7 @@ calibrate_fit(const struct cohort *c, const struct model_data *md,
 			continue;
 		act[n++] = c->rows[i].takeoff_mass_kg;
 	}
-	int rc = calibrate_fit_missions(specs, act, n, md, out);
+	int rc = calibrate_fit_missions(specs, act, n, md, CALIBRATE_MU, out);
 	free(specs);
 	free(act);
 	return rc;

@@ -70,11 +70,12 @@ int calibrate_fit(const struct cohort *c, const struct model_data *md,
                   struct calibrate_result *out);
 
 /* The fit on explicit missions (the rows validate_mission_from_row built)
- * and their actual masses; the engine of calibrate_fit, exposed for tests
- * that build missions directly.  Starts from md->cal.  Rows whose mission
- * does not converge at the start are left out (n_rows counts the rest). */
+ * and their actual masses, with Tikhonov weight mu (calibrate_fit uses
+ * CALIBRATE_MU); the engine of calibrate_fit, exposed for tests that build
+ * missions directly.  Starts from md->cal.  Rows whose mission does not
+ * converge at the start are left out (n_rows counts the rest). */
 int calibrate_fit_missions(const struct mission_spec *specs, const double *actual_kg,
-                           size_t n, const struct model_data *md,
+                           size_t n, const struct model_data *md, double mu,
                            struct calibrate_result *out);
 
 #endif

@@ -283,14 +283,22 @@ validate_cohort(const struct cohort *c, const struct model_data *md,
 		}
 	}
 	free(work);
+	return validate_summarize(c, out);
+}
 
+int
+validate_summarize(const struct cohort *c, struct validate_report *out)
+{
+	free(out->by_class);
+	out->by_class = NULL;
+	out->n_classes = 0;
 	/* Parallel arrays over the rows that count. */
-	size_t n = c->n_rows ? c->n_rows : 1;
+	size_t n = out->n_rows ? out->n_rows : 1;
 	double *a = xmalloc(n * sizeof *a), *p = xmalloc(n * sizeof *p);
 	double *ba = xmalloc(n * sizeof *ba), *bp = xmalloc(n * sizeof *bp);
 	const char **keys = xmalloc(n * sizeof *keys);
 	size_t m = 0, nb = 0;
-	for (size_t i = 0; i < c->n_rows; i++) {
+	for (size_t i = 0; i < out->n_rows; i++) {
 		const struct validate_row *vr = &out->rows[i];
 		if (vr->status != VALIDATE_ROW_OK)
 			continue;

@@ -168,6 +168,12 @@ int validate_cohort(const struct cohort *c, const struct model_data *md,
 
 void validate_report_free(struct validate_report *v);
 
+/* The statistics part of validate_cohort: from v->rows (status, actual_kg,
+ * predicted_kg, has_battery and the battery masses) fills n_ok, mtow,
+ * the CI, by_class (keys from c's rows) and battery, replacing what was
+ * there.  Returns 0, or -1 if a statistic refused its input. */
+int validate_summarize(const struct cohort *c, struct validate_report *v);
+
 /* The group key of a row for the per-class statistics ("MicroAIO", ...). */
 const char *validate_class_key(const struct cohort_row *row);
 
