@@ -8,6 +8,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "aero.h"
 #include "engine.h"
 #include "sizing.h"
 #include "units.h"
@@ -144,7 +145,7 @@ validate_mission_from_row(const struct cohort_row *row, const struct model_data 
 	if (row->has_diagonal_wheelbase_mm) {
 		s->max_diameter_m = row->diagonal_wheelbase_mm / 1000.0;
 	} else {
-		s->max_diameter_m = d_m / ((1.0 - VALIDATE_TIP_CLEARANCE) * sin_arm);
+		s->max_diameter_m = d_m / ((1.0 - AERO_TIP_CLEARANCE) * sin_arm);
 		nt |= VALIDATE_NOTE_WHEELBASE_PROP;
 	}
 	s->given[SPECF_MAX_DIAMETER_M] = true;
@@ -155,7 +156,7 @@ validate_mission_from_row(const struct cohort_row *row, const struct model_data 
 	 * admits it.  The 1e-9 keeps the derived-wheelbase case (limit equal
 	 * to D by construction) on the locked side despite rounding. */
 	if (row->has_prop_diameter_in) {
-		double limit_m = (1.0 - VALIDATE_TIP_CLEARANCE) * s->max_diameter_m * sin_arm;
+		double limit_m = (1.0 - AERO_TIP_CLEARANCE) * s->max_diameter_m * sin_arm;
 		if (d_m <= limit_m * (1.0 + 1e-9)) {
 			s->locks.is_prop_locked = true;
 			s->locks.locked_diameter_in = row->prop_diameter_in;

@@ -64,7 +64,6 @@
 #include "spec.h"
 #include "stats.h"
 
-#define VALIDATE_TIP_CLEARANCE   0.05  /* ε of the overlap limit (= AERO_TIP_CLEARANCE) */
 #define VALIDATE_PITCH_RATIO     0.45  /* pitch/diameter when only D is known */
 #define VALIDATE_MAXFLIGHT_HOVER 0.8   /* hover-equivalent share of the max flight time */
 #define VALIDATE_BOOT_RESAMPLES  2000  /* bootstrap resamples of the MAPE CI */
