@@ -5,6 +5,7 @@
 #include "cli_build.h"
 #include "cli_front.h"
 #include "cli_solve.h"
+#include "cli_validate.h"
 
 int
 main(int argc, char **argv)
@@ -21,6 +22,10 @@ main(int argc, char **argv)
 		return cli_build(argc - 1, argv + 1);
 	if (argc >= 2 && strcmp(argv[1], "solve") == 0)
 		return cli_solve(argc - 1, argv + 1);
+	if (argc >= 2 && strcmp(argv[1], "validate") == 0)
+		return cli_validate(argc - 1, argv + 1);
+	if (argc >= 2 && strcmp(argv[1], "calibrate") == 0)
+		return cli_calibrate(argc - 1, argv + 1);
 	fprintf(stderr, "usage: aeroeval build|solve|check|schema|validate|calibrate|sensitivity ...\n");
 	return 2;
 }
