@@ -61,7 +61,9 @@ batt_current_a(double v_oc, double r_ohm, double power_w, double *current_a)
 	double disc = v_oc * v_oc - 4.0 * r_ohm * power_w;
 	if (disc < 0.0)
 		return BATT_COLLAPSE;
-	*current_a = (v_oc - sqrt(disc)) / (2.0 * r_ohm);
+	/* The smaller root written without cancellation, exact also for
+	 * R -> 0 where it tends to P / V. */
+	*current_a = 2.0 * power_w / (v_oc + sqrt(disc));
 	return BATT_OK;
 }
 

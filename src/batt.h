@@ -53,7 +53,8 @@ double batt_r_sys_ohm(const struct batt_chem *c, int cells, double capacity_ah,
                       double temp_c, int cycles, int n_rotors);
 
 /* Current drawn for power_w from a source v_oc behind r_ohm:
- * I = (V - sqrt(V² - 4 R P)) / (2 R).  Returns the status; *current_a is
+ * I = (V - sqrt(V² - 4 R P)) / (2 R), computed as 2P / (V + sqrt(...)) so
+ * that it stays exact as R -> 0.  Returns the status; *current_a is
  * set only when BATT_OK. */
 enum batt_status batt_current_a(double v_oc, double r_ohm, double power_w,
                                 double *current_a);

@@ -15,7 +15,7 @@
 /* Paper eq. (lambda), §V-B packaging base, §V-C C_wire. */
 const double calibrate_prior[CAL_N_PARAMS] = { 1.50, 1.08, 0.95, 0.80, 1.00, 1.04, 0.0015 };
 const double calibrate_lo[CAL_N_PARAMS] = { 0.5, 0.5, 0.5, 0.5, 0.5, 1.0, 0.0005 };
-const double calibrate_hi[CAL_N_PARAMS] = { 2.5, 2.5, 2.5, 2.5, 2.5, 1.3, 0.005 };
+const double calibrate_hi[CAL_N_PARAMS] = { 5.0, 5.0, 5.0, 5.0, 5.0, 1.3, 0.005 };
 
 static const char *const param_name[CAL_N_PARAMS] = {
 	"lambda MicroAIO", "lambda ConsumerFolding", "lambda EnterpriseRugged quad",

@@ -81,11 +81,11 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 		    m_to_in(limit));
 		ok = false;
 	}
-	double d_y = 0.5 * p->wheelbase_m * cos(M_PI / (double)p->n_rotors);
+	double d_y = 0.5 * p->wheelbase_m * cos(M_PI / (double)arms);
 	if (p->cg_shift_m >= d_y) {
 		snprintf(f1, sizeof f1, "Mount the payload within %.3f m of the centre", d_y);
 		snprintf(f2, sizeof f2, "Increase max_diameter_m above %.3f m",
-		    2.0 * p->cg_shift_m / cos(M_PI / (double)p->n_rotors));
+		    2.0 * p->cg_shift_m / cos(M_PI / (double)arms));
 		fx[2] = NULL;
 		feasibility_violation(r, run, "feasibility", "CG_OFFSET", fx,
 		    "The payload CG offset of %.3f m lies outside the rotor polygon "
@@ -289,7 +289,8 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 		    o->arm_natural_frequency_hz, o->blade_pass_low_hz,
 		    o->blade_pass_frequency_hz);
 	}
-	double d_y = 0.5 * p->wheelbase_m * cos(M_PI / (double)p->n_rotors);
+	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
+	double d_y = 0.5 * p->wheelbase_m * cos(M_PI / (double)arms);
 	add_check(o, "Payload CG offset", "m", p->cg_shift_m, d_y, true);
 
 	/* Role-specific limits. */

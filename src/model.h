@@ -35,6 +35,7 @@ struct model_class {
 	double kappa;           /* installed-FoM penalty */
 	double gamma;           /* body overhead on spar mass */
 	double avionics_kg;     /* avionics mass */
+	double shell_kg_m2;     /* body-shell areal mass (gauge × density) */
 	int cells_min;          /* series-cell range searched */
 	int cells_max;
 	bool small_platform;    /* racing/small wiring and ESC factors */

@@ -26,8 +26,10 @@ static void
 rd_error(struct rd *r, const char *field, const char *fmt, ...)
 {
 	va_list ap;
-	fprintf(r->err, "%s: error: %s%s%s: ", r->file, r->entry,
-	    (*r->entry && field && *field) ? "." : "", field ? field : "");
+	bool has_field = field != NULL && *field != '\0';
+	fprintf(r->err, "%s: error: %s%s%s%s", r->file, r->entry,
+	    (*r->entry && has_field) ? "." : "", has_field ? field : "",
+	    (*r->entry || has_field) ? ": " : "");
 	va_start(ap, fmt);
 	vfprintf(r->err, fmt, ap);
 	va_end(ap);
@@ -302,7 +304,7 @@ static void
 load_classes(struct rd *r, const cJSON *root, struct model_data *m)
 {
 	static const char *const keys[] = { "name", "kappa", "gamma", "avionics_kg",
-		"cells_min", "cells_max", "small_platform", "note", NULL };
+		"cells_min", "cells_max", "small_platform", "shell_kg_m2", "note", NULL };
 	bool seen[AF_CLASS_MAX] = { false };
 	const cJSON *a = rd_array(r, root, "classes");
 	if (a == NULL)
@@ -326,6 +328,7 @@ load_classes(struct rd *r, const cJSON *root, struct model_data *m)
 		c->kappa = rd_num(r, it, "kappa", 1, 3);
 		c->gamma = rd_num(r, it, "gamma", 0, 5);
 		c->avionics_kg = rd_num(r, it, "avionics_kg", 0, 20);
+		c->shell_kg_m2 = rd_num(r, it, "shell_kg_m2", 0, 50);
 		c->cells_min = rd_int(r, it, "cells_min", 1, 24);
 		c->cells_max = rd_int(r, it, "cells_max", 1, 24);
 		c->small_platform = rd_bool(r, it, "small_platform");

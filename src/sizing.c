@@ -52,6 +52,7 @@ struct eval {
 	struct structure_arm arm;
 	bool cg_ok;
 	bool min_fraction_binds;
+	double shell_kg;                /* body shell, part of mass.other_kg */
 	struct res_mass mass;
 	double peak_current_a;
 	struct discharge_out dis;
@@ -307,7 +308,11 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	 * resonance is checked afterwards (feasibility.c). */
 	double arm_len = 0.5 * p->wheelbase_m;
 	double t_cg;
-	e->cg_ok = structure_cg_thrust_n(mass_kg, nr, arm_len, p->cg_shift_m, &t_cg);
+	/* The CG polygon is that of the arms (a coaxial pair shares one). */
+	e->cg_ok = structure_cg_thrust_n(mass_kg, n_arms(p), arm_len,
+	    p->cg_shift_m, &t_cg);
+	if (p->coaxial)
+		t_cg *= 0.5; /* each rotor of the pair carries half the arm's share */
 	double per_arm = p->coaxial ? 2.0 : 1.0;
 	double force = fmax(p->load_factor * t_cg, e->t_peak_n) * per_arm;
 	double tip_kg = (motor_total / (double)nr + prop_each) * per_arm;
@@ -338,6 +343,11 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	    : SIZING_ESC_KG_PER_A * i_rotor * (double)nr * p->c_esc * scale;
 	e->mass.wiring_kg = p->wire_coef * e->peak_current_a * p->wheelbase_m * scale;
 	e->mass.avionics_kg = p->avionics_kg;
+	/* Body shell around the pack and the electronics (in other_kg). */
+	double v_body = (e->mass.battery_kg / SIZING_PACK_DENSITY_KG_M3
+	    + p->avionics_kg / SIZING_AVIONICS_DENSITY_KG_M3) / SIZING_BODY_FILL;
+	e->shell_kg = p->shell_kg_m2 * SIZING_BODY_SHAPE * 6.0 * pow(v_body, 2.0 / 3.0);
+	e->mass.other_kg += e->shell_kg;
 	e->mass.role_aux_kg = p->role_aux_kg;
 	e->mass.payload_kg = p->payload_kg;
 	e->mass.total_kg = e->mass.payload_kg + e->mass.battery_kg
@@ -498,7 +508,14 @@ iterate_cells(const struct sizing_params *p, int cells, double gamma_time,
  * rule agrees.  Integer cell counts can cycle (paper §II-D: step
  * discontinuities); on a repeat the higher count, with the lower current,
  * is kept. */
-#define CELL_PASSES 6
+#define CELL_PASSES 10
+
+/* The next series count up: every count to 6S, even counts above. */
+static int
+cells_up(int cells)
+{
+	return cells < 6 ? cells + 1 : cells + 2 - cells % 2;
+}
 
 static enum sizing_status
 iterate(const struct sizing_params *p, int cells_lo, int cells_hi,
@@ -526,8 +543,16 @@ iterate(const struct sizing_params *p, int cells_lo, int cells_hi,
 		tried[cells] = true;
 		st = iterate_cells(p, cells, gamma_time, m0, c0, out, last, m_star,
 		    c_star, ls_out);
-		if (st == SIZING_RUNAWAY)
-			break;
+		if (st == SIZING_RUNAWAY) {
+			/* Too few cells can make the current, and with it the
+			 * harness and ESC mass, run away: try a higher voltage
+			 * from the seed before giving up. */
+			if (cells >= cells_hi)
+				break;
+			cells = cells_up(cells) > cells_hi ? cells_hi : cells_up(cells);
+			m0 = c0 = 0.0;
+			continue;
+		}
 		int want = sizing_auto_cells(last->peak.electrical_w, *m_star,
 		    p->chem->v_nom, cells_lo, cells_hi);
 		if (want == cells)

@@ -47,6 +47,14 @@
 #define SIZING_ESC_RATING       1.2     /* ESC rating over the peak current */
 #define SIZING_PROP_EXPONENT    2.2    /* blade mass ~ D^2.2 */
 #define SIZING_CURRENT_BUDGET_A 60.0   /* bus current budget at 1 kg, A (× sqrt(M)) */
+/* Body shell (a mass term the paper leaves open): a minimum-gauge shell
+ * enclosing the battery and the electronics.  Volume from the pack and
+ * electronics densities at 50 % fill; surface of a box of that volume with
+ * a 1.2 shape factor over a cube. */
+#define SIZING_PACK_DENSITY_KG_M3 2200.0 /* LiPo/Li-ion pack incl. case */
+#define SIZING_AVIONICS_DENSITY_KG_M3 1000.0 /* boards, modules, cables */
+#define SIZING_BODY_FILL          0.5    /* fraction of the body that is equipment */
+#define SIZING_BODY_SHAPE         1.2    /* body surface over a cube's */
 #define SIZING_LOW_FLIGHT_RPM   0.7    /* lowest in-flight rpm / hover rpm (descent) */
 #define SIZING_WINDING_RISE_K   40.0   /* winding above ambient at hover, K (assumed) */
 
@@ -140,6 +148,7 @@ struct sizing_params {
 	double lambda;
 	double fixed_frame_kg;       /* > 0: frame mass given */
 	double avionics_kg;
+	double shell_kg_m2;          /* body-shell areal mass */
 	/* calibration */
 	double packaging_base;
 	double wire_coef;

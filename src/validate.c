@@ -15,7 +15,6 @@
 #include "xalloc.h"
 
 static const char *const note_text[VALIDATE_NOTE_COUNT] = {
-	"payload unknown: 0 kg",
 	"wheelbase from the propeller's overlap limit",
 	"propeller above the overlap limit: not locked",
 	"chemistry \"Li-ion\" read as Li-ion NMC",
@@ -38,6 +37,7 @@ const char *
 validate_skip_text(enum validate_skip s)
 {
 	switch (s) {
+	case VALIDATE_SKIP_PAYLOAD: return "payload of the takeoff figure unknown";
 	case VALIDATE_SKIP_ROTORS: return "rotor count unknown";
 	case VALIDATE_SKIP_CLASS: return "airframe class unknown";
 	case VALIDATE_SKIP_WHEELBASE: return "neither wheelbase nor propeller diameter known";
@@ -102,6 +102,8 @@ validate_mission_from_row(const struct cohort_row *row, const struct model_data 
 	spec_defaults(s);
 	*notes = 0;
 
+	if (!row->has_payload_kg)
+		return VALIDATE_SKIP_PAYLOAD;
 	if (!row->has_rotor_count)
 		return VALIDATE_SKIP_ROTORS;
 	if (!row->has_airframe_class)
@@ -114,9 +116,7 @@ validate_mission_from_row(const struct cohort_row *row, const struct model_data 
 	snprintf(s->name, sizeof s->name, "%s", row->name);
 	s->given[SPECF_NAME] = true;
 
-	s->payload_kg = row->has_payload_kg ? row->payload_kg : 0.0;
-	if (!row->has_payload_kg)
-		nt |= VALIDATE_NOTE_PAYLOAD_ZERO;
+	s->payload_kg = row->payload_kg;
 	s->given[SPECF_PAYLOAD_KG] = true;
 
 	s->num_rotors = row->rotor_count;

@@ -7,11 +7,13 @@
  * THE MISSION RULE (validate_mission_from_row), applied identically to every
  * row and using only the row's own facts — never takeoff_mass_kg,
  * empty_mass_kg, battery_mass_kg or anything derived from them:
- *   payload     payload_kg; unknown -> 0 (noted).  The cohort's takeoff
- *               masses are the aircraft's own mass (integrated-camera
- *               aircraft say 0); no other fact of a row bounds a payload,
- *               and empty_mass_kg is off limits because takeoff minus empty
- *               is the answer.
+ *   payload     payload_kg (integrated-camera aircraft say 0); unknown ->
+ *               row skipped.  A takeoff figure is the aircraft plus what it
+ *               carries: without that fact the row cannot be predicted (a
+ *               rated maximum takeoff mass with 0 kg of payload would only
+ *               measure the missing payload), no other fact bounds it, and
+ *               empty_mass_kg is off limits (takeoff minus empty is the
+ *               answer).
  *   rotors      rotor_count; unknown -> row skipped (a guess between 4, 6
  *               and 8 would change the prediction by tens of percent).
  *   coaxial     coaxial; unknown -> flat (noted): coaxial aircraft are the
@@ -71,20 +73,20 @@
 
 /* Stand-ins the rule used for a row (bit flags, validate_note_text). */
 enum validate_note {
-	VALIDATE_NOTE_PAYLOAD_ZERO   = 1u << 0, /* payload unknown, taken as 0 */
-	VALIDATE_NOTE_WHEELBASE_PROP = 1u << 1, /* wheelbase from the prop overlap */
-	VALIDATE_NOTE_PROP_OVER      = 1u << 2, /* prop above the overlap limit, not locked */
-	VALIDATE_NOTE_CHEM_FAMILY    = 1u << 3, /* "Li-ion" -> "Li-ion NMC" */
-	VALIDATE_NOTE_CHEM_DEFAULT   = 1u << 4, /* chemistry unknown -> LiPo */
-	VALIDATE_NOTE_COAX_DEFAULT   = 1u << 5, /* coaxial unknown -> flat */
-	VALIDATE_NOTE_ROLE_DEFAULT   = 1u << 6, /* role unknown -> none */
-	VALIDATE_NOTE_MAX_FLIGHT     = 1u << 7, /* endurance from the max flight time */
-	VALIDATE_NOTE_COUNT          = 8
+	VALIDATE_NOTE_WHEELBASE_PROP = 1u << 0, /* wheelbase from the prop overlap */
+	VALIDATE_NOTE_PROP_OVER      = 1u << 1, /* prop above the overlap limit, not locked */
+	VALIDATE_NOTE_CHEM_FAMILY    = 1u << 2, /* "Li-ion" -> "Li-ion NMC" */
+	VALIDATE_NOTE_CHEM_DEFAULT   = 1u << 3, /* chemistry unknown -> LiPo */
+	VALIDATE_NOTE_COAX_DEFAULT   = 1u << 4, /* coaxial unknown -> flat */
+	VALIDATE_NOTE_ROLE_DEFAULT   = 1u << 5, /* role unknown -> none */
+	VALIDATE_NOTE_MAX_FLIGHT     = 1u << 6, /* endurance from the max flight time */
+	VALIDATE_NOTE_COUNT          = 7
 };
 
 /* Why a row was skipped. */
 enum validate_skip {
 	VALIDATE_SKIP_NONE,        /* not skipped */
+	VALIDATE_SKIP_PAYLOAD,     /* payload of the takeoff figure unknown */
 	VALIDATE_SKIP_ROTORS,      /* rotor count unknown */
 	VALIDATE_SKIP_CLASS,       /* airframe class unknown */
 	VALIDATE_SKIP_WHEELBASE,   /* neither wheelbase nor propeller known */
@@ -102,7 +104,7 @@ enum validate_status {
 	VALIDATE_ROW_STATUS_MAX
 };
 
-/* The one-line text of a single note flag ("payload unknown: 0 kg"), or "". */
+/* The one-line text of a single note flag ("role unknown: none"), or "". */
 const char *validate_note_text(unsigned note);
 
 /* The text of a skip reason ("rotor count unknown"), "" for NONE. */

@@ -87,7 +87,7 @@ rule_should_derive_the_wheelbase_from_the_overlap_limit(void **state)
 	/* 0.8 x 25 min of advertised flight, brought to the reserve. */
 	assert_rel(s.t_hover_s, 0.8 * 25 * 60 / 1.2, 1e-12);
 	assert_int_equal(notes, VALIDATE_NOTE_WHEELBASE_PROP | VALIDATE_NOTE_CHEM_FAMILY
-	    | VALIDATE_NOTE_MAX_FLIGHT | VALIDATE_NOTE_PAYLOAD_ZERO);
+	    | VALIDATE_NOTE_MAX_FLIGHT);
 
 	/* Coaxial X8: four arms; "lipo" names the LiPo profile. */
 	assert_int_equal(validate_mission_from_row(&c.rows[2], &md, &s, &notes),
@@ -141,7 +141,7 @@ rule_should_skip_rows_without_a_needed_fact(void **state)
 	assert_int_equal(validate_mission_from_row(&c.rows[7], &md, &s, &notes),
 	    VALIDATE_SKIP_ENDURANCE);
 	assert_int_equal(notes, 0);
-	for (int k = VALIDATE_SKIP_ROTORS; k < VALIDATE_SKIP_MAX; k++)
+	for (int k = VALIDATE_SKIP_PAYLOAD; k < VALIDATE_SKIP_MAX; k++)
 		assert_true(strlen(validate_skip_text(k)) > 0);
 	cohort_free(&c);
 }
