@@ -1,0 +1,356 @@
+/* test_engine.c — whole solves: the paper's design rules seen through
+ * engine_solve (T/W = 1/θ², the baseline at θ = 0.60) and the physical
+ * monotonicities a sizing tool must respect (payload, altitude, ambient,
+ * auxiliary power), chemistry and layout variants, every shipped example,
+ * and determinism.  Missions are built from spec_defaults() plus fields
+ * marked given[], as the parser would; tests run from the repository root.
+ */
+#include "test_util.h"
+#include "cli.h"
+#include "diag.h"
+#include "engine.h"
+#include "mission_io.h"
+#include "units.h"
+#include "xalloc.h"
+
+#include <dirent.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define SET(s, id, member, value) \
+	do { (s)->member = (value); (s)->given[SPECF_##id] = true; } while (0)
+
+struct fixture {
+	struct cli_env env;
+	struct solve_result *a, *b;  /* two results, on the heap (230 kB each) */
+};
+
+static int
+setup(void **state)
+{
+	struct fixture *f = xcalloc(1, sizeof *f);
+	if (cli_env_load(&f->env, NULL, 0, stderr) != 0) {
+		free(f);
+		return -1;
+	}
+	f->a = xcalloc(1, sizeof *f->a);
+	f->b = xcalloc(1, sizeof *f->b);
+	*state = f;
+	return 0;
+}
+
+static int
+teardown(void **state)
+{
+	struct fixture *f = *state;
+	cli_env_free(&f->env);
+	free(f->a);
+	free(f->b);
+	free(f);
+	return 0;
+}
+
+/* A 1.385 kg imaging quad on 850 mm: 60 s climb, 5 min cruise, 10 min hover. */
+static void
+imaging_mission(struct mission_spec *s)
+{
+	spec_defaults(s);
+	SET(s, PAYLOAD_KG, payload_kg, 1.385);
+	SET(s, MAX_DIAMETER_M, max_diameter_m, 0.85);
+	SET(s, NUM_ROTORS, num_rotors, 4);
+	SET(s, AIRFRAME_CLASS, airframe_class, AF_ENTERPRISE_RUGGED);
+	SET(s, T_HOVER_S, t_hover_s, 600.0);
+	SET(s, T_CLIMB_S, t_climb_s, 60.0);
+	SET(s, T_FORWARD_S, t_forward_s, 300.0);
+	SET(s, V_CLIMB_MS, v_climb_ms, 2.5);
+	SET(s, V_FORWARD_MS, v_forward_ms, 10.0);
+	SET(s, ROLE_TYPE, payload_role.type, ROLE_IMAGING);
+}
+
+static void
+solve(struct fixture *f, const struct mission_spec *s, struct solve_result *r)
+{
+	memset(r, 0, sizeof *r);
+	assert_int_equal(engine_solve(s, &f->env.model, NULL, r), 0);
+}
+
+static double
+breakdown_sum(const struct res_mass *m)
+{
+	return m->payload_kg + m->battery_kg + m->frame_kg + m->arm_kg
+	    + m->motor_kg + m->prop_kg + m->esc_kg + m->wiring_kg
+	    + m->avionics_kg + m->role_aux_kg + m->other_kg;
+}
+
+/* A run that converged to finite numbers whose breakdown adds up. */
+static void
+assert_sound_run(const struct res_run *o)
+{
+	assert_true(o->ran);
+	assert_true(o->converged);
+	assert_true(o->iterations >= 1 && o->iterations < SIZING_MAX_ITER);
+	const double v[] = { o->mass.total_kg, o->mass.battery_kg, o->mass.frame_kg,
+		o->mass.arm_kg, o->mass.motor_kg, o->mass.prop_kg, o->mass.esc_kg,
+		o->mass.wiring_kg, o->mass.other_kg, o->capacity_mah, o->energy_wh,
+		o->thrust_to_weight, o->max_battery_temp_c, o->min_terminal_voltage_v,
+		o->arm_natural_frequency_hz, o->hover_endurance_s, o->peak_power_w,
+		o->downwash_ms, o->lipschitz, o->flight_time_s, o->fom_installed,
+		o->rpm_hover, o->arm_outer_diameter_mm };
+	for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
+		assert_true(isfinite(v[i]));
+	for (int i = 0; i < o->n_history; i++)
+		assert_true(isfinite(o->history_kg[i]));
+	for (int i = 0; i < o->n_trace; i++)
+		assert_true(isfinite(o->trace[i].v_term_v) && isfinite(o->trace[i].temp_c));
+	assert_true(o->mass.total_kg > o->mass.payload_kg);
+	assert_rel(breakdown_sum(&o->mass), o->mass.total_kg, 1e-9);
+}
+
+/* ---- the paper's design rules ------------------------------------------- */
+
+static void
+engine_baseline_thrust_to_weight_should_be_1_over_0_6_squared(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	/* null role, θ_hvr = 1 - 0.40 = 0.60: T/W = 1/0.36 = 2.7777778 */
+	assert_rel(f->a->baseline.thrust_to_weight, 2.7777778, 1e-7);
+	assert_rel(f->a->baseline.hover_throttle, 0.60, 1e-12);
+}
+
+static void
+engine_thrust_to_weight_should_be_1_over_theta_squared_for_margin_0_45(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	/* imaging: margin 0.45, θ_hvr = 0.55: T/W = 1/0.3025 = 3.3057851 */
+	assert_rel(f->a->custom.thrust_to_weight, 3.3057851, 1e-7);
+	assert_rel(f->a->custom.thrust_to_weight, 3.306, 1e-4);
+	assert_rel(f->a->custom.hover_throttle, 0.55, 1e-12);
+}
+
+static void
+engine_should_reject_a_cg_offset_at_or_beyond_d_y(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	/* d_y = 0.425 cos(π/4) = 0.30052 m; 0.3385 m is beyond it */
+	SET(&s, ROLE_CG_SHIFT_M, payload_role.cg_shift_m, 0.3385);
+	solve(f, &s, f->a);
+	assert_false(f->a->custom.ran);
+	assert_false(f->a->feasible);
+	assert_true(f->a->n_violations >= 1);
+	assert_true(f->a->baseline.ran); /* the baseline has no CG offset */
+}
+
+/* ---- monotonic responses ------------------------------------------------ */
+
+static void
+engine_mtow_should_grow_with_payload(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	SET(&s, PAYLOAD_KG, payload_kg, 2.385);
+	solve(f, &s, f->b);
+	assert_sound_run(&f->a->custom);
+	assert_sound_run(&f->b->custom);
+	/* at least the extra kilogram, plus the mass it compounds */
+	assert_true(f->b->custom.mass.total_kg > f->a->custom.mass.total_kg + 1.0);
+}
+
+static void
+engine_mtow_at_5000_m_should_exceed_sea_level(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	SET(&s, ALTITUDE_M, altitude_m, 5000.0);
+	solve(f, &s, f->b);
+	assert_sound_run(&f->a->custom);
+	assert_sound_run(&f->b->custom);
+	/* the standard day up there: 255.65 K = -17.5 °C */
+	assert_rel(f->b->mission.ambient_temp_c, -17.5, 1e-9);
+	assert_true(f->b->custom.mass.total_kg > f->a->custom.mass.total_kg);
+}
+
+static void
+engine_peak_battery_temperature_should_rise_with_ambient(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	SET(&s, AMBIENT_TEMP_C, ambient_temp_c, 5.0);
+	solve(f, &s, f->a);
+	SET(&s, AMBIENT_TEMP_C, ambient_temp_c, 38.5);
+	solve(f, &s, f->b);
+	assert_sound_run(&f->a->custom);
+	assert_sound_run(&f->b->custom);
+	assert_true(f->b->custom.max_battery_temp_c > f->a->custom.max_battery_temp_c);
+	assert_true(f->a->custom.max_battery_temp_c >= 5.0);
+}
+
+static void
+engine_approved_time_should_fall_as_aux_power_rises_on_a_locked_battery(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	/* A locked 6S 2385 mAh pack too small for the full 16 min mission:
+	 * the goal relaxation shortens it, the more so the more aux power. */
+	SET(&s, LOCK_BATTERY, locks.is_battery_locked, true);
+	SET(&s, LOCK_CAPACITY_MAH, locks.locked_capacity_mah, 2385.0);
+	SET(&s, LOCK_CELL_COUNT, locks.locked_cell_count, 6);
+	SET(&s, LOCK_AUTO_REDUCE, locks.auto_reduce_flight_time, true);
+	SET(&s, ROLE_AUX_POWER_W, payload_role.aux_power_w, 15.0);
+	solve(f, &s, f->a);
+	SET(&s, ROLE_AUX_POWER_W, payload_role.aux_power_w, 238.5);
+	solve(f, &s, f->b);
+	assert_true(f->a->custom.converged && f->b->custom.converged);
+	print_message("aux 15 W: gamma %.4f, %.1f s; aux 238.5 W: gamma %.4f, %.1f s\n", f->a->custom.time_scale, f->a->custom.flight_time_s, f->b->custom.time_scale, f->b->custom.flight_time_s);
+	assert_true(f->a->custom.time_scale < 1.0);
+	assert_true(f->b->custom.time_scale >= SIZING_GAMMA_MIN);
+	assert_true(f->b->custom.flight_time_s < f->a->custom.flight_time_s);
+	assert_rel(f->b->custom.capacity_mah, 2385.0, 1e-12);
+}
+
+/* ---- variants ---------------------------------------------------------- */
+
+static void
+engine_nmc_and_lipo_should_both_converge_with_different_batteries(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	strcpy(s.battery_chemistry, "Li-ion NMC");
+	s.given[SPECF_BATTERY_CHEMISTRY] = true;
+	solve(f, &s, f->b);
+	assert_sound_run(&f->a->custom);
+	assert_sound_run(&f->b->custom);
+	assert_string_equal(f->a->custom.chemistry, "LiPo");
+	assert_string_equal(f->b->custom.chemistry, "Li-ion NMC");
+	assert_true(fabs(f->b->custom.mass.battery_kg - f->a->custom.mass.battery_kg) > 1e-3);
+	/* cylindrical cells: η_pkg = 1.15 */
+	assert_rel(f->b->custom.packaging_factor, 1.15, 1e-12);
+}
+
+static void
+engine_coaxial_x8_should_converge_with_the_quad_overlap_limit(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	SET(&s, NUM_ROTORS, num_rotors, 8);
+	SET(&s, COAXIAL_LAYOUT, coaxial_layout, true);
+	solve(f, &s, f->a);
+	assert_sound_run(&f->a->custom);
+	/* 4 arms: 0.95 · 0.85 · sin(π/4) = 0.570990 m = 22.4799 in */
+	assert_rel(f->a->custom.overlap_limit_in, 22.4799, 1e-5);
+}
+
+static void
+engine_hover_only_mission_should_converge(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	SET(&s, T_CLIMB_S, t_climb_s, 0.0);
+	SET(&s, T_FORWARD_S, t_forward_s, 0.0);
+	solve(f, &s, f->a);
+	assert_sound_run(&f->a->custom);
+	assert_rel(f->a->custom.flight_time_s, 600.0, 1e-12);
+}
+
+static void
+engine_forward_only_mission_should_converge(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	SET(&s, T_CLIMB_S, t_climb_s, 0.0);
+	SET(&s, T_HOVER_S, t_hover_s, 0.0);
+	SET(&s, T_FORWARD_S, t_forward_s, 1385.0);
+	solve(f, &s, f->a);
+	assert_sound_run(&f->a->custom);
+	assert_rel(f->a->custom.flight_time_s, 1385.0, 1e-12);
+}
+
+/* ---- examples and determinism ------------------------------------------ */
+
+static void
+engine_every_example_should_converge_to_finite_numbers(void **state)
+{
+	struct fixture *f = *state;
+	DIR *d = opendir("examples");
+	assert_non_null(d);
+	int n = 0;
+	struct dirent *e;
+	while ((e = readdir(d)) != NULL) {
+		size_t len = strlen(e->d_name);
+		if (len < 6 || strcmp(e->d_name + len - 5, ".json") != 0)
+			continue;
+		char path[512];
+		snprintf(path, sizeof path, "examples/%s", e->d_name);
+		struct diag *dg = diag_alloc(NULL);
+		struct mission_spec s;
+		int errors = mission_io_load(path, f->env.model.chem_names, dg, &s);
+		if (errors != 0)
+			print_error("%s: %s\n", path, diag_text(dg));
+		diag_free(dg);
+		assert_int_equal(errors, 0);
+		solve(f, &s, f->a);
+		print_message("%-36s custom %8.4f kg in %3d iterations\n", e->d_name,
+		    f->a->custom.mass.total_kg, f->a->custom.iterations);
+		assert_sound_run(&f->a->baseline);
+		assert_sound_run(&f->a->custom);
+		n++;
+	}
+	closedir(d);
+	assert_true(n >= 1);
+}
+
+static void
+engine_solve_should_be_deterministic(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	solve(f, &s, f->b);
+	assert_memory_equal(&f->a->custom.mass, &f->b->custom.mass, sizeof f->a->custom.mass);
+	assert_int_equal(f->a->custom.n_history, f->b->custom.n_history);
+	assert_memory_equal(f->a->custom.history_kg, f->b->custom.history_kg,
+	    sizeof f->a->custom.history_kg[0] * (size_t)f->a->custom.n_history);
+	assert_memory_equal(&f->a->baseline.mass, &f->b->baseline.mass, sizeof f->a->baseline.mass);
+}
+
+int
+main(void)
+{
+#define T(name) cmocka_unit_test_setup_teardown(name, setup, teardown)
+	const struct CMUnitTest tests[] = {
+		T(engine_baseline_thrust_to_weight_should_be_1_over_0_6_squared),
+		T(engine_thrust_to_weight_should_be_1_over_theta_squared_for_margin_0_45),
+		T(engine_should_reject_a_cg_offset_at_or_beyond_d_y),
+		T(engine_mtow_should_grow_with_payload),
+		T(engine_mtow_at_5000_m_should_exceed_sea_level),
+		T(engine_peak_battery_temperature_should_rise_with_ambient),
+		T(engine_approved_time_should_fall_as_aux_power_rises_on_a_locked_battery),
+		T(engine_nmc_and_lipo_should_both_converge_with_different_batteries),
+		T(engine_coaxial_x8_should_converge_with_the_quad_overlap_limit),
+		T(engine_hover_only_mission_should_converge),
+		T(engine_forward_only_mission_should_converge),
+		T(engine_every_example_should_converge_to_finite_numbers),
+		T(engine_solve_should_be_deterministic),
+	};
+#undef T
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
