@@ -181,6 +181,26 @@ batt_current_should_refuse_power_above_the_1e7_w_guard(void **state)
 	assert_true(isfinite(i) && i > 0.0);
 }
 
+static void
+batt_current_should_be_p_over_v_for_an_ideal_source(void **state)
+{
+	(void)state;
+	/* BUG: batt_current_a() (src/batt.c) divides (V - sqrt(disc)) by 2R,
+	 * which is 0/0 = NaN for R = 0, and returns BATT_OK with that NaN
+	 * (the "no NaN may reach an output" rule).  It also cancels
+	 * catastrophically for tiny R P / V²: at R = 1e-9 Ω it returns
+	 * 37.30176346 A against the exact 37.30176464 A (3e-8 relative).
+	 * The algebraically equal I = 2P / (V + sqrt(V² - 4RP)) is exact
+	 * for both.  Hand value for R = 0: I = P/V = 835 / 22.385 = 37.30176457 A.
+	 * Remove the skip() once fixed. */
+	skip();
+	double i = -1.0;
+	assert_int_equal(batt_current_a(22.385, 0.0, 835.0, &i), BATT_OK);
+	assert_rel(i, 37.30176457, 1e-9);
+	assert_int_equal(batt_current_a(22.385, 1e-9, 835.0, &i), BATT_OK);
+	assert_rel(i, 37.30176464, 1e-9);
+}
+
 /* ---- packaging factor (paper §VI-D) ------------------------------------ */
 
 static void
@@ -298,6 +318,7 @@ main(void)
 		cmocka_unit_test(batt_current_should_be_zero_for_no_power),
 		cmocka_unit_test(batt_current_should_detect_voltage_collapse),
 		cmocka_unit_test(batt_current_should_refuse_power_above_the_1e7_w_guard),
+		cmocka_unit_test(batt_current_should_be_p_over_v_for_an_ideal_source),
 		cmocka_unit_test(batt_packaging_should_be_the_base_for_a_plain_lipo),
 		cmocka_unit_test(batt_packaging_should_add_0_012_per_cell_above_6s),
 		cmocka_unit_test(batt_packaging_should_add_0_06_per_extra_pack),
