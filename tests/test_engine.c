@@ -14,6 +14,7 @@
 #include "xalloc.h"
 
 #include <dirent.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -104,6 +105,19 @@ assert_sound_run(const struct res_run *o)
 		assert_true(isfinite(o->trace[i].v_term_v) && isfinite(o->trace[i].temp_c));
 	assert_true(o->mass.total_kg > o->mass.payload_kg);
 	assert_rel(breakdown_sum(&o->mass), o->mass.total_kg, 1e-9);
+	/* the convergence certificate of eq. (lipschitz) */
+	assert_true(o->lipschitz < 1.0);
+}
+
+/* Does r hold a violation with this code for this run? */
+static bool
+has_violation(const struct solve_result *r, const char *run, const char *code)
+{
+	for (int i = 0; i < r->n_violations; i++)
+		if (strcmp(r->violations[i].run, run) == 0
+		    && strcmp(r->violations[i].code, code) == 0)
+			return true;
+	return false;
 }
 
 /* ---- the paper's design rules ------------------------------------------- */
@@ -172,6 +186,68 @@ engine_coaxial_cg_limit_should_use_the_four_arm_polygon(void **state)
 	SET(&s, ROLE_CG_SHIFT_M, payload_role.cg_shift_m, 0.2385);
 	solve(f, &s, f->a);
 	assert_false(f->a->custom.ran);
+}
+
+static void
+engine_racing_margin_0_8_should_target_thrust_to_weight_25(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	/* paper §II-E: racing θ_hvr = 1 - 0.80 = 0.20, T/W = 1/0.04 = 25.0 */
+	SET(&s, ROLE_THRUST_MARGIN, payload_role.thrust_margin_override, 0.80);
+	solve(f, &s, f->a);
+	assert_rel(f->a->custom.thrust_to_weight, 25.0, 1e-12);
+	assert_rel(f->a->custom.hover_throttle, 0.20, 1e-12);
+}
+
+static void
+engine_should_reject_a_mission_without_flight_time(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	SET(&s, T_HOVER_S, t_hover_s, 0.0);
+	SET(&s, T_CLIMB_S, t_climb_s, 0.0);
+	SET(&s, T_FORWARD_S, t_forward_s, 0.0);
+	solve(f, &s, f->a);
+	assert_false(f->a->custom.ran);
+	assert_false(f->a->feasible);
+	assert_true(has_violation(f->a, "custom", "NO_MISSION"));
+}
+
+static void
+engine_mass_runaway_should_be_reported_with_finite_numbers(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	/* 238.5 kg on a 500 mm quad: L ≥ 1, the mass runs past 150 kg */
+	SET(&s, PAYLOAD_KG, payload_kg, 238.5);
+	SET(&s, MAX_DIAMETER_M, max_diameter_m, 0.5);
+	solve(f, &s, f->a);
+	const struct res_run *o = &f->a->custom;
+	assert_true(o->ran);
+	assert_false(o->converged);
+	assert_false(f->a->feasible);
+	assert_true(has_violation(f->a, "custom", "MASS_RUNAWAY"));
+	assert_true(isfinite(o->mass.total_kg) && o->mass.total_kg > SIZING_RUNAWAY_KG);
+	for (int i = 0; i < o->n_history; i++)
+		assert_true(isfinite(o->history_kg[i]));
+}
+
+static void
+engine_marketing_endurance_should_exceed_the_mission_hover_endurance(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	SET(&s, MARKETING, evaluate_marketing_limits, true);
+	solve(f, &s, f->a);
+	assert_sound_run(&f->a->custom);
+	/* no payload, no aux load, no reserve, 25 °C: the best case */
+	assert_true(f->a->custom.hover_endurance_s > 0.0);
+	assert_true(f->a->custom.marketing_endurance_s > f->a->custom.hover_endurance_s);
 }
 
 /* ---- monotonic responses ------------------------------------------------ */
@@ -358,6 +434,52 @@ engine_solve_should_be_deterministic(void **state)
 	assert_memory_equal(&f->a->baseline.mass, &f->b->baseline.mass, sizeof f->a->baseline.mass);
 }
 
+/* Solves running in parallel must give the serial answers: no mutable
+ * global state (COMMON.md). */
+struct job {
+	const struct model_data *md;
+	struct mission_spec spec;
+	struct solve_result *r;
+	int rc;
+};
+
+static void *
+job_run(void *arg)
+{
+	struct job *j = arg;
+	j->rc = engine_solve(&j->spec, j->md, NULL, j->r);
+	return NULL;
+}
+
+static void
+engine_parallel_solves_should_match_serial_ones(void **state)
+{
+	struct fixture *f = *state;
+	enum { N = 4 };
+	struct job jobs[N];
+	pthread_t th[N];
+	for (int i = 0; i < N; i++) {
+		imaging_mission(&jobs[i].spec);
+		SET(&jobs[i].spec, PAYLOAD_KG, payload_kg, 0.85 + 0.5 * (double)i);
+		jobs[i].md = &f->env.model;
+		jobs[i].r = xcalloc(1, sizeof *jobs[i].r);
+	}
+	for (int i = 0; i < N; i++)
+		assert_int_equal(pthread_create(&th[i], NULL, job_run, &jobs[i]), 0);
+	for (int i = 0; i < N; i++)
+		assert_int_equal(pthread_join(th[i], NULL), 0);
+	for (int i = 0; i < N; i++) {
+		assert_int_equal(jobs[i].rc, 0);
+		solve(f, &jobs[i].spec, f->a);
+		assert_memory_equal(&f->a->custom.mass, &jobs[i].r->custom.mass,
+		    sizeof f->a->custom.mass);
+		assert_int_equal(f->a->custom.n_history, jobs[i].r->custom.n_history);
+		assert_memory_equal(f->a->custom.history_kg, jobs[i].r->custom.history_kg,
+		    sizeof f->a->custom.history_kg[0] * (size_t)f->a->custom.n_history);
+		free(jobs[i].r);
+	}
+}
+
 int
 main(void)
 {
@@ -367,6 +489,10 @@ main(void)
 		T(engine_thrust_to_weight_should_be_1_over_theta_squared_for_margin_0_45),
 		T(engine_should_reject_a_cg_offset_at_or_beyond_d_y),
 		T(engine_coaxial_cg_limit_should_use_the_four_arm_polygon),
+		T(engine_racing_margin_0_8_should_target_thrust_to_weight_25),
+		T(engine_should_reject_a_mission_without_flight_time),
+		T(engine_mass_runaway_should_be_reported_with_finite_numbers),
+		T(engine_marketing_endurance_should_exceed_the_mission_hover_endurance),
 		T(engine_mtow_should_grow_with_payload),
 		T(engine_mtow_at_5000_m_should_exceed_sea_level),
 		T(engine_peak_battery_temperature_should_rise_with_ambient),
@@ -377,6 +503,7 @@ main(void)
 		T(engine_forward_only_mission_should_converge),
 		T(engine_every_example_should_converge_to_finite_numbers),
 		T(engine_solve_should_be_deterministic),
+		T(engine_parallel_solves_should_match_serial_ones),
 	};
 #undef T
 	return cmocka_run_group_tests(tests, NULL, NULL);

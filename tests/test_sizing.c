@@ -195,6 +195,40 @@ sizing_run_should_drop_the_parcel_at_r_drop_times_t_total(void **state)
 }
 
 static void
+sizing_run_should_spray_the_tank_linearly_over_the_mission(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	struct res_run *o = xcalloc(1, sizeof *o);
+	/* 12.385 kg of liquid on an agricultural octo; no spray rate given:
+	 * ṁ = 12.385 / (30 + 300 + 600) = 12.385 / 930 = 0.013317204 kg/s */
+	spec_defaults(&s);
+	SET(&s, PAYLOAD_KG, payload_kg, 12.385);
+	SET(&s, MAX_DIAMETER_M, max_diameter_m, 1.85);
+	SET(&s, NUM_ROTORS, num_rotors, 8);
+	SET(&s, AIRFRAME_CLASS, airframe_class, AF_AGRICULTURAL);
+	SET(&s, T_HOVER_S, t_hover_s, 600.0);
+	SET(&s, T_CLIMB_S, t_climb_s, 30.0);
+	SET(&s, T_FORWARD_S, t_forward_s, 300.0);
+	SET(&s, V_FORWARD_MS, v_forward_ms, 5.0);
+	SET(&s, ROLE_TYPE, payload_role.type, ROLE_AGRICULTURE);
+	assert_int_equal(run(&f->env.model, &s, o), SIZING_CONVERGED);
+	double rate = 12.385 / 930.0;
+	double m0 = o->trace[0].mass_kg;
+	assert_true(o->n_trace > 100);
+	/* Each sample holds the mid-step mass of the step ending at t_s, so it
+	 * lies within one step (≤ 930/100 s) of the straight line. */
+	for (int i = 1; i < o->n_trace; i++) {
+		double want = m0 - rate * o->trace[i].t_s;
+		assert_true(fabs(o->trace[i].mass_kg - want) <= rate * 9.3);
+		assert_true(o->trace[i].mass_kg <= o->trace[i - 1].mass_kg);
+	}
+	/* the tank is (almost) empty at the end */
+	assert_true(fabs(o->trace[o->n_trace - 1].mass_kg - (m0 - 12.385)) <= rate * 9.3);
+	free(o);
+}
+
+static void
 sizing_relaxation_should_scale_times_by_a_gamma_of_at_least_0_05(void **state)
 {
 	struct fixture *f = *state;
@@ -230,6 +264,7 @@ main(void)
 		cmocka_unit_test(sizing_pitch_should_be_inflow_angle_plus_4_degrees_at_75_percent_radius),
 		cmocka_unit_test_setup_teardown(sizing_run_should_converge_to_a_1_g_fixed_point, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_run_should_drop_the_parcel_at_r_drop_times_t_total, setup, teardown),
+		cmocka_unit_test_setup_teardown(sizing_run_should_spray_the_tank_linearly_over_the_mission, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_relaxation_should_scale_times_by_a_gamma_of_at_least_0_05, setup, teardown),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
