@@ -250,6 +250,38 @@ engine_marketing_endurance_should_exceed_the_mission_hover_endurance(void **stat
 	assert_true(f->a->custom.marketing_endurance_s > f->a->custom.hover_endurance_s);
 }
 
+static void
+engine_hover_phase_should_follow_the_paper_rotor_model(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	const struct res_run *o = &f->a->custom;
+	assert_sound_run(o);
+	struct atmo_state air;
+	atmo_at(0.0, c_to_k(15.0), &air);
+	double d = in_to_m(o->opt.prop_diameter_in);
+	double area = 0.25 * M_PI * d * d;
+	double m = o->mass.total_kg; /* f(M*), within 1 g of M* */
+	/* D = the quad overlap limit 0.95 · 0.85 · sin(π/4) = 0.570989 m */
+	assert_rel(d, 0.570989, 1e-5);
+	/* FoM = 0.75 / 1.25 · (1 - exp(-Re/20000)), floored at 0.38 */
+	double fom = 0.6 * (1.0 - exp(-o->reynolds_tip / 20000.0));
+	assert_rel(o->fom_installed, fom > 0.38 ? fom : 0.38, 1e-12);
+	/* k_int = 1 + 0.6 d_arm / D (offset arms), capped at 1.15 */
+	double k = 1.0 + 0.6 * o->arm_outer_diameter_mm / 1000.0 / d;
+	assert_rel(o->interference, k < 1.15 ? k : 1.15, 1e-3);
+	/* hover shaft power = N T v_h / (FoM / k_int), T = M g / N */
+	double t = m * G0_M_S2 / 4.0;
+	double vh = sqrt(t / (2.0 * air.rho_kg_m3 * area));
+	assert_rel(o->phase[PHASE_HOVER].thrust_per_rotor_n, t, 1e-3);
+	assert_rel(o->phase[PHASE_HOVER].shaft_power_w,
+	    4.0 * t * vh * o->interference / o->fom_installed, 2e-3);
+	/* eq. (downwash): 2 sqrt(M g / (2 ρ N A)) */
+	assert_rel(o->downwash_ms, 2.0 * vh, 1e-3);
+}
+
 /* ---- monotonic responses ------------------------------------------------ */
 
 static void
@@ -490,6 +522,7 @@ main(void)
 		T(engine_should_reject_a_cg_offset_at_or_beyond_d_y),
 		T(engine_coaxial_cg_limit_should_use_the_four_arm_polygon),
 		T(engine_racing_margin_0_8_should_target_thrust_to_weight_25),
+		T(engine_hover_phase_should_follow_the_paper_rotor_model),
 		T(engine_should_reject_a_mission_without_flight_time),
 		T(engine_mass_runaway_should_be_reported_with_finite_numbers),
 		T(engine_marketing_endurance_should_exceed_the_mission_hover_endurance),

@@ -9,6 +9,7 @@
  */
 #include "test_util.h"
 #include "model_io.h"
+#include "xalloc.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -98,8 +99,7 @@ expect_bad_also(const char *fixture, const char *file, const char *omit,
 {
 	char dir[64];
 	char *msg;
-	struct model_data *m = calloc(1, sizeof *m);
-	assert_non_null(m);
+	struct model_data *m = xcalloc(1, sizeof *m);
 	make_data_dir(dir, fixture, file, omit);
 	int n = load_capture(dir, m, &msg);
 	assert_true(n >= 1);
@@ -126,9 +126,8 @@ static void
 model_io_should_load_the_shipped_data(void **state)
 {
 	(void)state;
-	struct model_data *m = calloc(1, sizeof *m);
+	struct model_data *m = xcalloc(1, sizeof *m);
 	char *msg;
-	assert_non_null(m);
 	assert_int_equal(load_capture("data", m, &msg), 0);
 	assert_string_equal(msg, "");
 	free(msg);
@@ -144,9 +143,8 @@ static void
 model_io_chemistries_should_match_the_paper_table(void **state)
 {
 	(void)state;
-	struct model_data *m = calloc(1, sizeof *m);
+	struct model_data *m = xcalloc(1, sizeof *m);
 	char *msg;
-	assert_non_null(m);
 	assert_int_equal(load_capture("data", m, &msg), 0);
 	free(msg);
 	/* paper Table chem: e_s, V_nom, V_full, B, K, R_i */
@@ -176,9 +174,8 @@ static void
 model_io_roles_classes_and_calibration_should_match_the_paper(void **state)
 {
 	(void)state;
-	struct model_data *m = calloc(1, sizeof *m);
+	struct model_data *m = xcalloc(1, sizeof *m);
 	char *msg;
-	assert_non_null(m);
 	assert_int_equal(load_capture("data", m, &msg), 0);
 	free(msg);
 	/* Table roles: thrust margins and load factors */
