@@ -125,6 +125,25 @@ batt_r_sys_should_equal_the_cell_resistance_at_the_reference_point(void **state)
 	assert_true(BATT_AGING_PER_CYCLE >= 0.001 && BATT_AGING_PER_CYCLE <= 0.0015);
 }
 
+static void
+batt_r_sys_factors_should_act_one_at_a_time(void **state)
+{
+	(void)state;
+	struct batt_chem c = lipo();
+	/* ESC share alone: R_ds,on / N_r = 0.002 / 8 = 0.00025 Ω */
+	double esc = 0.002 / 8.0;
+	/* reference: 1S, 5 Ah, 25 °C, new: 0.005 Ω of cell */
+	assert_rel(batt_r_sys_ohm(&c, 1, 5.0, 25.0, 0, 8) - esc, 0.005, 1e-12);
+	/* series cells add: 12S → 12 · 0.005 = 0.06 Ω */
+	assert_rel(batt_r_sys_ohm(&c, 12, 5.0, 25.0, 0, 8) - esc, 0.06, 1e-12);
+	/* pack scaling C_ref/C: 23.85 Ah → 0.005 · 5/23.85 = 0.00104821803 Ω *
+	assert_rel(batt_r_sys_ohm(&c, 1, 23.85, 25.0, 0, 8) - esc, 0.00104821803, 1e-8);
+	/* ageing: 400 cycles → 1 + 0.00125 · 400 = 1.5 → 0.0075 Ω */
+	assert_rel(batt_r_sys_ohm(&c, 1, 5.0, 25.0, 400, 8) - esc, 0.0075, 1e-12);
+	/* temperature: 45 °C → exp(-0.26) = 0.771051586 → 0.00385525793 Ω */
+	assert_rel(batt_r_sys_ohm(&c, 1, 5.0, 45.0, 0, 8) - esc, 0.00385525793, 1e-9);
+}
+
 /* ---- current from the power balance ------------------------------------ */
 
 static void
@@ -314,6 +333,7 @@ main(void)
 		cmocka_unit_test(batt_ocv_should_clamp_soc_at_0_02),
 		cmocka_unit_test(batt_r_sys_should_scale_with_cells_capacity_temperature_and_age),
 		cmocka_unit_test(batt_r_sys_should_equal_the_cell_resistance_at_the_reference_point),
+		cmocka_unit_test(batt_r_sys_factors_should_act_one_at_a_time),
 		cmocka_unit_test(batt_current_should_solve_the_quadratic_power_balance),
 		cmocka_unit_test(batt_current_should_be_zero_for_no_power),
 		cmocka_unit_test(batt_current_should_detect_voltage_collapse),
