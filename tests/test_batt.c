@@ -136,7 +136,7 @@ batt_r_sys_factors_should_act_one_at_a_time(void **state)
 	assert_rel(batt_r_sys_ohm(&c, 1, 5.0, 25.0, 0, 8) - esc, 0.005, 1e-12);
 	/* series cells add: 12S → 12 · 0.005 = 0.06 Ω */
 	assert_rel(batt_r_sys_ohm(&c, 12, 5.0, 25.0, 0, 8) - esc, 0.06, 1e-12);
-	/* pack scaling C_ref/C: 23.85 Ah → 0.005 · 5/23.85 = 0.00104821803 Ω *
+	/* pack scaling C_ref/C: 23.85 Ah → 0.005 · 5/23.85 = 0.00104821803 Ω */
 	assert_rel(batt_r_sys_ohm(&c, 1, 23.85, 25.0, 0, 8) - esc, 0.00104821803, 1e-8);
 	/* ageing: 400 cycles → 1 + 0.00125 · 400 = 1.5 → 0.0075 Ω */
 	assert_rel(batt_r_sys_ohm(&c, 1, 5.0, 25.0, 400, 8) - esc, 0.0075, 1e-12);
