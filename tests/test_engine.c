@@ -68,6 +68,15 @@ imaging_mission(struct mission_spec *s)
 	SET(s, ROLE_TYPE, payload_role.type, ROLE_IMAGING);
 }
 
+/* The imaging mission as a coaxial X8: stacked pairs on 4 arms. */
+static void
+coaxial_mission(struct mission_spec *s)
+{
+	imaging_mission(s);
+	SET(s, NUM_ROTORS, num_rotors, 8);
+	SET(s, COAXIAL_LAYOUT, coaxial_layout, true);
+}
+
 static void
 solve(struct fixture *f, const struct mission_spec *s, struct solve_result *r)
 {
@@ -179,10 +188,8 @@ engine_coaxial_cg_limit_should_use_the_four_arm_polygon(void **state)
 	 * replaces N_r by N_arms for coaxial layouts (§IV-A); the same
 	 * geometry applies here.  Remove the skip() once fixed. */
 	skip();
-	imaging_mission(&s);
+	coaxial_mission(&s);
 	SET(&s, MAX_DIAMETER_M, max_diameter_m, 0.6);
-	SET(&s, NUM_ROTORS, num_rotors, 8);
-	SET(&s, COAXIAL_LAYOUT, coaxial_layout, true);
 	SET(&s, ROLE_CG_SHIFT_M, payload_role.cg_shift_m, 0.2385);
 	solve(f, &s, f->a);
 	assert_false(f->a->custom.ran);
@@ -298,9 +305,7 @@ engine_coaxial_downwash_should_count_one_disk_per_stacked_pair(void **state)
 	 * replaces N_r by N_arms for coaxial layouts in §IV-A.)  Remove the
 	 * skip() once fixed. */
 	skip();
-	imaging_mission(&s);
-	SET(&s, NUM_ROTORS, num_rotors, 8);
-	SET(&s, COAXIAL_LAYOUT, coaxial_layout, true);
+	coaxial_mission(&s);
 	solve(f, &s, f->a);
 	const struct res_run *o = &f->a->custom;
 	assert_sound_run(o);
@@ -433,9 +438,7 @@ engine_coaxial_x8_should_converge_with_the_quad_overlap_limit(void **state)
 {
 	struct fixture *f = *state;
 	struct mission_spec s;
-	imaging_mission(&s);
-	SET(&s, NUM_ROTORS, num_rotors, 8);
-	SET(&s, COAXIAL_LAYOUT, coaxial_layout, true);
+	coaxial_mission(&s);
 	solve(f, &s, f->a);
 	assert_sound_run(&f->a->custom);
 	/* 4 arms: 0.95 · 0.85 · sin(π/4) = 0.570990 m = 22.4799 in */
