@@ -1,0 +1,292 @@
+/* test_discharge.c — the time-step discharge simulation (paper Module 4,
+ * §VI-B..G): the first step worked by hand (OCV, R_sys, quadratic current,
+ * SOC and exact thermal step), energy bookkeeping, every early stop
+ * (voltage collapse, power overflow, thermal runaway, depletion or the
+ * voltage floor), and monotonic responses (ambient → peak temperature,
+ * mass → hover endurance).
+ *
+ * Hand aircraft: 4.385 kg quad at ISA sea level, D = 0.3385 m rotors at
+ * installed FoM 0.585, η 0.85, aux 22.5 W — hover electrical power
+ * 626.4648146 W (worked in test_mission.c).  Hand pack: LiPo 6S 5.385 Ah,
+ * 0.8385 kg, new, 4 ESCs, h = 12 W/(m² K).
+ */
+#include "test_util.h"
+#include "discharge.h"
+
+#include <string.h>
+
+#define HOVER_W 626.4648146
+
+static struct batt_chem
+lipo(void)
+{
+	struct batt_chem c;
+	memset(&c, 0, sizeof c);
+	strcpy(c.name, "LiPo");
+	c.e_spec_wh_kg = 180.0;
+	c.p_spec_w_kg = 3500.0;
+	c.r_cell_mohm = 5.0;
+	c.v_full = 4.2;
+	c.v_nom = 3.7;
+	c.v_exp = 3.9;
+	c.v_cutoff = 3.3;
+	c.b = 5.5;
+	c.k = 0.046;
+	c.pouch = true;
+	return c;
+}
+
+static void
+hand_model(struct mission_model *m)
+{
+	memset(m, 0, sizeof *m);
+	atmo_at(0.0, atmo_isa_temp_k(0.0), &m->air);
+	m->rotor.diameter_m = 0.3385;
+	m->rotor.ct = 0.12;
+	m->rotor.fom = 0.585;
+	m->rotor.n_blades = 2;
+	m->n_rotors = 4;
+	m->f_scale = 0.012;
+	m->added_drag_m2 = 0.02;
+	m->fwd_drag_mult = 1.5;
+	m->cd_h = 1.0;
+	m->cd_v = 1.2;
+	m->eta_drive = 0.85;
+	m->aux_w = 22.5;
+	m->bus_voltage_v = 22.2;
+}
+
+static void
+hand_pack(struct discharge_pack *p, const struct batt_chem *c)
+{
+	p->chem = c;
+	p->cells = 6;
+	p->capacity_ah = 5.385;
+	p->mass_kg = 0.8385;
+	p->cycles = 0;
+	p->n_rotors = 4;
+	p->h_conv_w_m2k = 12.0;
+}
+
+/* Hover only, 600 s, at 15 °C, no shedding. */
+static void
+hover_mission(struct discharge_mission *d, const struct mission_model *m,
+              double hover_s)
+{
+	memset(d, 0, sizeof *d);
+	d->model = m;
+	d->dry_mass_kg = 4.385;
+	d->shed.kind = SHED_NONE;
+	d->duration_s[PHASE_HOVER] = hover_s;
+	d->ambient_c = 15.0;
+}
+
+static void
+discharge_first_step_should_match_the_hand_computation(void **state)
+{
+	(void)state;
+	struct batt_chem c = lipo();
+	struct mission_model m;
+	struct discharge_pack pk;
+	struct discharge_mission d;
+	struct discharge_out out;
+	struct res_sample tr[80];
+	int n = 0;
+	hand_model(&m);
+	hand_pack(&pk, &c);
+	hover_mission(&d, &m, 600.0);
+	discharge_run(&pk, &d, 60, tr, 80, &n, &out);
+	assert_int_equal(out.end, DIS_COMPLETED);
+	/* 60 steps of dt = 10 s, plus the t = 0 sample */
+	assert_int_equal(n, 61);
+	/* t = 0: full pack, V_oc = 6 · 4.2 = 25.2 V */
+	assert_rel(tr[0].t_s, 0.0, 0.0);
+	assert_rel(tr[0].v_oc_v, 25.2, 1e-12);
+	assert_rel(tr[0].power_w, HOVER_W, 1e-9);
+	/* R_sys at 15 °C: 1e-3 · 5 · 6 · (5/5.385) · exp(-0.013 · (15 - 25)) + 0.002/4
+	 *   = 0.03 · 0.928505107 · 1.138828383 + 0.0005 = 0.032222239 Ω
+	 * I = (25.2 - sqrt(635.04 - 4 · 0.032222239 · 626.4648146)) / (2 · 0.032222239)
+	 *   = 25.704556701 A */
+	assert_rel(tr[1].t_s, 10.0, 1e-12);
+	assert_rel(tr[1].current_a, 25.7045567, 1e-8);
+	/* V_term = 25.2 - 25.7045567 · 0.032222239 = 24.371741628 V */
+	assert_rel(tr[1].v_term_v, 24.37174163, 1e-9);
+	/* SOC = 1 - 25.7045567 · 10 / (3600 · 5.385) = 0.98674066 */
+	assert_rel(tr[1].soc, 0.98674066, 1e-8);
+	/* Heat in the cells only: I² (R_sys - R_ds,on/N_r) = 25.7045567² · 0.031722239
+	 *   = 20.95965216 W; hA = 35.7157998 W/K, C_th = 666.6075 J/K:
+	 * T = 15 + 0.586846 (1 - exp(-35.7157998 · 10 / 666.6075)) = 15.24341760 °C */
+	assert_rel(tr[1].temp_c, 15.2434176, 1e-8);
+}
+
+static void
+discharge_energy_should_add_up_over_the_phases(void **state)
+{
+	(void)state;
+	struct batt_chem c = lipo();
+	struct mission_model m;
+	struct discharge_pack pk;
+	struct discharge_mission d;
+	struct discharge_out out;
+	hand_model(&m);
+	hand_pack(&pk, &c);
+	hover_mission(&d, &m, 385.0);
+	d.duration_s[PHASE_CLIMB] = 23.85;
+	d.speed_ms[PHASE_CLIMB] = 2.85;
+	d.duration_s[PHASE_FORWARD] = 238.5;
+	d.speed_ms[PHASE_FORWARD] = 13.85;
+	discharge_run(&pk, &d, 200, NULL, 0, NULL, &out);
+	assert_int_equal(out.end, DIS_COMPLETED);
+	assert_rel(out.t_end_s, 23.85 + 238.5 + 385.0, 1e-9);
+	double sum = 0.0;
+	for (int i = 0; i < PHASE_MAX; i++) {
+		assert_true(out.phase_energy_wh[i] > 0.0);
+		sum += out.phase_energy_wh[i];
+	}
+	assert_rel(sum, out.wh_used, 1e-12);
+	/* Coulomb counting: ΔSOC · C = Ah drawn */
+	assert_rel((1.0 - out.end_soc) * 5.385, out.ah_used, 1e-9);
+	/* Hover energy ≈ 626.4648146 W · 385 s / 3600 = 66.9969 Wh */
+	assert_rel(out.phase_energy_wh[PHASE_HOVER], 66.99693, 1e-6);
+	assert_true(out.peak_temp_c > 15.0 && out.peak_temp_c < 60.0);
+	assert_true(out.min_v_term_v > 6.0 * 3.3);
+}
+
+static void
+discharge_should_stop_on_voltage_collapse(void **state)
+{
+	(void)state;
+	struct batt_chem c = lipo();
+	struct mission_model m;
+	struct discharge_pack pk;
+	struct discharge_mission d;
+	struct discharge_out out;
+	c.r_cell_mohm = 500.0; /* R_sys ≈ 3.2 Ω: V²/(4R) = 635.04/12.9 ≈ 49 W < 626 W */
+	hand_model(&m);
+	hand_pack(&pk, &c);
+	hover_mission(&d, &m, 600.0);
+	discharge_run(&pk, &d, 60, NULL, 0, NULL, &out);
+	assert_int_equal(out.end, DIS_COLLAPSE);
+	assert_rel(out.t_end_s, 0.0, 0.0);
+}
+
+static void
+discharge_should_stop_on_power_overflow(void **state)
+{
+	(void)state;
+	struct batt_chem c = lipo();
+	struct mission_model m;
+	struct discharge_pack pk;
+	struct discharge_mission d;
+	struct discharge_out out;
+	hand_model(&m);
+	m.aux_w = 2e7; /* above the 1e7 W guard */
+	hand_pack(&pk, &c);
+	hover_mission(&d, &m, 600.0);
+	discharge_run(&pk, &d, 60, NULL, 0, NULL, &out);
+	assert_int_equal(out.end, DIS_OVERFLOW);
+	assert_true(isfinite(out.wh_used) && isfinite(out.peak_temp_c));
+}
+
+static void
+discharge_should_stop_on_thermal_runaway_above_60_c(void **state)
+{
+	(void)state;
+	struct batt_chem c = lipo();
+	struct mission_model m;
+	struct discharge_pack pk;
+	struct discharge_mission d;
+	struct discharge_out out;
+	struct res_sample tr[200];
+	int n = 0;
+	hand_model(&m);
+	hand_pack(&pk, &c);
+	/* 0.1 kg of thermal mass (C_th = 79.5 J/K) in still air (h = 1:
+	 * hA = 6 (100/2400)^(2/3) = 0.72 W/K) heated by ≈ 21 W: it warms by
+	 * ≈ 0.26 K/s, from 45 °C past 60 °C in about a minute. */
+	pk.mass_kg = 0.1;
+	pk.h_conv_w_m2k = 1.0;
+	hover_mission(&d, &m, 600.0);
+	d.ambient_c = 45.0;
+	discharge_run(&pk, &d, 120, tr, 200, &n, &out);
+	assert_int_equal(out.end, DIS_THERMAL);
+	assert_true(out.peak_temp_c > 60.0);
+	assert_true(out.t_end_s < 600.0);
+	assert_true(tr[n - 1].temp_c > 60.0);
+	for (int i = 0; i < n - 1; i++)
+		assert_true(tr[i].temp_c <= 60.0);
+}
+
+static void
+discharge_should_stop_when_the_pack_runs_out(void **state)
+{
+	(void)state;
+	struct batt_chem c = lipo();
+	struct mission_model m;
+	struct discharge_pack pk;
+	struct discharge_mission d;
+	struct discharge_out out;
+	hand_model(&m);
+	hand_pack(&pk, &c);
+	/* 5.385 Ah at ≈ 26 A lasts ≈ 12 min; ask for 30 min */
+	hover_mission(&d, &m, 1800.0);
+	discharge_run(&pk, &d, 300, NULL, 0, NULL, &out);
+	assert_true(out.end == DIS_DEPLETED || out.end == DIS_VOLTAGE_FLOOR);
+	assert_true(out.t_end_s > 300.0 && out.t_end_s < 1800.0);
+	assert_true(isfinite(out.min_v_term_v) && out.min_v_term_v > 0.0);
+}
+
+static void
+discharge_peak_temperature_should_rise_with_ambient(void **state)
+{
+	(void)state;
+	struct batt_chem c = lipo();
+	struct mission_model m;
+	struct discharge_pack pk;
+	struct discharge_mission d;
+	struct discharge_out cold, hot;
+	hand_model(&m);
+	hand_pack(&pk, &c);
+	hover_mission(&d, &m, 600.0);
+	d.ambient_c = 5.0;
+	discharge_run(&pk, &d, 120, NULL, 0, NULL, &cold);
+	d.ambient_c = 38.5;
+	discharge_run(&pk, &d, 120, NULL, 0, NULL, &hot);
+	assert_int_equal(cold.end, DIS_COMPLETED);
+	assert_int_equal(hot.end, DIS_COMPLETED);
+	assert_true(hot.peak_temp_c > cold.peak_temp_c);
+}
+
+static void
+discharge_hover_endurance_should_fall_with_mass(void **state)
+{
+	(void)state;
+	struct batt_chem c = lipo();
+	struct mission_model m;
+	struct discharge_pack pk;
+	hand_model(&m);
+	hand_pack(&pk, &c);
+	double light = discharge_hover_endurance_s(&pk, &m, 4.385, 15.0, 1.0 / 6.0);
+	double heavy = discharge_hover_endurance_s(&pk, &m, 5.385, 15.0, 1.0 / 6.0);
+	assert_true(light > heavy && heavy > 0.0);
+	/* Nominal estimate: 5.385 Ah · 5/6 · 22.2 V · 3600 / 626.4648 W = 572.6 s;
+	 * the simulated pack sits above nominal voltage most of the way, so it
+	 * lasts a little longer, within 15 %. */
+	assert_rel(light, 572.6, 0.15);
+}
+
+int
+main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(discharge_first_step_should_match_the_hand_computation),
+		cmocka_unit_test(discharge_energy_should_add_up_over_the_phases),
+		cmocka_unit_test(discharge_should_stop_on_voltage_collapse),
+		cmocka_unit_test(discharge_should_stop_on_power_overflow),
+		cmocka_unit_test(discharge_should_stop_on_thermal_runaway_above_60_c),
+		cmocka_unit_test(discharge_should_stop_when_the_pack_runs_out),
+		cmocka_unit_test(discharge_peak_temperature_should_rise_with_ambient),
+		cmocka_unit_test(discharge_hover_endurance_should_fall_with_mass),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}

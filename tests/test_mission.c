@@ -1,0 +1,164 @@
+/* test_mission.c — the three-phase power model (paper §IV-C..F): per-phase
+ * thrust, body drag on S_ref with the forward-only multiplier, body pitch,
+ * eq. (powerbudget), the coaxial induced factor and the speed sweep.  Hand
+ * values in the comments.
+ *
+ * Hand aircraft: 4.385 kg quad, ISA sea level (ρ = 1.2249781262), rotors
+ * D = 0.3385 m (A = π · 0.3385²/4 = 0.0899926887 m²), installed FoM 0.585,
+ * η = 0.85, aux 22.5 W, 22.2 V bus, f_scale 0.012, ΔA 0.02 m², forward
+ * multiplier 1.5, C_d,h 1.0, C_d,v 1.2.
+ * S_ref = 0.012 · 4.385^(2/3) + 0.02 = 0.012 · 2.6790433 + 0.02 = 0.0521485195 m².
+ */
+#include "test_util.h"
+#include "mission.h"
+#include "units.h"
+
+static void
+hand_model(struct mission_model *m, bool coaxial)
+{
+	atmo_at(0.0, atmo_isa_temp_k(0.0), &m->air);
+	m->rotor.diameter_m = 0.3385;
+	m->rotor.ct = 0.12;
+	m->rotor.fom = 0.585;
+	m->rotor.n_blades = 2;
+	m->n_rotors = 4;
+	m->coaxial = coaxial;
+	m->f_scale = 0.012;
+	m->added_drag_m2 = 0.02;
+	m->fwd_drag_mult = 1.5;
+	m->cd_h = 1.0;
+	m->cd_v = 1.2;
+	m->eta_drive = 0.85;
+	m->aux_w = 22.5;
+	m->bus_voltage_v = 22.2;
+}
+
+static void
+mission_hover_power_should_follow_the_power_budget(void **state)
+{
+	(void)state;
+	struct mission_model m;
+	struct mission_power p;
+	hand_model(&m, false);
+	mission_power(&m, 4.385, 0.0, 0.0, &p);
+	/* T = 4.385 · 9.80665 / 4 = 10.7505400625 N */
+	assert_rel(p.thrust_per_rotor_n, 10.7505400625, 1e-12);
+	/* v_h = sqrt(10.7505400625 / (2 · 1.2249781262 · 0.0899926887)) = 6.982844365 m/s
+	 * shaft per rotor = T v_h / FoM = 10.7505400625 · 6.982844365 / 0.585 = 128.3236720 W */
+	assert_rel(p.rotor.induced_ms, 6.982844365, 1e-9);
+	assert_rel(p.rotor.p_shaft_w, 128.323672, 1e-8);
+	assert_rel(p.shaft_w, 4.0 * 128.323672, 1e-8);
+	/* switching: ½ · 24000 · 3.75e-9 · 22.2² · 4 ESCs = 4.5e-5 · 492.84 · 4 = 0.0887112 W */
+	assert_rel(p.switching_w, 0.0887112, 1e-9);
+	/* P_e = 513.294688 / 0.85 + 0.0887112 + 22.5 = 603.876104 + 22.588711 = 626.4648146 W */
+	assert_rel(p.electrical_w, 626.4648146, 1e-9);
+	assert_rel(p.drag_n, 0.0, 0.0);
+	assert_rel(p.pitch_deg, 0.0, 0.0);
+}
+
+static void
+mission_climb_thrust_should_add_the_vertical_drag(void **state)
+{
+	(void)state;
+	struct mission_model m;
+	struct mission_power p;
+	hand_model(&m, false);
+	mission_power(&m, 4.385, 2.85, 0.0, &p);
+	/* F_d,v = ½ · 1.2249781262 · 2.85² · 1.2 · 0.0521485195 (no forward multiplier)
+	 *       = 0.311323058 N;  T = (43.00216025 + 0.311323058) / 4 = 10.82837083 N */
+	assert_rel(p.drag_n, 0.311323058, 1e-8);
+	assert_rel(p.thrust_per_rotor_n, 10.82837083, 1e-9);
+	assert_rel(p.pitch_deg, 0.0, 0.0);
+	/* the climb work T V_c is in the shaft power */
+	assert_true(p.rotor.p_induced_w > p.thrust_per_rotor_n * 2.85);
+}
+
+static void
+mission_forward_flight_should_pitch_and_tilt_the_thrust(void **state)
+{
+	(void)state;
+	struct mission_model m;
+	struct mission_power p;
+	hand_model(&m, false);
+	mission_power(&m, 4.385, 0.0, 13.85, &p);
+	/* F_d = ½ · 1.2249781262 · 13.85² · 1.0 · (1.5 · 0.0521485195) = 9.190330453 N */
+	assert_rel(p.drag_n, 9.190330453, 1e-9);
+	/* θ = atan(9.190330453 / 43.00216025) = 12.06364721° */
+	assert_rel(p.pitch_deg, 12.06364721, 1e-9);
+	/* T = sqrt(43.00216025² + 9.190330453²) / 4 = 10.99331604 N */
+	assert_rel(p.thrust_per_rotor_n, 10.99331604, 1e-9);
+	/* each rotor carries a quarter of F_d V = 9.190330453 · 13.85 / 4 = 31.82151919 W */
+	assert_rel(p.rotor.p_parasite_w, 31.82151919, 1e-9);
+	assert_true(p.rotor.glauert_iter >= 1);
+}
+
+static void
+mission_coaxial_should_raise_induced_power_by_1_22(void **state)
+{
+	(void)state;
+	struct mission_model m;
+	struct mission_power single, coax;
+	hand_model(&m, false);
+	mission_power(&m, 4.385, 0.0, 0.0, &single);
+	hand_model(&m, true);
+	mission_power(&m, 4.385, 0.0, 0.0, &coax);
+	assert_rel(coax.rotor.p_induced_w, 1.22 * single.rotor.p_induced_w, 1e-12);
+	assert_rel(coax.rotor.p_profile_w, single.rotor.p_profile_w, 1e-12);
+	assert_rel(coax.rotor.p_shaft_w - single.rotor.p_shaft_w,
+	    0.22 * single.rotor.p_induced_w, 1e-9);
+}
+
+static void
+mission_sweep_should_cover_1_to_30_m_s_in_half_steps(void **state)
+{
+	(void)state;
+	struct mission_model m;
+	double v[64], pw[64], v_min, v_max;
+	hand_model(&m, false);
+	/* generous thrust limit: only the pitch limit clips */
+	int n = mission_speed_sweep(&m, 4.385, 1e3, v, pw, 64, &v_min, &v_max);
+	/* (30 - 1) / 0.5 + 1 = 59 points */
+	assert_int_equal(n, 59);
+	assert_rel(v[0], 1.0, 0.0);
+	assert_rel(v[58], 30.0, 0.0);
+	/* v_min is the argmin of the sampled power */
+	int best = 0;
+	for (int i = 1; i < n; i++)
+		if (pw[i] < pw[best])
+			best = i;
+	assert_rel(v_min, v[best], 0.0);
+	assert_true(v_min > 1.0 && v_min < 30.0);
+	/* The 35° pitch limit ends the usable range: F_d grows with V², so
+	 * at 25 m/s F_d = 9.190330453 (25/13.85)² = 29.9441 N, θ = atan(29.9441 /
+	 * 43.0022) = 34.85° (within), at 25.5 m/s F_d = 31.1527 N, θ = 35.92°
+	 * (beyond) → v_max = 25 m/s. */
+	assert_rel(v_max, 25.0, 0.0);
+}
+
+static void
+mission_sweep_should_stop_v_max_at_the_thrust_limit(void **state)
+{
+	(void)state;
+	struct mission_model m;
+	double v[64], pw[64], v_min, v_max;
+	hand_model(&m, false);
+	/* Thrust per rotor 10.99331604 N at 13.85 m/s; with a limit of 11.0 N
+	 * the highest speed within it lies between 13.5 and 14.5 m/s. */
+	(void)mission_speed_sweep(&m, 4.385, 11.0, v, pw, 64, &v_min, &v_max);
+	assert_true(v_max >= 13.5 && v_max <= 14.0);
+	assert_true(v_min <= v_max);
+}
+
+int
+main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(mission_hover_power_should_follow_the_power_budget),
+		cmocka_unit_test(mission_climb_thrust_should_add_the_vertical_drag),
+		cmocka_unit_test(mission_forward_flight_should_pitch_and_tilt_the_thrust),
+		cmocka_unit_test(mission_coaxial_should_raise_induced_power_by_1_22),
+		cmocka_unit_test(mission_sweep_should_cover_1_to_30_m_s_in_half_steps),
+		cmocka_unit_test(mission_sweep_should_stop_v_max_at_the_thrust_limit),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,328 @@
+/* test_model_io.c — the reference tables: the shipped data/ loads with the
+ * paper's values, and each kind of bad data (missing file, malformed JSON,
+ * unknown key, out-of-range value, duplicate chemistry, missing role) fails
+ * with a message naming file, entry and field.
+ *
+ * A bad case is a temporary copy of data/ with one file replaced by its
+ * fixture from tests/fixtures/model/ (see the README there).  Tests run
+ * from the repository root.
+ */
+#include "test_util.h"
+#include "model_io.h"
+#include "xalloc.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static const char *const data_files[] = { "chemistries.json", "roles.json",
+	"airframes.json", "calibration.json", "requirements.json", NULL };
+
+static void
+copy_file(const char *from, const char *to)
+{
+	FILE *in = fopen(from, "rb");
+	FILE *out = fopen(to, "wb");
+	assert_non_null(in);
+	assert_non_null(out);
+	char buf[4096];
+	size_t n;
+	while ((n = fread(buf, 1, sizeof buf, in)) > 0)
+		assert_int_equal(fwrite(buf, 1, n, out), n);
+	fclose(in);
+	assert_int_equal(fclose(out), 0);
+}
+
+/* A temporary copy of data/ in dir (mkdtemp template), with `file` taken
+ * from tests/fixtures/model/<fixture>/ (fixture NULL: none) or left out
+ * (omit != NULL). */
+static void
+make_data_dir(char *dir, const char *fixture, const char *file, const char *omit)
+{
+	strcpy(dir, "/tmp/aeroeval-model-XXXXXX");
+	assert_non_null(mkdtemp(dir));
+	for (int i = 0; data_files[i] != NULL; i++) {
+		char from[512], to[512];
+		if (omit != NULL && strcmp(omit, data_files[i]) == 0)
+			continue;
+		if (fixture != NULL && strcmp(file, data_files[i]) == 0)
+			snprintf(from, sizeof from, "tests/fixtures/model/%s/%s", fixture, file);
+		else
+			snprintf(from, sizeof from, "data/%s", data_files[i]);
+		snprintf(to, sizeof to, "%s/%s", dir, data_files[i]);
+		copy_file(from, to);
+	}
+}
+
+static void
+remove_data_dir(const char *dir)
+{
+	for (int i = 0; data_files[i] != NULL; i++) {
+		char p[512];
+		snprintf(p, sizeof p, "%s/%s", dir, data_files[i]);
+		unlink(p);
+	}
+	rmdir(dir);
+}
+
+/* Load dir, capturing the messages; returns the error count, *msg owned by
+ * the caller. */
+static int
+load_capture(const char *dir, struct model_data *m, char **msg)
+{
+	size_t len = 0;
+	*msg = NULL;
+	FILE *err = open_memstream(msg, &len);
+	assert_non_null(err);
+	int n = model_io_load(dir, m, err);
+	fclose(err);
+	return n;
+}
+
+/* The message text contains want (with the temporary dir prefixed). */
+static void
+assert_message(const char *msg, const char *dir, const char *want)
+{
+	char full[1024];
+	snprintf(full, sizeof full, "%s/%s", dir, want);
+	if (strstr(msg, full) == NULL) {
+		print_error("missing message: %s\ngot:\n%s", full, msg);
+		fail();
+	}
+}
+
+/* Run one bad case: at least one error, the named message, and the raw
+ * text `also` anywhere (may be NULL). */
+static void
+expect_bad_also(const char *fixture, const char *file, const char *omit,
+                const char *want, const char *also)
+{
+	char dir[64];
+	char *msg;
+	struct model_data *m = xcalloc(1, sizeof *m);
+	make_data_dir(dir, fixture, file, omit);
+	int n = load_capture(dir, m, &msg);
+	assert_true(n >= 1);
+	assert_message(msg, dir, want);
+	if (also != NULL && strstr(msg, also) == NULL) {
+		print_error("missing text: %s\ngot:\n%s", also, msg);
+		fail();
+	}
+	free(msg);
+	free(m);
+	remove_data_dir(dir);
+}
+
+static void
+expect_bad(const char *fixture, const char *file, const char *omit,
+           const char *want)
+{
+	expect_bad_also(fixture, file, omit, want, NULL);
+}
+
+/* ---- the shipped data --------------------------------------------------- */
+
+static void
+model_io_should_load_the_shipped_data(void **state)
+{
+	(void)state;
+	struct model_data *m = xcalloc(1, sizeof *m);
+	char *msg;
+	assert_int_equal(load_capture("data", m, &msg), 0);
+	assert_string_equal(msg, "");
+	free(msg);
+	/* twelve chemistry profiles (paper §VI-A) */
+	assert_int_equal(m->n_chem, 12);
+	assert_null(m->chem_names[12]);
+	assert_non_null(model_chem(m, "LiPo"));
+	assert_null(model_chem(m, "NiMH"));
+	free(m);
+}
+
+static void
+model_io_chemistries_should_match_the_paper_table(void **state)
+{
+	(void)state;
+	struct model_data *m = xcalloc(1, sizeof *m);
+	char *msg;
+	assert_int_equal(load_capture("data", m, &msg), 0);
+	free(msg);
+	/* paper Table chem: e_s, V_nom, V_full, B, K, R_i */
+	static const struct { const char *name; double e, vn, vf, b, k, r; bool pouch; } t[] = {
+		{ "LiPo",        180, 3.70, 4.20,  5.5, 0.046,  5.0, true },
+		{ "LiHV",        195, 3.80, 4.35, 10.0, 0.040,  4.0, true },
+		{ "Li-ion NCA",  260, 3.60, 4.20, 12.0, 0.040, 20.0, false },
+		{ "Li-ion NMC",  240, 3.60, 4.20,  8.0, 0.060, 15.0, false },
+		{ "Solid State", 400, 3.60, 4.20, 15.0, 0.030, 35.0, false },
+		{ "Li-S",        500, 2.10, 2.45,  5.0, 0.100, 50.0, false },
+	};
+	for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
+		const struct batt_chem *c = model_chem(m, t[i].name);
+		assert_non_null(c);
+		assert_rel(c->e_spec_wh_kg, t[i].e, 1e-12);
+		assert_rel(c->v_nom, t[i].vn, 1e-12);
+		assert_rel(c->v_full, t[i].vf, 1e-12);
+		assert_rel(c->b, t[i].b, 1e-12);
+		assert_rel(c->k, t[i].k, 1e-12);
+		assert_rel(c->r_cell_mohm, t[i].r, 1e-12);
+		assert_int_equal(c->pouch, t[i].pouch);
+	}
+	free(m);
+}
+
+static void
+model_io_roles_classes_and_calibration_should_match_the_paper(void **state)
+{
+	(void)state;
+	struct model_data *m = xcalloc(1, sizeof *m);
+	char *msg;
+	assert_int_equal(load_capture("data", m, &msg), 0);
+	free(msg);
+	/* Table roles: thrust margins and load factors */
+	assert_rel(m->role[ROLE_NONE].thrust_margin, 0.40, 1e-12);
+	assert_rel(m->role[ROLE_IMAGING].thrust_margin, 0.45, 1e-12);
+	assert_rel(m->role[ROLE_DELIVERY].thrust_margin, 0.40, 1e-12);
+	assert_rel(m->role[ROLE_AGRICULTURE].thrust_margin, 0.40, 1e-12);
+	assert_rel(m->role[ROLE_RACING].thrust_margin, 0.80, 1e-12);
+	assert_rel(m->role[ROLE_INSPECTION].thrust_margin, 0.50, 1e-12);
+	assert_rel(m->role[ROLE_MAPPING].thrust_margin, 0.40, 1e-12);
+	assert_rel(m->role[ROLE_RACING].load_factor, 10.0, 1e-12);
+	assert_rel(m->role[ROLE_IMAGING].load_factor, 1.5, 1e-12);
+	assert_rel(m->role[ROLE_IMAGING].added_drag_m2, 0.02, 1e-12);
+	assert_rel(m->role[ROLE_MAPPING].forward_drag_multiplier, 1.5, 1e-12);
+	assert_rel(m->role[ROLE_RACING].h_conv_w_m2k, 120.0, 1e-12);
+	assert_int_equal(m->role[ROLE_DELIVERY].shedding, SHED_DROP);
+	assert_int_equal(m->role[ROLE_AGRICULTURE].shedding, SHED_SPRAY);
+	/* κ per class (paper §IV-F), γ (paper §V-A) */
+	assert_rel(m->cls[AF_CONSUMER_FOLDING].kappa, 1.20, 1e-12);
+	assert_rel(m->cls[AF_ENTERPRISE_RUGGED].kappa, 1.25, 1e-12);
+	assert_rel(m->cls[AF_MICRO_AIO].kappa, 1.30, 1e-12);
+	assert_rel(m->cls[AF_AGRICULTURAL].kappa, 1.46, 1e-12);
+	assert_rel(m->cls[AF_CONSUMER_FOLDING].gamma, 0.15, 1e-12);
+	assert_rel(m->cls[AF_ENTERPRISE_RUGGED].gamma, 0.50, 1e-12);
+	assert_rel(m->cls[AF_AGRICULTURAL].gamma, 1.20, 1e-12);
+	/* eq. (lambda), packaging base, C_wire */
+	assert_rel(m->cal.lambda[LAMBDA_MICRO], 1.50, 1e-12);
+	assert_rel(m->cal.lambda[LAMBDA_CONSUMER], 1.08, 1e-12);
+	assert_rel(m->cal.lambda[LAMBDA_ENTERPRISE_QUAD], 0.95, 1e-12);
+	assert_rel(m->cal.lambda[LAMBDA_ENTERPRISE_MULTI], 0.80, 1e-12);
+	assert_rel(m->cal.packaging_base, 1.04, 1e-12);
+	assert_rel(m->cal.wire_coef, 0.0015, 1e-12);
+	assert_rel(m->cal.wire_coef_small, 0.0003, 1e-12);
+	free(m);
+}
+
+static void
+model_io_calibration_json_should_load_back_unchanged(void **state)
+{
+	(void)state;
+	struct model_calibration a, b;
+	memset(&a, 0, sizeof a);
+	memset(&b, 0, sizeof b);
+	a.lambda[LAMBDA_MICRO] = 1.385;
+	a.lambda[LAMBDA_CONSUMER] = 1.0835;
+	a.lambda[LAMBDA_ENTERPRISE_QUAD] = 0.9385;
+	a.lambda[LAMBDA_ENTERPRISE_MULTI] = 0.7915;
+	a.lambda[LAMBDA_AGRI] = 1.2385;
+	a.packaging_base = 1.0385;
+	a.wire_coef = 0.00145;
+	a.wire_coef_small = 0.000285;
+	char *txt = model_io_calibration_json(&a);
+	char path[] = "/tmp/aeroeval-cal-XXXXXX";
+	int fd = mkstemp(path);
+	assert_true(fd >= 0);
+	assert_int_equal(write(fd, txt, strlen(txt)), (ssize_t)strlen(txt));
+	close(fd);
+	free(txt);
+	assert_int_equal(model_io_load_calibration(path, &b, stderr), 0);
+	unlink(path);
+	assert_memory_equal(&a, &b, sizeof a);
+}
+
+/* ---- bad data ----------------------------------------------------------- */
+
+static void
+model_io_should_name_a_missing_file(void **state)
+{
+	(void)state;
+	expect_bad_also(NULL, NULL, "calibration.json", "calibration.json: error: ",
+	    "cannot open (No such file or directory)");
+}
+
+static void
+model_io_missing_file_message_should_not_print_an_empty_field(void **state)
+{
+	(void)state;
+	/* BUG: rd_error() (src/model_io.c) prints "%s: error: %s%s%s: " even when
+	 * both the entry and the field are empty, so a whole-file error reads
+	 * "DIR/calibration.json: error: : cannot open (No such file or
+	 * directory)" with a stray ": ".  The same happens for "top level must
+	 * be an object".  Expected: "DIR/calibration.json: error: cannot open
+	 * (No such file or directory)".  Remove the skip() once fixed. */
+	skip();
+	expect_bad(NULL, NULL, "calibration.json",
+	    "calibration.json: error: cannot open (No such file or directory)");
+}
+
+static void
+model_io_should_locate_malformed_json(void **state)
+{
+	(void)state;
+	/* the missing comma: line 6, column 7 ("load_factor") */
+	expect_bad("malformed", "roles.json", NULL,
+	    "roles.json:6:7: error: malformed JSON near here");
+}
+
+static void
+model_io_should_refuse_an_unknown_key(void **state)
+{
+	(void)state;
+	expect_bad("unknown_key", "airframes.json", NULL,
+	    "airframes.json: error: classes[1] \"ConsumerFolding\".kapa: unknown field");
+	expect_bad("unknown_key", "airframes.json", NULL,
+	    "airframes.json: error: classes[1] \"ConsumerFolding\".kappa: missing");
+}
+
+static void
+model_io_should_refuse_an_out_of_range_value(void **state)
+{
+	(void)state;
+	expect_bad("out_of_range", "calibration.json", NULL,
+	    "calibration.json: error: battery_packaging_base: out of range "
+	    "(got 3.85, allowed [0.8, 2])");
+}
+
+static void
+model_io_should_refuse_a_duplicate_chemistry(void **state)
+{
+	(void)state;
+	expect_bad("duplicate_chemistry", "chemistries.json", NULL,
+	    "chemistries.json: error: chemistries[5] \"LiPo\".name: duplicate chemistry");
+}
+
+static void
+model_io_should_refuse_a_missing_role(void **state)
+{
+	(void)state;
+	expect_bad("missing_role", "roles.json", NULL,
+	    "roles.json: error: roles: role \"mapping\" is missing");
+}
+
+int
+main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(model_io_should_load_the_shipped_data),
+		cmocka_unit_test(model_io_chemistries_should_match_the_paper_table),
+		cmocka_unit_test(model_io_roles_classes_and_calibration_should_match_the_paper),
+		cmocka_unit_test(model_io_calibration_json_should_load_back_unchanged),
+		cmocka_unit_test(model_io_should_name_a_missing_file),
+		cmocka_unit_test(model_io_missing_file_message_should_not_print_an_empty_field),
+		cmocka_unit_test(model_io_should_locate_malformed_json),
+		cmocka_unit_test(model_io_should_refuse_an_unknown_key),
+		cmocka_unit_test(model_io_should_refuse_an_out_of_range_value),
+		cmocka_unit_test(model_io_should_refuse_a_duplicate_chemistry),
+		cmocka_unit_test(model_io_should_refuse_a_missing_role),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,271 @@
+/* test_sizing.c — the mass loop (paper §II-D): the altitude-corrected seed
+ * of eq. (altcorrect), the reserve left by the 20 % capacity margin, the
+ * series-cell rule, the hover pitch, and the fixed-point run itself on a
+ * mission built from spec_defaults() (convergence criterion, history, mass
+ * breakdown, the delivery drop at r_drop · t_total in the trace, goal
+ * relaxation bounds).  Tests run from the repository root (data/).
+ */
+#include "test_util.h"
+#include "cli.h"
+#include "engine.h"
+#include "sizing.h"
+#include "units.h"
+#include "xalloc.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* Set a mission field and mark it given, as the parser would. */
+#define SET(s, id, member, value) \
+	do { (s)->member = (value); (s)->given[SPECF_##id] = true; } while (0)
+
+/* ---- pure helpers -------------------------------------------------------- */
+
+static void
+sizing_seed_should_be_payload_over_0_6_at_sea_level(void **state)
+{
+	(void)state;
+	/* 2.385 / 0.60 = 3.975 kg, factor sqrt(1.225/1.225) = 1 */
+	assert_rel(sizing_seed_kg(2.385, RHO_SL_KG_M3), 3.975, 1e-12);
+}
+
+static void
+sizing_seed_should_grow_with_sqrt_of_the_density_ratio_at_altitude(void **state)
+{
+	(void)state;
+	/* 5000 m ISA: ρ = 0.7361106665 kg/m³.
+	 * 3.975 · sqrt(1.225 / 0.7361106665) = 3.975 · sqrt(1.664151949)
+	 *   = 3.975 · 1.290020135 = 5.127830036 kg */
+	assert_rel(sizing_seed_kg(2.385, 0.7361106665), 5.127830036, 1e-9);
+}
+
+static void
+sizing_seed_should_not_shrink_in_dense_air(void **state)
+{
+	(void)state;
+	/* Cold day, ρ = 1.3895 > 1.225: the factor 0.939 < 1 is not applied. */
+	assert_rel(sizing_seed_kg(2.385, 1.3895), 3.975, 1e-12);
+}
+
+static void
+sizing_reserve_soc_should_be_one_sixth(void **state)
+{
+	(void)state;
+	/* 1 - 1/1.2 = 0.1666667 */
+	assert_rel(sizing_reserve_soc(), 1.0 / 6.0, 1e-12);
+}
+
+static void
+sizing_auto_cells_should_keep_the_current_within_the_budget(void **state)
+{
+	(void)state;
+	/* 2385 W at 4.385 kg: budget 60 sqrt(4.385) = 125.642350 A,
+	 * S = 2385 / (3.7 · 125.642350) = 5.1304 → 6S */
+	assert_int_equal(sizing_auto_cells(2385.0, 4.385, 3.7, 3, 14), 6);
+	/* 6385 W at 12.385 kg: budget 211.153972 A, S = 8.1726 → 9 → even above
+	 * 6S → 10S */
+	assert_int_equal(sizing_auto_cells(6385.0, 12.385, 3.7, 3, 14), 10);
+	/* clamped to the class range */
+	assert_int_equal(sizing_auto_cells(6385.0, 12.385, 3.7, 3, 6), 6);
+	assert_int_equal(sizing_auto_cells(23.85, 12.385, 3.7, 3, 14), 3);
+}
+
+static void
+sizing_pitch_should_be_inflow_angle_plus_4_degrees_at_75_percent_radius(void **state)
+{
+	(void)state;
+	/* D = 0.3385 m: r75 = 0.126937500 m; ω r = 2π · 85.85 · 0.1269375 = 68.471542 m/s
+	 * φ = atan(8.35 / 68.471542) = 6.952802°, θ = 10.952802°
+	 * pitch = 2π · 0.1269375 · tan(10.952802°) = 0.797570 · 0.193526 = 0.15435054 m */
+	assert_rel(sizing_pitch_m(0.3385, 8.35, 85.85), 0.15435054, 1e-7);
+}
+
+/* ---- the fixed-point run ------------------------------------------------- */
+
+struct fixture {
+	struct cli_env env;
+};
+
+static int
+setup(void **state)
+{
+	struct fixture *f = xcalloc(1, sizeof *f);
+	if (cli_env_load(&f->env, NULL, 0, stderr) != 0) {
+		free(f);
+		return -1;
+	}
+	*state = f;
+	return 0;
+}
+
+static int
+teardown(void **state)
+{
+	struct fixture *f = *state;
+	cli_env_free(&f->env);
+	free(f);
+	return 0;
+}
+
+/* A 3.5 kg medical-delivery quad that drops its parcel halfway. */
+static void
+delivery_mission(struct mission_spec *s)
+{
+	spec_defaults(s);
+	SET(s, PAYLOAD_KG, payload_kg, 3.5);
+	SET(s, MAX_DIAMETER_M, max_diameter_m, 1.5);
+	SET(s, NUM_ROTORS, num_rotors, 4);
+	SET(s, AIRFRAME_CLASS, airframe_class, AF_ENTERPRISE_RUGGED);
+	SET(s, T_HOVER_S, t_hover_s, 180.0);
+	SET(s, T_CLIMB_S, t_climb_s, 60.0);
+	SET(s, T_FORWARD_S, t_forward_s, 1500.0);
+	SET(s, V_CLIMB_MS, v_climb_ms, 3.0);
+	SET(s, V_FORWARD_MS, v_forward_ms, 15.0);
+	SET(s, ROLE_TYPE, payload_role.type, ROLE_DELIVERY);
+	SET(s, ROLE_DROP_TIME_RATIO, payload_role.delivery_drop_time_ratio, 0.5);
+}
+
+static enum sizing_status
+run(const struct model_data *md, struct mission_spec *s, struct res_run *out)
+{
+	struct sizing_params p;
+	engine_resolve(s, md, NULL);
+	engine_params(s, md, false, &p);
+	return sizing_run(&p, out);
+}
+
+static double
+breakdown_sum(const struct res_mass *m)
+{
+	return m->payload_kg + m->battery_kg + m->frame_kg + m->arm_kg
+	    + m->motor_kg + m->prop_kg + m->esc_kg + m->wiring_kg
+	    + m->avionics_kg + m->role_aux_kg + m->other_kg;
+}
+
+static void
+sizing_run_should_converge_to_a_1_g_fixed_point(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	struct res_run *o = xcalloc(1, sizeof *o);
+	delivery_mission(&s);
+	assert_int_equal(run(&f->env.model, &s, o), SIZING_CONVERGED);
+	assert_true(o->converged);
+	assert_true(o->iterations >= 2 && o->iterations < SIZING_MAX_ITER);
+	assert_true(o->n_history >= 2);
+	/* Stop rule: |M(k+1) - M(k)| < 0.001 kg at the last step. */
+	double d = o->history_kg[o->n_history - 1] - o->history_kg[o->n_history - 2];
+	assert_true(fabs(d) < SIZING_TOL_KG);
+	/* The recorded mass is the fixed point (within the tolerance). */
+	assert_true(fabs(o->mass.total_kg - o->history_kg[o->n_history - 1]) < 2.0 * SIZING_TOL_KG);
+	/* A contraction: L < 1 (eq. lipschitz). */
+	assert_true(o->lipschitz < 1.0);
+	assert_rel(breakdown_sum(&o->mass), o->mass.total_kg, 1e-9);
+	assert_rel(o->time_scale, 1.0, 0.0);
+	free(o);
+}
+
+static void
+sizing_run_should_drop_the_parcel_at_r_drop_times_t_total(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	struct res_run *o = xcalloc(1, sizeof *o);
+	delivery_mission(&s);
+	assert_int_equal(run(&f->env.model, &s, o), SIZING_CONVERGED);
+	/* t_total = 60 + 1500 + 180 = 1740 s, t_drop = 0.5 · 1740 = 870 s;
+	 * the aircraft is 3.5 kg lighter after it. */
+	double m0 = o->trace[0].mass_kg;
+	/* The simulation flies the fixed point M*, the record holds f(M*). */
+	assert_true(fabs(m0 - o->mass.total_kg) < SIZING_TOL_KG);
+	int before = 0, after = 0;
+	for (int i = 0; i < o->n_trace; i++) {
+		const struct res_sample *t = &o->trace[i];
+		if (t->t_s < 850.0) {
+			assert_rel(t->mass_kg, m0, 1e-12);
+			before++;
+		} else if (t->t_s > 890.0) {
+			assert_rel(t->mass_kg, m0 - 3.5, 1e-9);
+			after++;
+		}
+	}
+	assert_true(before > 10 && after > 10);
+	assert_rel(o->trace[o->n_trace - 1].t_s, 1740.0, 1e-9);
+	free(o);
+}
+
+static void
+sizing_run_should_spray_the_tank_linearly_over_the_mission(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	struct res_run *o = xcalloc(1, sizeof *o);
+	/* 12.385 kg of liquid on an agricultural octo; no spray rate given:
+	 * ṁ = 12.385 / (30 + 300 + 600) = 12.385 / 930 = 0.013317204 kg/s */
+	spec_defaults(&s);
+	SET(&s, PAYLOAD_KG, payload_kg, 12.385);
+	SET(&s, MAX_DIAMETER_M, max_diameter_m, 1.85);
+	SET(&s, NUM_ROTORS, num_rotors, 8);
+	SET(&s, AIRFRAME_CLASS, airframe_class, AF_AGRICULTURAL);
+	SET(&s, T_HOVER_S, t_hover_s, 600.0);
+	SET(&s, T_CLIMB_S, t_climb_s, 30.0);
+	SET(&s, T_FORWARD_S, t_forward_s, 300.0);
+	SET(&s, V_FORWARD_MS, v_forward_ms, 5.0);
+	SET(&s, ROLE_TYPE, payload_role.type, ROLE_AGRICULTURE);
+	assert_int_equal(run(&f->env.model, &s, o), SIZING_CONVERGED);
+	double rate = 12.385 / 930.0;
+	double m0 = o->trace[0].mass_kg;
+	assert_true(o->n_trace > 100);
+	/* Each sample holds the mid-step mass of the step ending at t_s, so it
+	 * lies within one step (≤ 930/100 s) of the straight line. */
+	for (int i = 1; i < o->n_trace; i++) {
+		double want = m0 - rate * o->trace[i].t_s;
+		assert_true(fabs(o->trace[i].mass_kg - want) <= rate * 9.3);
+		assert_true(o->trace[i].mass_kg <= o->trace[i - 1].mass_kg);
+	}
+	/* the tank is (almost) empty at the end */
+	assert_true(fabs(o->trace[o->n_trace - 1].mass_kg - (m0 - 12.385)) <= rate * 9.3);
+	free(o);
+}
+
+static void
+sizing_relaxation_should_scale_times_by_a_gamma_of_at_least_0_05(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	struct res_run *o = xcalloc(1, sizeof *o);
+	delivery_mission(&s);
+	/* A locked 2385 mAh 6S pack cannot fly 29 minutes with 3.5 kg. */
+	SET(&s, LOCK_BATTERY, locks.is_battery_locked, true);
+	SET(&s, LOCK_CAPACITY_MAH, locks.locked_capacity_mah, 2385.0);
+	SET(&s, LOCK_CELL_COUNT, locks.locked_cell_count, 6);
+	SET(&s, LOCK_AUTO_REDUCE, locks.auto_reduce_flight_time, true);
+	enum sizing_status st = run(&f->env.model, &s, o);
+	assert_int_equal(st, SIZING_CONVERGED);
+	assert_true(o->time_scale >= SIZING_GAMMA_MIN && o->time_scale < 1.0);
+	/* every phase is γ × its request */
+	assert_rel(o->approved_time_s[PHASE_HOVER], o->time_scale * 180.0, 1e-9);
+	assert_rel(o->approved_time_s[PHASE_CLIMB], o->time_scale * 60.0, 1e-9);
+	assert_rel(o->approved_time_s[PHASE_FORWARD], o->time_scale * 1500.0, 1e-9);
+	assert_rel(o->flight_time_s, o->time_scale * 1740.0, 1e-9);
+	assert_rel(o->capacity_mah, 2385.0, 1e-12);
+	free(o);
+}
+
+int
+main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(sizing_seed_should_be_payload_over_0_6_at_sea_level),
+		cmocka_unit_test(sizing_seed_should_grow_with_sqrt_of_the_density_ratio_at_altitude),
+		cmocka_unit_test(sizing_seed_should_not_shrink_in_dense_air),
+		cmocka_unit_test(sizing_reserve_soc_should_be_one_sixth),
+		cmocka_unit_test(sizing_auto_cells_should_keep_the_current_within_the_budget),
+		cmocka_unit_test(sizing_pitch_should_be_inflow_angle_plus_4_degrees_at_75_percent_radius),
+		cmocka_unit_test_setup_teardown(sizing_run_should_converge_to_a_1_g_fixed_point, setup, teardown),
+		cmocka_unit_test_setup_teardown(sizing_run_should_drop_the_parcel_at_r_drop_times_t_total, setup, teardown),
+		cmocka_unit_test_setup_teardown(sizing_run_should_spray_the_tank_linearly_over_the_mission, setup, teardown),
+		cmocka_unit_test_setup_teardown(sizing_relaxation_should_scale_times_by_a_gamma_of_at_least_0_05, setup, teardown),
+	};
+	return cmocka_run_group_tests(tests, NULL, NULL);
+}
