@@ -426,6 +426,36 @@ seed_cells(const struct sizing_params *p, int lo, int hi, double mass_kg,
 	return ls->cells;
 }
 
+/* The series-cell count inside the loop.  Integer counts can limit-cycle
+ * (paper §II-D: step discontinuities), so the count steps up as soon as
+ * the current budget is exceeded but steps down only when the lower count
+ * keeps the current 15 % inside it, and at most CELL_MAX_DOWN times; the
+ * stored energy, not the charge, carries across a change. */
+#define CELL_DOWN_MARGIN 0.85
+#define AITKEN_R_MIN   0.5   /* extrapolate only slow contractions */
+#define AITKEN_R_MAX   0.98  /* and never a ratio near 1 (divergence) */
+#define AITKEN_R_AGREE 0.05  /* successive ratios within 5 % */
+#define CELL_MAX_DOWN    2
+
+static int
+next_cells(const struct sizing_params *p, int cells, double peak_w,
+           double mass_kg, int cells_lo, int cells_hi, int *n_down)
+{
+	int want = sizing_auto_cells(peak_w, mass_kg, p->chem->v_nom, cells_lo,
+	    cells_hi);
+	if (want > cells)
+		return want;
+	if (want < cells && *n_down < CELL_MAX_DOWN) {
+		double budget_a = SIZING_CURRENT_BUDGET_A * sqrt(mass_kg);
+		double i_a = peak_w / ((double)want * p->chem->v_nom);
+		if (i_a <= CELL_DOWN_MARGIN * budget_a) {
+			(*n_down)++;
+			return want;
+		}
+	}
+	return cells;
+}
+
 /* Discharge steps of the final record. */
 static int
 final_steps(const struct sizing_params *p)
@@ -433,12 +463,15 @@ final_steps(const struct sizing_params *p)
 	return p->trace_steps > 0 ? p->trace_steps : RES_MAX_TRACE - 8;
 }
 
-/* The fixed-point iteration with the series-cell count held at `cells`. */
+/* The fixed-point iteration; the series-cell count starts at `cells` and
+ * follows next_cells() when auto_cells. */
 static enum sizing_status
-iterate_cells(const struct sizing_params *p, int cells, double gamma_time,
-              double m0, double c0, struct res_run *out, struct eval *last,
+iterate_cells(const struct sizing_params *p, int cells, bool auto_cells,
+              int cells_lo, int cells_hi, double gamma_time, double m0,
+              double c0, struct res_run *out, struct eval *last,
               double *m_star, double *c_star, struct loop_state *ls_out)
 {
+	int n_down = 0;
 	struct loop_state ls = { cells, 0.02 * p->wheelbase_m, gamma_time };
 	/* Start from the seed of eq. (altcorrect), or warm from a previous
 	 * fixed point when the caller has one (m0, c0 > 0). */
@@ -449,6 +482,10 @@ iterate_cells(const struct sizing_params *p, int cells, double gamma_time,
 	int max_iter = p->max_iter > 0 ? p->max_iter : SIZING_MAX_ITER;
 	enum sizing_status st = SIZING_MAX_ITERATIONS;
 
+	/* Aitken Δ² acceleration (Steffensen): the last mass steps and
+	 * capacities, and how many steady steps since the last jump. */
+	double dm_prev = 0.0, dm_prev2 = 0.0, c_prev = 0.0, c_prev2 = 0.0;
+	int steady = 0;
 	for (int k = 1; k <= max_iter; k++) {
 		evaluate(p, &ls, m, c, LOOP_STEPS, NULL, last);
 		double f = last->mass.total_kg;
@@ -470,15 +507,27 @@ iterate_cells(const struct sizing_params *p, int cells, double gamma_time,
 			st = SIZING_RUNAWAY;
 			break;
 		}
-		/* The next iteration sees this one's arm (rotor-arm interference). */
+		/* The next iteration sees this one's arm (rotor-arm interference)
+		 * and, when automatic, its series-cell count. */
 		ls.arm_width_m = last->arm.d_out_m;
+		bool cells_steady = true;
+		if (auto_cells) {
+			int nc = next_cells(p, ls.cells, last->peak.electrical_w, f,
+			    cells_lo, cells_hi, &n_down);
+			if (nc != ls.cells) {
+				c *= (double)ls.cells / (double)nc;
+				c_failed = 0.0;
+				ls.cells = nc;
+				cells_steady = false;
+			}
+		}
 		/* A power-bound battery is as large as the peak power needs; its
 		 * energy target is then below it and has no further say. */
 		bool cap_steady = p->capacity_locked
 		    || (p->parts.active && p->parts.battery_kg > 0.0)
 		    || (last->power_binds && last->c_target_ah <= c_used)
 		    || fabs(c - c_used) <= 1e-4 * c_used;
-		if (fabs(f - m) < SIZING_TOL_KG && cap_steady) {
+		if (fabs(f - m) < SIZING_TOL_KG && cap_steady && cells_steady) {
 			m = f;
 			/* Confirm with the discharge resolution of the final
 			 * record, so that a mission the coarse loop flew is not
@@ -492,6 +541,28 @@ iterate_cells(const struct sizing_params *p, int cells, double gamma_time,
 			st = flown ? SIZING_CONVERGED : SIZING_DISCHARGE_FAIL;
 			break;
 		}
+		/* A slow linear contraction (L near 1) is extrapolated to its
+		 * limit once two successive step ratios agree; the loop then
+		 * re-anchors on the true map at the extrapolated point. */
+		double dm = f - m;
+		steady = cells_steady && flown ? steady + 1 : 0;
+		if (steady >= 3 && dm_prev != 0.0 && dm_prev2 != 0.0) {
+			double r1 = dm_prev / dm_prev2, r2 = dm / dm_prev;
+			if (r2 > AITKEN_R_MIN && r2 < AITKEN_R_MAX
+			    && fabs(r2 - r1) < AITKEN_R_AGREE * r2) {
+				double gain = r2 / (1.0 - r2);
+				f += gain * dm;
+				if (!p->capacity_locked && !p->parts.active)
+					c += gain * (c - c_prev);
+				dm = 0.0;
+				steady = 0;
+			}
+		}
+		dm_prev2 = dm_prev;
+		dm_prev = dm;
+		c_prev2 = c_prev;
+		c_prev = c;
+		(void)c_prev2;
 		m = f;
 	}
 	if (st == SIZING_MAX_ITERATIONS && last->dis.end != DIS_COMPLETED
@@ -503,20 +574,6 @@ iterate_cells(const struct sizing_params *p, int cells, double gamma_time,
 	return st;
 }
 
-/* Outer loop over the series-cell count: converge the mass at fixed cells,
- * re-apply the current-budget rule at the fixed point, and repeat until the
- * rule agrees.  Integer cell counts can cycle (paper §II-D: step
- * discontinuities); on a repeat the higher count, with the lower current,
- * is kept. */
-#define CELL_PASSES 10
-
-/* The next series count up: every count to 6S, even counts above. */
-static int
-cells_up(int cells)
-{
-	return cells < 6 ? cells + 1 : cells + 2 - cells % 2;
-}
-
 static enum sizing_status
 iterate(const struct sizing_params *p, int cells_lo, int cells_hi,
         double gamma_time, struct res_run *out, struct eval *last,
@@ -526,49 +583,16 @@ iterate(const struct sizing_params *p, int cells_lo, int cells_hi,
 	out->iterations = 0;
 	bool auto_cells = p->cells_fixed <= 0 && !p->kv_locked
 	    && !(p->parts.active && p->parts.cells > 0);
-	if (!auto_cells) {
-		int cells = p->cells_fixed > 0 ? p->cells_fixed : 1;
-		if (p->parts.active && p->parts.cells > 0)
-			cells = p->parts.cells;
-		return iterate_cells(p, cells, gamma_time, 0.0, 0.0, out, last,
-		    m_star, c_star, ls_out);
+	int cells = p->cells_fixed > 0 ? p->cells_fixed : 1;
+	if (p->parts.active && p->parts.cells > 0)
+		cells = p->parts.cells;
+	if (auto_cells) {
+		struct loop_state seed = { cells_lo, 0.02 * p->wheelbase_m, gamma_time };
+		cells = seed_cells(p, cells_lo, cells_hi,
+		    sizing_seed_kg(p->payload_kg, p->air.rho_kg_m3), &seed);
 	}
-	struct loop_state seed = { cells_lo, 0.02 * p->wheelbase_m, gamma_time };
-	int cells = seed_cells(p, cells_lo, cells_hi,
-	    sizing_seed_kg(p->payload_kg, p->air.rho_kg_m3), &seed);
-	bool tried[32] = { false };
-	enum sizing_status st = SIZING_MAX_ITERATIONS;
-	double m0 = 0.0, c0 = 0.0;
-	for (int pass = 0; pass < CELL_PASSES; pass++) {
-		tried[cells] = true;
-		st = iterate_cells(p, cells, gamma_time, m0, c0, out, last, m_star,
-		    c_star, ls_out);
-		if (st == SIZING_RUNAWAY) {
-			/* Too few cells can make the current, and with it the
-			 * harness and ESC mass, run away: try a higher voltage
-			 * from the seed before giving up. */
-			if (cells >= cells_hi)
-				break;
-			cells = cells_up(cells) > cells_hi ? cells_hi : cells_up(cells);
-			m0 = c0 = 0.0;
-			continue;
-		}
-		int want = sizing_auto_cells(last->peak.electrical_w, *m_star,
-		    p->chem->v_nom, cells_lo, cells_hi);
-		if (want == cells)
-			break;
-		/* Warm start: same mass, same stored energy at the new voltage. */
-		m0 = *m_star;
-		c0 = *c_star * (double)cells / (double)want;
-		if (tried[want]) {
-			if (want > cells)
-				st = iterate_cells(p, want, gamma_time, m0, c0, out,
-				    last, m_star, c_star, ls_out);
-			break;
-		}
-		cells = want;
-	}
-	return st;
+	return iterate_cells(p, cells, auto_cells, cells_lo, cells_hi,
+	    gamma_time, 0.0, 0.0, out, last, m_star, c_star, ls_out);
 }
 
 /* dF/dM at the fixed point by central differences, with the capacity

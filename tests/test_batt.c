@@ -211,8 +211,7 @@ batt_current_should_be_p_over_v_for_an_ideal_source(void **state)
 	 * 37.30176346 A against the exact 37.30176464 A (3e-8 relative).
 	 * The algebraically equal I = 2P / (V + sqrt(V² - 4RP)) is exact
 	 * for both.  Hand value for R = 0: I = P/V = 835 / 22.385 = 37.30176457 A.
-	 * Remove the skip() once fixed. */
-	skip();
+	 * (Fixed; kept as a regression test.) */
 	double i = -1.0;
 	assert_int_equal(batt_current_a(22.385, 0.0, 835.0, &i), BATT_OK);
 	assert_rel(i, 37.30176457, 1e-9);

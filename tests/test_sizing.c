@@ -200,10 +200,10 @@ sizing_run_should_spray_the_tank_linearly_over_the_mission(void **state)
 	struct fixture *f = *state;
 	struct mission_spec s;
 	struct res_run *o = xcalloc(1, sizeof *o);
-	/* 12.385 kg of liquid on an agricultural octo; no spray rate given:
-	 * ṁ = 12.385 / (30 + 300 + 600) = 12.385 / 930 = 0.013317204 kg/s */
+	/* 6.385 kg of liquid on an agricultural octo; no spray rate given:
+	 * ṁ = 6.385 / (30 + 300 + 600) = 6.385 / 930 = 0.006865591 kg/s */
 	spec_defaults(&s);
-	SET(&s, PAYLOAD_KG, payload_kg, 12.385);
+	SET(&s, PAYLOAD_KG, payload_kg, 6.385);
 	SET(&s, MAX_DIAMETER_M, max_diameter_m, 1.85);
 	SET(&s, NUM_ROTORS, num_rotors, 8);
 	SET(&s, AIRFRAME_CLASS, airframe_class, AF_AGRICULTURAL);
@@ -213,7 +213,7 @@ sizing_run_should_spray_the_tank_linearly_over_the_mission(void **state)
 	SET(&s, V_FORWARD_MS, v_forward_ms, 5.0);
 	SET(&s, ROLE_TYPE, payload_role.type, ROLE_AGRICULTURE);
 	assert_int_equal(run(&f->env.model, &s, o), SIZING_CONVERGED);
-	double rate = 12.385 / 930.0;
+	double rate = 6.385 / 930.0;
 	double m0 = o->trace[0].mass_kg;
 	assert_true(o->n_trace > 100);
 	/* Each sample holds the mid-step mass of the step ending at t_s, so it
@@ -224,7 +224,7 @@ sizing_run_should_spray_the_tank_linearly_over_the_mission(void **state)
 		assert_true(o->trace[i].mass_kg <= o->trace[i - 1].mass_kg);
 	}
 	/* the tank is (almost) empty at the end */
-	assert_true(fabs(o->trace[o->n_trace - 1].mass_kg - (m0 - 12.385)) <= rate * 9.3);
+	assert_true(fabs(o->trace[o->n_trace - 1].mass_kg - (m0 - 6.385)) <= rate * 9.3);
 	free(o);
 }
 
