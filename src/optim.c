@@ -28,16 +28,16 @@
 
 const char *const optim_reason_text[OPTIM_REASON_MAX] = {
 	"none",
-	"the motor cell range",
-	"the motor current limit",
-	"the motor power limit",
-	"the propeller overlap limit",
-	"the motor's recommended propeller range",
-	"the tip-Mach limit at full rpm",
-	"the propeller rpm limit",
-	"not enough rpm to hover",
-	"no ESC for the current on this bus",
-	"no battery for this bus",
+	"motor cell range",
+	"motor current",
+	"motor power",
+	"prop overlap",
+	"recommended prop range",
+	"tip Mach",
+	"prop rpm limit",
+	"hover rpm",
+	"ESC current",
+	"no pack for the bus",
 };
 
 /* ---- small helpers -------------------------------------------------------- */
@@ -951,7 +951,7 @@ locked_limits(const struct optim_target *t, const struct optim_locks *lk,
 		const char *fx[] = { "Remove the part lock to let the optimizer choose",
 			"Or change the mission so that the locked part fits", NULL };
 		feasibility_violation(r, "closed", "parts", "LOCKED_PART_LIMIT", fx,
-		    "The locked %s%s%s breaks %s on %dS.", c->motor->id,
+		    "The locked %s%s%s breaks a limit (%s) on %dS.", c->motor->id,
 		    c->prop != NULL ? " + " : "", c->prop != NULL ? c->prop->id : "",
 		    optim_reason_text[k], c->cells);
 	}
@@ -1028,7 +1028,7 @@ reason_fix(const struct optim_target *t, enum optim_reason why, char *out, size_
 /* No complete combination: say what eliminated everything, worst first. */
 static void
 report_none(const struct optim_target *t, const struct optim_census *cs,
-            struct solve_result *r)
+            const struct catalog_motor *locked_motor, struct solve_result *r)
 {
 	char msg[RES_TEXT];
 	int order[OPTIM_REASON_MAX], n = 0;
@@ -1041,11 +1041,21 @@ report_none(const struct optim_target *t, const struct optim_census *cs,
 			order[b] = order[b - 1];
 			order[b - 1] = tmp;
 		}
-	snprintf(msg, sizeof msg, "No catalogue combination fits: of %d options "
-	    "(bus %d-%dS x motor x propeller), ", cs->n_examined, t->cells_lo, t->cells_hi);
+	snprintf(msg, sizeof msg, "No catalogue combination fits");
+	if (locked_motor != NULL) {
+		/* The search never prunes a locked motor: say what it breaks. */
+		unsigned own = limit_mask(t, t->cells_lo, locked_motor, NULL)
+		    & locked_mask(true, false);
+		if (own != 0)
+			append(msg, sizeof msg, "; the locked %s breaks a limit (%s) at %dS",
+			    locked_motor->id, optim_reason_text[first_reason(own)],
+			    t->cells_lo);
+	}
+	append(msg, sizeof msg, "; %d options (bus %d-%dS x motor x prop) fail: ",
+	    cs->n_examined, t->cells_lo, t->cells_hi);
 	for (int k = 0; k < n; k++)
-		append(msg, sizeof msg, "%s%d fail %s", k > 0 ? ", " : "",
-		    cs->n_fail[order[k]], optim_reason_text[order[k]]);
+		append(msg, sizeof msg, "%s%s %d", k > 0 ? ", " : "",
+		    optim_reason_text[order[k]], cs->n_fail[order[k]]);
 	if (n == 0)
 		append(msg, sizeof msg, "none is usable");
 	append(msg, sizeof msg, ".");
@@ -1136,10 +1146,12 @@ fill_parts(const struct optim_target *t, const struct optim_choice *c,
 	rp = &r->battery;
 	part_common(rp, b->id, b->manufacturer, b->part_number, b->price_usd);
 	append(rp->description, sizeof rp->description, "%s %dS %.0f mAh, %.0fC "
-	    "continuous; %dS%dP packs for a %dS %.0f mAh battery", b->chemistry,
-	    b->cells_series, b->capacity_ah * 1000.0, b->continuous_c,
-	    c->series_packs, c->parallel_packs, c->cells,
-	    b->capacity_ah * 1000.0 * (double)c->parallel_packs);
+	    "continuous", b->chemistry, b->cells_series, b->capacity_ah * 1000.0,
+	    b->continuous_c);
+	if (c->series_packs * c->parallel_packs > 1)
+		append(rp->description, sizeof rp->description, "; %d in series x %d "
+		    "in parallel for %dS %.0f mAh", c->series_packs, c->parallel_packs,
+		    c->cells, b->capacity_ah * 1000.0 * (double)c->parallel_packs);
 	rp->qty = c->series_packs * c->parallel_packs;
 	rp->unit_mass_kg = b->mass_kg;
 	r->battery_series_packs = c->series_packs;
@@ -1319,7 +1331,7 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 		}
 	}
 	if (n_found == 0) {
-		report_none(&t, &cs, r);
+		report_none(&t, &cs, lk.motor ? catalog_find_motor(cat, lk.motor) : NULL, r);
 		return 0;
 	}
 

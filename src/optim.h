@@ -79,7 +79,7 @@ enum optim_reason {
 	OPTIM_REASON_MAX
 };
 
-/* Plain words for each reason ("the motor current limit"). */
+/* A short name for each reason ("motor current"). */
 extern const char *const optim_reason_text[OPTIM_REASON_MAX];
 
 /* The continuous optimum the search aims at, at its own bus (S*). */

@@ -501,6 +501,35 @@ optim_select_should_explain_when_nothing_fits(void **state)
 	free(r);
 }
 
+static void
+optim_select_should_let_an_integrated_system_replace_motor_prop_and_esc(void **state)
+{
+	const struct env_state *s = *state;
+	struct mission_spec m;
+	load_mission(s, EXAMPLE_DIR "/agri_spray_octo.json", &m);
+	snprintf(m.locks.motor_part, sizeof m.locks.motor_part,
+	    "hobbywing-xrotor-x8-g2-integrated-system");
+	m.nominal_cell_count = 12;
+	m.given[SPECF_NOMINAL_CELL_COUNT] = true;
+	struct solve_result *r = solve(s, &m);
+	assert_true(r->parts_selected);
+	assert_string_equal(r->motor.id, "hobbywing-xrotor-x8-g2-integrated-system");
+	assert_int_equal(r->motor.qty, 8);
+	assert_false(r->prop.chosen);
+	assert_false(r->esc.chosen);
+	for (int i = 0; i < r->n_bom; i++) {
+		assert_string_not_equal(r->bom[i].category, "propeller");
+		assert_string_not_equal(r->bom[i].category, "esc");
+	}
+	assert_true(fabs(r->bom_mass_kg + r->closed.mass.payload_kg
+	    - r->closed.mass.total_kg) <= BOM_TOL_KG);
+	/* 80 A and 920 W cannot lift this octocopter: said, not hidden. */
+	assert_true(has_violation(r, "LOCKED_PART_LIMIT"));
+	assert_true(has_violation(r, "MOTOR_CURRENT"));
+	assert_false(r->feasible);
+	free(r);
+}
+
 int
 main(void)
 {
@@ -532,6 +561,8 @@ main(void)
 		cmocka_unit_test_setup_teardown(optim_select_should_report_an_unknown_part_id,
 		    setup_env, teardown_env),
 		cmocka_unit_test_setup_teardown(optim_select_should_explain_when_nothing_fits,
+		    setup_env, teardown_env),
+		cmocka_unit_test_setup_teardown(optim_select_should_let_an_integrated_system_replace_motor_prop_and_esc,
 		    setup_env, teardown_env),
 	};
 	return cmocka_run_group_tests_name("optim", tests, NULL, NULL);
