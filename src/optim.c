@@ -618,12 +618,24 @@ apply_parts(struct sizing_params *p, const struct model_data *md,
 	p->explore = false;
 }
 
-static struct res_check *
-add_check(struct res_run *run, const char *name, const char *unit,
-          double value, double limit, bool upper)
+/* One row of the closed run's checks table (when there is room: the verdict
+ * never depends on it).  Returns whether the value passes; a failure's name
+ * goes to *first unless one is there already. */
+static bool
+parts_check(struct res_run *run, const char *name, const char *unit,
+            double value, double limit, bool upper, const char **first)
 {
+	double scale = fabs(limit) > 1e-12 ? fabs(limit) : 1.0;
+	double tol = CHECK_RELTOL * scale;
+	bool pass = isfinite(value) && isfinite(limit)
+	    && (upper ? value <= limit + tol : value >= limit - tol);
+	if (!pass) {
+		run->feasible = false;
+		if (*first == NULL)
+			*first = name;
+	}
 	if (run->n_checks >= RES_MAX_CHECKS)
-		return NULL;
+		return pass;
 	struct res_check *c = &run->checks[run->n_checks++];
 	memset(c, 0, sizeof *c);
 	copy_text(c->name, sizeof c->name, name);
@@ -631,14 +643,9 @@ add_check(struct res_run *run, const char *name, const char *unit,
 	c->value = isfinite(value) ? value : 0.0;
 	c->limit = isfinite(limit) ? limit : 0.0;
 	c->upper = upper;
-	double scale = fabs(c->limit) > 1e-12 ? fabs(c->limit) : 1.0;
 	c->margin = upper ? (c->limit - c->value) / scale : (c->value - c->limit) / scale;
-	double tol = CHECK_RELTOL * scale;
-	c->pass = isfinite(value) && (upper ? c->value <= c->limit + tol
-	    : c->value >= c->limit - tol);
-	if (!c->pass)
-		run->feasible = false;
-	return c;
+	c->pass = pass;
+	return pass;
 }
 
 /* Full-throttle rotor speed of the real motor on the closed bus, rev/s. */
@@ -650,8 +657,9 @@ closed_full_rps(const struct sizing_params *p, const struct optim_choice *c)
 }
 
 /* The limits only real parts have: rows of the closed run's checks table
- * and stage "parts" violations. */
-static void
+ * and stage "parts" violations.  Returns the name of the first that fails,
+ * or NULL. */
+static const char *
 parts_checks(const struct sizing_params *p, const struct optim_choice *c,
              const struct res_run *custom, struct res_run *o,
              struct solve_result *r)
@@ -664,9 +672,9 @@ parts_checks(const struct sizing_params *p, const struct optim_choice *c,
 	char f1[RES_TEXT], f2[RES_TEXT], f3[RES_TEXT];
 	const char *fx[4] = { f1, f2, f3, NULL };
 
-	struct res_check *k = add_check(o, "Thrust-to-weight of the real motor and propeller",
-	    "", tw, custom->thrust_to_weight, false);
-	if (k != NULL && !k->pass) {
+	const char *first = NULL;
+	if (!parts_check(o, "Thrust-to-weight of the real motor and propeller", "",
+	    tw, custom->thrust_to_weight, false, &first)) {
 		/* Thrust goes with rpm², rpm with KV: the KV that would do. */
 		snprintf(f1, sizeof f1, "Add a motor of about %.0f KV for %dS to the catalogue (or use --db)",
 		    tw > 0.0 ? m->kv_rpm_per_v * sqrt(custom->thrust_to_weight / tw) : 0.0,
@@ -679,9 +687,8 @@ parts_checks(const struct sizing_params *p, const struct optim_choice *c,
 		    m_to_in(d_m), c->cells, tw, custom->thrust_to_weight);
 	}
 	double i_m = OPTIM_CURRENT_MARGIN * o->opt.motor_peak_current_a;
-	k = add_check(o, "Motor current at full throttle (× 1.1)", "A", i_m,
-	    m->max_current_a, true);
-	if (k != NULL && !k->pass) {
+	if (!parts_check(o, "Motor current at full throttle (× 1.1)", "A", i_m,
+	    m->max_current_a, true, &first)) {
 		snprintf(f1, sizeof f1, "No catalogue motor carries %.0f A at %dS: add one to data/catalog/motors.json or use --db",
 		    i_m, c->cells);
 		snprintf(f2, sizeof f2, "Raise the bus voltage (nominal_cell_count) to lower the current");
@@ -693,9 +700,8 @@ parts_checks(const struct sizing_params *p, const struct optim_choice *c,
 		fx[2] = f3;
 	}
 	if (m->max_power_w > 0.0) {
-		k = add_check(o, "Motor power at full throttle", "W",
-		    o->opt.motor_peak_power_w, m->max_power_w, true);
-		if (k != NULL && !k->pass) {
+		if (!parts_check(o, "Motor power at full throttle", "W",
+		    o->opt.motor_peak_power_w, m->max_power_w, true, &first)) {
 			snprintf(f1, sizeof f1, "No catalogue motor is rated for %.0f W: add one to data/catalog/motors.json or use --db",
 			    o->opt.motor_peak_power_w);
 			snprintf(f2, sizeof f2, "Lower the thrust margin or the payload");
@@ -708,9 +714,8 @@ parts_checks(const struct sizing_params *p, const struct optim_choice *c,
 		}
 	}
 	if (c->esc != NULL) {
-		k = add_check(o, "ESC current at full throttle (× 1.1)", "A", i_m,
-		    c->esc->continuous_current_a, true);
-		if (k != NULL && !k->pass) {
+		if (!parts_check(o, "ESC current at full throttle (× 1.1)", "A", i_m,
+		    c->esc->continuous_current_a, true, &first)) {
 			snprintf(f1, sizeof f1, "No catalogue ESC carries %.0f A at %dS: add one to data/catalog/escs.json or use --db",
 			    i_m, c->cells);
 			snprintf(f2, sizeof f2, "Remove locks.esc_part to let the optimizer choose");
@@ -724,9 +729,8 @@ parts_checks(const struct sizing_params *p, const struct optim_choice *c,
 	}
 	const struct catalog_battery *b = c->battery;
 	double i_max = (double)c->parallel_packs * b->capacity_ah * b->continuous_c;
-	k = add_check(o, "Battery current within the continuous C rating", "A",
-	    o->peak_current_a, i_max, true);
-	if (k != NULL && !k->pass) {
+	if (!parts_check(o, "Battery current within the continuous C rating", "A",
+	    o->peak_current_a, i_max, true, &first)) {
 		snprintf(f1, sizeof f1, "Add packs in parallel or a higher-C pack to data/catalog/batteries.json");
 		snprintf(f2, sizeof f2, "Remove locks.battery_part to let the optimizer choose");
 		fx[2] = NULL;
@@ -737,9 +741,8 @@ parts_checks(const struct sizing_params *p, const struct optim_choice *c,
 		fx[2] = f3;
 	}
 	double mach = M_PI * d_m * n_max / p->air.sound_m_s;
-	k = add_check(o, "Tip Mach at the real motor's full rpm", "", mach,
-	    AERO_TIP_MACH_MAX, true);
-	if (k != NULL && !k->pass) {
+	if (!parts_check(o, "Tip Mach at the real motor's full rpm", "", mach,
+	    AERO_TIP_MACH_MAX, true, &first)) {
 		snprintf(f1, sizeof f1, "Use a lower-KV motor or a smaller propeller");
 		snprintf(f2, sizeof f2, "Remove the motor or propeller lock");
 		fx[2] = NULL;
@@ -748,6 +751,7 @@ parts_checks(const struct sizing_params *p, const struct optim_choice *c,
 		    "%.2f (limit %.2f).", n_max * S_PER_MIN, m_to_in(d_m), mach,
 		    AERO_TIP_MACH_MAX);
 	}
+	return first;
 }
 
 /* Did the battery run short (so a larger one may close)?  Read from the
@@ -839,14 +843,18 @@ close_choice(const struct closer *k, struct optim_choice *c,
 	double need_a = at_bus(k->t, k->t->bus_peak_current_a, c->cells);
 	struct optim_choice prev = *c;
 	int prev_failed = -1;
+	const char *parts_fail = NULL;
 	for (int attempt = 0;; attempt++) {
 		struct sizing_params p = *k->p0;
 		apply_parts(&p, k->md, k->t, k->custom, c);
 		sr->n_violations = 0;
 		enum sizing_status st = sizing_run(&p, &sr->closed);
+		/* It flew the continuous design's relaxed mission, if any. */
+		if (k->custom->time_scale > 0.0 && k->custom->time_scale < 1.0)
+			sr->closed.time_scale = k->custom->time_scale;
 		*finite = closed_finite(&sr->closed);
 		feasibility_checks(&p, st, "closed", &sr->closed, sr);
-		parts_checks(&p, c, k->custom, &sr->closed, sr);
+		parts_fail = parts_checks(&p, c, k->custom, &sr->closed, sr);
 		int nf = n_failed(&sr->closed);
 		if (prev_failed >= 0 && nf >= prev_failed) {
 			/* A larger battery did not help: go back to the last one
@@ -872,7 +880,8 @@ close_choice(const struct closer *k, struct optim_choice *c,
 		prev_failed = nf;
 		*c = up;
 	}
-	return new_failure(k->custom, &sr->closed);
+	const char *fail = new_failure(k->custom, &sr->closed);
+	return fail != NULL ? fail : parts_fail;
 }
 
 /* ---- locks ---------------------------------------------------------------- */
@@ -1256,6 +1265,10 @@ explain(const struct optim_target *t, const struct optim_choice *c,
 		engine_rationale(w, "Bus %dS instead of the continuous %dS: the real "
 		    "parts match better there (same power, %.0f %% of the current).",
 		    c->cells, t->cells, 100.0 * (double)t->cells / (double)c->cells);
+	if (strcmp(chem_family(c->battery->chemistry), chem_family(t->chemistry)) != 0)
+		engine_rationale(w, "No catalogue pack of the mission's %s family fits "
+		    "the bus; %s packs are used and the closed run flies their "
+		    "chemistry profile.", t->chemistry, c->battery->chemistry);
 	engine_rationale(w, "Battery: %d x %s (%dS%dP) = %dS %.0f mAh, %.2f kg.",
 	    c->series_packs * c->parallel_packs, c->battery->id, c->series_packs,
 	    c->parallel_packs, c->cells, c->battery->capacity_ah * 1000.0
