@@ -1356,17 +1356,18 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 	struct solve_result *fb = xcalloc(1, sizeof *fb);
 	struct solve_result *cur = xcalloc(1, sizeof *cur);
 	struct optim_choice fb_c = ch[0], use_c = ch[0];
+	struct optim_target fb_t = t, use_t = t;  /* the aim each was found at */
+	int fb_round = 0, use_round = 0;
 	char fb_fail[64] = "";
 	int fb_failed = -1;
 	bool fb_finite = true, finite = true;
 	const struct solve_result *use = NULL;
-	int tried = 0, rounds = 0;
+	int tried = 0;
 	for (int round = 0; round < OPTIM_ROUNDS && use == NULL; round++) {
 		int n = round == 0 ? n_found
 		    : optim_rank(&tr, cat, &lk, ch, OPTIM_MAX_TRIES, NULL, NULL, NULL);
 		if (n == 0)
 			break;
-		rounds = round;
 		int kept = n < OPTIM_MAX_TRIES ? n : OPTIM_MAX_TRIES;
 		double heaviest = 0.0;
 		for (int i = 0; i < kept; i++) {
@@ -1375,6 +1376,8 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 			if (fail == NULL && finite) {
 				use = cur;
 				use_c = c;
+				use_t = tr;
+				use_round = round;
 				break;
 			}
 			tried++;
@@ -1382,6 +1385,8 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 			if (fb_failed < 0 || nf < fb_failed) {
 				*fb = *cur;
 				fb_c = c;
+				fb_t = tr;
+				fb_round = round;
 				fb_failed = nf;
 				fb_finite = finite;
 				copy_text(fb_fail, sizeof fb_fail, fail ? fail : "");
@@ -1405,6 +1410,8 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 	if (use == NULL) {
 		use = fb;
 		use_c = fb_c;
+		use_t = fb_t;
+		use_round = fb_round;
 		finite = fb_finite;
 		copy_text(failed, sizeof failed, fb_fail[0] ? fb_fail : "a check");
 	}
@@ -1421,16 +1428,17 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 		    use_c.motor->id, use_c.prop ? " + " : "", use_c.prop ? use_c.prop->id : "",
 		    use_c.series_packs * use_c.parallel_packs, use_c.battery->id, failed);
 	}
-	locked_limits(&tr, &lk, &use_c, r);
+	locked_limits(&use_t, &lk, &use_c, r);
 	free(fb);
 	free(cur);
-	/* The crosshair figure scores every motor against the final aim. */
-	if (rounds > 0)
-		optim_rank(&tr, cat, &lk, ch, 0, NULL, r->candidates, &r->n_candidates);
-	if (rounds > 0)
+	/* The crosshair figure scores every motor against the aim the chosen
+	 * parts were found at. */
+	if (use_round > 0) {
+		optim_rank(&use_t, cat, &lk, ch, 0, NULL, r->candidates, &r->n_candidates);
 		engine_rationale(r, "Real parts came out heavier than the continuous "
 		    "design, so the search was re-aimed at %.2f kg (%d round%s).",
-		    tr.mass_kg, rounds, rounds == 1 ? "" : "s");
+		    use_t.mass_kg, use_round, use_round == 1 ? "" : "s");
+	}
 
 	fill_parts(&t, &use_c, r);
 	struct sizing_params pc = p;
