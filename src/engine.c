@@ -8,6 +8,7 @@
 
 #include "aero.h"
 #include "feasibility.h"
+#include "optim.h"
 #include "structure.h"
 #include "units.h"
 
@@ -454,7 +455,6 @@ engine_solve(const struct mission_spec *spec, const struct model_data *md,
              const struct catalog *cat, struct solve_result *r)
 {
 	int rc = 0;
-	(void)cat;
 	r->mission = *spec;
 	engine_resolve(&r->mission, md, r);
 	solve_run(&r->mission, md, true, &r->baseline, r, &rc);
@@ -467,6 +467,10 @@ engine_solve(const struct mission_spec *spec, const struct model_data *md,
 		    r->role_overhead.total_kg, r->baseline.mass.total_kg,
 		    r->custom.mass.total_kg);
 	}
+	/* Real parts on top of a converged custom run (optim.h). */
+	if (cat != NULL && r->custom.ran && r->custom.converged
+	    && optim_select(&r->mission, md, cat, r) != 0)
+		rc = 3;
 	r->feasible = r->n_violations == 0 && r->custom.ran && r->custom.feasible;
 	return rc;
 }
