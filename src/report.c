@@ -36,6 +36,7 @@
 #define REP_EU_C3_KG 25.0
 /* US 14 CFR Part 107: small UAS below 55 lb, kg. */
 #define REP_US_107_KG 24.948
+#define REP_KG_PER_LB 0.45359237
 
 /* ---- small helpers shared with report_figs.c ---------------------------- */
 
@@ -285,6 +286,35 @@ sec_cover(struct rep *rp, int first)
 	}
 	doc_table(rp->d, &t);
 	doc_table_clear(&t);
+
+	doc_heading(rp->d, 2, "Mission");
+	char *v[5];
+	v[0] = xstrdup(sfmt(&sb, "%s role, %s airframe, %d rotors%s on a %s mm wheelbase", role_name(r),
+	                    m->airframe_class >= 0 && m->airframe_class < AF_CLASS_MAX
+	                    ? spec_enum_airframe[m->airframe_class] : "?",
+	                    m->num_rotors, m->coaxial_layout ? " (coaxial pairs)" : "",
+	                    report_num(b1, sizeof b1, 1000.0 * m->max_diameter_m, 0)));
+	v[1] = xstrdup(sfmt(&sb, "%s kg", report_num(b1, sizeof b1, m->payload_kg, 3)));
+	strbuf_reset(&sb);
+	strbuf_printf(&sb, "climb %s s at %s m/s", report_num(b1, sizeof b1, m->t_climb_s, 0),
+	              report_num(b2, sizeof b2, m->v_climb_ms, 1));
+	if (m->t_forward_s > 0)
+		strbuf_printf(&sb, ", forward %s s at %s", report_num(b1, sizeof b1, m->t_forward_s, 0),
+		              m->v_forward_auto ? "the minimum-power speed"
+		                                : sfmt(&sb2, "%s m/s", report_num(b2, sizeof b2, m->v_forward_ms, 1)));
+	strbuf_printf(&sb, ", hover %s s", report_num(b1, sizeof b1, m->t_hover_s, 0));
+	v[2] = xstrdup(strbuf_str(&sb));
+	v[3] = xstrdup(sfmt(&sb, "%s m altitude, %s °C ambient", report_num(b1, sizeof b1, m->altitude_m, 0),
+	                    report_num(b2, sizeof b2, m->ambient_temp_c, 1)));
+	v[4] = xstrdup(sfmt(&sb, "%s, %s", m->battery_chemistry,
+	                    m->locks.is_battery_locked ? "capacity and cells locked"
+	                    : m->nominal_cell_count > 0 ? sfmt(&sb2, "%d cells in series", m->nominal_cell_count)
+	                    : "cell count chosen by the solver"));
+	const char *mkv[] = { "Aircraft", v[0], "Payload", v[1], "Profile", v[2], "Environment", v[3],
+	                      "Battery", v[4] };
+	kv_table(rp->d, mkv, 5, -1);
+	for (int i = 0; i < 5; i++)
+		free(v[i]);
 	doc_paragraph(rp->d, sfmt(&sb, "The baseline run sizes the same mission with no role (payload as "
 	              "dead weight, hover throttle 60 %%); the custom run applies the %s role. The "
 	              "mission file is attached to this PDF.", role_name(r)));
@@ -329,11 +359,11 @@ regulatory(struct rep *rp)
 	own[0] = xstrdup(strbuf_str(&sb));
 	if (m < REP_US_107_KG)
 		sfmt(&sb, "US (14 CFR Part 107): %s kg (%s lb) is below the 55 lb (24.9 kg) small-UAS limit.",
-		     report_num(b1, sizeof b1, m, 2), report_num(b3, sizeof b3, m / 0.45359237, 1));
+		     report_num(b1, sizeof b1, m, 2), report_num(b3, sizeof b3, m / REP_KG_PER_LB, 1));
 	else
 		sfmt(&sb, "US (14 CFR Part 107): %s kg (%s lb) is at or above the 55 lb (24.9 kg) small-UAS "
 		     "limit; an exemption (49 U.S.C. 44807) or Part 91 operation is needed.",
-		     report_num(b1, sizeof b1, m, 2), report_num(b3, sizeof b3, m / 0.45359237, 1));
+		     report_num(b1, sizeof b1, m, 2), report_num(b3, sizeof b3, m / REP_KG_PER_LB, 1));
 	own[1] = xstrdup(strbuf_str(&sb));
 	own[2] = xstrdup("Informative only: a class mark also depends on the manufacturer's declaration "
 	                 "of conformity (noise, geo-awareness, remote identification, speed limits).");
@@ -462,7 +492,7 @@ sec_summary(struct rep *rp, const char *title)
 static void
 numbered(struct doc *d, const char *const *items, int n, int first_no)
 {
-	static const struct doc_column cols[] = { { "", 0.35, DOC_ALIGN_RIGHT },
+	static const struct doc_column cols[] = { { "", 0.5, DOC_ALIGN_RIGHT },
 	                                          { "", 9.0, DOC_ALIGN_LEFT } };
 	struct doc_table t;
 	doc_table_init(&t, cols, 2);
@@ -606,8 +636,80 @@ no_parts_reason(const struct rep *rp)
 	if (!r->custom.ran)
 		return "The custom run stopped at the feasibility gate, so there was no sized "
 		       "requirement to match parts against.";
+	if (r->n_candidates == 0)
+		return "The parts search did not score any catalogue motor for this design, so no "
+		       "parts were chosen; the dossier shows the continuous optimum only.";
 	return "The parts search returned no combination of catalogue motor, propeller, battery and "
 	       "ESC that meets the sized requirement; the dossier shows the continuous optimum only.";
+}
+
+/* What the continuous design asks a supplier for, item by item: the
+ * procurement brief when no catalogue parts were selected. */
+static void
+sourcing_table(struct rep *rp)
+{
+	const struct solve_result *r = rp->r;
+	const struct res_run *c = &r->custom;
+	const struct mission_spec *m = &r->mission;
+	struct strbuf sb = STRBUF_INIT;
+	char b1[48], b2[48], b3[48];
+	int n_rot = m->num_rotors > 0 ? m->num_rotors : 1;
+	int n_arms = m->coaxial_layout ? (n_rot + 1) / 2 : n_rot;
+	int packs = c->pack_count > 0 ? c->pack_count : 1;
+	static const struct doc_column cols[] = {
+		{ "Item", 1.1, DOC_ALIGN_LEFT }, { "Qty", 0.45, DOC_ALIGN_RIGHT },
+		{ "Specification", 4.2, DOC_ALIGN_LEFT }, { "Each (g)", 0.8, DOC_ALIGN_RIGHT },
+		{ "Total (g)", 0.85, DOC_ALIGN_RIGHT },
+	};
+	struct doc_table t;
+	doc_table_init(&t, cols, 5);
+	struct {
+		const char *item;
+		int qty;
+		double total_kg;
+		char *spec;
+	} row[7];
+	row[0].spec = xstrdup(sfmt(&sb, "Brushless outrunner, KV ≈ %s rpm/V, peak %s A / %s W, for %dS",
+	                           report_num(b1, sizeof b1, c->opt.motor_kv, 0),
+	                           report_num(b2, sizeof b2, c->opt.motor_peak_current_a, 1),
+	                           report_num(b3, sizeof b3, c->opt.motor_peak_power_w, 0), c->cell_count));
+	row[0].item = "Motor", row[0].qty = n_rot, row[0].total_kg = c->mass.motor_kg;
+	/* "auto" is plastic below 12 in, carbon above (spec.h). */
+	int pc = m->aerodynamic_overrides.propeller_class;
+	const char *material = pc > PROP_AUTO && pc < PROP_CLASS_MAX ? spec_enum_prop[pc]
+	                     : c->opt.prop_diameter_in < 12.0 ? "plastic" : "carbon";
+	row[1].spec = xstrdup(sfmt(&sb, "%s × %s in, %d blades, %s", report_num(b1, sizeof b1, c->opt.prop_diameter_in, 1),
+	                           report_num(b2, sizeof b2, c->opt.prop_pitch_in, 1),
+	                           m->structural_overrides.num_blades, material));
+	row[1].item = "Propeller", row[1].qty = n_rot, row[1].total_kg = c->mass.prop_kg;
+	row[2].spec = xstrdup(sfmt(&sb, "%dS %s, %s mAh (%s Wh) in total, %s C continuous at full throttle",
+	                           c->cell_count, c->chemistry, report_num(b1, sizeof b1, c->capacity_mah, 0),
+	                           report_num(b2, sizeof b2, c->energy_wh, 1),
+	                           report_num(b3, sizeof b3, c->peak_c_rate, 1)));
+	row[2].item = "Battery pack", row[2].qty = packs, row[2].total_kg = c->mass.battery_kg;
+	row[3].spec = xstrdup(sfmt(&sb, "≥ %s A per channel, %dS", report_num(b1, sizeof b1, c->opt.motor_peak_current_a, 0),
+	                           c->cell_count));
+	row[3].item = "ESC", row[3].qty = n_rot, row[3].total_kg = c->mass.esc_kg;
+	row[4].spec = xstrdup(sfmt(&sb, "CFRP tube Ø%s mm × %s mm wall, %s mm long",
+	                           report_num(b1, sizeof b1, c->arm_outer_diameter_mm, 1),
+	                           report_num(b2, sizeof b2, c->arm_wall_thickness_mm, 2),
+	                           report_num(b3, sizeof b3, 1000.0 * c->arm_length_m, 0)));
+	row[4].item = "Arm", row[4].qty = n_arms, row[4].total_kg = c->mass.arm_kg;
+	row[5].spec = xstrdup(sfmt(&sb, "Power harness for %s A peak", report_num(b1, sizeof b1, c->peak_current_a, 0)));
+	row[5].item = "Wiring", row[5].qty = 1, row[5].total_kg = c->mass.wiring_kg;
+	row[6].spec = xstrdup("Centre plates and spar joints");
+	row[6].item = "Frame", row[6].qty = 1, row[6].total_kg = c->mass.frame_kg;
+	for (int i = 0; i < 7; i++) {
+		doc_table_cell(&t, DOC_CELL_NORMAL, "%s", row[i].item);
+		doc_table_cell(&t, DOC_CELL_NORMAL, "%d", row[i].qty);
+		doc_table_cell(&t, DOC_CELL_NORMAL, "%s", row[i].spec);
+		report_cell_num(&t, DOC_CELL_NORMAL, 1000.0 * row[i].total_kg / row[i].qty, 1);
+		report_cell_num(&t, DOC_CELL_NORMAL, 1000.0 * row[i].total_kg, 1);
+		free(row[i].spec);
+	}
+	doc_table(rp->d, &t);
+	doc_table_clear(&t);
+	strbuf_free(&sb);
 }
 
 static void
@@ -619,13 +721,17 @@ sec_bom(struct rep *rp, const char *title)
 	report_heading(rp, title);
 	if (!r->parts_selected) {
 		doc_callout(rp->d, DOC_CALLOUT_WARN, "No catalogue parts selected", no_parts_reason(rp));
-		doc_paragraph(rp->d, "To order this aircraft, match the continuous optimum in the propulsion "
-		              "section against suppliers' data, or rebuild with a parts catalogue (--db DIR).");
+		doc_heading(rp->d, 2, "Specification to source (custom run)");
+		doc_paragraph(rp->d, "What the sized design asks of each supplier; the masses are the sizing "
+		              "model's. Order against these, or rebuild with a parts catalogue (--db DIR).");
+		sourcing_table(rp);
 	}
 	if (r->n_bom == 0) {
 		strbuf_free(&sb);
 		return;
 	}
+	if (!r->parts_selected)
+		doc_heading(rp->d, 2, "Lines on record");
 	static const struct doc_column cols[] = {
 		{ "#", 0.35, DOC_ALIGN_RIGHT }, { "Qty", 0.4, DOC_ALIGN_RIGHT },
 		{ "Category", 0.9, DOC_ALIGN_LEFT }, { "Part", 3.1, DOC_ALIGN_LEFT },
@@ -697,9 +803,10 @@ checks_table(struct rep *rp, const struct res_run *run, int failing_first)
 			if (failing_first ? c->pass != (pass == 1) : pass == 1)
 				continue;
 			const char *unit = c->unit[0] != '\0' ? " " : "";
-			doc_table_cell(&t, DOC_CELL_NORMAL, "%s (%s)", c->name, c->upper ? "≤ limit" : "≥ limit");
+			doc_table_cell(&t, DOC_CELL_NORMAL, "%s", c->name);
 			doc_table_cell(&t, DOC_CELL_NORMAL, "%s%s%s", report_auto(b1, sizeof b1, c->value), unit, c->unit);
-			doc_table_cell(&t, DOC_CELL_NORMAL, "%s%s%s", report_auto(b1, sizeof b1, c->limit), unit, c->unit);
+			doc_table_cell(&t, DOC_CELL_NORMAL, "%s %s%s%s", c->upper ? "≤" : "≥",
+			               report_auto(b1, sizeof b1, c->limit), unit, c->unit);
 			enum doc_cell ms = !c->pass ? DOC_CELL_FAIL
 			                 : c->margin < REP_TIGHT_MARGIN ? DOC_CELL_WARN : DOC_CELL_NORMAL;
 			doc_table_cell(&t, ms, "%s %%", report_num(b1, sizeof b1, 100.0 * c->margin, 1));
@@ -730,8 +837,9 @@ sec_checks(struct rep *rp, const char *title)
 		doc_callout(rp->d, DOC_CALLOUT_PASS, "FEASIBLE", "Every constraint of the custom design holds.");
 	}
 	doc_heading(rp->d, 2, "Custom run");
-	doc_paragraph(rp->d, "Margin: the distance to the limit as a fraction of the limit; margins under "
-	              "5 % are highlighted.");
+	doc_paragraph(rp->d, "Value: what the design achieves; limit: what it must stay at or below (≤) or "
+	              "reach (≥); margin: the distance to the limit as a fraction of the limit. Margins "
+	              "under 5 % are highlighted.");
 	checks_table(rp, &r->custom, !r->feasible);
 	if (r->parts_selected && r->closed.ran) {
 		doc_heading(rp->d, 2, "Custom run with the real parts");

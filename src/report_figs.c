@@ -46,6 +46,9 @@ sfmt(struct strbuf *sb, const char *fmt, ...)
 	return strbuf_str(sb);
 }
 
+/* Phase names for table rows (res_phase_name is the lower-case key). */
+static const char *const phase_title[PHASE_MAX] = { "Climb", "Forward", "Hover" };
+
 static int
 dmin_i(int a, int b)
 {
@@ -72,7 +75,7 @@ phase_table(struct rep *rp, const struct res_run *run)
 		const struct res_phase *ph = &run->phase[i];
 		if (ph->duration_s <= 0.0)
 			continue;
-		doc_table_cell(&t, DOC_CELL_NORMAL, "%s", res_phase_name[i]);
+		doc_table_cell(&t, DOC_CELL_NORMAL, "%s", phase_title[i]);
 		report_cell_num(&t, DOC_CELL_NORMAL, ph->duration_s, 0);
 		report_cell_num(&t, DOC_CELL_NORMAL, ph->speed_ms, 1);
 		report_cell_num(&t, DOC_CELL_NORMAL, ph->thrust_per_rotor_n, 1);
@@ -134,6 +137,14 @@ report_sec_mission(struct rep *rp, const char *title)
 		struct plot_panel *pp = plot_panel(p, 0, 0);
 		plot_axis_title(pp, PLOT_X, "Forward speed (m/s)");
 		plot_axis_title(pp, PLOT_Y, "Electrical power (W)");
+		double vtop = 0.0;
+		for (int k = 0; k < dmin_i(c->n_sweep, RES_MAX_SWEEP); k++)
+			vtop = fmax(vtop, c->sweep_v_ms[k]);
+		for (int k = 0; k < dmin_i(b->n_sweep, RES_MAX_SWEEP); k++)
+			vtop = fmax(vtop, b->sweep_v_ms[k]);
+		vtop = fmax(vtop, c->v_max_ms);
+		if (vtop > 0)
+			plot_axis_range(pp, PLOT_X, 0, vtop + 1.0);
 		plot_line(pp, b->sweep_v_ms, b->sweep_power_w, (size_t)dmin_i(b->n_sweep, RES_MAX_SWEEP),
 		          "Baseline", REP_COL_BASELINE, PLOT_DASH_SOLID);
 		plot_line(pp, c->sweep_v_ms, c->sweep_power_w, (size_t)dmin_i(c->n_sweep, RES_MAX_SWEEP),
@@ -190,9 +201,13 @@ report_sec_thermal(struct rep *rp, const char *title)
 	char b1[48], b2[48];
 	report_heading(rp, title);
 	int n = dmin_i(c->n_trace, RES_MAX_TRACE);
+	char end[RES_TEXT];
+	snprintf(end, sizeof end, "%s", c->termination[0] != '\0' ? c->termination : "mission flown");
+	if (end[0] >= 'a' && end[0] <= 'z')
+		end[0] = (char)(end[0] - 'a' + 'A');
 	doc_paragraph(rp->d, sfmt(&sb, "The discharge simulation of the custom run: pack temperature, "
 	              "terminal and open-circuit voltage, state of charge and current over the mission "
-	              "(%d samples). %s.", n, c->termination[0] != '\0' ? c->termination : "Mission flown"));
+	              "(%d samples). %s.", n, end));
 	if (n > 0) {
 		double *t = xcalloc((size_t)n, sizeof *t), *y1 = xcalloc((size_t)n, sizeof *y1),
 		       *y2 = xcalloc((size_t)n, sizeof *y2);
@@ -326,12 +341,12 @@ report_sec_structure(struct rep *rp, const char *title)
 		arm_row(&t, "Real parts", &r->closed);
 	doc_table(rp->d, &t);
 	doc_table_clear(&t);
-	if (c->arm_wall_floor_binds || c->min_fraction_binds)
-		doc_paragraph(rp->d, sfmt(&sb, "In the custom run %s%s%s: the arm is stronger than bending "
-		              "alone requires, which shows as a large stress margin.",
-		              c->arm_wall_floor_binds ? "the minimum manufacturable wall thickness binds" : "",
-		              c->arm_wall_floor_binds && c->min_fraction_binds ? " and " : "",
-		              c->min_fraction_binds ? "the minimum structural mass fraction binds" : ""));
+	if (c->arm_wall_floor_binds)
+		doc_paragraph(rp->d, "In the custom run the minimum manufacturable wall thickness binds: the "
+		              "arm is stronger than bending alone requires, which shows as a stress margin.");
+	if (c->min_fraction_binds)
+		doc_paragraph(rp->d, "In the custom run the minimum structural mass fraction for this wheelbase "
+		              "binds: the frame mass is raised to it, beyond what the arm sizing needs.");
 
 	/* Blades per rotor as the engine used them: f_bpf = N_b rpm / 60. */
 	double n_b = c->rpm_peak > 0 ? c->blade_pass_frequency_hz / (c->rpm_peak / 60.0)
@@ -649,6 +664,9 @@ report_sec_propulsion(struct rep *rp, const char *title)
 		doc_paragraph(rp->d, sfmt(&sb, "Propeller: %s %s (J = %s), %d per aircraft.", r->prop.manufacturer,
 		              r->prop.part_number, report_num(b1, sizeof b1, r->prop.j_score, 3), r->prop.qty));
 
+	/* Keep the operating-point table with its heading and note (about
+	 * 200 pt): a lone row on the next page reads badly. */
+	doc_ensure_space(rp->d, 210.0);
 	doc_heading(rp->d, 2, "Operating points (custom run)");
 	op_table(rp);
 	doc_heading(rp->d, 2, "Feasibility gates");
@@ -668,8 +686,8 @@ history_series(struct plot_panel *pp, const struct res_run *run, const char *lab
 	double *it = xcalloc((size_t)n, sizeof *it);
 	for (int i = 0; i < n; i++)
 		it[i] = i + 1;
-	struct plot_style st = { .colour = colour, .marker = n <= 60 ? mk : PLOT_MARKER_NONE,
-	                         .marker_size_pt = 3.0 };
+	struct plot_style st = { .colour = colour, .marker = mk, .marker_size_pt = 2.5,
+	                         .open_marker = 1 };
 	plot_series(pp, it, run->history_kg, (size_t)n, label, &st);
 	free(it);
 }
@@ -708,17 +726,21 @@ report_sec_convergence(struct rep *rp, const char *title)
 	struct plot_panel *pp = plot_panel(p, 0, 0);
 	plot_axis_title(pp, PLOT_X, "Iteration");
 	plot_axis_title(pp, PLOT_Y, "Takeoff mass (kg)");
-	history_series(pp, &r->baseline, "Baseline", REP_COL_BASELINE, PLOT_MARKER_CIRCLE);
-	history_series(pp, &r->custom, "Custom", REP_COL_CUSTOM, PLOT_MARKER_SQUARE);
+	/* Markers show the individual iterations while they stay apart. */
+	int n_max = dmin_i(RES_MAX_HISTORY, fmax(r->baseline.n_history, r->custom.n_history));
+	int mk = n_max <= 80;
+	history_series(pp, &r->baseline, "Baseline", REP_COL_BASELINE, mk ? PLOT_MARKER_CIRCLE : PLOT_MARKER_NONE);
+	history_series(pp, &r->custom, "Custom", REP_COL_CUSTOM, mk ? PLOT_MARKER_SQUARE : PLOT_MARKER_NONE);
 	if (closed)
-		history_series(pp, &r->closed, "Custom, real parts", REP_COL_CLOSED, PLOT_MARKER_TRIANGLE);
+		history_series(pp, &r->closed, "Custom, real parts", REP_COL_CLOSED,
+		               mk ? PLOT_MARKER_TRIANGLE : PLOT_MARKER_NONE);
 	doc_figure(rp->d, p, "Takeoff mass per iteration of the mass loop, baseline and custom runs.");
 	plot_free(p);
 
 	static const struct doc_column cols[] = {
-		{ "Run", 1.1, DOC_ALIGN_LEFT }, { "Iterations", 0.8, DOC_ALIGN_RIGHT },
-		{ "Converged", 0.8, DOC_ALIGN_CENTER }, { "Lipschitz", 0.8, DOC_ALIGN_RIGHT },
-		{ "Goal γ", 0.6, DOC_ALIGN_RIGHT }, { "Termination", 3.2, DOC_ALIGN_LEFT },
+		{ "Run", 1.2, DOC_ALIGN_LEFT }, { "Iterations", 1.0, DOC_ALIGN_RIGHT },
+		{ "Converged", 1.05, DOC_ALIGN_CENTER }, { "Lipschitz", 0.95, DOC_ALIGN_RIGHT },
+		{ "Goal γ", 0.8, DOC_ALIGN_RIGHT }, { "Termination", 2.8, DOC_ALIGN_LEFT },
 	};
 	struct doc_table t;
 	doc_table_init(&t, cols, 6);
@@ -758,10 +780,11 @@ report_sec_endurance(struct rep *rp, const char *title)
 	struct strbuf sb = STRBUF_INIT;
 	char b1[48];
 	report_heading(rp, title);
-	doc_paragraph(rp->d, "Flight time against battery capacity: each point re-sizes the aircraft with "
-	              "the battery scaled by the factor on the x axis (1 = the design). More battery "
-	              "flies longer, but the mass it adds needs more power; past the inflection each "
-	              "extra watt-hour buys less than half the time the first ones did.");
+	doc_paragraph(rp->d, "Hover endurance to the reserve against battery capacity: each point re-sizes "
+	              "the aircraft with the battery capacity scaled by the factor on the x axis (1 = the "
+	              "design) and the cell count kept. More battery hovers longer, but the mass it adds "
+	              "needs more power; past the inflection each extra watt-hour buys less than half the "
+	              "time the first ones did.");
 	if (c->n_endurance <= 0 && r->baseline.n_endurance <= 0) {
 		doc_paragraph(rp->d, "The endurance explorer did not run for this design.");
 		strbuf_free(&sb);
@@ -769,13 +792,20 @@ report_sec_endurance(struct rep *rp, const char *title)
 	}
 	struct plot *p = plot_alloc(0, 380, 2, 1);
 	struct plot_panel *pt = plot_panel(p, 0, 0), *pm = plot_panel(p, 1, 0);
-	plot_axis_title(pt, PLOT_Y, "Flight time (min)");
+	plot_axis_title(pt, PLOT_Y, "Hover endurance (min)");
 	plot_axis_title(pm, PLOT_X, "Battery capacity scale");
 	plot_axis_title(pm, PLOT_Y, "Takeoff mass (kg)");
 	endurance_series(pt, pm, &r->baseline, "Baseline", REP_COL_BASELINE);
 	endurance_series(pt, pm, c, "Custom", REP_COL_CUSTOM);
-	plot_vline(pt, 1.0, "design point", PLOT_COLOUR_ACCENT, PLOT_DASH_DASHED);
+	/* The design point as a marker on the curves (its label would collide
+	 * with the inflection line's, which often sits close to 1). */
+	plot_vline(pt, 1.0, NULL, PLOT_COLOUR_ACCENT, PLOT_DASH_DASHED);
 	plot_vline(pm, 1.0, NULL, PLOT_COLOUR_ACCENT, PLOT_DASH_DASHED);
+	double one = 1.0, t1 = c->hover_endurance_s / 60.0, m1 = c->mass.total_kg;
+	struct plot_style dp = { .colour = PLOT_COLOUR_ACCENT, .line_width_pt = -1,
+	                         .marker = PLOT_MARKER_DIAMOND, .marker_size_pt = 7 };
+	plot_series(pt, &one, &t1, 1, sfmt(&sb, "design point (%s min)", report_num(b1, sizeof b1, t1, 1)), &dp);
+	plot_series(pm, &one, &m1, 1, sfmt(&sb, "design point (%s kg)", report_num(b1, sizeof b1, m1, 2)), &dp);
 	if (c->endurance_inflection_scale > 0) {
 		plot_vline(pt, c->endurance_inflection_scale,
 		           sfmt(&sb, "inflection ×%s", report_num(b1, sizeof b1, c->endurance_inflection_scale, 2)),
@@ -783,10 +813,10 @@ report_sec_endurance(struct rep *rp, const char *title)
 		plot_vline(pm, c->endurance_inflection_scale, NULL, PLOT_COLOUR_WARN, PLOT_DASH_DOTTED);
 	}
 	doc_figure(rp->d, p, c->endurance_inflection_scale > 0
-	           ? sfmt(&sb, "Endurance explorer: flight time (top) and takeoff mass (bottom) vs battery "
+	           ? sfmt(&sb, "Endurance explorer: hover endurance (top) and takeoff mass (bottom) vs battery "
 	                  "capacity scale; the design point is at 1, the custom run's mass-growth inflection at "
 	                  "×%s.", report_num(b1, sizeof b1, c->endurance_inflection_scale, 2))
-	           : "Endurance explorer: flight time (top) and takeoff mass (bottom) vs battery capacity "
+	           : "Endurance explorer: hover endurance (top) and takeoff mass (bottom) vs battery capacity "
 	             "scale; the design point is at 1, no inflection inside the explored range.");
 	plot_free(p);
 	strbuf_free(&sb);
