@@ -733,7 +733,7 @@ sec_bom(struct rep *rp, const char *title)
 	if (!r->parts_selected)
 		doc_heading(rp->d, 2, "Lines on record");
 	static const struct doc_column cols[] = {
-		{ "#", 0.35, DOC_ALIGN_RIGHT }, { "Qty", 0.4, DOC_ALIGN_RIGHT },
+		{ "#", 0.35, DOC_ALIGN_RIGHT }, { "Qty", 0.5, DOC_ALIGN_RIGHT },
 		{ "Category", 0.9, DOC_ALIGN_LEFT }, { "Part", 3.1, DOC_ALIGN_LEFT },
 		{ "Unit (g)", 0.8, DOC_ALIGN_RIGHT }, { "Total (g)", 0.85, DOC_ALIGN_RIGHT },
 		{ "Unit (USD)", 0.85, DOC_ALIGN_RIGHT }, { "Total (USD)", 0.9, DOC_ALIGN_RIGHT },
@@ -777,9 +777,9 @@ sec_bom(struct rep *rp, const char *title)
 	doc_table(rp->d, &t);
 	doc_table_clear(&t);
 	if (unknown_price > 0)
-		doc_paragraph(rp->d, sfmt(&sb, "%d line%s without a published price; the total covers the "
-		              "priced lines only.", unknown_price, unknown_price == 1 ? " has no price or is custom:" :
-		              "s have no price or are custom:"));
+		doc_paragraph(rp->d, sfmt(&sb, "%d line%s no published price (custom parts, or none found); "
+		              "the price total covers the priced lines only.", unknown_price,
+		              unknown_price == 1 ? " has" : "s have"));
 	strbuf_free(&sb);
 }
 

@@ -435,9 +435,12 @@ motor_figure(struct rep *rp)
 		kv[n_used] = m->kv_rpm_per_v;
 		g[n_used++] = 1000.0 * m->mass_kg;
 	}
-	if (n_used > 0)
-		plot_scatter(pp, kv, g, n_used, sfmt(&sb, "catalogue motors (%zu)", n_used),
-		             PLOT_MARKER_CIRCLE, PLOT_COLOUR_GRID);
+	if (n_used > 0) {
+		struct plot_style st = { .colour = PLOT_COLOUR_MUTED, .line_width_pt = -1,
+		                         .marker = PLOT_MARKER_CIRCLE, .marker_size_pt = 3.5,
+		                         .open_marker = 1 };
+		plot_series(pp, kv, g, n_used, sfmt(&sb, "catalogue motors (%zu)", n_used), &st);
+	}
 
 	/* Scored candidates in thirds of their J-score (lower is better). */
 	int n_cand = dmin_i(r->n_candidates, RES_MAX_CANDIDATES), n_ok = 0;
