@@ -99,12 +99,8 @@ report_eu_class(double mass_kg)
 
 /* ---- local helpers ------------------------------------------------------- */
 
-/* printf into a strbuf that is reset first; returns its text. */
-static const char *
-sfmt(struct strbuf *sb, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-
-static const char *
-sfmt(struct strbuf *sb, const char *fmt, ...)
+const char *
+report_sfmt(struct strbuf *sb, const char *fmt, ...)
 {
 	va_list ap;
 	strbuf_reset(sb);
@@ -211,18 +207,18 @@ sec_cover(struct rep *rp, int first)
 		doc_new_page(rp->d);
 	const char *mname = rp->in->mission_name != NULL ? rp->in->mission_name : m->name;
 	doc_title(rp->d, m->report.title[0] != '\0' ? m->report.title : "Design dossier",
-	          sfmt(&sb, "Multirotor sizing: %s%s%s", or_absent(mname),
+	          report_sfmt(&sb, "Multirotor sizing: %s%s%s", or_absent(mname),
 	               m->report.revision[0] != '\0' ? ", revision " : "", m->report.revision));
 
 	/* The verdict first: it is what the reader looks for. */
 	if (r->feasible) {
 		const struct res_check *c = tightest_check(&r->custom);
 		if (c != NULL)
-			sfmt(&sb, "Every check of the custom design passes. The tightest is "
+			report_sfmt(&sb, "Every check of the custom design passes. The tightest is "
 			     "\"%s\" with a margin of %s %%.", c->name,
 			     report_num(b1, sizeof b1, 100.0 * c->margin, 1));
 		else
-			sfmt(&sb, "Every check of the custom design passes.");
+			report_sfmt(&sb, "Every check of the custom design passes.");
 		doc_callout(rp->d, DOC_CALLOUT_PASS, "FEASIBLE", strbuf_str(&sb));
 	} else {
 		strbuf_reset(&sb);
@@ -242,7 +238,7 @@ sec_cover(struct rep *rp, int first)
 		"Date", rp->in->date,
 		"Mission", mname,
 		"Mission file", rp->in->mission_file_name,
-		"Engine", sfmt(&sb2, "aeroeval %s", or_absent(rp->in->engine_version)),
+		"Engine", report_sfmt(&sb2, "aeroeval %s", or_absent(rp->in->engine_version)),
 		"Input SHA-256", r->input_sha256,
 		"Catalogue SHA-256", r->catalogue_sha256,
 	};
@@ -289,33 +285,33 @@ sec_cover(struct rep *rp, int first)
 
 	doc_heading(rp->d, 2, "Mission");
 	char *v[5];
-	v[0] = xstrdup(sfmt(&sb, "%s role, %s airframe, %d rotors%s on a %s mm wheelbase", role_name(r),
+	v[0] = xstrdup(report_sfmt(&sb, "%s role, %s airframe, %d rotors%s on a %s mm wheelbase", role_name(r),
 	                    m->airframe_class >= 0 && m->airframe_class < AF_CLASS_MAX
 	                    ? spec_enum_airframe[m->airframe_class] : "?",
 	                    m->num_rotors, m->coaxial_layout ? " (coaxial pairs)" : "",
 	                    report_num(b1, sizeof b1, 1000.0 * m->max_diameter_m, 0)));
-	v[1] = xstrdup(sfmt(&sb, "%s kg", report_num(b1, sizeof b1, m->payload_kg, 3)));
+	v[1] = xstrdup(report_sfmt(&sb, "%s kg", report_num(b1, sizeof b1, m->payload_kg, 3)));
 	strbuf_reset(&sb);
 	strbuf_printf(&sb, "climb %s s at %s m/s", report_num(b1, sizeof b1, m->t_climb_s, 0),
 	              report_num(b2, sizeof b2, m->v_climb_ms, 1));
 	if (m->t_forward_s > 0)
 		strbuf_printf(&sb, ", forward %s s at %s", report_num(b1, sizeof b1, m->t_forward_s, 0),
 		              m->v_forward_auto ? "the minimum-power speed"
-		                                : sfmt(&sb2, "%s m/s", report_num(b2, sizeof b2, m->v_forward_ms, 1)));
+		                                : report_sfmt(&sb2, "%s m/s", report_num(b2, sizeof b2, m->v_forward_ms, 1)));
 	strbuf_printf(&sb, ", hover %s s", report_num(b1, sizeof b1, m->t_hover_s, 0));
 	v[2] = xstrdup(strbuf_str(&sb));
-	v[3] = xstrdup(sfmt(&sb, "%s m altitude, %s °C ambient", report_num(b1, sizeof b1, m->altitude_m, 0),
+	v[3] = xstrdup(report_sfmt(&sb, "%s m altitude, %s °C ambient", report_num(b1, sizeof b1, m->altitude_m, 0),
 	                    report_num(b2, sizeof b2, m->ambient_temp_c, 1)));
-	v[4] = xstrdup(sfmt(&sb, "%s, %s", m->battery_chemistry,
+	v[4] = xstrdup(report_sfmt(&sb, "%s, %s", m->battery_chemistry,
 	                    m->locks.is_battery_locked ? "capacity and cells locked"
-	                    : m->nominal_cell_count > 0 ? sfmt(&sb2, "%d cells in series", m->nominal_cell_count)
+	                    : m->nominal_cell_count > 0 ? report_sfmt(&sb2, "%d cells in series", m->nominal_cell_count)
 	                    : "cell count chosen by the solver"));
 	const char *mkv[] = { "Aircraft", v[0], "Payload", v[1], "Profile", v[2], "Environment", v[3],
 	                      "Battery", v[4] };
 	kv_table(rp->d, mkv, 5, -1);
 	for (int i = 0; i < 5; i++)
 		free(v[i]);
-	doc_paragraph(rp->d, sfmt(&sb, "The baseline run sizes the same mission with no role (payload as "
+	doc_paragraph(rp->d, report_sfmt(&sb, "The baseline run sizes the same mission with no role (payload as "
 	              "dead weight, hover throttle 60 %%); the custom run applies the %s role. The "
 	              "mission file is attached to this PDF.", role_name(r)));
 	strbuf_free(&sb);
@@ -350,18 +346,18 @@ regulatory(struct rep *rp)
 	const char *items[3];
 	char *own[3];
 	if (strcmp(eu, "specific") == 0)
-		sfmt(&sb, "EU (Regulation 2019/945): at %s kg the aircraft is above the 25 kg limit of the "
+		report_sfmt(&sb, "EU (Regulation 2019/945): at %s kg the aircraft is above the 25 kg limit of the "
 		     "open-category classes; it operates in the specific category (operational "
 		     "authorisation, SORA).", report_num(b1, sizeof b1, m, 2));
 	else
-		sfmt(&sb, "EU (Regulation 2019/945): a takeoff mass of %s kg falls within class %s by mass "
+		report_sfmt(&sb, "EU (Regulation 2019/945): a takeoff mass of %s kg falls within class %s by mass "
 		     "(C0 < 250 g, C1 < 900 g, C2 < 4 kg, C3/C4 < 25 kg).", report_num(b1, sizeof b1, m, 3), eu);
 	own[0] = xstrdup(strbuf_str(&sb));
 	if (m < REP_US_107_KG)
-		sfmt(&sb, "US (14 CFR Part 107): %s kg (%s lb) is below the 55 lb (24.9 kg) small-UAS limit.",
+		report_sfmt(&sb, "US (14 CFR Part 107): %s kg (%s lb) is below the 55 lb (24.9 kg) small-UAS limit.",
 		     report_num(b1, sizeof b1, m, 2), report_num(b3, sizeof b3, m / REP_KG_PER_LB, 1));
 	else
-		sfmt(&sb, "US (14 CFR Part 107): %s kg (%s lb) is at or above the 55 lb (24.9 kg) small-UAS "
+		report_sfmt(&sb, "US (14 CFR Part 107): %s kg (%s lb) is at or above the 55 lb (24.9 kg) small-UAS "
 		     "limit; an exemption (49 U.S.C. 44807) or Part 91 operation is needed.",
 		     report_num(b1, sizeof b1, m, 2), report_num(b3, sizeof b3, m / REP_KG_PER_LB, 1));
 	own[1] = xstrdup(strbuf_str(&sb));
@@ -410,7 +406,7 @@ sec_summary(struct rep *rp, const char *title)
 	struct strbuf sb = STRBUF_INIT;
 	char b1[48], b2[48], b3[48];
 	report_heading(rp, title);
-	doc_paragraph(rp->d, sfmt(&sb, "The %s role raises the takeoff mass from %s kg (baseline, no role) "
+	doc_paragraph(rp->d, report_sfmt(&sb, "The %s role raises the takeoff mass from %s kg (baseline, no role) "
 	              "to %s kg (%s%s %%). The custom design is %s.", role_name(r),
 	              report_num(b1, sizeof b1, b->mass.total_kg, 3),
 	              report_num(b2, sizeof b2, c->mass.total_kg, 3),
@@ -447,7 +443,7 @@ sec_summary(struct rep *rp, const char *title)
 	doc_heading(rp->d, 2, "Selected parts");
 	if (r->parts_selected) {
 		parts_table(rp);
-		doc_paragraph(rp->d, sfmt(&sb, "Bill of materials: %s USD for %s kg of catalogue and custom parts "
+		doc_paragraph(rp->d, report_sfmt(&sb, "Bill of materials: %s USD for %s kg of catalogue and custom parts "
 		              "(prices are store snapshots; 0 means unknown).",
 		              report_num(b1, sizeof b1, r->bom_price_usd, 2),
 		              report_num(b2, sizeof b2, r->bom_mass_kg, 3)));
@@ -569,16 +565,16 @@ sec_mass(struct rep *rp, const char *title)
 		for (int i = 0; i < N_MASS_ITEMS; i++)
 			v[k * N_MASS_ITEMS + i] = mass_get(&runs[k]->mass, i) * rp->mass_scale;
 
-	doc_paragraph(rp->d, sfmt(&sb, "Takeoff mass by item; the role overhead is the custom run minus "
+	doc_paragraph(rp->d, report_sfmt(&sb, "Takeoff mass by item; the role overhead is the custom run minus "
 	              "the baseline. Percentages are of each run's own takeoff mass (Figure %d).",
 	              doc_next_figure_number(rp->d)));
 	struct plot *p = plot_alloc(0, 300, 1, 1);
 	struct plot_panel *pp = plot_panel(p, 0, 0);
-	plot_axis_title(pp, PLOT_Y, sfmt(&sb, "Mass (%s)", rp->mass_unit));
+	plot_axis_title(pp, PLOT_Y, report_sfmt(&sb, "Mass (%s)", rp->mass_unit));
 	plot_legend(pp, PLOT_LEGEND_RIGHT);
 	plot_stacked_bars(pp, n_bars, bar_labels, N_MASS_ITEMS, stack_labels, v,
 	                  rp->mass_scale > 1.0 ? 0 : 2);
-	doc_figure(rp->d, p, sfmt(&sb, "Mass budget, baseline vs custom run (%s), every mass item stacked; "
+	doc_figure(rp->d, p, report_sfmt(&sb, "Mass budget, baseline vs custom run (%s), every mass item stacked; "
 	                          "the total is printed above each bar.", rp->mass_unit));
 	plot_free(p);
 
@@ -611,10 +607,10 @@ sec_mass(struct rep *rp, const char *title)
 	doc_table(rp->d, &t);
 	doc_table_clear(&t);
 	if (n_bars == 3)
-		doc_paragraph(rp->d, sfmt(&sb, "With the real catalogue parts the custom design closes at %s kg "
+		doc_paragraph(rp->d, report_sfmt(&sb, "With the real catalogue parts the custom design closes at %s kg "
 		              "(third bar).", report_num(b1, sizeof b1, r->closed.mass.total_kg, 3)));
 	if (c->arm_wall_floor_binds || c->min_fraction_binds)
-		doc_paragraph(rp->d, sfmt(&sb, "Structure floors that bind in the custom run:%s%s.",
+		doc_paragraph(rp->d, report_sfmt(&sb, "Structure floors that bind in the custom run:%s%s.",
 		              c->arm_wall_floor_binds ? " the minimum arm wall thickness" : "",
 		              c->min_fraction_binds ? (c->arm_wall_floor_binds ? " and the minimum "
 		              "structural mass fraction" : " the minimum structural mass fraction") : ""));
@@ -669,7 +665,7 @@ sourcing_table(struct rep *rp)
 		double total_kg;
 		char *spec;
 	} row[7];
-	row[0].spec = xstrdup(sfmt(&sb, "Brushless outrunner, KV ≈ %s rpm/V, peak %s A / %s W, for %dS",
+	row[0].spec = xstrdup(report_sfmt(&sb, "Brushless outrunner, KV ≈ %s rpm/V, peak %s A / %s W, for %dS",
 	                           report_num(b1, sizeof b1, c->opt.motor_kv, 0),
 	                           report_num(b2, sizeof b2, c->opt.motor_peak_current_a, 1),
 	                           report_num(b3, sizeof b3, c->opt.motor_peak_power_w, 0), c->cell_count));
@@ -678,24 +674,24 @@ sourcing_table(struct rep *rp)
 	int pc = m->aerodynamic_overrides.propeller_class;
 	const char *material = pc > PROP_AUTO && pc < PROP_CLASS_MAX ? spec_enum_prop[pc]
 	                     : c->opt.prop_diameter_in < 12.0 ? "plastic" : "carbon";
-	row[1].spec = xstrdup(sfmt(&sb, "%s × %s in, %d blades, %s", report_num(b1, sizeof b1, c->opt.prop_diameter_in, 1),
+	row[1].spec = xstrdup(report_sfmt(&sb, "%s × %s in, %d blades, %s", report_num(b1, sizeof b1, c->opt.prop_diameter_in, 1),
 	                           report_num(b2, sizeof b2, c->opt.prop_pitch_in, 1),
 	                           m->structural_overrides.num_blades, material));
 	row[1].item = "Propeller", row[1].qty = n_rot, row[1].total_kg = c->mass.prop_kg;
-	row[2].spec = xstrdup(sfmt(&sb, "%dS %s, %s mAh (%s Wh) in total, %s C continuous at full throttle",
+	row[2].spec = xstrdup(report_sfmt(&sb, "%dS %s, %s mAh (%s Wh) in total, %s C continuous at full throttle",
 	                           c->cell_count, c->chemistry, report_num(b1, sizeof b1, c->capacity_mah, 0),
 	                           report_num(b2, sizeof b2, c->energy_wh, 1),
 	                           report_num(b3, sizeof b3, c->peak_c_rate, 1)));
 	row[2].item = "Battery pack", row[2].qty = packs, row[2].total_kg = c->mass.battery_kg;
-	row[3].spec = xstrdup(sfmt(&sb, "≥ %s A per channel, %dS", report_num(b1, sizeof b1, c->opt.motor_peak_current_a, 0),
+	row[3].spec = xstrdup(report_sfmt(&sb, "≥ %s A per channel, %dS", report_num(b1, sizeof b1, c->opt.motor_peak_current_a, 0),
 	                           c->cell_count));
 	row[3].item = "ESC", row[3].qty = n_rot, row[3].total_kg = c->mass.esc_kg;
-	row[4].spec = xstrdup(sfmt(&sb, "CFRP tube Ø%s mm × %s mm wall, %s mm long",
+	row[4].spec = xstrdup(report_sfmt(&sb, "CFRP tube Ø%s mm × %s mm wall, %s mm long",
 	                           report_num(b1, sizeof b1, c->arm_outer_diameter_mm, 1),
 	                           report_num(b2, sizeof b2, c->arm_wall_thickness_mm, 2),
 	                           report_num(b3, sizeof b3, 1000.0 * c->arm_length_m, 0)));
 	row[4].item = "Arm", row[4].qty = n_arms, row[4].total_kg = c->mass.arm_kg;
-	row[5].spec = xstrdup(sfmt(&sb, "Power harness for %s A peak", report_num(b1, sizeof b1, c->peak_current_a, 0)));
+	row[5].spec = xstrdup(report_sfmt(&sb, "Power harness for %s A peak", report_num(b1, sizeof b1, c->peak_current_a, 0)));
 	row[5].item = "Wiring", row[5].qty = 1, row[5].total_kg = c->mass.wiring_kg;
 	row[6].spec = xstrdup("Centre plates and spar joints");
 	row[6].item = "Frame", row[6].qty = 1, row[6].total_kg = c->mass.frame_kg;
@@ -777,7 +773,7 @@ sec_bom(struct rep *rp, const char *title)
 	doc_table(rp->d, &t);
 	doc_table_clear(&t);
 	if (unknown_price > 0)
-		doc_paragraph(rp->d, sfmt(&sb, "%d line%s no published price (custom parts, or none found); "
+		doc_paragraph(rp->d, report_sfmt(&sb, "%d line%s no published price (custom parts, or none found); "
 		              "the price total covers the priced lines only.", unknown_price,
 		              unknown_price == 1 ? " has" : "s have"));
 	strbuf_free(&sb);
@@ -828,7 +824,7 @@ sec_checks(struct rep *rp, const char *title)
 	report_heading(rp, title);
 	if (!r->feasible) {
 		doc_callout(rp->d, DOC_CALLOUT_FAIL, "INFEASIBLE",
-		            sfmt(&sb, "%d constraint%s violated. Each is listed below with the fixes the "
+		            report_sfmt(&sb, "%d constraint%s violated. Each is listed below with the fixes the "
 		                 "solver suggests, then every check with its margin.", r->n_violations,
 		                 r->n_violations == 1 ? " is" : "s are"));
 		doc_heading(rp->d, 2, "Violations and suggested fixes");

@@ -31,20 +31,6 @@
 /* Battery thermal-runaway limit drawn on the temperature trace, °C. */
 #define REP_RUNAWAY_C 60.0
 
-/* printf into a reset strbuf; returns its text. */
-static const char *
-sfmt(struct strbuf *sb, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-
-static const char *
-sfmt(struct strbuf *sb, const char *fmt, ...)
-{
-	va_list ap;
-	strbuf_reset(sb);
-	va_start(ap, fmt);
-	strbuf_vprintf(sb, fmt, ap);
-	va_end(ap);
-	return strbuf_str(sb);
-}
 
 /* Phase names for table rows (res_phase_name is the lower-case key). */
 static const char *const phase_title[PHASE_MAX] = { "Climb", "Forward", "Hover" };
@@ -122,7 +108,7 @@ report_sec_mission(struct rep *rp, const char *title)
 	struct strbuf sb = STRBUF_INIT;
 	char b1[48], b2[48], b3[48];
 	report_heading(rp, title);
-	doc_paragraph(rp->d, sfmt(&sb, "The mission is flown as climb, forward flight and hover at the "
+	doc_paragraph(rp->d, report_sfmt(&sb, "The mission is flown as climb, forward flight and hover at the "
 	              "takeoff mass. Electrical power is at the battery terminals and includes %s W of "
 	              "auxiliary load; energy is what each phase draws from the pack (%s Wh nominal, "
 	              "%dS %s).", report_num(b1, sizeof b1, r->mission.payload_role.aux_power_w, 0),
@@ -151,11 +137,11 @@ report_sec_mission(struct rep *rp, const char *title)
 		          "Custom", REP_COL_CUSTOM, PLOT_DASH_SOLID);
 		if (c->v_min_power_ms > 0)
 			plot_vline(pp, c->v_min_power_ms,
-			           sfmt(&sb, "minimum power %s m/s", report_num(b1, sizeof b1, c->v_min_power_ms, 1)),
+			           report_sfmt(&sb, "minimum power %s m/s", report_num(b1, sizeof b1, c->v_min_power_ms, 1)),
 			           PLOT_COLOUR_ACCENT, PLOT_DASH_DASHED);
 		if (c->v_max_ms > 0)
 			plot_vline(pp, c->v_max_ms,
-			           sfmt(&sb, "v max %s m/s", report_num(b1, sizeof b1, c->v_max_ms, 1)),
+			           report_sfmt(&sb, "v max %s m/s", report_num(b1, sizeof b1, c->v_max_ms, 1)),
 			           PLOT_COLOUR_FAIL, PLOT_DASH_DOTTED);
 		double fv = c->optimal_speed_ms;
 		double fp = interp(c->sweep_v_ms, c->sweep_power_w, dmin_i(c->n_sweep, RES_MAX_SWEEP), fv);
@@ -163,10 +149,10 @@ report_sec_mission(struct rep *rp, const char *title)
 			struct plot_style st = { .colour = REP_COL_CUSTOM, .line_width_pt = -1,
 			                         .marker = PLOT_MARKER_DIAMOND, .marker_size_pt = 7 };
 			plot_series(pp, &fv, &fp, 1, "flown speed (custom)", &st);
-			plot_point_label(pp, fv, fp, sfmt(&sb, "%s m/s, %s W", report_num(b1, sizeof b1, fv, 1),
+			plot_point_label(pp, fv, fp, report_sfmt(&sb, "%s m/s, %s W", report_num(b1, sizeof b1, fv, 1),
 			                 report_num(b2, sizeof b2, fp, 0)));
 		}
-		doc_figure(rp->d, p, sfmt(&sb, "Electrical power required vs forward speed at takeoff mass, "
+		doc_figure(rp->d, p, report_sfmt(&sb, "Electrical power required vs forward speed at takeoff mass, "
 		           "baseline and custom runs; the custom run's minimum-power speed (%s m/s), its flown "
 		           "speed (%s m/s) and the highest speed its thrust margin allows (%s m/s).",
 		           report_num(b1, sizeof b1, c->v_min_power_ms, 1), report_num(b2, sizeof b2, fv, 1),
@@ -205,7 +191,7 @@ report_sec_thermal(struct rep *rp, const char *title)
 	snprintf(end, sizeof end, "%s", c->termination[0] != '\0' ? c->termination : "mission flown");
 	if (end[0] >= 'a' && end[0] <= 'z')
 		end[0] = (char)(end[0] - 'a' + 'A');
-	doc_paragraph(rp->d, sfmt(&sb, "The discharge simulation of the custom run: pack temperature, "
+	doc_paragraph(rp->d, report_sfmt(&sb, "The discharge simulation of the custom run: pack temperature, "
 	              "terminal and open-circuit voltage, state of charge and current over the mission "
 	              "(%d samples). %s.", n, end));
 	if (n > 0) {
@@ -233,7 +219,7 @@ report_sec_thermal(struct rep *rp, const char *title)
 		}
 		plot_line(v, t, y2, (size_t)n, "open circuit", PLOT_COLOUR_MUTED, PLOT_DASH_DASHED);
 		plot_line(v, t, y1, (size_t)n, "terminal", REP_COL_CUSTOM, PLOT_DASH_SOLID);
-		plot_hline(v, c->voltage_floor_v, sfmt(&sb, "floor %s V", report_num(b1, sizeof b1, c->voltage_floor_v, 2)),
+		plot_hline(v, c->voltage_floor_v, report_sfmt(&sb, "floor %s V", report_num(b1, sizeof b1, c->voltage_floor_v, 2)),
 		           PLOT_COLOUR_FAIL, PLOT_DASH_DASHED);
 		phase_marks(v, c, 0);
 
@@ -245,7 +231,7 @@ report_sec_thermal(struct rep *rp, const char *title)
 		plot_axis_range(s, PLOT_Y, 0, 100);
 		plot_line(s, t, y1, (size_t)n, NULL, REP_COL_CUSTOM, PLOT_DASH_SOLID);
 		plot_hline(s, 100.0 * sizing_reserve_soc(),
-		           sfmt(&sb, "reserve %s %%", report_num(b1, sizeof b1, 100.0 * sizing_reserve_soc(), 0)),
+		           report_sfmt(&sb, "reserve %s %%", report_num(b1, sizeof b1, 100.0 * sizing_reserve_soc(), 0)),
 		           PLOT_COLOUR_WARN, PLOT_DASH_DASHED);
 		phase_marks(s, c, 0);
 
@@ -266,23 +252,20 @@ report_sec_thermal(struct rep *rp, const char *title)
 		free(y1);
 		free(y2);
 	}
-	const char *kv[] = {
-		"Peak battery temperature", sfmt(&sb, "%s °C (margin %s °C to 60 °C)",
-		                                 report_num(b1, sizeof b1, c->max_battery_temp_c, 1),
-		                                 report_num(b2, sizeof b2, c->thermal_margin_c, 1)),
-	};
-	char *v0 = xstrdup(kv[1]);
-	char *v1 = xstrdup(sfmt(&sb, "%s V (floor %s V)", report_num(b1, sizeof b1, c->min_terminal_voltage_v, 2),
+	char *v0 = xstrdup(report_sfmt(&sb, "%s °C (margin %s °C to 60 °C)",
+	                               report_num(b1, sizeof b1, c->max_battery_temp_c, 1),
+	                               report_num(b2, sizeof b2, c->thermal_margin_c, 1)));
+	char *v1 = xstrdup(report_sfmt(&sb, "%s V (floor %s V)", report_num(b1, sizeof b1, c->min_terminal_voltage_v, 2),
 	                        report_num(b2, sizeof b2, c->voltage_floor_v, 2)));
-	char *v2 = xstrdup(sfmt(&sb, "%s %% (reserve %s %%)", report_num(b1, sizeof b1, 100.0 * c->end_soc, 1),
+	char *v2 = xstrdup(report_sfmt(&sb, "%s %% (reserve %s %%)", report_num(b1, sizeof b1, 100.0 * c->end_soc, 1),
 	                        report_num(b2, sizeof b2, 100.0 * sizing_reserve_soc(), 1)));
-	char *v3 = xstrdup(sfmt(&sb, "%s A (%s C)", report_num(b1, sizeof b1, c->peak_current_a, 1),
+	char *v3 = xstrdup(report_sfmt(&sb, "%s A (%s C)", report_num(b1, sizeof b1, c->peak_current_a, 1),
 	                        report_num(b2, sizeof b2, c->peak_c_rate, 1)));
 	char *v4 = xstrdup(c->motor_copper_loss_w > 0
-	                   ? sfmt(&sb, "%s °C assumed; copper loss %s W per motor at hover",
+	                   ? report_sfmt(&sb, "%s °C assumed; copper loss %s W per motor at hover",
 	                          report_num(b1, sizeof b1, c->winding_temp_c, 0),
 	                          report_num(b2, sizeof b2, c->motor_copper_loss_w, 1))
-	                   : sfmt(&sb, "%s °C assumed (ambient + 40 K)", report_num(b1, sizeof b1, c->winding_temp_c, 0)));
+	                   : report_sfmt(&sb, "%s °C assumed (ambient + 40 K)", report_num(b1, sizeof b1, c->winding_temp_c, 0)));
 	const char *rows[] = { "Peak battery temperature", v0, "Minimum terminal voltage", v1,
 	                       "State of charge at landing", v2, "Full-throttle current", v3,
 	                       "Motor winding temperature", v4 };
@@ -379,17 +362,17 @@ report_sec_structure(struct rep *rp, const char *title)
 		                    REP_RESONANCE_FACTOR * c->blade_pass_frequency_hz };
 		plot_band(pp, bx, by_lo, by_hi, 2, "excluded for the arm mode (in flight)", PLOT_COLOUR_FAIL, 0.10);
 	}
-	plot_line(pp, rpm, f, REP_RPM_POINTS, sfmt(&sb, "blade pass N_b·rpm/60 (N_b = %.0f)", n_b),
+	plot_line(pp, rpm, f, REP_RPM_POINTS, report_sfmt(&sb, "blade pass N_b·rpm/60 (N_b = %.0f)", n_b),
 	          REP_COL_CUSTOM, PLOT_DASH_SOLID);
 	plot_hline(pp, c->arm_natural_frequency_hz,
-	           sfmt(&sb, "arm first mode %s Hz", report_num(b1, sizeof b1, c->arm_natural_frequency_hz, 1)),
+	           report_sfmt(&sb, "arm first mode %s Hz", report_num(b1, sizeof b1, c->arm_natural_frequency_hz, 1)),
 	           PLOT_COLOUR_ACCENT, PLOT_DASH_SOLID);
-	plot_vline(pp, c->rpm_hover, sfmt(&sb, "hover %s rpm", report_num(b1, sizeof b1, c->rpm_hover, 0)),
+	plot_vline(pp, c->rpm_hover, report_sfmt(&sb, "hover %s rpm", report_num(b1, sizeof b1, c->rpm_hover, 0)),
 	           PLOT_COLOUR_MUTED, PLOT_DASH_DASHED);
-	plot_vline(pp, c->rpm_peak, sfmt(&sb, "full throttle %s rpm", report_num(b1, sizeof b1, c->rpm_peak, 0)),
+	plot_vline(pp, c->rpm_peak, report_sfmt(&sb, "full throttle %s rpm", report_num(b1, sizeof b1, c->rpm_peak, 0)),
 	           PLOT_COLOUR_MUTED, PLOT_DASH_DASHED);
 	plot_legend(pp, PLOT_LEGEND_BELOW);
-	doc_figure(rp->d, p, sfmt(&sb, "Resonance check of the custom arm: blade-pass frequency over the "
+	doc_figure(rp->d, p, report_sfmt(&sb, "Resonance check of the custom arm: blade-pass frequency over the "
 	           "rotor-speed range with its 1.5× margins, the in-flight band %s–%s Hz and the arm's first "
 	           "bending mode at %s Hz (resonance margin %s %%).",
 	           report_num(b1, sizeof b1, c->blade_pass_low_hz, 0),
@@ -439,7 +422,7 @@ motor_figure(struct rep *rp)
 		struct plot_style st = { .colour = PLOT_COLOUR_MUTED, .line_width_pt = -1,
 		                         .marker = PLOT_MARKER_CIRCLE, .marker_size_pt = 3.5,
 		                         .open_marker = 1 };
-		plot_series(pp, kv, g, n_used, sfmt(&sb, "catalogue motors (%zu)", n_used), &st);
+		plot_series(pp, kv, g, n_used, report_sfmt(&sb, "catalogue motors (%zu)", n_used), &st);
 	}
 
 	/* Scored candidates in thirds of their J-score (lower is better). */
@@ -473,7 +456,7 @@ motor_figure(struct rep *rp)
 	free(g);
 
 	plot_crosshair(pp, c->opt.motor_kv, 1000.0 * c->opt.motor_mass_kg,
-	               sfmt(&sb, "continuous optimum: KV %s, %s g", report_num(b1, sizeof b1, c->opt.motor_kv, 0),
+	               report_sfmt(&sb, "continuous optimum: KV %s, %s g", report_num(b1, sizeof b1, c->opt.motor_kv, 0),
 	                    report_num(b2, sizeof b2, 1000.0 * c->opt.motor_mass_kg, 0)),
 	               PLOT_COLOUR_ACCENT);
 	if (r->parts_selected && r->motor.chosen) {
@@ -489,17 +472,17 @@ motor_figure(struct rep *rp)
 			struct plot_style st = { .colour = REP_COL_CUSTOM, .line_width_pt = -1,
 			                         .marker = PLOT_MARKER_SQUARE, .marker_size_pt = 8 };
 			plot_series(pp, &mkv, &mg, 1, "chosen motor", &st);
-			plot_point_label(pp, mkv, mg, sfmt(&sb, "%s (J = %s)", r->motor.part_number,
+			plot_point_label(pp, mkv, mg, report_sfmt(&sb, "%s (J = %s)", r->motor.part_number,
 			                                   report_num(b1, sizeof b1, r->motor.j_score, 3)));
 		}
 	}
 	const char *cap;
 	if (r->parts_selected)
-		cap = sfmt(&sb, "Motor selection: every usable catalogue motor by KV and mass (log axes), the "
+		cap = report_sfmt(&sb, "Motor selection: every usable catalogue motor by KV and mass (log axes), the "
 		           "scored candidates coloured by J-score, the continuous optimum (crosshair) and the "
 		           "chosen %s %s.", r->motor.manufacturer, r->motor.part_number);
 	else
-		cap = sfmt(&sb, "Motor selection: every usable catalogue motor by KV and mass (log axes) and the "
+		cap = report_sfmt(&sb, "Motor selection: every usable catalogue motor by KV and mass (log axes) and the "
 		           "continuous optimum (crosshair). No part was selected%s.",
 		           cat == NULL ? " (no catalogue loaded)" : "");
 	doc_figure(rp->d, p, cap);
@@ -628,26 +611,26 @@ report_sec_propulsion(struct rep *rp, const char *title)
 	doc_paragraph(rp->d, "The sizing loop produces a continuous design; the parts search looks for "
 	              "catalogue parts nearest to it.");
 	char *v[12];
-	v[0] = xstrdup(sfmt(&sb, "%s × %s in (overlap limit %s in)", report_num(b1, sizeof b1, c->opt.prop_diameter_in, 1),
+	v[0] = xstrdup(report_sfmt(&sb, "%s × %s in (overlap limit %s in)", report_num(b1, sizeof b1, c->opt.prop_diameter_in, 1),
 	                    report_num(b2, sizeof b2, c->opt.prop_pitch_in, 1),
 	                    report_num(b3, sizeof b3, c->overlap_limit_in, 1)));
-	v[1] = xstrdup(sfmt(&sb, "%s rpm/V", report_num(b1, sizeof b1, c->opt.motor_kv, 0)));
-	v[2] = xstrdup(sfmt(&sb, "%s g each (scaling law)", report_num(b1, sizeof b1, 1000.0 * c->opt.motor_mass_kg, 0)));
-	v[3] = xstrdup(sfmt(&sb, "%s A, %s W per motor", report_num(b1, sizeof b1, c->opt.motor_peak_current_a, 1),
+	v[1] = xstrdup(report_sfmt(&sb, "%s rpm/V", report_num(b1, sizeof b1, c->opt.motor_kv, 0)));
+	v[2] = xstrdup(report_sfmt(&sb, "%s g each (scaling law)", report_num(b1, sizeof b1, 1000.0 * c->opt.motor_mass_kg, 0)));
+	v[3] = xstrdup(report_sfmt(&sb, "%s A, %s W per motor", report_num(b1, sizeof b1, c->opt.motor_peak_current_a, 1),
 	                    report_num(b2, sizeof b2, c->opt.motor_peak_power_w, 0)));
-	v[4] = xstrdup(sfmt(&sb, "%s rpm hover, %s rpm full throttle", report_num(b1, sizeof b1, c->rpm_hover, 0),
+	v[4] = xstrdup(report_sfmt(&sb, "%s rpm hover, %s rpm full throttle", report_num(b1, sizeof b1, c->rpm_hover, 0),
 	                    report_num(b2, sizeof b2, c->rpm_peak, 0)));
-	v[5] = xstrdup(sfmt(&sb, "%s installed (interference k_int %s)", report_num(b1, sizeof b1, c->fom_installed, 3),
+	v[5] = xstrdup(report_sfmt(&sb, "%s installed (interference k_int %s)", report_num(b1, sizeof b1, c->fom_installed, 3),
 	                    report_num(b2, sizeof b2, c->interference, 3)));
-	v[6] = xstrdup(sfmt(&sb, "%s N/m², downwash %s m/s", report_num(b1, sizeof b1, c->disk_loading_n_m2, 0),
+	v[6] = xstrdup(report_sfmt(&sb, "%s N/m², downwash %s m/s", report_num(b1, sizeof b1, c->disk_loading_n_m2, 0),
 	                    report_num(b2, sizeof b2, c->downwash_ms, 1)));
-	v[7] = xstrdup(sfmt(&sb, "%s (Reynolds at the tip %s)", report_num(b1, sizeof b1, c->tip_mach_peak, 2),
+	v[7] = xstrdup(report_sfmt(&sb, "%s (Reynolds at the tip %s)", report_num(b1, sizeof b1, c->tip_mach_peak, 2),
 	                    report_auto(b2, sizeof b2, c->reynolds_tip)));
 	if (c->pack_count > 1)
 		snprintf(b3, sizeof b3, "%dS%dP", c->cell_count, c->pack_count);
 	else
 		snprintf(b3, sizeof b3, "%dS", c->cell_count);
-	v[8] = xstrdup(sfmt(&sb, "%s %s, %s mAh, %s V nominal", b3, c->chemistry,
+	v[8] = xstrdup(report_sfmt(&sb, "%s %s, %s mAh, %s V nominal", b3, c->chemistry,
 	                    report_num(b1, sizeof b1, c->capacity_mah, 0), report_num(b2, sizeof b2, c->nominal_voltage_v, 1)));
 	const char *kv[] = {
 		"Propeller", v[0], "Motor KV", v[1], "Motor mass", v[2], "Motor peak load", v[3],
@@ -664,7 +647,7 @@ report_sec_propulsion(struct rep *rp, const char *title)
 		              "optimum among the catalogue's motors for orientation.");
 	motor_figure(rp);
 	if (r->parts_selected && r->prop.chosen)
-		doc_paragraph(rp->d, sfmt(&sb, "Propeller: %s %s (J = %s), %d per aircraft.", r->prop.manufacturer,
+		doc_paragraph(rp->d, report_sfmt(&sb, "Propeller: %s %s (J = %s), %d per aircraft.", r->prop.manufacturer,
 		              r->prop.part_number, report_num(b1, sizeof b1, r->prop.j_score, 3), r->prop.qty));
 
 	/* Keep the operating-point table with its heading and note (about
@@ -720,7 +703,7 @@ report_sec_convergence(struct rep *rp, const char *title)
 	int closed = r->parts_selected && r->closed.ran;
 	struct strbuf sb = STRBUF_INIT;
 	report_heading(rp, title);
-	doc_paragraph(rp->d, sfmt(&sb, "The takeoff mass is found by fixed-point iteration: each pass sizes "
+	doc_paragraph(rp->d, report_sfmt(&sb, "The takeoff mass is found by fixed-point iteration: each pass sizes "
 	              "battery, propulsion and structure for the current mass and sums them into the next. "
 	              "The loop stops when the mass changes by less than %.0f g between iterations. The "
 	              "Lipschitz estimate dF/dM at the fixed point must be below 1 for the loop to "
@@ -807,16 +790,16 @@ report_sec_endurance(struct rep *rp, const char *title)
 	double one = 1.0, t1 = c->hover_endurance_s / 60.0, m1 = c->mass.total_kg;
 	struct plot_style dp = { .colour = PLOT_COLOUR_ACCENT, .line_width_pt = -1,
 	                         .marker = PLOT_MARKER_DIAMOND, .marker_size_pt = 7 };
-	plot_series(pt, &one, &t1, 1, sfmt(&sb, "design point (%s min)", report_num(b1, sizeof b1, t1, 1)), &dp);
-	plot_series(pm, &one, &m1, 1, sfmt(&sb, "design point (%s kg)", report_num(b1, sizeof b1, m1, 2)), &dp);
+	plot_series(pt, &one, &t1, 1, report_sfmt(&sb, "design point (%s min)", report_num(b1, sizeof b1, t1, 1)), &dp);
+	plot_series(pm, &one, &m1, 1, report_sfmt(&sb, "design point (%s kg)", report_num(b1, sizeof b1, m1, 2)), &dp);
 	if (c->endurance_inflection_scale > 0) {
 		plot_vline(pt, c->endurance_inflection_scale,
-		           sfmt(&sb, "inflection ×%s", report_num(b1, sizeof b1, c->endurance_inflection_scale, 2)),
+		           report_sfmt(&sb, "inflection ×%s", report_num(b1, sizeof b1, c->endurance_inflection_scale, 2)),
 		           PLOT_COLOUR_WARN, PLOT_DASH_DOTTED);
 		plot_vline(pm, c->endurance_inflection_scale, NULL, PLOT_COLOUR_WARN, PLOT_DASH_DOTTED);
 	}
 	doc_figure(rp->d, p, c->endurance_inflection_scale > 0
-	           ? sfmt(&sb, "Endurance explorer: hover endurance (top) and takeoff mass (bottom) vs battery "
+	           ? report_sfmt(&sb, "Endurance explorer: hover endurance (top) and takeoff mass (bottom) vs battery "
 	                  "capacity scale; the design point is at 1, the custom run's mass-growth inflection at "
 	                  "×%s.", report_num(b1, sizeof b1, c->endurance_inflection_scale, 2))
 	           : "Endurance explorer: hover endurance (top) and takeoff mass (bottom) vs battery capacity "

@@ -9,6 +9,7 @@
 
 #include "doc.h"
 #include "report.h"
+#include "strbuf.h"
 
 /* Series colours by role, the same in every figure (report.h). */
 #define REP_COL_BASELINE 0
@@ -35,6 +36,10 @@ const char *report_num(char *buf, size_t n, double x, int dec);
 /* x with about three significant digits, no exponent ("1289", "13.2",
  * "0.588"), or "—" if not finite. */
 const char *report_auto(char *buf, size_t n, double x);
+/* printf into sb after emptying it; returns its text (valid until sb
+ * changes).  For building one-off sentences and labels. */
+const char *report_sfmt(struct strbuf *sb, const char *fmt, ...)
+	__attribute__((format(printf, 2, 3)));
 /* a/b, or 0 when b is zero or the quotient is not finite. */
 double report_div(double a, double b);
 
