@@ -108,10 +108,15 @@ report_sec_mission(struct rep *rp, const char *title)
 	struct strbuf sb = STRBUF_INIT;
 	char b1[48], b2[48], b3[48];
 	report_heading(rp, title);
-	doc_paragraph(rp->d, report_sfmt(&sb, "The mission is flown as climb, forward flight and hover at the "
-	              "takeoff mass. Electrical power is at the battery terminals and includes %s W of "
-	              "auxiliary load; energy is what each phase draws from the pack (%s Wh nominal, "
-	              "%dS %s).", report_num(b1, sizeof b1, r->mission.payload_role.aux_power_w, 0),
+	int shed = r->mission.payload_role.mass_shedding &&
+	           (r->mission.payload_role.type == ROLE_DELIVERY ||
+	            r->mission.payload_role.type == ROLE_AGRICULTURE);
+	doc_paragraph(rp->d, report_sfmt(&sb, "The mission is flown as climb, forward flight and hover%s. "
+	              "Electrical power is at the battery terminals and includes %s W of auxiliary load; "
+	              "energy is what each phase draws from the pack (%s Wh nominal, %dS %s).",
+	              shed ? "; the custom run sheds payload on the way (drop or spray), so its later "
+	                     "phases fly lighter than the takeoff mass" : " at the takeoff mass",
+	              report_num(b1, sizeof b1, r->mission.payload_role.aux_power_w, 0),
 	              report_num(b2, sizeof b2, c->energy_wh, 1), c->cell_count, c->chemistry));
 	doc_heading(rp->d, 2, "Custom run");
 	phase_table(rp, c);
