@@ -83,6 +83,13 @@ report_heading(struct rep *rp, const char *title)
 	doc_heading(rp->d, 1, h);
 }
 
+void
+report_subheading(struct rep *rp, const char *title, double keep_pt)
+{
+	doc_ensure_space(rp->d, keep_pt);
+	doc_heading(rp->d, 2, title);
+}
+
 const char *
 report_eu_class(double mass_kg)
 {
@@ -244,7 +251,7 @@ sec_cover(struct rep *rp, int first)
 	};
 	kv_table(rp->d, kv, (int)(sizeof kv / sizeof kv[0]) / 2, 8);
 
-	doc_heading(rp->d, 2, "Key figures");
+	report_subheading(rp, "Key figures", REP_KEEP_PT);
 	static const struct doc_column cols[] = {
 		{ "", 2.6, DOC_ALIGN_LEFT }, { "Baseline", 1.3, DOC_ALIGN_RIGHT },
 		{ "Custom", 1.3, DOC_ALIGN_RIGHT },
@@ -283,7 +290,7 @@ sec_cover(struct rep *rp, int first)
 	doc_table(rp->d, &t);
 	doc_table_clear(&t);
 
-	doc_heading(rp->d, 2, "Mission");
+	report_subheading(rp, "Mission", REP_KEEP_PT);
 	char *v[5];
 	v[0] = xstrdup(report_sfmt(&sb, "%s role, %s airframe, %d rotors%s on a %s mm wheelbase", role_name(r),
 	                    m->airframe_class >= 0 && m->airframe_class < AF_CLASS_MAX
@@ -440,7 +447,7 @@ sec_summary(struct rep *rp, const char *title)
 	doc_table(rp->d, &t);
 	doc_table_clear(&t);
 
-	doc_heading(rp->d, 2, "Selected parts");
+	report_subheading(rp, "Selected parts", REP_KEEP_PT);
 	if (r->parts_selected) {
 		parts_table(rp);
 		doc_paragraph(rp->d, report_sfmt(&sb, "Bill of materials: %s USD for %s kg of catalogue and custom parts "
@@ -453,7 +460,7 @@ sec_summary(struct rep *rp, const char *title)
 		              "The bill of materials section says why.");
 	}
 
-	doc_heading(rp->d, 2, "Role overhead");
+	report_subheading(rp, "Role overhead", REP_KEEP_PT);
 	static const struct doc_column ocols[] = {
 		{ "Mass item", 2.6, DOC_ALIGN_LEFT }, { "Baseline", 1.1, DOC_ALIGN_RIGHT },
 		{ "Custom", 1.1, DOC_ALIGN_RIGHT }, { "Overhead", 1.0, DOC_ALIGN_RIGHT },
@@ -477,7 +484,7 @@ sec_summary(struct rep *rp, const char *title)
 	doc_table(rp->d, &t);
 	doc_table_clear(&t);
 
-	doc_heading(rp->d, 2, "Regulatory class (informative)");
+	report_subheading(rp, "Regulatory class (informative)", REP_KEEP_PT);
 	regulatory(rp);
 	strbuf_free(&sb);
 }
@@ -530,9 +537,9 @@ sec_rationale(struct rep *rp, const char *title)
 		doc_callout(rp->d, DOC_CALLOUT_FAIL, "INFEASIBLE",
 		            "The design does not meet every constraint. The violations come first; the "
 		            "decisions the solver took follow.");
-		doc_heading(rp->d, 2, "Violations");
+		report_subheading(rp, "Violations", REP_KEEP_PT);
 		violation_list(rp);
-		doc_heading(rp->d, 2, "Solver decisions");
+		report_subheading(rp, "Solver decisions", REP_KEEP_PT);
 	} else {
 		doc_paragraph(rp->d, "Each decision the solver took, in the order it took them.");
 	}
@@ -717,7 +724,7 @@ sec_bom(struct rep *rp, const char *title)
 	report_heading(rp, title);
 	if (!r->parts_selected) {
 		doc_callout(rp->d, DOC_CALLOUT_WARN, "No catalogue parts selected", no_parts_reason(rp));
-		doc_heading(rp->d, 2, "Specification to source (custom run)");
+		report_subheading(rp, "Specification to source (custom run)", REP_KEEP_PT);
 		doc_paragraph(rp->d, "What the sized design asks of each supplier; the masses are the sizing "
 		              "model's. Order against these, or rebuild with a parts catalogue (--db DIR).");
 		sourcing_table(rp);
@@ -727,7 +734,7 @@ sec_bom(struct rep *rp, const char *title)
 		return;
 	}
 	if (!r->parts_selected)
-		doc_heading(rp->d, 2, "Lines on record");
+		report_subheading(rp, "Lines on record", REP_KEEP_PT);
 	static const struct doc_column cols[] = {
 		{ "#", 0.35, DOC_ALIGN_RIGHT }, { "Qty", 0.5, DOC_ALIGN_RIGHT },
 		{ "Category", 0.9, DOC_ALIGN_LEFT }, { "Part", 3.1, DOC_ALIGN_LEFT },
@@ -827,21 +834,21 @@ sec_checks(struct rep *rp, const char *title)
 		            report_sfmt(&sb, "%d constraint%s violated. Each is listed below with the fixes the "
 		                 "solver suggests, then every check with its margin.", r->n_violations,
 		                 r->n_violations == 1 ? " is" : "s are"));
-		doc_heading(rp->d, 2, "Violations and suggested fixes");
+		report_subheading(rp, "Violations and suggested fixes", REP_KEEP_PT);
 		violation_list(rp);
 	} else {
 		doc_callout(rp->d, DOC_CALLOUT_PASS, "FEASIBLE", "Every constraint of the custom design holds.");
 	}
-	doc_heading(rp->d, 2, "Custom run");
+	report_subheading(rp, "Custom run", REP_KEEP_PT);
 	doc_paragraph(rp->d, "Value: what the design achieves; limit: what it must stay at or below (≤) or "
 	              "reach (≥); margin: the distance to the limit as a fraction of the limit. Margins "
 	              "under 5 % are highlighted.");
 	checks_table(rp, &r->custom, !r->feasible);
 	if (r->parts_selected && r->closed.ran) {
-		doc_heading(rp->d, 2, "Custom run with the real parts");
+		report_subheading(rp, "Custom run with the real parts", REP_KEEP_PT);
 		checks_table(rp, &r->closed, !r->feasible);
 	}
-	doc_heading(rp->d, 2, "Baseline run (for comparison)");
+	report_subheading(rp, "Baseline run (for comparison)", REP_KEEP_PT);
 	checks_table(rp, &r->baseline, 0);
 	strbuf_free(&sb);
 }
@@ -855,15 +862,16 @@ catalogue_used(struct rep *rp)
 	const struct catalog *cat = rp->in->cat;
 	struct strbuf sb = STRBUF_INIT;
 	char b1[48], b2[48], b3[48];
-	doc_heading(rp->d, 2, "Catalogue entries used");
+	/* A part row with its source runs to ~10 lines: keep the heading with it. */
+	report_subheading(rp, "Catalogue entries used", r->parts_selected ? 160.0 : 40.0);
 	if (!r->parts_selected) {
 		doc_paragraph(rp->d, "None: no catalogue parts were selected.");
 		strbuf_free(&sb);
 		return;
 	}
 	static const struct doc_column cols[] = {
-		{ "Id", 1.6, DOC_ALIGN_LEFT }, { "Part and published data", 3.6, DOC_ALIGN_LEFT },
-		{ "Source", 2.6, DOC_ALIGN_LEFT },
+		{ "Id", 2.1, DOC_ALIGN_LEFT }, { "Part and published data", 3.2, DOC_ALIGN_LEFT },
+		{ "Source", 2.7, DOC_ALIGN_LEFT },
 	};
 	struct doc_table t;
 	doc_table_init(&t, cols, 3);
@@ -918,7 +926,7 @@ sec_appendix(struct rep *rp, const char *title)
 {
 	const struct mission_spec *s = &rp->r->mission;
 	report_heading(rp, title);
-	doc_heading(rp->d, 2, "Mission, fully defaulted");
+	report_subheading(rp, "Mission, fully defaulted", REP_KEEP_PT);
 	doc_paragraph(rp->d, "Every field of the mission contract with the value this build used. Fields "
 	              "the mission file did not set are marked \"default\" (the table default, or a value "
 	              "derived from the role, airframe class or requirements). The mission file itself "

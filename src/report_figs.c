@@ -118,9 +118,9 @@ report_sec_mission(struct rep *rp, const char *title)
 	                     "phases fly lighter than the takeoff mass" : " at the takeoff mass",
 	              report_num(b1, sizeof b1, r->mission.payload_role.aux_power_w, 0),
 	              report_num(b2, sizeof b2, c->energy_wh, 1), c->cell_count, c->chemistry));
-	doc_heading(rp->d, 2, "Custom run");
+	report_subheading(rp, "Custom run", REP_KEEP_PT);
 	phase_table(rp, c);
-	doc_heading(rp->d, 2, "Baseline run");
+	report_subheading(rp, "Baseline run", REP_KEEP_PT);
 	phase_table(rp, b);
 
 	if (c->n_sweep > 0 || b->n_sweep > 0) {
@@ -612,7 +612,7 @@ report_sec_propulsion(struct rep *rp, const char *title)
 	struct strbuf sb = STRBUF_INIT;
 	char b1[48], b2[48], b3[48];
 	report_heading(rp, title);
-	doc_heading(rp->d, 2, "Continuous optimum");
+	report_subheading(rp, "Continuous optimum", REP_KEEP_PT);
 	doc_paragraph(rp->d, "The sizing loop produces a continuous design; the parts search looks for "
 	              "catalogue parts nearest to it.");
 	char *v[12];
@@ -646,7 +646,7 @@ report_sec_propulsion(struct rep *rp, const char *title)
 	for (int i = 0; i < 9; i++)
 		free(v[i]);
 
-	doc_heading(rp->d, 2, "Motor selection");
+	report_subheading(rp, "Motor selection", REP_KEEP_PT);
 	if (!r->parts_selected)
 		doc_paragraph(rp->d, "No catalogue parts were selected; the figure places the continuous "
 		              "optimum among the catalogue's motors for orientation.");
@@ -657,10 +657,9 @@ report_sec_propulsion(struct rep *rp, const char *title)
 
 	/* Keep the operating-point table with its heading and note (about
 	 * 200 pt): a lone row on the next page reads badly. */
-	doc_ensure_space(rp->d, 210.0);
-	doc_heading(rp->d, 2, "Operating points (custom run)");
+	report_subheading(rp, "Operating points (custom run)", 210.0);
 	op_table(rp);
-	doc_heading(rp->d, 2, "Feasibility gates");
+	report_subheading(rp, "Feasibility gates", REP_KEEP_PT);
 	gate_table(rp);
 	strbuf_free(&sb);
 }

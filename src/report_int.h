@@ -16,6 +16,9 @@
 #define REP_COL_CUSTOM   1
 #define REP_COL_CLOSED   2
 
+/* Room a sub-heading keeps for what follows: table header and three rows, pt. */
+#define REP_KEEP_PT 100.0
+
 /* The state of one render, passed to every section writer. */
 struct rep {
 	struct doc *d;                    /* the document being written */
@@ -30,6 +33,10 @@ struct rep {
 
 /* Starts a numbered section: new page, bookmark, "n  title". */
 void report_heading(struct rep *rp, const char *title);
+
+/* A level-2 heading kept with at least keep_pt of what follows (a table
+ * header and its first rows), so no heading is left alone at a page foot. */
+void report_subheading(struct rep *rp, const char *title, double keep_pt);
 
 /* x with `dec` decimals into buf, or "—" if x is not finite. */
 const char *report_num(char *buf, size_t n, double x, int dec);
