@@ -124,6 +124,18 @@ mass_txt(const struct rep *rp, char *buf, size_t n, double kg)
 	return report_num(buf, n, kg * rp->mass_scale, rp->mass_dec);
 }
 
+/* A mass change with its sign ("+0.268", "-0.013", "0.000"): the plus
+ * only when the printed value is not zero. */
+static const char *
+delta_txt(const struct rep *rp, char *buf, size_t n, double kg)
+{
+	char tmp[40];
+	mass_txt(rp, tmp, sizeof tmp, kg);
+	int zero = strspn(tmp, "0.") == strlen(tmp) || strcmp(tmp, "—") == 0;
+	snprintf(buf, n, "%s%s", kg > 0 && !zero ? "+" : "", tmp);
+	return buf;
+}
+
 static const char *
 or_absent(const char *s)
 {
@@ -473,13 +485,12 @@ sec_summary(struct rep *rp, const char *title)
 		doc_table_cell(&t, DOC_CELL_NORMAL, "%s (%s)", mass_items[i].label, rp->mass_unit);
 		doc_table_cell(&t, DOC_CELL_NORMAL, "%s", mass_txt(rp, b1, sizeof b1, mass_get(&b->mass, i)));
 		doc_table_cell(&t, DOC_CELL_NORMAL, "%s", mass_txt(rp, b1, sizeof b1, mass_get(&c->mass, i)));
-		doc_table_cell(&t, DOC_CELL_BOLD, "%s%s", o > 0 ? "+" : "", mass_txt(rp, b1, sizeof b1, o));
+		doc_table_cell(&t, DOC_CELL_BOLD, "%s", delta_txt(rp, b1, sizeof b1, o));
 	}
 	doc_table_cell(&t, DOC_CELL_BOLD, "Total (%s)", rp->mass_unit);
 	doc_table_cell(&t, DOC_CELL_BOLD, "%s", mass_txt(rp, b1, sizeof b1, b->mass.total_kg));
 	doc_table_cell(&t, DOC_CELL_BOLD, "%s", mass_txt(rp, b1, sizeof b1, c->mass.total_kg));
-	doc_table_cell(&t, DOC_CELL_BOLD, "%s%s", r->role_overhead.total_kg > 0 ? "+" : "",
-	               mass_txt(rp, b1, sizeof b1, r->role_overhead.total_kg));
+	doc_table_cell(&t, DOC_CELL_BOLD, "%s", delta_txt(rp, b1, sizeof b1, r->role_overhead.total_kg));
 	t.total_row = 1;
 	doc_table(rp->d, &t);
 	doc_table_clear(&t);
@@ -579,8 +590,10 @@ sec_mass(struct rep *rp, const char *title)
 	struct plot_panel *pp = plot_panel(p, 0, 0);
 	plot_axis_title(pp, PLOT_Y, report_sfmt(&sb, "Mass (%s)", rp->mass_unit));
 	plot_legend(pp, PLOT_LEGEND_RIGHT);
+	/* About three significant digits on the segment labels. */
+	double top = rp->mass_scale * fmax(r->baseline.mass.total_kg, r->custom.mass.total_kg);
 	plot_stacked_bars(pp, n_bars, bar_labels, N_MASS_ITEMS, stack_labels, v,
-	                  rp->mass_scale > 1.0 ? 0 : 2);
+	                  top >= 100.0 ? 0 : top >= 10.0 ? 1 : 2);
 	doc_figure(rp->d, p, report_sfmt(&sb, "Mass budget, baseline vs custom run (%s), every mass item stacked; "
 	                          "the total is printed above each bar.", rp->mass_unit));
 	plot_free(p);
@@ -601,15 +614,14 @@ sec_mass(struct rep *rp, const char *title)
 		report_cell_num(&t, DOC_CELL_MUTED, 100.0 * report_div(mb, b->mass.total_kg), 1);
 		doc_table_cell(&t, DOC_CELL_NORMAL, "%s", mass_txt(rp, b1, sizeof b1, mc));
 		report_cell_num(&t, DOC_CELL_MUTED, 100.0 * report_div(mc, c->mass.total_kg), 1);
-		doc_table_cell(&t, DOC_CELL_NORMAL, "%s%s", o > 0 ? "+" : "", mass_txt(rp, b1, sizeof b1, o));
+		doc_table_cell(&t, DOC_CELL_NORMAL, "%s", delta_txt(rp, b1, sizeof b1, o));
 	}
 	doc_table_cell(&t, DOC_CELL_BOLD, "Takeoff mass (%s)", rp->mass_unit);
 	doc_table_cell(&t, DOC_CELL_BOLD, "%s", mass_txt(rp, b1, sizeof b1, b->mass.total_kg));
 	doc_table_cell(&t, DOC_CELL_BOLD, "100.0");
 	doc_table_cell(&t, DOC_CELL_BOLD, "%s", mass_txt(rp, b1, sizeof b1, c->mass.total_kg));
 	doc_table_cell(&t, DOC_CELL_BOLD, "100.0");
-	doc_table_cell(&t, DOC_CELL_BOLD, "%s%s", r->role_overhead.total_kg > 0 ? "+" : "",
-	               mass_txt(rp, b1, sizeof b1, r->role_overhead.total_kg));
+	doc_table_cell(&t, DOC_CELL_BOLD, "%s", delta_txt(rp, b1, sizeof b1, r->role_overhead.total_kg));
 	t.total_row = 1;
 	doc_table(rp->d, &t);
 	doc_table_clear(&t);
