@@ -425,8 +425,10 @@ sec_summary(struct rep *rp, const char *title)
 	struct strbuf sb = STRBUF_INIT;
 	char b1[48], b2[48], b3[48];
 	report_heading(rp, title);
-	doc_paragraph(rp->d, report_sfmt(&sb, "The %s role raises the takeoff mass from %s kg (baseline, no role) "
+	/* Shedding roles (spray, drop) can size lighter than the baseline. */
+	doc_paragraph(rp->d, report_sfmt(&sb, "The %s role %s the takeoff mass from %s kg (baseline, no role) "
 	              "to %s kg (%s%s %%). The custom design is %s.", role_name(r),
+	              c->mass.total_kg >= b->mass.total_kg ? "raises" : "lowers",
 	              report_num(b1, sizeof b1, b->mass.total_kg, 3),
 	              report_num(b2, sizeof b2, c->mass.total_kg, 3),
 	              c->mass.total_kg >= b->mass.total_kg ? "+" : "",
