@@ -215,6 +215,10 @@ role_name(const struct solve_result *r)
 
 /* ---- 1 cover ------------------------------------------------------------- */
 
+/* Section 1, the page a client signs: identity, fingerprints, verdict and
+ * the few numbers everyone asks for first.  `first` is nonzero when the
+ * cover opens the document (else it starts its own page).  The cover is
+ * not numbered: numbering starts with the first section after it. */
 static void
 sec_cover(struct rep *rp, int first)
 {
@@ -355,6 +359,9 @@ cmp_row(struct doc_table *t, const char *label, double base, double custom, int 
 		               report_num(b, sizeof b, delta, dec));
 }
 
+/* The regulatory class by takeoff mass, as bullets.  Only mass is judged
+ * here: the dossier cannot know the rest of a class declaration, so the
+ * text says "informative". */
 static void
 regulatory(struct rep *rp)
 {
@@ -390,6 +397,7 @@ regulatory(struct rep *rp)
 	strbuf_free(&sb);
 }
 
+/* The chosen catalogue parts with quantity and J-score (lower is better). */
 static void
 parts_table(struct rep *rp)
 {
@@ -417,6 +425,8 @@ parts_table(struct rep *rp)
 	doc_table_clear(&t);
 }
 
+/* Section 2: baseline against custom side by side, the selected parts and
+ * BOM cost, the role overhead item by item, the regulatory class. */
 static void
 sec_summary(struct rep *rp, const char *title)
 {
@@ -541,6 +551,8 @@ violation_list(struct rep *rp)
 	strbuf_free(&sb);
 }
 
+/* Section 3: the engine's rationale sentences in order.  An infeasible
+ * design leads with what failed, since that is what the reader must act on. */
 static void
 sec_rationale(struct rep *rp, const char *title)
 {
@@ -567,6 +579,9 @@ sec_rationale(struct rep *rp, const char *title)
 
 /* ---- 4 mass budget ------------------------------------------------------- */
 
+/* Section 4: stacked bars of every mass item (baseline, custom, and the
+ * real-parts run when there is one) and the same numbers as a table with
+ * each item's share of its run's takeoff mass. */
 static void
 sec_mass(struct rep *rp, const char *title)
 {
@@ -729,6 +744,8 @@ sourcing_table(struct rep *rp)
 	strbuf_free(&sb);
 }
 
+/* Section 11: the BOM lines with totals.  Without a parts selection it says
+ * why, and lists what the sized design asks of suppliers instead. */
 static void
 sec_bom(struct rep *rp, const char *title)
 {
@@ -802,6 +819,8 @@ sec_bom(struct rep *rp, const char *title)
 
 /* ---- 12 checks ----------------------------------------------------------- */
 
+/* One run's checks: value, limit with its direction, margin (warning colour
+ * when tight), PASS/FAIL.  With failing_first the failures lead. */
 static void
 checks_table(struct rep *rp, const struct res_run *run, int failing_first)
 {
@@ -837,6 +856,8 @@ checks_table(struct rep *rp, const struct res_run *run, int failing_first)
 	doc_table_clear(&t);
 }
 
+/* Section 12: the verdict, the violations with fixes (infeasible only),
+ * the custom run's checks, then the baseline's for comparison. */
 static void
 sec_checks(struct rep *rp, const char *title)
 {
@@ -869,6 +890,8 @@ sec_checks(struct rep *rp, const char *title)
 
 /* ---- 13 appendix --------------------------------------------------------- */
 
+/* The catalogue entries behind the chosen parts, with their published data
+ * and source, so the archive shows where each number came from. */
 static void
 catalogue_used(struct rep *rp)
 {
@@ -935,6 +958,8 @@ catalogue_used(struct rep *rp)
 	strbuf_free(&sb);
 }
 
+/* Section 13: every field of the mission contract as this build used it
+ * (spec_fields[] order), marking the ones the file left to their default. */
 static void
 sec_appendix(struct rep *rp, const char *title)
 {

@@ -31,7 +31,6 @@
 /* Battery thermal-runaway limit drawn on the temperature trace, °C. */
 #define REP_RUNAWAY_C 60.0
 
-
 /* Phase names for table rows (res_phase_name is the lower-case key). */
 static const char *const phase_title[PHASE_MAX] = { "Climb", "Forward", "Hover" };
 
@@ -43,6 +42,8 @@ dmin_i(int a, int b)
 
 /* ---- 5 mission and energy ------------------------------------------------ */
 
+/* One run's phases as a table, phases not flown left out, with the mission
+ * totals of time and energy. */
 static void
 phase_table(struct rep *rp, const struct res_run *run)
 {
@@ -100,6 +101,8 @@ interp(const double *x, const double *y, int n, double at)
 	return NAN;
 }
 
+/* Section 5: phase tables of both runs and the power-vs-speed sweep with
+ * the minimum-power speed, the flown speed and v_max marked. */
 void
 report_sec_mission(struct rep *rp, const char *title)
 {
@@ -184,6 +187,9 @@ phase_marks(struct plot_panel *pp, const struct res_run *run, int labelled)
 	}
 }
 
+/* Section 6: the custom run's discharge trace as four panels with their
+ * limits (runaway temperature, voltage floor, SOC reserve), then the
+ * headline numbers as a table. */
 void
 report_sec_thermal(struct rep *rp, const char *title)
 {
@@ -285,6 +291,8 @@ report_sec_thermal(struct rep *rp, const char *title)
 
 /* ---- 7 structure and resonance ------------------------------------------ */
 
+/* One run's arm tube: geometry, stress against allowable, tip mass, first
+ * mode and resonance margin; failing margins in the fail colour. */
 static void
 arm_row(struct doc_table *t, const char *name, const struct res_run *run)
 {
@@ -302,6 +310,8 @@ arm_row(struct doc_table *t, const char *name, const struct res_run *run)
 	                100.0 * run->resonance_margin, 0);
 }
 
+/* Section 7: arm sizing table and the resonance figure (frequency vs rotor
+ * speed) that shows where the arm mode sits against the blade-pass band. */
 void
 report_sec_structure(struct rep *rp, const char *title)
 {
@@ -390,6 +400,7 @@ report_sec_structure(struct rep *rp, const char *title)
 
 /* ---- 8 propulsion selection --------------------------------------------- */
 
+/* qsort order for doubles, ascending. */
 static int
 cmp_double(const void *a, const void *b)
 {
@@ -397,6 +408,10 @@ cmp_double(const void *a, const void *b)
 	return (x > y) - (x < y);
 }
 
+/* The motor crosshair: the usable catalogue as a muted cloud, the scored
+ * candidates coloured by J-score tercile (pruned ones as crosses), the
+ * continuous optimum as a crosshair and the chosen motor in the custom
+ * colour.  Both axes are logarithmic: catalogues span decades of KV. */
 static void
 motor_figure(struct rep *rp)
 {
@@ -502,6 +517,8 @@ struct op_point {
 	int shaft_estimated;      /* shaft power not simulated, estimated */
 };
 
+/* The operating-point table eCalc users know: hover, climb, cruise and full
+ * throttle, derived from the phases and the peak values of the custom run. */
 static void
 op_table(struct rep *rp)
 {
@@ -570,6 +587,8 @@ find_check(const struct res_run *run, const char *prefix)
 	return NULL;
 }
 
+/* The three feasibility gates (overlap, tip Mach, downwash) as the checks
+ * recorded them; downwash is limited only for agriculture. */
 static void
 gate_table(struct rep *rp)
 {
@@ -604,6 +623,8 @@ gate_table(struct rep *rp)
 	doc_table_clear(&t);
 }
 
+/* Section 8: continuous optimum, motor crosshair, operating points and the
+ * feasibility gates. */
 void
 report_sec_propulsion(struct rep *rp, const char *title)
 {
@@ -666,6 +687,7 @@ report_sec_propulsion(struct rep *rp, const char *title)
 
 /* ---- 9 convergence -------------------------------------------------------- */
 
+/* One run's mass history against iteration number. */
 static void
 history_series(struct plot_panel *pp, const struct res_run *run, const char *label, int colour,
                enum plot_marker mk)
@@ -682,6 +704,7 @@ history_series(struct plot_panel *pp, const struct res_run *run, const char *lab
 	free(it);
 }
 
+/* One run's loop statistics; a run the gate stopped shows "not run". */
 static void
 conv_row(struct doc_table *t, const char *name, const struct res_run *run)
 {
@@ -700,6 +723,8 @@ conv_row(struct doc_table *t, const char *name, const struct res_run *run)
 	doc_table_cell(t, DOC_CELL_NORMAL, "%s", run->termination[0] != '\0' ? run->termination : "—");
 }
 
+/* Section 9: mass history of both runs, tolerance, Lipschitz estimates,
+ * iterations, goal relaxation and termination. */
 void
 report_sec_convergence(struct rep *rp, const char *title)
 {
@@ -742,11 +767,24 @@ report_sec_convergence(struct rep *rp, const char *title)
 	doc_table_clear(&t);
 	doc_paragraph(rp->d, "Goal γ is the factor the mission times were scaled by to close the design "
 	              "(1 = as requested; below 1 only when the mission allows automatic reduction).");
+	/* A sudden fall in the history is the loop restarting from its seed
+	 * after a discrete change (the cell count); say so, or it looks odd. */
+	int restarts = 0;
+	const struct res_run *runs[2] = { &r->baseline, &r->custom };
+	for (int k = 0; k < 2; k++)
+		for (int i = 1; i < dmin_i(runs[k]->n_history, RES_MAX_HISTORY); i++)
+			if (runs[k]->history_kg[i] < 0.9 * runs[k]->history_kg[i - 1])
+				restarts++;
+	if (restarts > 0)
+		doc_paragraph(rp->d, "The sudden drops in the history are restarts: when the solver changes a "
+		              "discrete choice such as the series cell count, the loop starts again from its "
+		              "seed mass with the new choice.");
 	strbuf_free(&sb);
 }
 
 /* ---- 10 endurance explorer ------------------------------------------------ */
 
+/* One run's explorer points on both panels (time on top, mass below). */
 static void
 endurance_series(struct plot_panel *pt, struct plot_panel *pm, const struct res_run *run,
                  const char *label, int colour)
@@ -762,6 +800,8 @@ endurance_series(struct plot_panel *pt, struct plot_panel *pm, const struct res_
 	plot_series(pm, run->endurance_scale, run->endurance_mass_kg, (size_t)n, label, &st);
 }
 
+/* Section 10: hover endurance and takeoff mass against capacity scale,
+ * with the design point and the mass-growth inflection. */
 void
 report_sec_endurance(struct rep *rp, const char *title)
 {
