@@ -486,11 +486,15 @@ doc_bullets(struct doc *d, const char *const *items, int n)
 	return failed(d) ? -1 : 0;
 }
 
+static void bookmark(struct doc *d, int level, const char *text, double y);
+
 int
 doc_title(struct doc *d, const char *title, const char *subtitle)
 {
 	if (failed(d))
 		return -1;
+	/* The cover gets its outline entry too; level-2 headings under it nest. */
+	bookmark(d, 1, title != NULL ? title : "", d->y);
 	double size = 2.6 * d->tpl.font_size_pt;
 	double logo_w = 0.0;
 	if (d->tpl.logo[0] != '\0') {

@@ -149,7 +149,8 @@ void doc_global_cleanup(void);
 
 /* ---- flow elements (all return 0 or -1) -------------------------------- */
 
-/* Title block for a cover page: big title, subtitle, the template's logo. */
+/* Title block for a cover page: big title, subtitle, the template's logo,
+ * and a level-1 outline bookmark named by the title. */
 int doc_title(struct doc *d, const char *title, const char *subtitle);
 /* Level 1 starts a section on a new page with an outline bookmark; level 2
  * adds a nested bookmark; level 3 is a run-in heading without bookmark. */

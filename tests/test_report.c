@@ -1,0 +1,331 @@
+/* test_report.c — the design dossier: every example solved and rendered.
+ *
+ * Runs from the repository root (data/, examples/, templates/).  Each
+ * dossier is also written to build/dossier_NAME.pdf for looking at.
+ */
+#include "test_util.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+
+#include "catalog.h"
+#include "cli.h"
+#include "diag.h"
+#include "doc.h"
+#include "engine.h"
+#include "mission_io.h"
+#include "report.h"
+#include "sha256.h"
+#include "template.h"
+#include "xalloc.h"
+
+/* A full dossier: cover, 11 sections of one to three pages, the appendix. */
+#define MIN_PAGES 14
+#define MAX_PAGES 40
+/* Generous bound for one render so a slow CI machine or valgrind passes;
+ * the measured process CPU time is printed (about 50 ms with -O2, most of
+ * it libharu building the font tables and compressing at save). */
+#define MAX_RENDER_MS 5000.0
+
+static const char *const examples[] = {
+	"agri_dynamic_20kg", "agri_spray_octo", "agri_static_20kg", "coaxial_inspection_quad",
+	"delivery_drop_3p5kg", "delivery_quad", "fpv_racing_quad", "lidar_mapping_quad",
+	"sar_imaging_quad",
+};
+#define N_EXAMPLES ((int)(sizeof examples / sizeof examples[0]))
+
+struct fixture {
+	struct cli_env env;
+	struct template *tpl;
+};
+
+static int
+setup(void **state)
+{
+	struct fixture *fx = xcalloc(1, sizeof *fx);
+	if (cli_env_load(&fx->env, NULL, 1, stderr) != 0)
+		return -1;
+	fx->tpl = template_default();
+	*state = fx;
+	return 0;
+}
+
+static int
+teardown(void **state)
+{
+	struct fixture *fx = *state;
+	template_free(fx->tpl);
+	cli_env_free(&fx->env);
+	free(fx);
+	doc_global_cleanup();
+	return 0;
+}
+
+static unsigned char *
+read_file(const char *path, size_t *n)
+{
+	FILE *f = fopen(path, "rb");
+	assert_non_null(f);
+	fseek(f, 0, SEEK_END);
+	long len = ftell(f);
+	fseek(f, 0, SEEK_SET);
+	unsigned char *buf = xmalloc((size_t)len + 1);
+	assert_int_equal(fread(buf, 1, (size_t)len, f), (size_t)len);
+	fclose(f);
+	*n = (size_t)len;
+	return buf;
+}
+
+/* Solves examples/NAME.json; payload_kg >= 0 overrides the payload. */
+static struct solve_result *
+solve(struct fixture *fx, const char *name, double payload_kg, unsigned char **bytes, size_t *n)
+{
+	char path[256];
+	snprintf(path, sizeof path, "examples/%s.json", name);
+	*bytes = read_file(path, n);
+	struct diag *dg = diag_alloc(stderr);
+	struct mission_spec spec;
+	assert_int_equal(mission_io_load(path, fx->env.model.chem_names, dg, &spec), 0);
+	diag_free(dg);
+	if (payload_kg >= 0) {
+		spec.payload_kg = payload_kg;
+		spec.given[SPECF_PAYLOAD_KG] = true;
+	}
+	struct solve_result *r = xcalloc(1, sizeof *r);
+	assert_int_equal(engine_solve(&spec, &fx->env.model, fx->env.cat, r), 0);
+	sha256_hex(*bytes, *n, r->input_sha256);
+	snprintf(r->catalogue_sha256, sizeof r->catalogue_sha256, "%064d", 0);
+	return r;
+}
+
+/* Pages of a PDF written by libharu (uncompressed object dictionaries). */
+static int
+count_pages(const unsigned char *pdf, size_t n)
+{
+	static const char key[] = "/Type /Page";
+	int pages = 0;
+	for (size_t i = 0; i + sizeof key < n; i++)
+		if (memcmp(pdf + i, key, sizeof key - 1) == 0 && pdf[i + sizeof key - 1] != 's')
+			pages++;
+	return pages;
+}
+
+static double
+now_ms(void)
+{
+	struct timespec ts;
+	clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+	return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
+}
+
+/* Renders, checks and writes build/dossier_<out>.pdf; returns the pages. */
+static int
+render_and_check(struct fixture *fx, const struct solve_result *r, const char *name,
+                 const char *out, const unsigned char *bytes, size_t n_bytes)
+{
+	char file[256], err[256] = "";
+	snprintf(file, sizeof file, "%s.json", name);
+	struct report_input in = {
+		.r = r, .tpl = fx->tpl, .mission_name = name, .mission_file_name = file,
+		.mission_bytes = bytes, .mission_len = n_bytes, .date = "2026-11-22",
+		.engine_version = AEROEVAL_VERSION, .cat = fx->env.cat,
+	};
+	unsigned char *a = NULL, *b = NULL;
+	size_t na = 0, nb = 0;
+	double t0 = now_ms();
+	int rc = report_render(&in, &a, &na, err, sizeof err);
+	double ms = now_ms() - t0;
+	if (rc != 0)
+		print_error("%s: %s\n", name, err);
+	assert_int_equal(rc, 0);
+	assert_true(ms < MAX_RENDER_MS);
+	assert_int_equal(report_render(&in, &b, &nb, err, sizeof err), 0);
+	assert_int_equal(na, nb);
+	assert_memory_equal(a, b, na);   /* reproducible to the byte */
+	assert_memory_equal(a, "%PDF-", 5);
+	int pages = count_pages(a, na);
+	print_message("dossier %-28s %2d pages %7zu bytes %6.1f ms\n", out, pages, na, ms);
+	mkdir("build", 0777);
+	char path[300];
+	snprintf(path, sizeof path, "build/dossier_%s.pdf", out);
+	FILE *f = fopen(path, "wb");
+	if (f != NULL) {
+		fwrite(a, 1, na, f);
+		fclose(f);
+	}
+	free(a);
+	free(b);
+	return pages;
+}
+
+static void
+report_every_example_should_render_reproducibly(void **state)
+{
+	struct fixture *fx = *state;
+	for (int i = 0; i < N_EXAMPLES; i++) {
+		unsigned char *bytes;
+		size_t n;
+		struct solve_result *r = solve(fx, examples[i], -1, &bytes, &n);
+		int pages = render_and_check(fx, r, examples[i], examples[i], bytes, n);
+		assert_in_range(pages, MIN_PAGES, MAX_PAGES);
+		free(r);
+		free(bytes);
+	}
+}
+
+static void
+report_infeasible_design_should_still_get_a_full_dossier(void **state)
+{
+	struct fixture *fx = *state;
+	unsigned char *bytes;
+	size_t n;
+	struct solve_result *r = solve(fx, "delivery_quad", 400.0, &bytes, &n);
+	assert_false(r->feasible);
+	int pages = render_and_check(fx, r, "delivery_quad", "infeasible_payload", bytes, n);
+	assert_in_range(pages, MIN_PAGES, MAX_PAGES);
+	free(r);
+	free(bytes);
+}
+
+/* The optimizer is not merged yet: fake a selection so the parts paths
+ * (BOM table, chosen motor, candidates, closed run) are drawn. */
+static void
+report_selected_parts_should_render(void **state)
+{
+	struct fixture *fx = *state;
+	unsigned char *bytes;
+	size_t n;
+	struct solve_result *r = solve(fx, "sar_imaging_quad", -1, &bytes, &n);
+	const struct catalog_motor *m = catalog_motor(fx->env.cat, 7);
+	assert_non_null(m);
+	r->parts_selected = true;
+	r->motor = (struct res_part){ .chosen = true, .qty = 4, .unit_mass_kg = m->mass_kg,
+	                              .unit_price_usd = m->price_usd, .j_score = 0.213 };
+	snprintf(r->motor.id, sizeof r->motor.id, "%s", m->id);
+	snprintf(r->motor.manufacturer, sizeof r->motor.manufacturer, "%.63s", m->manufacturer);
+	snprintf(r->motor.part_number, sizeof r->motor.part_number, "%s", m->part_number);
+	r->closed = r->custom;
+	r->closed.mass.total_kg *= 1.03;
+	for (int i = 0; i < 40 && (size_t)i < catalog_n_motors(fx->env.cat); i++) {
+		const struct catalog_motor *c = catalog_motor(fx->env.cat, (size_t)i);
+		struct res_candidate *cd = &r->candidates[r->n_candidates++];
+		snprintf(cd->id, sizeof cd->id, "%s", c->id);
+		cd->kv = c->kv_rpm_per_v;
+		cd->mass_kg = c->mass_kg;
+		cd->feasible = i % 7 != 0;
+		cd->j_score = cd->feasible ? 0.2 + 0.037 * i : 1e9;
+	}
+	static const char *const cats[] = { "motor", "propeller", "battery", "esc", "custom" };
+	for (int i = 0; i < 5; i++) {
+		struct res_bom_line *l = &r->bom[r->n_bom++];
+		l->item = i + 1;
+		l->qty = i < 2 ? 4 : 1;
+		snprintf(l->category, sizeof l->category, "%s", cats[i]);
+		snprintf(l->manufacturer, sizeof l->manufacturer, "%s", i == 4 ? "" : "Maker");
+		snprintf(l->part_number, sizeof l->part_number, "PN-%d", 100 + i);
+		snprintf(l->description, sizeof l->description, "%s", i == 4 ? "Carbon arm tube Ø14.2 × 0.5 mm, 420 mm" : "");
+		l->unit_mass_kg = 0.05 * (i + 1);
+		l->total_mass_kg = l->unit_mass_kg * l->qty;
+		l->unit_price_usd = i == 4 ? 0 : 12.5 * (i + 1);
+		l->total_price_usd = l->unit_price_usd * l->qty;
+		r->bom_mass_kg += l->total_mass_kg;
+		r->bom_price_usd += l->total_price_usd;
+	}
+	int pages = render_and_check(fx, r, "sar_imaging_quad", "parts_selected", bytes, n);
+	assert_in_range(pages, MIN_PAGES, MAX_PAGES);
+	free(r);
+	free(bytes);
+}
+
+static void
+report_template_order_and_sensitivity_should_be_honoured(void **state)
+{
+	struct fixture *fx = *state;
+	unsigned char *bytes;
+	size_t n;
+	struct solve_result *r = solve(fx, "fpv_racing_quad", -1, &bytes, &n);
+	struct template *tpl = template_default();
+	/* Only checks, then the cover, then sensitivity. */
+	for (int i = 0; i < tpl->n_sections; i++)
+		tpl->sections[i].enabled = 0;
+	struct template_section order[3] = { tpl->sections[TEMPLATE_SEC_CHECKS],
+	                                     tpl->sections[TEMPLATE_SEC_COVER],
+	                                     tpl->sections[TEMPLATE_SEC_SENSITIVITY] };
+	for (int i = 0; i < 3; i++)
+		order[i].enabled = 1;
+	memcpy(tpl->sections, order, sizeof order);
+	tpl->n_sections = 3;
+	struct report_input in = { .r = r, .tpl = tpl, .mission_name = "fpv" };
+	unsigned char *pdf = NULL;
+	size_t np = 0;
+	char err[128];
+	assert_int_equal(report_render(&in, &pdf, &np, err, sizeof err), 0);
+	assert_in_range(count_pages(pdf, np), 3, 5);
+	free(pdf);
+	template_free(tpl);
+	free(r);
+	free(bytes);
+}
+
+static void
+report_letter_template_should_render(void **state)
+{
+	struct fixture *fx = *state;
+	unsigned char *bytes;
+	size_t n;
+	struct solve_result *r = solve(fx, "lidar_mapping_quad", -1, &bytes, &n);
+	struct template *letter = template_load("templates/letter.json", stderr);
+	assert_non_null(letter);
+	struct template *a4 = fx->tpl;
+	fx->tpl = letter;
+	int pages = render_and_check(fx, r, "lidar_mapping_quad", "letter", bytes, n);
+	fx->tpl = a4;
+	assert_in_range(pages, MIN_PAGES, MAX_PAGES);
+	template_free(letter);
+	free(r);
+	free(bytes);
+}
+
+static void
+report_bad_input_should_fail_with_a_message(void **state)
+{
+	(void)state;
+	struct report_input in = { 0 };
+	unsigned char *pdf = (unsigned char *)"x";
+	size_t n = 3;
+	char err[128] = "";
+	assert_int_equal(report_render(&in, &pdf, &n, err, sizeof err), -1);
+	assert_null(pdf);
+	assert_int_equal(n, 0);
+	assert_true(strlen(err) > 0);
+}
+
+static void
+report_eu_class_should_follow_the_mass_limits(void **state)
+{
+	(void)state;
+	assert_string_equal(report_eu_class(0.249), "C0");
+	assert_string_equal(report_eu_class(0.25), "C1");
+	assert_string_equal(report_eu_class(0.899), "C1");
+	assert_string_equal(report_eu_class(3.999), "C2");
+	assert_string_equal(report_eu_class(4.0), "C3/C4");
+	assert_string_equal(report_eu_class(24.99), "C3/C4");
+	assert_string_equal(report_eu_class(25.0), "specific");
+}
+
+int
+main(void)
+{
+	const struct CMUnitTest tests[] = {
+		cmocka_unit_test(report_eu_class_should_follow_the_mass_limits),
+		cmocka_unit_test(report_bad_input_should_fail_with_a_message),
+		cmocka_unit_test(report_every_example_should_render_reproducibly),
+		cmocka_unit_test(report_infeasible_design_should_still_get_a_full_dossier),
+		cmocka_unit_test(report_selected_parts_should_render),
+		cmocka_unit_test(report_template_order_and_sensitivity_should_be_honoured),
+		cmocka_unit_test(report_letter_template_should_render),
+	};
+	return cmocka_run_group_tests(tests, setup, teardown);
+}
