@@ -19,7 +19,7 @@
 #include "xalloc.h"
 
 #define SENS_USAGE \
-	"usage: aeroeval sensitivity [-o DIR] [--template FILE] MISSION.json\n" \
+	"usage: aeroeval sensitivity [-o DIR] [--template FILE] [--tsv] MISSION.json\n" \
 	"       aeroeval sensitivity --compare-shedding [STATIC.json] DYNAMIC.json\n" \
 	"       aeroeval sensitivity --case-row RESULT.json\n"
 
@@ -50,7 +50,7 @@ write_out(const char *dir, const char *name, const void *data, size_t n)
 
 static int
 run_suite(const struct cli_env *env, const char *path, const char *dir_opt,
-          const char *tpl_path)
+          const char *tpl_path, int tsv)
 {
 	struct mission_spec spec;
 	if (load_mission(path, env, &spec) != 0)
@@ -77,7 +77,10 @@ run_suite(const struct cli_env *env, const char *path, const char *dir_opt,
 
 	struct sens_result *s = xmalloc(sizeof *s);
 	int nominal_bad = sens_run(&spec, &env->model, s);
-	sens_report_text(stdout, s);
+	if (tsv)
+		sens_report_tsv(stdout, s);
+	else
+		sens_report_text(stdout, s);
 	fflush(stdout);
 	fprintf(stderr, "sensitivity: %d solves in %.3f s (%.2f ms per solve)\n",
 	    s->n_solves, s->seconds, 1e3 * s->seconds / (double)s->n_solves);
@@ -195,7 +198,7 @@ int
 cli_sensitivity(int argc, char **argv)
 {
 	const char *dir = NULL, *tpl = NULL, *files[2] = { NULL, NULL };
-	int n_files = 0, shedding = 0, row = 0;
+	int n_files = 0, shedding = 0, row = 0, tsv = 0;
 	for (int i = 1; i < argc; i++) {
 		if (strcmp(argv[i], "-o") == 0 && i + 1 < argc)
 			dir = argv[++i];
@@ -205,6 +208,8 @@ cli_sensitivity(int argc, char **argv)
 			shedding = 1;
 		else if (strcmp(argv[i], "--case-row") == 0)
 			row = 1;
+		else if (strcmp(argv[i], "--tsv") == 0)
+			tsv = 1;
 		else if (argv[i][0] == '-' || n_files == 2) {
 			fputs(SENS_USAGE, stderr);
 			return 2;
@@ -224,7 +229,7 @@ cli_sensitivity(int argc, char **argv)
 			rc = compare_shedding(env, n_files == 2 ? files[0] : NULL,
 			    files[n_files - 1]);
 		else
-			rc = run_suite(env, files[0], dir, tpl);
+			rc = run_suite(env, files[0], dir, tpl, tsv);
 	}
 	cli_env_free(env);
 	free(env);

@@ -1,8 +1,9 @@
 /* cli_sens.h — `aeroeval sensitivity`: the paper's 14-parameter study.
  *
- *   aeroeval sensitivity [-o DIR] [--template FILE] MISSION.json
- *       the table on stdout, DIR/sensitivity.json and DIR/sensitivity.pdf
- *       (DIR defaults to out/<mission-name>, next to the dossier)
+ *   aeroeval sensitivity [-o DIR] [--template FILE] [--tsv] MISSION.json
+ *       the table on stdout (tab-separated with --tsv), DIR/sensitivity.json
+ *       and DIR/sensitivity.pdf (DIR defaults to out/<mission-name>, next to
+ *       the dossier); the solve count and time go to stderr
  *   aeroeval sensitivity --compare-shedding [STATIC.json] DYNAMIC.json
  *       the paper's §VII-D shedding savings of DYNAMIC over STATIC (or over
  *       DYNAMIC with payload_role.mass_shedding off), as key=value lines

@@ -429,6 +429,15 @@ good(const struct sens_point *p)
 	return p->status == SENS_OK;
 }
 
+/* A converged design, feasible or not: its MTOW is a real number to
+ * differentiate (an agricultural mission over its downwash cap still has a
+ * mass sensitivity). */
+static bool
+usable(const struct sens_point *p)
+{
+	return p->status == SENS_OK || p->status == SENS_INFEASIBLE;
+}
+
 /* Where the good region ends between last (good) and bad. */
 static double
 crossing(const struct sens_point *last, const struct sens_point *bad)
@@ -552,8 +561,11 @@ sweep_scratch(const struct mission_spec *spec, const struct model_data *md,
 		eval_prepared(&prep, md, id, c->x0 + c->h, r, &c->fd_hi);
 		solves++;
 	}
-	bool lo_ok = can_lo && good(&c->fd_lo), hi_ok = can_hi && good(&c->fd_hi);
-	if (!good(&c->nominal))
+	/* Differences across the feasibility boundary mix two regimes, so a
+	 * feasible nominal takes feasible neighbours only. */
+	bool (*fit)(const struct sens_point *) = good(&c->nominal) ? good : usable;
+	bool lo_ok = can_lo && fit(&c->fd_lo), hi_ok = can_hi && fit(&c->fd_hi);
+	if (!usable(&c->nominal))
 		c->fd_kind = 2;
 	else if (lo_ok && hi_ok)
 		c->fd_kind = 0;

@@ -102,8 +102,9 @@ struct sens_curve {
 	struct sens_point pt[SENS_MAX_POINTS]; /* ascending x */
 
 	/* Finite differences at x0 from two extra solves x0 ± h (h = the grid
-	 * step, clamped to the sweep range; one-sided when a side is outside
-	 * the range or not good). */
+	 * step; one-sided when a side is outside the allowed range or not good).
+	 * An infeasible but converged nominal still gets derivatives, from
+	 * converged neighbours; a nominal that did not converge gets none. */
 	double h;                /* step used, x units */
 	int fd_kind;             /* 0 central, +1 forward, -1 backward, 2 none */
 	bool has_fd_lo, has_fd_hi;      /* x0 - h, x0 + h inside the bounds */

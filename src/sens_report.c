@@ -71,7 +71,7 @@ sens_report_row(const struct sens_curve *c, struct sens_row *row)
 	}
 	char a[64] = "", b[64] = "";
 	if (c->nominal.status != SENS_OK) {
-		snprintf(row->cross, sizeof row->cross, "nominal point %s (%s)",
+		snprintf(row->cross, sizeof row->cross, "nominal design %s (%s)",
 		    sens_status_name(c->nominal.status), c->nominal.reason);
 		return;
 	}
@@ -104,6 +104,38 @@ sens_report_text(FILE *out, const struct sens_result *s)
 		sens_report_row(&s->c[i], &row);
 		fprintf(out, "%-44s %-14s %-28s %-30s %s\n", row.param, row.at, row.mtow,
 		    row.hover, row.cross);
+	}
+	return ferror(out) ? -1 : 0;
+}
+
+/* A number for the TSV table, "" when it is not to be printed. */
+static const char *
+tsv_num(char *buf, size_t n, bool have, double v)
+{
+	if (!have || !isfinite(v))
+		buf[0] = '\0';
+	else
+		snprintf(buf, n, "%.6g", fabs(v) < 1e-12 ? 0.0 : v);
+	return buf;
+}
+
+int
+sens_report_tsv(FILE *out, const struct sens_result *s)
+{
+	static const char *const kinds[] = { "central", "forward", "none", "backward" };
+	fprintf(out, "key\tx0\tunit\tdifference\td_mtow_kg\td_hover_min\t"
+	    "d_flight_min\tcross_low\twhy_low\tcross_high\twhy_high\n");
+	for (int i = 0; i < SENS_N_PARAMS; i++) {
+		const struct sens_curve *c = &s->c[i];
+		bool d = c->fd_kind != 2;
+		char b[6][32];
+		fprintf(out, "%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n",
+		    sens_params[i].key, tsv_num(b[0], 32, true, c->x0), sens_params[i].unit,
+		    kinds[c->fd_kind == -1 ? 3 : c->fd_kind],
+		    tsv_num(b[1], 32, d, c->d_mtow), tsv_num(b[2], 32, d, c->d_hover_min),
+		    tsv_num(b[3], 32, d, c->d_flight_min),
+		    tsv_num(b[4], 32, c->cross_lo, c->x_cross_lo), c->cross_lo ? c->why_lo : "",
+		    tsv_num(b[5], 32, c->cross_hi, c->x_cross_hi), c->cross_hi ? c->why_hi : "");
 	}
 	return ferror(out) ? -1 : 0;
 }

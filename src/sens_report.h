@@ -38,6 +38,12 @@ void sens_report_row(const struct sens_curve *c, struct sens_row *row);
  * nominal design and the solve count; returns 0 or -1 on a write error. */
 int sens_report_text(FILE *out, const struct sens_result *s);
 
+/* The same table as tab-separated values for scripts (tests/paper.sh): a
+ * header line, then per parameter: key, x0, unit, difference kind, d_mtow,
+ * d_hover_min, d_flight_min (empty when not taken), x of the low and the
+ * high crossing and their reasons (empty when none).  0 or -1. */
+int sens_report_tsv(FILE *out, const struct sens_result *s);
+
 /* sensitivity.json: every curve point and derivative, finite numbers only,
  * deterministic text (no timing).  Ownership: free() the result; never NULL. */
 char *sens_report_json(const struct sens_result *s, const char *aeroeval_version);
