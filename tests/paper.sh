@@ -39,12 +39,12 @@ while IFS='|' read -r name paper why; do
 	printf '%-24s | %-62s | %s\n' "$name" "$row" "$paper"
 	printf '%-24s   why: %s\n' "" "$why"
 done <<'EOF'
-sar_imaging_quad|5.57 kg 26x9 KV 200 4S 12650 mAh|paper mission inputs unpublished (examples/ are reconstructions); our cell count comes from a 60 A x sqrt(M) current budget, KV is the continuous target (no catalogue pick in solve)
-delivery_quad|12.41 kg 39.5x14 KV 80 6S 36861 mAh|the paper's 6S 36.9 Ah (~800 Wh) pack implies a much longer or heavier mission than the reconstructed example; same current-budget cell rule
-agri_spray_octo|50.33 kg 38x12 KV 50 12S 14568 mAh|our agricultural class picks 18S for a 46 kg craft (current budget); the paper's 12S draws ~40 % more current; frame floor departs from the paper (README)
-fpv_racing_quad|0.31 kg 5x2 KV 2300 4S 1264 mAh|racing role T/W 11 from thrust margin 0.70; our cell rule picks 6S for the burst power; the paper's 4S 1264 mAh looks like a catalogue pick
-lidar_mapping_quad|2.81 kg 21x7 KV 200 3S 7071 mAh|closest match; remaining gap is the reconstructed mission (1200 s forward at the minimum-power speed)
-coaxial_inspection_quad|7.77 kg 15x4 KV 450 6S 26881 mAh|coaxial X8 on a 600 mm wheelbase; the paper's 26.9 Ah pack implies a longer hover than the reconstructed 20 min
+sar_imaging_quad|5.57 kg 26x9 KV 200 4S 12650 mAh|mission inputs are not published (examples/ are reconstructions); our 5S comes from the 60 A x sqrt(M) current budget; KV is the continuous target at our bus voltage, not a catalogue motor
+delivery_quad|12.41 kg 39.5x14 KV 80 6S 36861 mAh|the paper's pack (6S 36.9 Ah, ~820 Wh) holds ~5x our energy: its mission must be longer or heavier than the reconstructed one
+agri_spray_octo|50.33 kg 38x12 KV 50 12S 14568 mAh|ours is infeasible (downwash 11.5 m/s over the 8 m/s cap); 18S from the current budget against the paper's 12S
+fpv_racing_quad|0.31 kg 5x2 KV 2300 4S 1264 mAh|not known: ours picks 6S for the burst power at T/W 11 (thrust margin 0.70); the paper carries 3.6x our capacity
+lidar_mapping_quad|2.81 kg 21x7 KV 200 3S 7071 mAh|closest of the six (MTOW -9 %, same cell count, capacity -6 %); the rest is the reconstructed mission
+coaxial_inspection_quad|7.77 kg 15x4 KV 450 6S 26881 mAh|the paper's pack (6S 26.9 Ah, ~600 Wh) holds ~2x our 276 Wh: mission inputs are not published
 EOF
 
 # ---- §VII-D shedding ----------------------------------------------------------
@@ -71,9 +71,10 @@ printf '%-44s %10s %10s\n' "agri MTOW, dynamic (kg)" "$(get "$agri" mtow_dynamic
 printf '%-44s %10s %10s\n' "agri MTOW, static (kg)" "$(get "$agri" mtow_static_kg)" 48.48
 printf '%-44s %10s %10s\n' "delivery average takeoff mass reduction (%)" "$(get "$dlv" avg_mass_reduction_pct)" 27.1
 echo "why: energy saving = 1 - E_dyn/E_static of the custom runs; structure = frame + arms + other (body, gear)."
-echo "why: our structure saving is small because the minimum structural fraction floors an agricultural"
-echo "     frame by wheelbase and mass, not by payload path (README: where aeroeval departs from the paper)."
-echo "why: delivery reduction = 1 - time-mean mass of the dynamic run / static MTOW (payload dropped at r = 0.5)."
+echo "why: the minimum structural fraction binds in both agricultural runs, so our structure scales with MTOW"
+echo "     (structure saving = MTOW saving); the paper's frame saving exceeds its MTOW saving."
+echo "why: both agricultural designs fail the 8 m/s downwash cap (infeasible, numbers still converged)."
+echo "why: delivery reduction = 1 - time-mean mass of the dynamic run / static MTOW (parcel dropped at r = 0.5)."
 
 # ---- §VII-E sensitivity -------------------------------------------------------
 echo
@@ -111,20 +112,20 @@ END {
 			printf "%-26s   why: %s\n", "", why[k]
 	}
 }' - "$out/sensitivity.tsv" <<'EOF'
-payload	+1.692	-1.703	kg	our mass-growth factor is the whole re-sized aircraft (battery, structure, propulsion) of this mission
-prop_diameter_limit	+0.080	+0.011	in	wheelbase and prop limit move together here; structure grows with the wheelbase
-forward_speed	+0.062	-0.691	m/s	hover time is the endurance of the re-sized design: a faster forward leg buys a bigger battery; paper diverges >25.5 m/s
-climb_speed	+0.128	-0.461	m/s	same: the battery is re-sized for the mission, so its hover endurance grows with any mission demand
-altitude	+0.030	-0.200	1000 m	ambient follows ISA with altitude; cell-count steps make the curve kinked
-ambient_temperature	+0.004	+0.037	10 degC	density effect dominates; the paper's positive time slope is its battery-temperature model
-aux_power	+0.200	-0.385	10 W	re-sized battery carries the aux energy, so hover endurance rises (paper: fixed battery, presumably)
-added_drag_area	+0.062	-2.531	0.1 m2	same re-sizing effect; drag only acts in the forward leg
-cg_shift	0.000	-0.169	5 cm	CG offset sizes the arms and gates trim only; no trim-power penalty in our hover model
-battery_capacity_lock	+0.100	+0.100	1000 mAh	locked at the nominal capacity and cell count; sign agrees
-prop_diameter_lock	-0.150	0.000	in	the nominal prop is the overlap limit, so only the smaller side exists (one-sided)
-delivery_drop_mass	-0.022	0.000	kg	evaluated on a delivery copy when the mission has another role
-delivery_drop_time_ratio	+0.033	0.000	0.1 ratio	evaluated on a delivery copy when the mission has another role
-spray_rate	-0.490	0.000	0.005 kg/s	evaluated on an agriculture copy; the nominal rate is payload / mission time
+payload	+1.692	-1.703	kg	both re-size the whole aircraft; our growth factor is larger for this mission (reason for the size of the gap not known)
+prop_diameter_limit	+0.080	+0.011	in	the limit moves with the wheelbase here, so arms and frame grow with it
+forward_speed	+0.062	-0.691	m/s	our hover time is the endurance of the re-sized design: a faster forward leg buys a bigger battery, so it rises; the paper's divergence is at 25.5 m/s
+climb_speed	+0.128	-0.461	m/s	same re-sizing effect on hover time as forward speed
+altitude	+0.030	-0.200	1000 m	ambient follows ISA, so thinner and colder air together; MTOW slope 4.5x the paper's (reason not known)
+ambient_temperature	+0.004	+0.037	10 degC	MTOW sign agrees (warmer air is thinner); our hover time falls with density, the paper's rises
+aux_power	+0.200	-0.385	10 W	the re-sized battery carries the aux energy, so hover endurance rises; the paper's sign suggests a fixed battery
+added_drag_area	+0.062	-2.531	0.1 m2	same re-sizing effect on hover time; drag acts in the forward leg only
+cg_shift	0.000	-0.169	5 cm	MTOW agrees (0); a CG offset only sizes the arms and gates trim here, with no trim-power cost in hover
+battery_capacity_lock	+0.100	+0.100	1000 mAh	locked at the nominal capacity and cell count; signs agree, our slopes are larger
+prop_diameter_lock	-0.150	0.000	in	the nominal prop is the overlap limit, so only the smaller side exists (one-sided); smaller props cost mass
+delivery_drop_mass	-0.022	0.000	kg	on a delivery copy of the mission; the lighter return leg lets the battery shrink (size of the gap not known)
+delivery_drop_time_ratio	+0.033	0.000	0.1 ratio	on a delivery copy; a later drop carries the parcel longer
+spray_rate	-0.490	0.000	0.005 kg/s	on an agriculture copy; the nominal rate is payload / mission time, and slower spraying breaks the downwash cap
 EOF
 echo
 echo "Outputs: $out/sensitivity.json, $out/sensitivity.pdf, $out/*.result.json"
