@@ -324,13 +324,28 @@ explain(const struct sizing_params *p, const struct res_run *o,
 	else if (p->kv_locked)
 		engine_rationale(r, "%dS chosen so that the locked %.0f KV motor reaches "
 		    "full-throttle rpm.", o->cell_count, p->kv);
-	else
-		engine_rationale(r, "%dS %s chosen: the smallest series count that keeps "
-		    "the full-throttle current (%.0f A) within the harness budget of "
-		    "%.0f A for a %.1f kg aircraft.", o->cell_count, o->chemistry,
-		    o->peak_current_a, SIZING_CURRENT_BUDGET_A * sqrt(o->mass.total_kg),
-		    o->mass.total_kg);
-	if (!s->locks.is_battery_locked)
+	else {
+		double budget = SIZING_CURRENT_BUDGET_A * sqrt(o->mass.total_kg);
+		if (o->peak_current_a <= budget * 1.0001)
+			engine_rationale(r, "%dS %s chosen: the smallest series count that "
+			    "keeps the full-throttle current (%.0f A) within the harness "
+			    "budget of %.0f A for a %.1f kg aircraft.", o->cell_count,
+			    o->chemistry, o->peak_current_a, budget, o->mass.total_kg);
+		else
+			engine_rationale(r, "%dS %s: the %s class allows at most %dS, so "
+			    "the full-throttle current (%.0f A) stays above the %.0f A "
+			    "harness budget; wiring and ESCs are sized for it.",
+			    o->cell_count, o->chemistry,
+			    spec_enum_airframe[p->airframe_class], p->cells_hi,
+			    o->peak_current_a, budget);
+	}
+	if (!s->locks.is_battery_locked && o->battery_power_binds)
+		engine_rationale(r, "Battery capacity %.0f mAh (%.0f Wh) is set by "
+		    "power, not energy: %s cells must deliver the %.0f W full-throttle "
+		    "burst and every sustained phase, which needs more cells than the "
+		    "mission's energy.", o->capacity_mah, o->energy_wh, o->chemistry,
+		    o->peak_power_w);
+	else if (!s->locks.is_battery_locked)
 		engine_rationale(r, "Battery capacity %.0f mAh (%.0f Wh): 1.2 × the "
 		    "charge the discharge simulation drew over the mission, under-relaxed "
 		    "to a fixed point.", o->capacity_mah, o->energy_wh);
@@ -361,15 +376,16 @@ explain(const struct sizing_params *p, const struct res_run *o,
 		engine_rationale(r, "The mass loop converged in %d iterations; the "
 		    "mass-growth Lipschitz constant is %.2f (< 1: a contraction).",
 		    o->iterations, o->lipschitz);
-	/* What binds: the tightest passing check. */
+	/* What binds: the tightest passing check that is not at its limit by
+	 * construction (arm stress, propeller diameter, mission energy). */
 	int best = -1;
 	for (int i = 0; i < o->n_checks; i++)
-		if (o->checks[i].pass && o->checks[i].limit != 0.0
+		if (o->checks[i].pass && !o->checks[i].sized && o->checks[i].limit != 0.0
 		    && (best < 0 || o->checks[i].margin < o->checks[best].margin))
 			best = i;
 	if (best >= 0)
-		engine_rationale(r, "Tightest constraint: %s (%.3g %s against a limit "
-		    "of %.3g, margin %.0f %%).", o->checks[best].name,
+		engine_rationale(r, "Tightest remaining constraint: %s (%.3g %s "
+		    "against a limit of %.3g, margin %.0f %%).", o->checks[best].name,
 		    o->checks[best].value, o->checks[best].unit, o->checks[best].limit,
 		    100.0 * o->checks[best].margin);
 }

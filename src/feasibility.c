@@ -92,6 +92,33 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 		    "(d_y = %.3f m): the aircraft cannot be trimmed.", p->cg_shift_m, d_y);
 		ok = false;
 	}
+	/* A locked battery that cannot hover even its own mass plus the
+	 * payload for the mission with ideal rotors (FoM = 1, the largest
+	 * propellers the wheelbase admits) can never close: say so now. */
+	if (p->capacity_locked && !p->allow_relax && arms >= 2 && limit > 0.0) {
+		double v_nom = (double)p->cells_fixed * p->chem->v_nom;
+		double e_avail_wh = p->capacity_locked_ah * v_nom;
+		double m_bat = e_avail_wh / p->e_spec_wh_kg;
+		double m_min = p->payload_kg + m_bat;
+		double d = p->prop_locked ? p->prop_diameter_m : limit;
+		double area = 0.25 * M_PI * d * d * (double)arms;
+		double w = m_min * G0_M_S2;
+		double p_ideal_w = w * sqrt(w / (2.0 * p->air.rho_kg_m3 * area));
+		double e_min_wh = p_ideal_w * mission_time_s(p) / 3600.0;
+		if (e_min_wh > e_avail_wh) {
+			snprintf(f1, sizeof f1, "Increase locks.locked_capacity_mah above %.0f mAh",
+			    1000.0 * e_min_wh / v_nom);
+			snprintf(f2, sizeof f2, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
+			snprintf(f3, sizeof f3, "Shorten the mission");
+			fx[2] = f3;
+			feasibility_violation(r, run, "feasibility", "LOCKED_BATTERY_ENERGY", fx,
+			    "The locked %.0f Wh battery cannot fly this mission even with "
+			    "ideal rotors: hovering its own %.2f kg and the payload for "
+			    "%.0f s needs at least %.0f Wh.", e_avail_wh, m_bat,
+			    mission_time_s(p), e_min_wh);
+			ok = false;
+		}
+	}
 	if (!(mission_time_s(p) > 0.0)) {
 		snprintf(f1, sizeof f1, "Give t_hover_s, t_climb_s or t_forward_s");
 		fx[1] = NULL;
@@ -141,6 +168,8 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	    last_step, SIZING_TOL_KG, true);
 	if (c && st == SIZING_CONVERGED)
 		c->pass = true;
+	if (c)
+		c->sized = true;
 	if (st == SIZING_RUNAWAY) {
 		snprintf(f1, sizeof f1, "Reduce payload_kg or the mission times");
 		snprintf(f2, sizeof f2, "Choose a higher specific-energy battery_chemistry");
@@ -167,6 +196,8 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 		need += o->approved_time_s[i];
 	flown = o->n_trace > 0 ? o->trace[o->n_trace - 1].t_s : 0.0;
 	c = add_check(o, "Mission flown on the battery", "s", flown, need * 0.999, false);
+	if (c)
+		c->sized = !p->capacity_locked;
 	if (c && !c->pass && st != SIZING_RUNAWAY) {
 		if (p->capacity_locked) {
 			snprintf(f1, sizeof f1, "Increase locks.locked_capacity_mah above %.0f mAh",
@@ -186,6 +217,8 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	/* Propulsion geometry. */
 	c = add_check(o, "Propeller diameter (overlap limit)", "in",
 	    o->opt.prop_diameter_in, o->overlap_limit_in + 1e-9, true);
+	if (c)
+		c->sized = !p->prop_locked;
 	c = add_check(o, "Tip Mach number at full throttle", "", o->tip_mach_peak,
 	    AERO_TIP_MACH_MAX, true);
 	if (c && !c->pass) {
@@ -224,6 +257,8 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	    / (o->packaging_factor > 0.0 ? o->packaging_factor : 1.0);
 	c = add_check(o, "Full-throttle battery power (burst capability)", "W",
 	    o->peak_power_w, p_max, true);
+	if (c)
+		c->sized = o->battery_power_binds;
 	if (c && !c->pass) {
 		snprintf(f1, sizeof f1, "Unlock or enlarge the battery");
 		snprintf(f2, sizeof f2, "Choose a higher-power chemistry such as LiPo or LiHV");
@@ -236,8 +271,10 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	}
 
 	/* Structure. */
-	add_check(o, "Arm root bending stress", "MPa", o->arm_stress_mpa,
+	c = add_check(o, "Arm root bending stress", "MPa", o->arm_stress_mpa,
 	    o->arm_stress_allow_mpa, true);
+	if (c)
+		c->sized = true;
 	c = add_check(o, "Arm mode clear of the blade-pass band", "",
 	    o->resonance_margin, 0.0, false);
 	if (c && !c->pass) {

@@ -82,6 +82,7 @@ struct res_check {
 	bool upper;          /* true: value <= limit passes; false: value >= limit */
 	double margin;       /* (limit - value)/limit or (value - limit)/limit */
 	bool pass;
+	bool sized;          /* the design is sized to this limit by construction */
 };
 
 struct res_violation {
@@ -124,6 +125,7 @@ struct res_run {
 	double capacity_mah;      /* total at the terminals */
 	double energy_wh;         /* nominal stored energy */
 	double packaging_factor;  /* η_pkg */
+	bool battery_power_binds; /* sized by power (sustained or burst), not energy */
 	double nominal_voltage_v;
 
 	/* mission */

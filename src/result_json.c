@@ -556,6 +556,7 @@ put_checks(struct jw *w, const struct res_run *run)
 		jw_str(w, "kind", c->upper ? "max" : "min", 3);
 		jw_num(w, "margin", c->margin);
 		jw_bool(w, "pass", c->pass);
+		jw_bool(w, "sized_to_limit", c->sized);
 		jw_close(w);
 	}
 	jw_close(w);
@@ -588,6 +589,7 @@ put_run(struct jw *w, const char *key, const struct res_run *run)
 	jw_num(w, "battery_capacity_mah", run->capacity_mah);
 	jw_num(w, "energy_wh", run->energy_wh);
 	jw_num(w, "packaging_factor", run->packaging_factor);
+	jw_bool(w, "battery_power_binds", run->battery_power_binds);
 	jw_num(w, "nominal_voltage_v", run->nominal_voltage_v);
 
 	put_phases(w, run);

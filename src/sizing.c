@@ -291,10 +291,11 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	}
 
 	/* Motors and propellers (per unit), needed for the arm tip mass. */
+	double p_motor_w = e->peak.shaft_w / (double)nr / p->eta_drive;
 	double motor_total = p->parts.active && p->parts.motor_kg_each > 0.0
 	    ? p->parts.motor_kg_each * (double)nr
-	    : fmax(SIZING_MOTOR_MIN_KG,
-	        (double)nr * e->t_peak_n * SIZING_MOTOR_KG_PER_N * p->c_motor);
+	    : fmax(SIZING_MOTOR_MIN_KG, (double)nr * p->c_motor * SIZING_MOTOR_K
+	        * pow(p_motor_w, SIZING_MOTOR_EXP));
 	double prop_each = p->parts.active && p->parts.prop_kg_each > 0.0
 	    ? p->parts.prop_kg_each
 	    : p->prop_kg_per_m22 * pow(d, SIZING_PROP_EXPONENT)
@@ -415,16 +416,25 @@ seed_cells(const struct sizing_params *p, int lo, int hi, double mass_kg,
 	return ls->cells;
 }
 
+/* Discharge steps of the final record. */
+static int
+final_steps(const struct sizing_params *p)
+{
+	return p->trace_steps > 0 ? p->trace_steps : RES_MAX_TRACE - 8;
+}
+
 /* The fixed-point iteration with the series-cell count held at `cells`. */
 static enum sizing_status
 iterate_cells(const struct sizing_params *p, int cells, double gamma_time,
-              struct res_run *out, struct eval *last, double *m_star,
-              double *c_star, struct loop_state *ls_out)
+              double m0, double c0, struct res_run *out, struct eval *last,
+              double *m_star, double *c_star, struct loop_state *ls_out)
 {
 	struct loop_state ls = { cells, 0.02 * p->wheelbase_m, gamma_time };
-	double m = sizing_seed_kg(p->payload_kg, p->air.rho_kg_m3);
+	/* Start from the seed of eq. (altcorrect), or warm from a previous
+	 * fixed point when the caller has one (m0, c0 > 0). */
+	double m = m0 > 0.0 ? m0 : sizing_seed_kg(p->payload_kg, p->air.rho_kg_m3);
 	double c = p->capacity_locked ? p->capacity_locked_ah
-	    : seed_capacity_ah(p, &ls, m);
+	    : c0 > 0.0 ? c0 : seed_capacity_ah(p, &ls, m);
 	double c_failed = 0.0;
 	int max_iter = p->max_iter > 0 ? p->max_iter : SIZING_MAX_ITER;
 	enum sizing_status st = SIZING_MAX_ITERATIONS;
@@ -460,6 +470,15 @@ iterate_cells(const struct sizing_params *p, int cells, double gamma_time,
 		    || fabs(c - c_used) <= 1e-4 * c_used;
 		if (fabs(f - m) < SIZING_TOL_KG && cap_steady) {
 			m = f;
+			/* Confirm with the discharge resolution of the final
+			 * record, so that a mission the coarse loop flew is not
+			 * lost to discretisation in the dossier's trace. */
+			if (flown) {
+				struct eval fine;
+				evaluate(p, &ls, m, last->capacity_ah, final_steps(p),
+				    NULL, &fine);
+				flown = fine.dis.end == DIS_COMPLETED;
+			}
 			st = flown ? SIZING_CONVERGED : SIZING_DISCHARGE_FAIL;
 			break;
 		}
@@ -494,28 +513,32 @@ iterate(const struct sizing_params *p, int cells_lo, int cells_hi,
 		int cells = p->cells_fixed > 0 ? p->cells_fixed : 1;
 		if (p->parts.active && p->parts.cells > 0)
 			cells = p->parts.cells;
-		return iterate_cells(p, cells, gamma_time, out, last, m_star,
-		    c_star, ls_out);
+		return iterate_cells(p, cells, gamma_time, 0.0, 0.0, out, last,
+		    m_star, c_star, ls_out);
 	}
 	struct loop_state seed = { cells_lo, 0.02 * p->wheelbase_m, gamma_time };
 	int cells = seed_cells(p, cells_lo, cells_hi,
 	    sizing_seed_kg(p->payload_kg, p->air.rho_kg_m3), &seed);
 	bool tried[32] = { false };
 	enum sizing_status st = SIZING_MAX_ITERATIONS;
+	double m0 = 0.0, c0 = 0.0;
 	for (int pass = 0; pass < CELL_PASSES; pass++) {
 		tried[cells] = true;
-		st = iterate_cells(p, cells, gamma_time, out, last, m_star, c_star,
-		    ls_out);
+		st = iterate_cells(p, cells, gamma_time, m0, c0, out, last, m_star,
+		    c_star, ls_out);
 		if (st == SIZING_RUNAWAY)
 			break;
 		int want = sizing_auto_cells(last->peak.electrical_w, *m_star,
 		    p->chem->v_nom, cells_lo, cells_hi);
 		if (want == cells)
 			break;
+		/* Warm start: same mass, same stored energy at the new voltage. */
+		m0 = *m_star;
+		c0 = *c_star * (double)cells / (double)want;
 		if (tried[want]) {
 			if (want > cells)
-				st = iterate_cells(p, want, gamma_time, out, last,
-				    m_star, c_star, ls_out);
+				st = iterate_cells(p, want, gamma_time, m0, c0, out,
+				    last, m_star, c_star, ls_out);
 			break;
 		}
 		cells = want;
@@ -558,6 +581,7 @@ record_run(const struct sizing_params *p, const struct eval *e,
 	out->nominal_voltage_v = (double)e->cells * p->chem->v_nom;
 	out->energy_wh = e->capacity_ah * out->nominal_voltage_v;
 	out->packaging_factor = e->eta_pkg;
+	out->battery_power_binds = e->power_binds;
 	out->time_scale = ls->gamma_time;
 	out->flight_time_s = 0.0;
 	for (int i = 0; i < PHASE_MAX; i++) {
@@ -586,10 +610,12 @@ record_run(const struct sizing_params *p, const struct eval *e,
 	out->thrust_to_weight = 1.0 / (e->throttle * e->throttle);
 	out->hover_throttle = e->throttle;
 	out->forward_pitch_deg = e->ph[PHASE_FORWARD].pitch_deg;
+	/* A coaxial pair pushes its whole thrust through one disk: loading and
+	 * downwash count distinct disks (arms), not rotors. */
 	double area = 0.25 * M_PI * e->model.rotor.diameter_m * e->model.rotor.diameter_m;
-	out->disk_loading_n_m2 = e->mass_kg * G0_M_S2 / ((double)p->n_rotors * area);
+	out->disk_loading_n_m2 = e->mass_kg * G0_M_S2 / ((double)n_arms(p) * area);
 	out->downwash_ms = aero_downwash_ms(e->mass_kg, p->air.rho_kg_m3,
-	    p->n_rotors, area);
+	    n_arms(p), area);
 	out->fom_installed = e->fom_inst;
 	out->interference = e->k_int;
 	out->reynolds_tip = e->ph[PHASE_HOVER].rotor.reynolds_tip;
@@ -754,7 +780,9 @@ sizing_run(const struct sizing_params *p, struct res_run *out)
 			    &m_star, &c_star, &ls);
 	}
 
-	out->converged = st == SIZING_CONVERGED;
+	/* The mass loop converged even when the mission then cannot be flown
+	 * (a locked battery too small): that is a discharge failure. */
+	out->converged = st == SIZING_CONVERGED || st == SIZING_DISCHARGE_FAIL;
 	if (st == SIZING_RUNAWAY) {
 		/* Nothing physical to record beyond the history. */
 		record_run(p, &last, &ls, out);
@@ -765,8 +793,7 @@ sizing_run(const struct sizing_params *p, struct res_run *out)
 	}
 	/* The final evaluation at the fixed point keeps the full trace. */
 	struct eval fin;
-	int steps = p->trace_steps > 0 ? p->trace_steps : RES_MAX_TRACE - 8;
-	evaluate(p, &ls, m_star, c_star, steps, out, &fin);
+	evaluate(p, &ls, m_star, c_star, final_steps(p), out, &fin);
 	record_run(p, &fin, &ls, out);
 	out->lipschitz = lipschitz(p, &ls, m_star, c_star);
 	struct discharge_pack pk;
