@@ -41,10 +41,10 @@ while IFS='|' read -r name paper why; do
 done <<'EOF'
 sar_imaging_quad|5.57 kg 26x9 KV 200 4S 12650 mAh|mission inputs are not published (examples/ are reconstructions); our 5S comes from the 60 A x sqrt(M) current budget; KV is the continuous target at our bus voltage, not a catalogue motor
 delivery_quad|12.41 kg 39.5x14 KV 80 6S 36861 mAh|the paper's pack (6S 36.9 Ah, ~820 Wh) holds ~5x our energy: its mission must be longer or heavier than the reconstructed one
-agri_spray_octo|50.33 kg 38x12 KV 50 12S 14568 mAh|ours is infeasible (downwash 11.5 m/s over the 8 m/s cap); 18S from the current budget against the paper's 12S
-fpv_racing_quad|0.31 kg 5x2 KV 2300 4S 1264 mAh|not known: ours picks 6S for the burst power at T/W 11 (thrust margin 0.70); the paper carries 3.6x our capacity
-lidar_mapping_quad|2.81 kg 21x7 KV 200 3S 7071 mAh|closest of the six (MTOW -9 %, same cell count, capacity -6 %); the rest is the reconstructed mission
-coaxial_inspection_quad|7.77 kg 15x4 KV 450 6S 26881 mAh|the paper's pack (6S 26.9 Ah, ~600 Wh) holds ~2x our 276 Wh: mission inputs are not published
+agri_spray_octo|50.33 kg 38x12 KV 50 12S 14568 mAh|ours is infeasible (downwash over the 8 m/s cap); 18S from the current budget against the paper's 12S, hence the lower KV
+fpv_racing_quad|0.31 kg 5x2 KV 2300 4S 1264 mAh|MTOW close; ours picks 6S for the burst power at T/W 11 (thrust margin 0.70), so KV and capacity fall against the paper's 4S
+lidar_mapping_quad|2.81 kg 21x7 KV 200 3S 7071 mAh|same cell count and prop, MTOW and capacity about 10 % low; the rest is the reconstructed mission
+coaxial_inspection_quad|7.77 kg 15x4 KV 450 6S 26881 mAh|the paper's pack (6S 26.9 Ah, ~600 Wh) holds several times our energy: mission inputs are not published
 EOF
 
 # ---- §VII-D shedding ----------------------------------------------------------
@@ -113,10 +113,10 @@ END {
 	}
 }' - "$out/sensitivity.tsv" <<'EOF'
 payload	+1.692	-1.703	kg	both re-size the whole aircraft; our growth factor is larger for this mission (reason for the size of the gap not known)
-prop_diameter_limit	+0.080	+0.011	in	the limit moves with the wheelbase here, so arms and frame grow with it
+prop_diameter_limit	+0.080	+0.011	in	the limit moves with the wheelbase: a larger prop saves power while arms and frame grow, and the two nearly cancel here
 forward_speed	+0.062	-0.691	m/s	our hover time is the endurance of the re-sized design: a faster forward leg buys a bigger battery, so it rises; the paper's divergence is at 25.5 m/s
 climb_speed	+0.128	-0.461	m/s	same re-sizing effect on hover time as forward speed
-altitude	+0.030	-0.200	1000 m	ambient follows ISA, so thinner and colder air together; MTOW slope 4.5x the paper's (reason not known)
+altitude	+0.030	-0.200	1000 m	ambient follows ISA (thinner and colder air together); time agrees, our MTOW slope is several times the paper's (reason not known)
 ambient_temperature	+0.004	+0.037	10 degC	MTOW sign agrees (warmer air is thinner); our hover time falls with density, the paper's rises
 aux_power	+0.200	-0.385	10 W	the re-sized battery carries the aux energy, so hover endurance rises; the paper's sign suggests a fixed battery
 added_drag_area	+0.062	-2.531	0.1 m2	same re-sizing effect on hover time; drag acts in the forward leg only
