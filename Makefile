@@ -52,7 +52,7 @@ BIN      := $(BUILD)/aeroeval
 TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps test unit example install clean check-layers bench
+.PHONY: all deps test unit example paper install clean check-layers bench
 
 all: $(BIN) aeroeval
 
@@ -105,6 +105,11 @@ unit: $(TEST_BINS)
 example: deps
 	$(MAKE) all
 	./$(BIN) build -o out examples/ || [ $$? -eq 1 ]
+
+# ---- the paper's studies ----------------------------------------------------
+# Case studies, shedding and the 14-parameter sensitivity, ours beside the paper's.
+paper: all
+	sh tests/paper.sh $(BUILD)
 
 # ---- housekeeping -----------------------------------------------------------
 install: all

@@ -4,6 +4,7 @@
 
 #include "cli_build.h"
 #include "cli_front.h"
+#include "cli_sens.h"
 #include "cli_solve.h"
 #include "cli_validate.h"
 
@@ -26,6 +27,8 @@ main(int argc, char **argv)
 		return cli_validate(argc - 1, argv + 1);
 	if (argc >= 2 && strcmp(argv[1], "calibrate") == 0)
 		return cli_calibrate(argc - 1, argv + 1);
+	if (argc >= 2 && strcmp(argv[1], "sensitivity") == 0)
+		return cli_sensitivity(argc - 1, argv + 1);
 	fprintf(stderr, "usage: aeroeval build|solve|check|schema|validate|calibrate|sensitivity ...\n");
 	return 2;
 }
