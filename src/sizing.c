@@ -552,6 +552,8 @@ iterate_cells(const struct sizing_params *p, int cells, bool auto_cells,
 			    && fabs(r2 - r1) < AITKEN_R_AGREE * r2) {
 				double gain = r2 / (1.0 - r2);
 				f += gain * dm;
+				/* The history holds the iterates the loop used. */
+				out->history_kg[out->n_history - 1] = f;
 				if (!p->capacity_locked && !p->parts.active)
 					c += gain * (c - c_prev);
 				dm = 0.0;

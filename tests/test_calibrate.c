@@ -69,7 +69,7 @@ synthetic(struct mission_spec *s)
 	mission(&s[3], AF_CONSUMER_FOLDING, 6, 0.55, 0.8, 20, ROLE_IMAGING);
 	mission(&s[4], AF_ENTERPRISE_RUGGED, 4, 0.90, 2.0, 15, ROLE_INSPECTION);
 	mission(&s[5], AF_ENTERPRISE_RUGGED, 6, 1.00, 5.0, 20, ROLE_MAPPING);
-	mission(&s[6], AF_ENTERPRISE_RUGGED, 8, 1.20, 10.0, 15, ROLE_IMAGING);
+	mission(&s[6], AF_ENTERPRISE_RUGGED, 8, 1.20, 5.0, 15, ROLE_IMAGING);
 	mission(&s[7], AF_MICRO_AIO, 4, 0.25, 0.15, 8, ROLE_IMAGING);
 }
 
