@@ -507,7 +507,7 @@ build_tick(void *ctx, const struct batch_state *s)
 		return;
 	const char *path = b->missions.v[s->oldest];
 	const char *base = strrchr(path, '/');
-	fprintf(stderr, "\r[%zu/%zu] compiling %s  %.1f s\033[K", s->n_done + 1,
+	fprintf(stderr, "\r[%zu/%zu] compiling %.48s  %.1f s\033[K", s->n_done + 1,
 	    s->n_jobs, base ? base + 1 : path, s->oldest_s);
 	fflush(stderr);
 	b->line_shown = 1;
