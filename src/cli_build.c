@@ -416,7 +416,7 @@ build_run(void *ctx, size_t i, FILE *err)
 {
 	struct build *b = ctx;
 	const char *path = b->missions.v[i];
-	char stamp[4800], msg[512];
+	char stamp[4800] = "", msg[512];
 	if (b->names[i][0] != '\0') {
 		test_hook(b->names[i]);
 		/* Outputs are about to change: until the stamp is rewritten the

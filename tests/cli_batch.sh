@@ -142,6 +142,17 @@ for s in "$T"/k/*/.aeroeval-stamp; do
 done
 [ $ok -eq 1 ]; check $? "interrupted_build_stamps_only_complete_folders"
 
+# On a terminal: one progress line redrawn with \r, no line per good mission.
+if command -v script >/dev/null 2>&1; then
+	script -qec "$AE build -j 2 -o $T/p examples/" /dev/null >"$T/p.tty" 2>&1
+	grep -q "$(printf '\r')\[[0-9]*/$n_ex\] compiling " "$T/p.tty" \
+		&& ! grep -q "sar_imaging_quad.json: compiled" "$T/p.tty" \
+		&& grep -q "build: $n_ex compiled" "$T/p.tty"
+	check $? "terminal_shows_one_progress_line"
+else
+	echo "ok terminal_shows_one_progress_line # skip: no script(1)"
+fi
+
 # ---- usage, help, version, man page ------------------------------------------------
 "$AE" build -j 0 examples/ 2>/dev/null; [ $? -eq 2 ]; check $? "bad_jobs_value_exits_2"
 "$AE" build --frobnicate examples/ 2>/dev/null; [ $? -eq 2 ]; check $? "unknown_option_exits_2"
