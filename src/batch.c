@@ -123,6 +123,8 @@ launch(struct pool *p, size_t job)
 	p->n_running++;
 }
 
+static void read_signals(struct pool *p);
+
 /* The worker's pipe is at end-of-file: reap it and report. */
 static void
 reap(struct pool *p, struct worker *w)
@@ -138,12 +140,13 @@ reap(struct pool *p, struct worker *w)
 		code = WEXITSTATUS(st);
 	} else {
 		code = WIFSIGNALED(st) ? WTERMSIG(st) : 0;
+		/* A ^C on a terminal reaches the workers too (same process
+		 * group), and the parent's copy may still be queued: read it
+		 * first, so such a death counts as a stop, not a crash. */
+		read_signals(p);
 		if (w->timeout_killed)
 			end = BATCH_TIMED_OUT;
-		/* A ^C on a terminal reaches the workers too (same process
-		 * group), possibly before the parent has read its own copy:
-		 * death by SIGINT/SIGTERM is a stop, not a crash. */
-		else if (w->stop_sent || code == SIGINT || code == SIGTERM)
+		else if (w->stop_sent || p->stopping != 0)
 			end = BATCH_STOPPED;
 		else
 			end = BATCH_SIGNALLED;
