@@ -236,8 +236,10 @@ base_fingerprint(struct build *b, const char *tpl_path)
 	hex_final(&c, b->base_fp);
 }
 
-/* The mission's fingerprint: the base, its bytes and its mtime (the
- * dossier date falls back to it).  Returns -1 when it cannot be read. */
+/* The mission's fingerprint: the base, its bytes and, unless
+ * SOURCE_DATE_EPOCH is set, its mtime (the dossier date falls back to it;
+ * with SOURCE_DATE_EPOCH set it never does, so a copy or a checkout that
+ * changes only the mtime stays up to date).  Returns -1 when unreadable. */
 static int
 mission_fingerprint(const struct build *b, size_t i, char out[SHA256_HEX_LEN])
 {
@@ -251,8 +253,12 @@ mission_fingerprint(const struct build *b, size_t i, char out[SHA256_HEX_LEN])
 		return -1;
 	struct sha256_ctx c;
 	char mtime[64];
-	snprintf(mtime, sizeof mtime, "%lld.%09ld", (long long)st.st_mtim.tv_sec,
-	    (long)st.st_mtim.tv_nsec);
+	const char *epoch = getenv("SOURCE_DATE_EPOCH");
+	if (epoch != NULL && *epoch != '\0')
+		snprintf(mtime, sizeof mtime, "-");
+	else
+		snprintf(mtime, sizeof mtime, "%lld.%09ld", (long long)st.st_mtim.tv_sec,
+		    (long)st.st_mtim.tv_nsec);
 	sha256_init(&c);
 	hash_str(&c, b->base_fp);
 	hash_field(&c, buf, n);

@@ -62,6 +62,15 @@ sed 's/"t_hover_s": [0-9]*/"t_hover_s": 95/' examples/lidar_mapping_quad.json >"
 summary "$T/m.err" | grep -q "^build: 1 compiled (0 infeasible), $((n_ex - 1)) up to date" \
 	&& grep -q "lidar_mapping_quad.json: compiled" "$T/m.err"
 check $? "changed_mission_alone_rebuilds"
+# The mtime can set the dossier date, unless SOURCE_DATE_EPOCH does.
+touch -d 2001-01-01 "$T/ex/lidar_mapping_quad.json"
+"$AE" build -o "$T/m" "$T/ex" 2>"$T/m.err"
+summary "$T/m.err" | grep -q "^build: 1 compiled"; check $? "touched_mission_rebuilds"
+SOURCE_DATE_EPOCH=1700000000 "$AE" build -q -o "$T/sde" "$T/ex" 2>/dev/null
+touch -d 2002-02-02 "$T/ex/lidar_mapping_quad.json"
+SOURCE_DATE_EPOCH=1700000000 "$AE" build -o "$T/sde" "$T/ex" 2>"$T/sde.err"
+summary "$T/sde.err" | grep -q "^build: 0 compiled"
+check $? "touched_mission_stays_up_to_date_with_source_date_epoch"
 
 # rebuilds_after_change NAME OPTION ARG FILE: build twice with OPTION ARG (the
 # second run is up to date), change FILE, and expect every mission rebuilt.
