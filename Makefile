@@ -112,10 +112,15 @@ paper: all
 	sh tests/paper.sh $(BUILD)
 
 # ---- housekeeping -----------------------------------------------------------
+# The man page's header carries the version; it is set from VERSION here.
 install: all
-	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/aeroeval
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/aeroeval \
+	  $(DESTDIR)$(PREFIX)/share/man/man1
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/aeroeval
 	cp -R data templates $(DESTDIR)$(PREFIX)/share/aeroeval/
+	sed '/^\.TH/s/"aeroeval [^"]*"/"aeroeval $(VERSION)"/' src/aeroeval.1 \
+	  >$(DESTDIR)$(PREFIX)/share/man/man1/aeroeval.1
+	chmod 644 $(DESTDIR)$(PREFIX)/share/man/man1/aeroeval.1
 
 # Physics modules must not see JSON, PDF or cairo: they are pure functions.
 PHYS_HDRS := src/atmo.h src/aero.h src/batt.h src/therm.h src/structure.h \

@@ -4,31 +4,61 @@
 
 #include "cli_build.h"
 #include "cli_front.h"
+#include "cli_help.h"
 #include "cli_sens.h"
 #include "cli_solve.h"
 #include "cli_validate.h"
 
+/* The commands this program runs; cli_help.c documents them. */
+struct command {
+	const char *name;
+	int (*run)(int argc, char **argv);  /* argv[0] is the command name */
+};
+
+static const struct command commands[] = {
+	{ "build", cli_build },
+	{ "solve", cli_solve },
+	{ "check", cli_check },
+	{ "schema", cli_schema },
+	{ "validate", cli_validate },
+	{ "calibrate", cli_calibrate },
+	{ "sensitivity", cli_sensitivity },
+};
+
+static int
+is_help(const char *a)
+{
+	return strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0;
+}
+
 int
 main(int argc, char **argv)
 {
-	if (argc >= 2 && strcmp(argv[1], "--version") == 0) {
-		printf("aeroeval %s\n", AEROEVAL_VERSION);
+	if (argc < 2) {
+		cli_help_overview(stderr);
+		return 2;
+	}
+	const char *cmd = argv[1];
+	if (strcmp(cmd, "--version") == 0) {
+		cli_help_version(stdout);
 		return 0;
 	}
-	if (argc >= 2 && strcmp(argv[1], "check") == 0)
-		return cli_check(argc - 1, argv + 1);
-	if (argc >= 2 && strcmp(argv[1], "schema") == 0)
-		return cli_schema(argc - 1, argv + 1);
-	if (argc >= 2 && strcmp(argv[1], "build") == 0)
-		return cli_build(argc - 1, argv + 1);
-	if (argc >= 2 && strcmp(argv[1], "solve") == 0)
-		return cli_solve(argc - 1, argv + 1);
-	if (argc >= 2 && strcmp(argv[1], "validate") == 0)
-		return cli_validate(argc - 1, argv + 1);
-	if (argc >= 2 && strcmp(argv[1], "calibrate") == 0)
-		return cli_calibrate(argc - 1, argv + 1);
-	if (argc >= 2 && strcmp(argv[1], "sensitivity") == 0)
-		return cli_sensitivity(argc - 1, argv + 1);
-	fprintf(stderr, "usage: aeroeval build|solve|check|schema|validate|calibrate|sensitivity ...\n");
+	if (is_help(cmd) || (strcmp(cmd, "help") == 0 && argc == 2)) {
+		cli_help_overview(stdout);
+		return 0;
+	}
+	if (strcmp(cmd, "help") == 0) {
+		if (cli_help_command(argv[2], stdout) == 0)
+			return 0;
+		fprintf(stderr, "aeroeval: no command \"%s\"; 'aeroeval --help' lists them\n",
+		        argv[2]);
+		return 2;
+	}
+	if (argc >= 3 && is_help(argv[2]) && cli_help_command(cmd, stdout) == 0)
+		return 0;
+	for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+		if (strcmp(cmd, commands[i].name) == 0)
+			return commands[i].run(argc - 1, argv + 1);
+	fprintf(stderr, "aeroeval: no command \"%s\"; 'aeroeval --help' lists them\n", cmd);
 	return 2;
 }

@@ -9,6 +9,7 @@
 #include "engine.h"
 #include "fsout.h"
 #include "mission_io.h"
+#include "report.h"
 #include "result_json.h"
 #include "sha256.h"
 #include "xalloc.h"
@@ -95,20 +96,44 @@ pipeline_build(const struct cli_env *env, const struct pipeline_opts *o,
 	int csv_bad = 0;
 	char *json = result_json_render_checked(r, AEROEVAL_VERSION, &jf);
 	char *csv = bom_csv_render_checked(r, &csv_bad);
+	unsigned char *pdf = NULL;
+	size_t n_pdf = 0;
 	if (jf.n_invalid > 0 || csv_bad > 0) {
 		fprintf(err, "%s: internal error: non-finite value at %s\n", path,
 		    jf.n_invalid > 0 ? jf.first_path : "bom.csv");
 		st = PIPE_INTERNAL;
-	} else {
-		snprintf(dir, sizeof dir, "%s/%s", o->out_dir, name);
-		if (fsout_mkdirs(dir, msg, sizeof msg) != 0) {
-			fprintf(err, "%s: error: %s\n", dir, msg);
+		goto written;
+	}
+	if (o->tpl != NULL) {
+		/* The dossier date: report.date, else SOURCE_DATE_EPOCH, else the
+		 * mission file's mtime — never the wall clock. */
+		char date[16];
+		if (fsout_resolve_date(r->mission.report.date, path, date, msg,
+		    sizeof msg) < 0) {
+			fprintf(err, "%s: error: %s\n", path, msg);
+			st = PIPE_REJECTED;
+			goto written;
+		}
+		const char *base = strrchr(path, '/');
+		struct report_input in = { r, o->tpl, name, base ? base + 1 : path,
+			bytes, n_bytes, date, AEROEVAL_VERSION, env->cat };
+		if (report_render(&in, &pdf, &n_pdf, msg, sizeof msg) != 0) {
+			fprintf(err, "%s: internal error: dossier: %s\n", path, msg);
 			st = PIPE_INTERNAL;
-		} else if (put(dir, "bom.csv", csv, strlen(csv), err) != 0
-		    || put(dir, "result.json", json, strlen(json), err) != 0) {
-			st = PIPE_INTERNAL;
+			goto written;
 		}
 	}
+	snprintf(dir, sizeof dir, "%s/%s", o->out_dir, name);
+	if (fsout_mkdirs(dir, msg, sizeof msg) != 0) {
+		fprintf(err, "%s: error: %s\n", dir, msg);
+		st = PIPE_INTERNAL;
+	} else if (put(dir, "bom.csv", csv, strlen(csv), err) != 0
+	    || put(dir, "result.json", json, strlen(json), err) != 0
+	    || (pdf != NULL && put(dir, "dossier.pdf", pdf, n_pdf, err) != 0)) {
+		st = PIPE_INTERNAL;
+	}
+written:
+	free(pdf);
 	free(json);
 	free(csv);
 done:
