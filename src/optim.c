@@ -211,6 +211,8 @@ esc_fits(const struct optim_target *t, int cells, const struct catalog_motor *m,
          const struct catalog_esc *e)
 {
 	double i_need = OPTIM_CURRENT_MARGIN * at_bus(t, t->motor_peak_current_a, cells);
+	if (e->channels > 1 && t->wheelbase_m > OPTIM_STACK_MAX_WHEELBASE_M)
+		return false;
 	if ((e->cells_min > 0 && cells < e->cells_min)
 	    || (e->cells_max > 0 && cells > e->cells_max))
 		return false;
@@ -553,6 +555,7 @@ make_target(const struct sizing_params *p, const struct res_run *o,
 	t->hover_throttle = o->hover_throttle;
 	t->forward_pitch_deg = p->duration_s[PHASE_FORWARD] > 0.0 ? o->forward_pitch_deg : 0.0;
 	t->overlap_limit_in = o->overlap_limit_in;
+	t->wheelbase_m = p->wheelbase_m;
 	t->ct = p->ct;
 	t->rho_kg_m3 = p->air.rho_kg_m3;
 	t->sound_m_s = p->air.sound_m_s;

@@ -57,6 +57,10 @@
 #define OPTIM_W_MASS         10.0   /* Pen_m per unit of motor mass above the scaling law's */
 #define OPTIM_PRUNED         1e9    /* J of a pruned branch */
 #define OPTIM_LOAD_RPM       0.85   /* full-throttle rpm under load / (KV × V_bus) */
+/* Multi-channel (4-in-1) ESC boards sit in the centre stack and run the
+ * phase leads out to the motors: practice limits them to small frames
+ * whose leads stay short. */
+#define OPTIM_STACK_MAX_WHEELBASE_M 0.35
 #define OPTIM_CURRENT_MARGIN 1.1    /* motor and ESC rating over the peak current */
 #define OPTIM_MAX_SERIES     4      /* most catalogue packs in series ... */
 #define OPTIM_MAX_PARALLEL   4      /* ... and in parallel (a locked pack may exceed) */
@@ -99,6 +103,7 @@ struct optim_target {
 	double hover_throttle;       /* θ_role (rpm fraction) */
 	double forward_pitch_deg;    /* θ_cr */
 	double overlap_limit_in;     /* largest propeller the wheelbase admits */
+	double wheelbase_m;          /* W: a 4-in-1 stack board only fits small frames */
 	double ct;                   /* thrust coefficient T = C_t ρ n² D⁴ */
 	double rho_kg_m3;            /* air density of the mission */
 	double sound_m_s;            /* speed of sound at the mission's ambient */

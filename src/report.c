@@ -193,14 +193,15 @@ mass_get(const struct res_mass *m, int i)
 	return *(const double *)(const void *)((const char *)m + mass_items[i].offset);
 }
 
-/* The tightest passing check of a run, or NULL. */
+/* The tightest passing check of a run that is not at its limit by
+ * construction (arm stress, propeller diameter, mission energy), or NULL. */
 static const struct res_check *
 tightest_check(const struct res_run *run)
 {
 	const struct res_check *best = NULL;
 	for (int i = 0; i < run->n_checks; i++) {
 		const struct res_check *c = &run->checks[i];
-		if (c->pass && (best == NULL || c->margin < best->margin))
+		if (c->pass && !c->sized && (best == NULL || c->margin < best->margin))
 			best = c;
 	}
 	return best;

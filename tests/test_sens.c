@@ -240,7 +240,10 @@ sens_run_should_be_clean_on_an_example(void **state)
 	assert_true(r->n_solves > 150);
 	for (int i = 0; i < SENS_N_PARAMS; i++) {
 		const struct sens_curve *c = &r->c[i];
-		assert_int_equal(c->nominal.status, SENS_OK);
+		/* A role copy (spray on an imaging quad) may fail a role check
+		 * such as the downwash cap; it must still converge. */
+		assert_true(c->nominal.status == SENS_OK
+		    || (c->role_substituted && c->nominal.status == SENS_INFEASIBLE));
 		assert_true(point_finite(&c->nominal));
 		assert_true(c->fd_kind != 2);
 		assert_true(isfinite(c->d_mtow) && isfinite(c->d_hover_min)
