@@ -10,6 +10,8 @@
 #include "fsout.h"
 #include "mission_io.h"
 #include "report.h"
+#include "sens.h"
+#include "template.h"
 #include "result_json.h"
 #include "sha256.h"
 #include "xalloc.h"
@@ -115,9 +117,17 @@ pipeline_build(const struct cli_env *env, const struct pipeline_opts *o,
 			goto written;
 		}
 		const char *base = strrchr(path, '/');
+		/* The trade study only when the template asks for its section. */
+		struct sens_result *sens = NULL;
+		if (template_section_enabled(o->tpl, TEMPLATE_SEC_SENSITIVITY)) {
+			sens = xmalloc(sizeof *sens);
+			sens_run(&r->mission, &env->model, sens);
+		}
 		struct report_input in = { r, o->tpl, name, base ? base + 1 : path,
-			bytes, n_bytes, date, AEROEVAL_VERSION, env->cat };
-		if (report_render(&in, &pdf, &n_pdf, msg, sizeof msg) != 0) {
+			bytes, n_bytes, date, AEROEVAL_VERSION, env->cat, sens };
+		int rr = report_render(&in, &pdf, &n_pdf, msg, sizeof msg);
+		free(sens);
+		if (rr != 0) {
 			fprintf(err, "%s: internal error: dossier: %s\n", path, msg);
 			st = PIPE_INTERNAL;
 			goto written;

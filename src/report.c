@@ -7,6 +7,7 @@
  * exactly what result.json says.
  */
 #include "report.h"
+#include "sens_report.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -991,13 +992,18 @@ sec_appendix(struct rep *rp, const char *title)
 	catalogue_used(rp);
 }
 
-/* ---- sensitivity (placeholder until the trade-study section lands) ------ */
+/* ---- sensitivity (optional, template switch) ----------------------------- */
 
 static void
 sec_sensitivity(struct rep *rp, const char *title)
 {
+	if (rp->in->sens != NULL) {
+		sens_report_section(rp->d, rp->tpl, rp->in->sens);
+		return;
+	}
 	report_heading(rp, title);
-	doc_paragraph(rp->d, "Run `aeroeval sensitivity` for the trade study.");
+	doc_paragraph(rp->d, "The trade study was not run for this dossier; "
+	    "`aeroeval sensitivity` produces it.");
 }
 
 /* ---- the document -------------------------------------------------------- */

@@ -31,6 +31,8 @@ struct catalog;
 
 /* Everything one dossier needs.  Only r and tpl are required; a NULL
  * string prints as absent, a NULL mission_bytes attaches nothing. */
+struct sens_result;
+
 struct report_input {
 	const struct solve_result *r;          /* the solve */
 	const struct template *tpl;            /* layout, sections, colours */
@@ -41,6 +43,7 @@ struct report_input {
 	const char *date;                      /* "YYYY-MM-DD", already resolved by the caller */
 	const char *engine_version;            /* AEROEVAL_VERSION */
 	const struct catalog *cat;             /* may be NULL: for the crosshair figure (all motors) and the appendix */
+	const struct sens_result *sens;        /* may be NULL: the optional Sensitivity section */
 };
 
 /* Renders the dossier into a new buffer (*pdf, *n).  Returns 0, or -1 with

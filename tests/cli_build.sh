@@ -46,4 +46,10 @@ cp examples/lidar_mapping_quad.json "$T/d1/x.json"
 cp examples/lidar_mapping_quad.json "$T/d2/x.json"
 "$AE" build -o "$T/e" "$T/d1/x.json" "$T/d2/x.json" 2>/dev/null; rc=$?
 [ "$rc" -eq 2 ] && [ ! -e "$T/e" ]; check $? "name_clash_is_an_error_before_writing"
+# A template that enables the optional Sensitivity section gets it.
+sed 's/"enabled": false/"enabled": true/' templates/a4.json > "$T/sens.json"
+sed -i "s|\"fonts/|\"$(pwd)/templates/fonts/|g" "$T/sens.json"
+"$AE" build -o "$T/f" --template "$T/sens.json" examples/lidar_mapping_quad.json 2>/dev/null
+pdftotext "$T/f/lidar_mapping_quad/dossier.pdf" - 2>/dev/null | grep -q "sensitivity study was swept"
+check $? "template_switch_adds_the_sensitivity_section"
 exit 0
