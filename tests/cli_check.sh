@@ -10,9 +10,9 @@
 # usage: AEROEVAL=build/aeroeval sh tests/cli_check.sh   (from the repo root)
 # Prints "ok NAME" / "not ok NAME" per check.
 #
-# The checks run in a scratch directory holding a copy of tests/bad and a
-# data/chemistries.json of our own, so the expected chemistry list does not
-# depend on the shipped profiles.
+# The checks run in a scratch directory holding a copy of tests/bad; the
+# program finds the shipped data/ next to itself, so the expected chemistry
+# list is that of data/chemistries.json.
 
 root=$(pwd)
 bin=${AEROEVAL:-build/aeroeval}
@@ -21,8 +21,6 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/tests" "$work/data"
 cp -R "$root/tests/bad" "$work/tests/bad"
-printf '{"chemistries":[{"name":"LiPo"},{"name":"LiIon"},{"name":"LiHV"}]}\n' \
-	>"$work/data/chemistries.json"
 cd "$work" || exit 1
 
 ok() { echo "ok $1"; }
@@ -56,7 +54,7 @@ good='{
   "max_diameter_m": 0.65,
   "t_hover_s": 900,
   "v_forward_ms": "auto",
-  "battery_chemistry": "LiIon",
+  "battery_chemistry": "LiHV",
   "locks": {"is_motor_locked": true, "locked_kv": 400},
   "payload_role": {"type": "mapping"}
 }'
