@@ -45,8 +45,8 @@ struct pool {
 	double t_start;
 };
 
-static double
-now_s(void)
+double
+batch_now_s(void)
 {
 	struct timespec ts;
 	clock_gettime(CLOCK_MONOTONIC, &ts);
@@ -116,7 +116,7 @@ launch(struct pool *p, size_t job)
 	w->pid = pid;
 	w->fd = fds[0];
 	w->job = job;
-	w->t0 = now_s();
+	w->t0 = batch_now_s();
 	w->stop_sent = 0;
 	w->timeout_killed = 0;
 	strbuf_reset(&w->text);
@@ -151,7 +151,7 @@ reap(struct pool *p, struct worker *w)
 		else
 			end = BATCH_SIGNALLED;
 	}
-	report(p, w->job, end, code, (long)w->pid, now_s() - w->t0, &w->text);
+	report(p, w->job, end, code, (long)w->pid, batch_now_s() - w->t0, &w->text);
 	w->pid = 0;
 	w->fd = -1;
 	p->n_running--;
@@ -187,7 +187,7 @@ tick(struct pool *p)
 {
 	if (p->ops->tick == NULL)
 		return;
-	double t = now_s();
+	double t = batch_now_s();
 	struct batch_state s = { p->n_jobs, p->n_done, (size_t)p->n_running, -1,
 		0.0, t - p->t_start };
 	for (int k = 0; k < p->opts->n_workers; k++)
@@ -208,7 +208,7 @@ wait_step(struct pool *p, struct pollfd *pfd, int *slot)
 		pfd[n].events = POLLIN;
 		slot[n++] = -1;
 	}
-	double t = now_s(), wait_s = p->opts->tick_s;
+	double t = batch_now_s(), wait_s = p->opts->tick_s;
 	for (int k = 0; k < p->opts->n_workers; k++) {
 		struct worker *w = &p->w[k];
 		if (w->pid == 0)
@@ -239,7 +239,7 @@ wait_step(struct pool *p, struct pollfd *pfd, int *slot)
 		else if (got == 0 || (errno != EINTR && errno != EAGAIN))
 			reap(p, w);
 	}
-	t = now_s();
+	t = batch_now_s();
 	for (int k = 0; k < p->opts->n_workers; k++) {
 		struct worker *w = &p->w[k];
 		if (w->pid != 0 && !w->timeout_killed && t - w->t0 > p->opts->timeout_s) {
@@ -277,7 +277,7 @@ batch_run(size_t n_jobs, const struct batch_ops *ops,
 	p.opts = opts;
 	p.n_jobs = n_jobs;
 	p.w = xcalloc((size_t)opts->n_workers, sizeof *p.w);
-	p.t_start = now_s();
+	p.t_start = batch_now_s();
 	signals_open(&p);
 	struct pollfd *pfd = xcalloc((size_t)opts->n_workers + 1, sizeof *pfd);
 	int *slot = xcalloc((size_t)opts->n_workers + 1, sizeof *slot);
@@ -297,7 +297,7 @@ batch_run(size_t n_jobs, const struct batch_ops *ops,
 			break;
 		size_t done_before = p.n_done;
 		wait_step(&p, pfd, slot);
-		double t = now_s();
+		double t = batch_now_s();
 		if (p.n_done != done_before || t - last_tick >= opts->tick_s) {
 			tick(&p);
 			last_tick = t;

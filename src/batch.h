@@ -80,4 +80,8 @@ struct batch_opts {
 int batch_run(size_t n_jobs, const struct batch_ops *ops,
               const struct batch_opts *opts, size_t *n_started);
 
+/* Monotonic time in seconds, for elapsed-time reports only (never an
+ * output: outputs are reproducible). */
+double batch_now_s(void);
+
 #endif

@@ -68,14 +68,6 @@ struct build {
 	int line_shown;            /* the progress line is on screen */
 };
 
-static double
-now_s(void)
-{
-	struct timespec ts;
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
-}
-
 static void
 list_add(struct path_list *l, const char *s)
 {
@@ -584,7 +576,7 @@ summary(const struct build *b, int sig, size_t n_started, double seconds)
 int
 cli_build(int argc, char **argv)
 {
-	double t0 = now_s();
+	double t0 = batch_now_s();
 	struct build b = { 0 };
 	const char *db = NULL, *tpl_path = NULL;
 	long n_cpu = sysconf(_SC_NPROCESSORS_ONLN);
@@ -658,7 +650,7 @@ cli_build(int argc, char **argv)
 		if (b.line_shown)
 			fputs("\r\033[K", stderr);
 		if (!b.quiet || sig != 0)
-			summary(&b, sig, n_started, now_s() - t0);
+			summary(&b, sig, n_started, batch_now_s() - t0);
 		if (sig != 0)
 			rc = 128 + sig;
 		else
