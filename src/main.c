@@ -1,14 +1,17 @@
 /* main.c — argv, subcommand dispatch, exit status.  Drives; computes nothing. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cli_build.h"
 #include "cli_front.h"
 #include "cli_solve.h"
+#include "doc.h"
 
 int
 main(int argc, char **argv)
 {
+	atexit(doc_global_cleanup); /* fontconfig/cairo caches: valgrind-clean exit */
 	if (argc >= 2 && strcmp(argv[1], "--version") == 0) {
 		printf("aeroeval %s\n", AEROEVAL_VERSION);
 		return 0;
