@@ -221,3 +221,15 @@ if [ -n "$(cd "$root" && git status --porcelain --untracked-files=all -- data ex
 else
 	ok repository_untouched
 fi
+
+# ---- valgrind: a whole build of one example, no memory error, no leak -----
+# (skipped where valgrind is not installed; ASan covers the unit suite)
+if command -v valgrind >/dev/null 2>&1; then
+	rm -rf out
+	timeout 300 valgrind -q --leak-check=full --errors-for-leak-kinds=definite \
+	    --error-exitcode=99 "$bin" build -o out "$root/examples/delivery_quad.json" \
+	    >out.txt 2>err.txt
+	rc=$?
+	if [ "$rc" -eq 0 ] || [ "$rc" -eq 1 ]; then ok valgrind_build_clean
+	else notok valgrind_build_clean "exit $rc"; grep '==' err.txt | head -20 | sed 's/^/# /'; fi
+fi
