@@ -17,6 +17,8 @@
  * compared only between converged, feasible designs flown as requested
  * (no goal relaxation), so a design that changed regime is not compared.
  *
+ * No hang: every solve must finish within SWEEP_MAX_SOLVE_S.
+ *
  * Counts: SWEEP_N missions (800; 400 under ASan, which runs ~2x slower)
  * and SWEEP_PAIRS pairs per property (30; 15 under ASan): about 1400 solves,
  * ~8 s of CPU here (a solve averages 3-6 ms, a few take 0.1 s).
@@ -25,18 +27,25 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "cli.h"
 #include "solve_check.h"
 #include "stats.h"
 #include "xalloc.h"
 
+#ifndef SWEEP_N /* -DSWEEP_N=... -DSWEEP_PAIRS=... for a longer run */
 #if defined(__SANITIZE_ADDRESS__)
 #define SWEEP_N 400
 #define SWEEP_PAIRS 15
+#define SWEEP_MAX_SOLVE_S 10.0
 #else
 #define SWEEP_N 800
 #define SWEEP_PAIRS 30
+#endif
+#endif
+#ifndef SWEEP_MAX_SOLVE_S
+#define SWEEP_MAX_SOLVE_S 2.0 /* a solve slower than this is a hang (worst seen: 0.1 s) */
 #endif
 #define SWEEP_SEED 0x5eedae20u
 
@@ -165,8 +174,15 @@ solve(const struct sweep_mission *m)
 {
 	char text[2048], detail[RESULT_JSON_PATH_MAX];
 	mission_text(m, text, sizeof text);
+	struct timespec t0, t1;
+	clock_gettime(CLOCK_MONOTONIC, &t0);
 	const char *why = solve_text(env, "sweep.json", text, strlen(text), stderr,
 	    res, detail, sizeof detail);
+	clock_gettime(CLOCK_MONOTONIC, &t1);
+	double took_s = (double)(t1.tv_sec - t0.tv_sec)
+	    + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+	if (why == NULL && took_s > SWEEP_MAX_SOLVE_S)
+		why = "the solve took too long (a hang?)";
 	if (why != NULL) {
 		print_error("%s (%s)\nmission: %s\n", why, detail, text);
 		fail();
