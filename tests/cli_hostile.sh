@@ -204,6 +204,13 @@ run build -o out ./m/-dash.json
 if [ "$rc" -le 1 ] && [ -f out/-dash/result.json ]; then ok dash_name_with_path_prefix
 else notok dash_name_with_path_prefix "exit $rc"; fi
 
+# Every hostile file above in one build: each is refused on its own, the
+# good mission still compiles, and the build ends (exit 2).
+rm -rf out
+run build -o out m
+if [ "$rc" -eq 2 ] && [ -f out/good/result.json ]; then ok one_build_of_every_hostile_file
+else notok one_build_of_every_hostile_file "exit $rc"; fi
+
 # Output directory that is a file, and an output folder that is a file.
 : >outfile
 run build -o outfile m/good.json
