@@ -4,7 +4,7 @@
 # usage: sh tests/bench.sh BUILD        (from the repository root)
 # 1. in-process solve time per example (BUILD/bench: median of 200 solves)
 # 2. whole-process `aeroeval solve` and `aeroeval build` per example
-#    (median wall time of REPEAT runs, dossier included once build writes it)
+#    (mean wall time of REPEAT runs, dossier included once build writes it)
 # 3. a batch of BATCH missions (examples/delivery_quad.json with the payload
 #    varied) compiled by one `aeroeval build -j 2`
 # 4. peak memory (max RSS) of a solve, a build and the batch
@@ -19,14 +19,15 @@ trap 'rm -rf "$work"' EXIT
 
 now_ms() { date +%s%N | awk '{ printf "%.3f", $1 / 1e6 }'; }
 
-# median_ms CMD...: median wall time of REPEAT runs of CMD, in ms.
-median_ms() {
+# mean_ms CMD...: mean wall time of REPEAT runs of CMD, in ms (one clock
+# read before and after the loop, so forking `date` is not counted).
+mean_ms() {
+	t0=$(now_ms)
 	for _ in $(seq "$REPEAT"); do
-		t0=$(now_ms)
 		"$@" >/dev/null 2>&1
-		t1=$(now_ms)
-		echo "$t0 $t1" | awk '{ printf "%.3f\n", $2 - $1 }'
-	done | sort -n | awk '{ v[NR] = $1 } END { printf "%.1f", NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+	done
+	t1=$(now_ms)
+	echo "$t0 $t1 $REPEAT" | awk '{ printf "%.1f", ($2 - $1) / $3 }'
 }
 
 # max_rss_kib CMD...: peak resident memory of CMD (GNU time, else "n/a").
@@ -43,11 +44,11 @@ echo "== 1. in-process solve (engine_solve only; render = result.json text)"
 "$build/bench" -n 200 examples/*.json
 echo
 
-echo "== 2. whole process, median of $REPEAT runs (ms)"
+echo "== 2. whole process, mean of $REPEAT runs (ms)"
 printf '%-32s %10s %10s\n' mission solve_ms build_ms
 for f in examples/*.json; do
-	s=$(median_ms "$bin" solve "$f")
-	b=$(median_ms "$bin" build -o "$work/out" "$f")
+	s=$(mean_ms "$bin" solve "$f")
+	b=$(mean_ms "$bin" build -o "$work/out" "$f")
 	printf '%-32s %10s %10s\n' "$(basename "$f")" "$s" "$b"
 done
 echo
