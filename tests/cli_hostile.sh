@@ -211,6 +211,21 @@ run build -o out m
 if [ "$rc" -eq 2 ] && [ -f out/good/result.json ]; then ok one_build_of_every_hostile_file
 else notok one_build_of_every_hostile_file "exit $rc"; fi
 
+# Lose nothing: a mission that turns bad keeps its last good output.
+rm -rf out
+run build -o out m/good.json
+cp out/good/result.json good_before.json 2>/dev/null
+printf '{"payload_kg": "heavy"}' >m/good.json
+run build -o out m/good.json
+if [ "$rc" -eq 2 ] && cmp -s out/good/result.json good_before.json; then
+	ok rejected_rebuild_keeps_previous_output
+else
+	notok rejected_rebuild_keeps_previous_output "exit $rc"
+fi
+printf '{%s}\n' "$good" >m/good.json
+if [ -z "$(find out -name '.*tmp*')" ]; then ok no_temporary_files_left
+else notok no_temporary_files_left; fi
+
 # Output directory that is a file, and an output folder that is a file.
 : >outfile
 run build -o outfile m/good.json
