@@ -2,9 +2,11 @@
  * shared by the random-mission sweep (test_sweep.c), the regression replay
  * (test_regress.c) and the whole-solve fuzzer (fuzz/fuzz_solve.c).
  *
- * solve_check() renders result.json (checked) and returns NULL when
+ * solve_check() renders result.json and bom.csv (checked) and returns NULL
+ * when
  *  - engine_solve() returned 0 (no non-finite value caught inside),
- *  - the render found no non-finite or out-of-range value,
+ *  - result.json and bom.csv render without a non-finite or out-of-range
+ *    value,
  *  - a feasible result ran the custom design and passed every custom check,
  *  - an infeasible result carries at least one violation, and every
  *    violation has a non-empty message;
@@ -18,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bom_csv.h"
 #include "cli.h"
 #include "diag.h"
 #include "engine.h"
@@ -38,6 +41,10 @@ solve_check(int engine_rc, const struct solve_result *r, char *detail, size_t n)
 		snprintf(detail, n, "%s", jf.first_path);
 		return "result.json holds a non-finite or out-of-range value";
 	}
+	int csv_bad = 0;
+	free(bom_csv_render_checked(r, &csv_bad));
+	if (csv_bad != 0)
+		return "bom.csv holds a non-finite value";
 	for (int i = 0; i < r->n_violations; i++)
 		if (r->violations[i].message[0] == '\0') {
 			snprintf(detail, n, "%s", r->violations[i].code);
