@@ -95,7 +95,7 @@ $(BUILD)/obj $(BUILD)/tests:
 test: deps
 	$(MAKE) all $(TEST_BINS)
 	sh tests/run_all.sh $(BUILD)
-	$(MAKE) asan
+	@$(MAKE) --no-print-directory asan
 
 unit: $(TEST_BINS)
 	sh tests/run_all.sh $(BUILD) unit
@@ -107,7 +107,8 @@ unit: $(TEST_BINS)
 SAN_OPT := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer \
            -fno-sanitize-recover=undefined
 asan:
-	$(MAKE) BUILD=build-asan OPT='$(SAN_OPT)' unit
+	@echo "== the unit suite again, under ASan+UBSan (build-asan/)"
+	@$(MAKE) --no-print-directory BUILD=build-asan OPT='$(SAN_OPT)' unit
 
 # `fuzz` (not part of `make test`) builds the libFuzzer harnesses
 # tests/fuzz/fuzz_*.c with clang and runs each for FUZZ_SECONDS from the seed
@@ -116,12 +117,11 @@ asan:
 # warning set differs from gcc's, which `make all` holds to -Werror).
 FUZZ_CC      ?= clang-14
 FUZZ_SECONDS ?= 30
-FUZZ_FLAGS := -std=c11 -O1 -g -fsanitize=fuzzer,address,undefined \
-              -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+FUZZ_SAN     := address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+FUZZ_FLAGS   := -std=c11 -O1 -g -fsanitize=fuzzer,$(FUZZ_SAN)
 fuzz: deps
 	$(MAKE) -s CC=$(FUZZ_CC) BUILD=build-fuzz WARN=-Wall \
-	  OPT='-O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer' \
-	  build-fuzz/libaeroeval.a
+	  OPT='-O1 -g -fsanitize=fuzzer-no-link,$(FUZZ_SAN)' build-fuzz/libaeroeval.a
 	sh tests/fuzz/run.sh build-fuzz $(FUZZ_CC) '$(FUZZ_FLAGS)' $(FUZZ_SECONDS)
 
 # `bench` (not part of `make test`): timings and peak memory as a table.
