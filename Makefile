@@ -52,7 +52,7 @@ BIN      := $(BUILD)/aeroeval
 TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps test unit example paper install clean check-layers bench
+.PHONY: all deps test unit example paper install clean check-layers asan fuzz bench
 
 all: $(BIN) aeroeval
 
@@ -95,9 +95,41 @@ $(BUILD)/obj $(BUILD)/tests:
 test: deps
 	$(MAKE) all $(TEST_BINS)
 	sh tests/run_all.sh $(BUILD)
+	@$(MAKE) --no-print-directory asan
 
 unit: $(TEST_BINS)
 	sh tests/run_all.sh $(BUILD) unit
+
+# ---- robustness: sanitizers, fuzzing, benchmarks ---------------------------
+# `asan` rebuilds everything in build-asan/ under ASan+UBSan (UB aborts the
+# test) and runs the unit suite there; `make test` runs it after the normal
+# suite.  OPT reaches the link too (the link rules use $(CFLAGS)).
+SAN_OPT := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer \
+           -fno-sanitize-recover=undefined
+asan:
+	@echo "== the unit suite again, under ASan+UBSan (build-asan/)"
+	@$(MAKE) --no-print-directory BUILD=build-asan OPT='$(SAN_OPT)' unit
+
+# `fuzz` (not part of `make test`) builds the libFuzzer harnesses
+# tests/fuzz/fuzz_*.c with clang and runs each for FUZZ_SECONDS from the seed
+# corpus; a crash lands in build-fuzz/fuzz/NAME/ (keep it in tests/regress/).
+# The library is rebuilt with clang there, warnings not fatal (clang's
+# warning set differs from gcc's, which `make all` holds to -Werror).
+FUZZ_CC      ?= clang-14
+FUZZ_SECONDS ?= 30
+FUZZ_SAN     := address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+FUZZ_FLAGS   := -std=c11 -O1 -g -fsanitize=fuzzer,$(FUZZ_SAN)
+fuzz: deps
+	$(MAKE) -s CC=$(FUZZ_CC) BUILD=build-fuzz WARN=-Wall \
+	  OPT='-O1 -g -fsanitize=fuzzer-no-link,$(FUZZ_SAN)' build-fuzz/libaeroeval.a
+	sh tests/fuzz/run.sh build-fuzz $(FUZZ_CC) '$(FUZZ_FLAGS)' $(FUZZ_SECONDS)
+
+# `bench` (not part of `make test`): timings and peak memory as a table.
+bench: all $(BUILD)/bench
+	sh tests/bench.sh $(BUILD)
+
+$(BUILD)/bench: tests/bench.c $(LIB)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -Itests -o $@ $< $(LIB) $(PKG_LIBS)
 
 # ---- examples ---------------------------------------------------------------
 # Exit status 1 means "compiled, some design infeasible": the outputs are

@@ -43,6 +43,8 @@ struct pool {
 	sigset_t old_mask;   /* restored in every worker and at the end */
 	int stopping;        /* signal that stopped the run, 0 while running */
 	double t_start;
+	struct pollfd *pfd;  /* poll set: the signal fd and one per worker */
+	int *slot;           /* worker slot of each poll entry */
 };
 
 double
@@ -279,8 +281,12 @@ batch_run(size_t n_jobs, const struct batch_ops *ops,
 	p.w = xcalloc((size_t)opts->n_workers, sizeof *p.w);
 	p.t_start = batch_now_s();
 	signals_open(&p);
-	struct pollfd *pfd = xcalloc((size_t)opts->n_workers + 1, sizeof *pfd);
-	int *slot = xcalloc((size_t)opts->n_workers + 1, sizeof *slot);
+	/* Held in the pool so a forked worker still reaches them (its leak
+	 * check under valgrind must not see the parent's buffers as lost). */
+	p.pfd = xcalloc((size_t)opts->n_workers + 1, sizeof *p.pfd);
+	p.slot = xcalloc((size_t)opts->n_workers + 1, sizeof *p.slot);
+	struct pollfd *pfd = p.pfd;
+	int *slot = p.slot;
 	size_t next = 0;
 	double last_tick = 0.0;
 	for (;;) {

@@ -29,9 +29,9 @@ struct cell_state {
 /* One step: draw power_w for dt_s.  Returns DIS_COMPLETED when the step
  * was flown, another end code when it was not. */
 static enum discharge_end
-step(const struct discharge_pack *p, double ambient_c, double power_w,
-     double dt_s, struct cell_state *st, double *current_a, double *v_oc_v,
-     double *v_term_v)
+step(const struct discharge_pack *p, double hac_w_k, double ambient_c,
+     double power_w, double dt_s, struct cell_state *st, double *current_a,
+     double *v_oc_v, double *v_term_v)
 {
 	double r_sys = batt_r_sys_ohm(p->chem, p->cells, p->capacity_ah,
 	    st->temp_c, p->cycles, p->n_rotors);
@@ -51,8 +51,8 @@ step(const struct discharge_pack *p, double ambient_c, double power_w,
 		return DIS_VOLTAGE_FLOOR;
 	/* Only the cells heat the pack; the MOSFET loss stays in the ESC. */
 	double heat_w = i * i * (r_sys - r_esc);
-	st->temp_c = therm_step_c(st->temp_c, ambient_c, heat_w,
-	    therm_hac_w_k(p->mass_kg, p->h_conv_w_m2k), p->mass_kg, dt_s);
+	st->temp_c = therm_step_c(st->temp_c, ambient_c, heat_w, hac_w_k,
+	    p->mass_kg, dt_s);
 	st->soc -= i * dt_s / (S_PER_H * p->capacity_ah);
 	st->c_rate = i / p->capacity_ah;
 	if (st->temp_c > THERM_RUNAWAY_C)
@@ -88,6 +88,9 @@ discharge_run(const struct discharge_pack *pack,
               struct discharge_out *out)
 {
 	struct cell_state st = { 1.0, mis->ambient_c, 0.0 };
+	/* The pack's convective conductance is constant: computed once, not
+	 * per step (it costs a pow). */
+	double hac = therm_hac_w_k(pack->mass_kg, pack->h_conv_w_m2k);
 	double total_s = 0.0;
 	int dummy = 0;
 	if (n_trace == NULL)
@@ -116,17 +119,23 @@ discharge_run(const struct discharge_pack *pack,
 		struct mission_power pw;
 		double mass = mis->dry_mass_kg + role_payload_at(&mis->shed, t);
 		mission_power(mis->model, mass, v_climb, v_fwd, &pw);
+		double pw_mass = mass; /* the mass pw was computed for */
 		double e_wh = 0.0, q_ah = 0.0, p_sum = 0.0;
 		int flown = 0;
 		for (int k = 0; k < n; k++) {
 			if (sheds) {
-				/* Mid-step mass: the payload shed during the step. */
+				/* Mid-step mass: the payload shed during the step.  A
+				 * drop leaves the mass constant between steps: the
+				 * power (a pure function of it) is then reused. */
 				mass = mis->dry_mass_kg
 				    + role_payload_at(&mis->shed, t + 0.5 * dt);
-				mission_power(mis->model, mass, v_climb, v_fwd, &pw);
+				if (mass != pw_mass) {
+					mission_power(mis->model, mass, v_climb, v_fwd, &pw);
+					pw_mass = mass;
+				}
 			}
 			double i = 0.0, v_oc = 0.0, v_term = 0.0;
-			enum discharge_end e = step(pack, mis->ambient_c,
+			enum discharge_end e = step(pack, hac, mis->ambient_c,
 			    pw.electrical_w, dt, &st, &i, &v_oc, &v_term);
 			if (e == DIS_OVERFLOW || e == DIS_COLLAPSE) {
 				out->end = e;
@@ -185,12 +194,13 @@ discharge_hover_endurance_s(const struct discharge_pack *pack,
 	if (!(dt > 0.0))
 		return 0.0;
 	struct cell_state st = { 1.0, ambient_c, 0.0 };
+	double hac = therm_hac_w_k(pack->mass_kg, pack->h_conv_w_m2k);
 	double t = 0.0;
 	for (int k = 0; k < ENDURANCE_MAX_STEPS; k++) {
 		double i, v_oc, v_term;
 		double soc0 = st.soc;
-		enum discharge_end e = step(pack, ambient_c, pw.electrical_w, dt,
-		    &st, &i, &v_oc, &v_term);
+		enum discharge_end e = step(pack, hac, ambient_c, pw.electrical_w,
+		    dt, &st, &i, &v_oc, &v_term);
 		if (e == DIS_OVERFLOW || e == DIS_COLLAPSE || e == DIS_VOLTAGE_FLOOR)
 			return t;
 		if (st.soc <= reserve_soc) {

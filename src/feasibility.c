@@ -325,4 +325,17 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	for (int i = 0; i < o->n_checks; i++)
 		if (!o->checks[i].pass)
 			o->feasible = false;
+	/* Some checks have no violation of their own (Lipschitz, bending stress,
+	 * pitch...): an infeasible run must still say why. */
+	bool unexplained = !o->feasible && r->n_violations == n0;
+	for (int i = 0; unexplained && i < o->n_checks; i++)
+		if (!o->checks[i].pass) {
+			const struct res_check *k = &o->checks[i];
+			fx[0] = NULL;
+			feasibility_violation(r, run, "checks", "CHECK_FAILED", fx,
+			    "%s is %.4g%s%s, beyond its limit of %.4g%s%s.", k->name,
+			    k->value, k->unit[0] ? " " : "", k->unit, k->limit,
+			    k->unit[0] ? " " : "", k->unit);
+			fx[0] = f1;
+		}
 }

@@ -223,7 +223,10 @@ fsout_read_file(const char *path, size_t max_n, unsigned char **out,
 {
 	*out = NULL;
 	*n = 0;
-	int fd = open(path, O_RDONLY | O_CLOEXEC);
+	/* O_NONBLOCK: opening a FIFO must not wait for a writer (it is then
+	 * refused below as not a regular file); reads of a regular file are
+	 * unaffected. */
+	int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK);
 	if (fd < 0) {
 		set_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
 		return -1;

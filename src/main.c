@@ -1,5 +1,6 @@
 /* main.c — argv, subcommand dispatch, exit status.  Drives; computes nothing. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cli_build.h"
@@ -8,6 +9,7 @@
 #include "cli_sens.h"
 #include "cli_solve.h"
 #include "cli_validate.h"
+#include "doc.h"
 
 /* The commands this program runs; cli_help.c documents them. */
 struct command {
@@ -34,6 +36,7 @@ is_help(const char *a)
 int
 main(int argc, char **argv)
 {
+	atexit(doc_global_cleanup); /* fontconfig/cairo caches: valgrind-clean exit */
 	if (argc < 2) {
 		cli_help_overview(stderr);
 		return 2;

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
 
 #include "json_pos.h"
 #include "schema.h"
@@ -538,10 +539,24 @@ mission_io_load(const char *path, const char *const *known_chemistries,
 {
 	struct diag_loc loc = { path, 0, 0 };
 	char reason[128];
-	FILE *fp = fopen(path, "rb");
+	struct stat st;
 	size_t len = 0, cap = 4096;
 	char *buf;
 
+	/* Regular files only (a FIFO would block, /dev/zero never ends), and at
+	 * most MISSION_IO_MAX_BYTES, as the build reads them. */
+	if (stat(path, &st) == 0 && (!S_ISREG(st.st_mode)
+	    || (unsigned long long)st.st_size > MISSION_IO_MAX_BYTES)) {
+		spec_defaults(out);
+		if (!S_ISREG(st.st_mode))
+			diag_report(dg, DIAG_IO, &loc, NULL, ": not a regular file");
+		else
+			diag_report(dg, DIAG_IO, &loc, NULL, ": file too large "
+			    "(%lld bytes, limit %u)", (long long)st.st_size,
+			    MISSION_IO_MAX_BYTES);
+		return 1;
+	}
+	FILE *fp = fopen(path, "rb");
 	if (fp == NULL) {
 		int e = errno;
 		spec_defaults(out);
@@ -556,6 +571,8 @@ mission_io_load(const char *path, const char *const *known_chemistries,
 		len += got;
 		if (got == 0)
 			break;
+		if (len > MISSION_IO_MAX_BYTES)
+			break; /* grew while read: the parser sees a truncated file */
 		if (len == cap)
 			buf = xrealloc(buf, cap *= 2);
 	}

@@ -35,7 +35,11 @@ int mission_io_parse(const char *file, const char *buf, size_t len,
                      const char *const *known_chemistries, struct diag *dg,
                      struct mission_spec *out);
 
-/* Read the file at path and parse it as above.  An unreadable file is one
+/* A mission file above this size is refused (PRODUCT: > 4 MiB). */
+#define MISSION_IO_MAX_BYTES (4u << 20)
+
+/* Read the file at path and parse it as above.  An unreadable file (also a
+ * directory, FIFO or device, or one above MISSION_IO_MAX_BYTES) is one
  * error ("path: error: cannot read file: reason"), *out then holds the
  * defaults. */
 int mission_io_load(const char *path, const char *const *known_chemistries,
