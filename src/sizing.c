@@ -736,11 +736,14 @@ explore(const struct sizing_params *p, const struct loop_state *ls,
 	out->n_endurance = 0;
 	double first_slope = 0.0;
 	out->endurance_inflection_scale = 0.0;
+	/* Each point starts from its neighbour's fixed point: adjacent
+	 * capacities give adjacent masses, so a few iterations close it. */
+	double m_prev = sizing_seed_kg(q.payload_kg, q.air.rho_kg_m3);
 	for (int i = 0; i < ENDURANCE_SCALES; i++) {
 		double s = 0.25 + 2.75 * (double)i / (double)(ENDURANCE_SCALES - 1);
 		q.capacity_locked_ah = c_star * s;
 		struct loop_state l2 = *ls;
-		double m = sizing_seed_kg(q.payload_kg, q.air.rho_kg_m3);
+		double m = m_prev;
 		struct eval e;
 		for (int k = 0; k < EXPLORER_MAX_ITER; k++) {
 			evaluate(&q, &l2, m, q.capacity_locked_ah, 40, NULL, &e);
@@ -755,6 +758,7 @@ explore(const struct sizing_params *p, const struct loop_state *ls,
 		}
 		if (!isfinite(m) || m > SIZING_RUNAWAY_KG)
 			break;
+		m_prev = m;
 		struct discharge_pack pk;
 		pack_of(&q, &e, &pk);
 		double t = discharge_hover_endurance_s(&pk, &e.model, m, q.ambient_c,
