@@ -374,10 +374,16 @@ explain(const struct sizing_params *p, const struct res_run *o,
 		engine_rationale(r, "Goal relaxation: the requested mission could not "
 		    "close, so every phase was scaled to %.0f %% of its requested time.",
 		    100.0 * o->time_scale);
-	if (o->converged)
+	if (o->converged && o->lipschitz < 1.0)
 		engine_rationale(r, "The mass loop converged in %d iterations; the "
 		    "mass-growth Lipschitz constant is %.2f (< 1: a contraction).",
 		    o->iterations, o->lipschitz);
+	else if (o->converged)
+		engine_rationale(r, "The mass loop settled in %d iterations, but the "
+		    "mass-growth Lipschitz constant at that point is %.2f (>= 1): each "
+		    "added kilogram needs more than a kilogram of subsystems, so the "
+		    "design sits on the edge of the mass snowball.", o->iterations,
+		    o->lipschitz);
 	/* What binds: the tightest passing check that is not at its limit by
 	 * construction (arm stress, propeller diameter, mission energy). */
 	int best = -1;
