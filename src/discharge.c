@@ -182,6 +182,16 @@ discharge_hover_endurance_s(const struct discharge_pack *pack,
                             const struct mission_model *model, double mass_kg,
                             double ambient_c, double reserve_soc)
 {
+	return discharge_hover_endurance_steps_s(pack, model, mass_kg, ambient_c,
+	    reserve_soc, ENDURANCE_STEPS);
+}
+
+double
+discharge_hover_endurance_steps_s(const struct discharge_pack *pack,
+                                  const struct mission_model *model,
+                                  double mass_kg, double ambient_c,
+                                  double reserve_soc, int steps)
+{
 	struct mission_power pw;
 	mission_power(model, mass_kg, 0.0, 0.0, &pw);
 	double v_nom = (double)pack->cells * pack->chem->v_nom;
@@ -190,7 +200,7 @@ discharge_hover_endurance_s(const struct discharge_pack *pack,
 	/* First estimate from nominal energy sets the step. */
 	double est_s = pack->capacity_ah * (1.0 - reserve_soc) * v_nom
 	    * S_PER_H / pw.electrical_w;
-	double dt = est_s / ENDURANCE_STEPS;
+	double dt = est_s / (double)(steps > 0 ? steps : ENDURANCE_STEPS);
 	if (!(dt > 0.0))
 		return 0.0;
 	struct cell_state st = { 1.0, ambient_c, 0.0 };

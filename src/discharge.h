@@ -78,4 +78,11 @@ double discharge_hover_endurance_s(const struct discharge_pack *pack,
                                    double mass_kg, double ambient_c,
                                    double reserve_soc);
 
+/* The same with `steps` integration steps over the estimated endurance
+ * (the plain form uses 240); the crossing is interpolated within a step. */
+double discharge_hover_endurance_steps_s(const struct discharge_pack *pack,
+                                         const struct mission_model *model,
+                                         double mass_kg, double ambient_c,
+                                         double reserve_soc, int steps);
+
 #endif

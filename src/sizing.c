@@ -22,6 +22,7 @@
 #define GAMMA_BISECT      8     /* bisection steps of the goal relaxation */
 #define ENDURANCE_SCALES  RES_MAX_ENDURANCE
 #define EXPLORER_MAX_ITER 80
+#define EXPLORER_ENDURANCE_STEPS 60 /* a curve, not the design point */
 
 /* Loop state carried from one iteration to the next. */
 struct loop_state {
@@ -354,6 +355,14 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	    + e->mass.frame_kg + e->mass.arm_kg + e->mass.motor_kg
 	    + e->mass.prop_kg + e->mass.esc_kg + e->mass.wiring_kg
 	    + e->mass.avionics_kg + e->mass.role_aux_kg + e->mass.other_kg;
+
+	/* steps <= 0: the caller needs the masses only (a locked capacity in
+	 * the endurance explorer), not the mission's discharge. */
+	if (steps <= 0) {
+		e->dis.end = DIS_COMPLETED;
+		e->c_target_ah = e->capacity_ah;
+		return;
+	}
 
 	/* Fly the mission at this mass and capacity. */
 	struct discharge_pack pk;
@@ -733,6 +742,9 @@ explore(const struct sizing_params *p, const struct loop_state *ls,
 	q.max_iter = EXPLORER_MAX_ITER;
 	q.parts.active = false;
 	q.cells_fixed = out->cell_count;
+	/* The design's minimum-power speed, not a new sweep per evaluation. */
+	q.v_auto = false;
+	q.v_forward_ms = out->optimal_speed_ms;
 	out->n_endurance = 0;
 	double first_slope = 0.0;
 	out->endurance_inflection_scale = 0.0;
@@ -746,7 +758,7 @@ explore(const struct sizing_params *p, const struct loop_state *ls,
 		double m = m_prev;
 		struct eval e;
 		for (int k = 0; k < EXPLORER_MAX_ITER; k++) {
-			evaluate(&q, &l2, m, q.capacity_locked_ah, 40, NULL, &e);
+			evaluate(&q, &l2, m, q.capacity_locked_ah, 0, NULL, &e);
 			l2.arm_width_m = e.arm.d_out_m;
 			double f = e.mass.total_kg;
 			if (!isfinite(f) || f > SIZING_RUNAWAY_KG)
@@ -761,8 +773,8 @@ explore(const struct sizing_params *p, const struct loop_state *ls,
 		m_prev = m;
 		struct discharge_pack pk;
 		pack_of(&q, &e, &pk);
-		double t = discharge_hover_endurance_s(&pk, &e.model, m, q.ambient_c,
-		    sizing_reserve_soc());
+		double t = discharge_hover_endurance_steps_s(&pk, &e.model, m,
+		    q.ambient_c, sizing_reserve_soc(), EXPLORER_ENDURANCE_STEPS);
 		int n = out->n_endurance++;
 		out->endurance_scale[n] = s;
 		out->endurance_time_s[n] = t;
