@@ -8,28 +8,11 @@
  * K 0.046 V, R_i 5.0 mΩ) with V_exp = 3.9 V (data/chemistries.json).
  */
 #include "test_util.h"
+#include "test_fixtures.h"
 #include "batt.h"
 
 #include <string.h>
 
-static struct batt_chem
-lipo(void)
-{
-	struct batt_chem c;
-	memset(&c, 0, sizeof c);
-	strcpy(c.name, "LiPo");
-	c.e_spec_wh_kg = 180.0;
-	c.p_spec_w_kg = 3500.0;
-	c.r_cell_mohm = 5.0;
-	c.v_full = 4.2;
-	c.v_nom = 3.7;
-	c.v_exp = 3.9;
-	c.v_cutoff = 3.3;
-	c.b = 5.5;
-	c.k = 0.046;
-	c.pouch = true;
-	return c;
-}
 
 /* ---- eq. (voc) ---------------------------------------------------------- */
 
@@ -55,7 +38,7 @@ static void
 batt_ocv_should_follow_tremblay_at_soc_0_6385_and_3_85c(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	/* V = 3.9 + 0.3 exp(-6.834592417 · 0.3615) - 0.046 (1/0.6385 - 1)
 	 *   = 3.9 + 0.3 · 0.084525234 - 0.046 · 0.566170713
 	 *   = 3.9 + 0.025357570 - 0.026043853 = 3.899313718 V */
@@ -66,7 +49,7 @@ static void
 batt_ocv_should_use_plain_b_at_or_below_1c(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	/* V = 3.9 + 0.3 exp(-5.5 · 0.3615) - 0.026043853
 	 *   = 3.9 + 0.3 · 0.136934852 - 0.026043853 = 3.915036603 V */
 	assert_rel(batt_ocv_cell(&c, 0.6385, 0.85), 3.915036603, 1e-9);
@@ -77,7 +60,7 @@ static void
 batt_ocv_should_be_v_full_at_full_charge(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	/* SOC = 1: 3.9 + 0.3 · e⁰ - 0.046 · 0 = 4.2 V at any C-rate */
 	assert_rel(batt_ocv_cell(&c, 1.0, 3.85), 4.2, 1e-15);
 	assert_rel(batt_ocv_cell(&c, 1.385, 3.85), 4.2, 1e-15);
@@ -87,7 +70,7 @@ static void
 batt_ocv_should_clamp_soc_at_0_02(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	/* SOC clamped to 0.02: 3.9 + 0.3 exp(-6.834592417 · 0.98) - 0.046 · 49
 	 *   = 3.9 + 0.3 · 0.001233499 - 2.254 = 1.646370050 V */
 	assert_rel(batt_ocv_cell(&c, 0.02, 3.85), 1.64637005, 1e-8);
@@ -103,7 +86,7 @@ static void
 batt_r_sys_should_scale_with_cells_capacity_temperature_and_age(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	/* 6S, 12.385 Ah, 38.5 °C, 235 cycles, 6 ESCs:
 	 * 1e-3 · 5.0 · 6 · (5/12.385) · exp(-0.013 · 13.5) · (1 + 0.00125 · 235)
 	 *   = 0.03 · 0.403714170 · 0.839037397 · 1.29375 = 0.013147008
@@ -116,7 +99,7 @@ static void
 batt_r_sys_should_equal_the_cell_resistance_at_the_reference_point(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	/* 1S at C_ref = 5 Ah, 25 °C, new, one ESC: 0.005 + 0.002 = 0.007 Ω */
 	assert_rel(batt_r_sys_ohm(&c, 1, 5.0, 25.0, 0, 1), 0.007, 1e-12);
 	/* Cold raises it: at 0 °C f_temp = exp(0.325) = 1.384030646 */
@@ -129,7 +112,7 @@ static void
 batt_r_sys_factors_should_act_one_at_a_time(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	/* ESC share alone: R_ds,on / N_r = 0.002 / 8 = 0.00025 Ω */
 	double esc = 0.002 / 8.0;
 	/* reference: 1S, 5 Ah, 25 °C, new: 0.005 Ω of cell */
@@ -225,7 +208,7 @@ static void
 batt_packaging_should_be_the_base_for_a_plain_lipo(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	/* 6S, 5385 mAh, one pack, 650 mm: no term applies → 1.04 */
 	assert_rel(batt_packaging_factor(&c, 1.04, 6, 5385.0, 1, 0.65, false, false),
 	    1.04, 1e-15);
@@ -235,7 +218,7 @@ static void
 batt_packaging_should_add_0_012_per_cell_above_6s(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	/* 12S: 1.04 + 0.012 · (12 - 6) = 1.04 + 0.072 = 1.112 */
 	assert_rel(batt_packaging_factor(&c, 1.04, 12, 5385.0, 1, 0.65, false, false),
 	    1.112, 1e-12);
@@ -245,7 +228,7 @@ static void
 batt_packaging_should_add_0_06_per_extra_pack(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	/* 3 packs: 1.04 + 0.06 · 2 = 1.16 */
 	assert_rel(batt_packaging_factor(&c, 1.04, 6, 5385.0, 3, 0.65, false, false),
 	    1.16, 1e-12);
@@ -255,7 +238,7 @@ static void
 batt_packaging_should_penalise_small_cells(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	/* 2385 mAh: 1.04 + 0.28 (1 - 2385/4000) = 1.04 + 0.28 · 0.40375 = 1.15305 */
 	double full = batt_packaging_factor(&c, 1.04, 6, 2385.0, 1, 0.65, false, false);
 	assert_rel(full, 1.15305, 1e-12);
@@ -273,7 +256,7 @@ static void
 batt_packaging_should_add_0_12_below_250_mm(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	/* 238.5 mm frame: 1.04 + 0.12 = 1.16 */
 	assert_rel(batt_packaging_factor(&c, 1.04, 6, 5385.0, 1, 0.2385, false, false),
 	    1.16, 1e-12);
@@ -283,7 +266,7 @@ static void
 batt_packaging_should_add_0_10_for_enterprise_below_14s(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	/* 12S enterprise: 1.04 + 0.072 + 0.10 = 1.212 */
 	assert_rel(batt_packaging_factor(&c, 1.04, 12, 5385.0, 1, 0.65, false, true),
 	    1.212, 1e-12);
@@ -293,7 +276,7 @@ static void
 batt_packaging_should_be_1_03_for_enterprise_at_14s_and_above(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	assert_rel(batt_packaging_factor(&c, 1.04, 14, 16000.0, 1, 1.2, false, true),
 	    1.03, 1e-15);
 	assert_rel(batt_packaging_factor(&c, 1.04, 18, 2385.0, 2, 1.2, false, true),
@@ -304,7 +287,7 @@ static void
 batt_packaging_should_be_1_15_for_cylindrical_cells(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	c.pouch = false;
 	assert_rel(batt_packaging_factor(&c, 1.04, 6, 5385.0, 1, 0.65, false, false),
 	    1.15, 1e-15);

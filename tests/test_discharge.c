@@ -11,50 +11,14 @@
  * 0.8385 kg, new, 4 ESCs, h = 12 W/(m² K).
  */
 #include "test_util.h"
+#include "test_fixtures.h"
 #include "discharge.h"
 
 #include <string.h>
 
 #define HOVER_W 626.4648146
 
-static struct batt_chem
-lipo(void)
-{
-	struct batt_chem c;
-	memset(&c, 0, sizeof c);
-	strcpy(c.name, "LiPo");
-	c.e_spec_wh_kg = 180.0;
-	c.p_spec_w_kg = 3500.0;
-	c.r_cell_mohm = 5.0;
-	c.v_full = 4.2;
-	c.v_nom = 3.7;
-	c.v_exp = 3.9;
-	c.v_cutoff = 3.3;
-	c.b = 5.5;
-	c.k = 0.046;
-	c.pouch = true;
-	return c;
-}
 
-static void
-hand_model(struct mission_model *m)
-{
-	memset(m, 0, sizeof *m);
-	atmo_at(0.0, atmo_isa_temp_k(0.0), &m->air);
-	m->rotor.diameter_m = 0.3385;
-	m->rotor.ct = 0.12;
-	m->rotor.fom = 0.585;
-	m->rotor.n_blades = 2;
-	m->n_rotors = 4;
-	m->f_scale = 0.012;
-	m->added_drag_m2 = 0.02;
-	m->fwd_drag_mult = 1.5;
-	m->cd_h = 1.0;
-	m->cd_v = 1.2;
-	m->eta_drive = 0.85;
-	m->aux_w = 22.5;
-	m->bus_voltage_v = 22.2;
-}
 
 static void
 hand_pack(struct discharge_pack *p, const struct batt_chem *c)
@@ -85,14 +49,14 @@ static void
 discharge_first_step_should_match_the_hand_computation(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	struct mission_model m;
 	struct discharge_pack pk;
 	struct discharge_mission d;
 	struct discharge_out out;
 	struct res_sample tr[80];
 	int n = 0;
-	hand_model(&m);
+	fixture_hand_model(&m, false);
 	hand_pack(&pk, &c);
 	hover_mission(&d, &m, 600.0);
 	discharge_run(&pk, &d, 60, tr, 80, &n, &out);
@@ -123,12 +87,12 @@ static void
 discharge_energy_should_add_up_over_the_phases(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	struct mission_model m;
 	struct discharge_pack pk;
 	struct discharge_mission d;
 	struct discharge_out out;
-	hand_model(&m);
+	fixture_hand_model(&m, false);
 	hand_pack(&pk, &c);
 	hover_mission(&d, &m, 385.0);
 	d.duration_s[PHASE_CLIMB] = 23.85;
@@ -156,13 +120,13 @@ static void
 discharge_should_stop_on_voltage_collapse(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	struct mission_model m;
 	struct discharge_pack pk;
 	struct discharge_mission d;
 	struct discharge_out out;
 	c.r_cell_mohm = 500.0; /* R_sys ≈ 3.2 Ω: V²/(4R) = 635.04/12.9 ≈ 49 W < 626 W */
-	hand_model(&m);
+	fixture_hand_model(&m, false);
 	hand_pack(&pk, &c);
 	hover_mission(&d, &m, 600.0);
 	discharge_run(&pk, &d, 60, NULL, 0, NULL, &out);
@@ -174,12 +138,12 @@ static void
 discharge_should_stop_on_power_overflow(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	struct mission_model m;
 	struct discharge_pack pk;
 	struct discharge_mission d;
 	struct discharge_out out;
-	hand_model(&m);
+	fixture_hand_model(&m, false);
 	m.aux_w = 2e7; /* above the 1e7 W guard */
 	hand_pack(&pk, &c);
 	hover_mission(&d, &m, 600.0);
@@ -192,14 +156,14 @@ static void
 discharge_should_stop_on_thermal_runaway_above_60_c(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	struct mission_model m;
 	struct discharge_pack pk;
 	struct discharge_mission d;
 	struct discharge_out out;
 	struct res_sample tr[200];
 	int n = 0;
-	hand_model(&m);
+	fixture_hand_model(&m, false);
 	hand_pack(&pk, &c);
 	/* 0.1 kg of thermal mass (C_th = 79.5 J/K) in still air (h = 1:
 	 * hA = 6 (100/2400)^(2/3) = 0.72 W/K) heated by ≈ 21 W: it warms by
@@ -221,12 +185,12 @@ static void
 discharge_should_stop_when_the_pack_runs_out(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	struct mission_model m;
 	struct discharge_pack pk;
 	struct discharge_mission d;
 	struct discharge_out out;
-	hand_model(&m);
+	fixture_hand_model(&m, false);
 	hand_pack(&pk, &c);
 	/* 5.385 Ah at ≈ 26 A lasts ≈ 12 min; ask for 30 min */
 	hover_mission(&d, &m, 1800.0);
@@ -240,12 +204,12 @@ static void
 discharge_peak_temperature_should_rise_with_ambient(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	struct mission_model m;
 	struct discharge_pack pk;
 	struct discharge_mission d;
 	struct discharge_out cold, hot;
-	hand_model(&m);
+	fixture_hand_model(&m, false);
 	hand_pack(&pk, &c);
 	hover_mission(&d, &m, 600.0);
 	d.ambient_c = 5.0;
@@ -261,10 +225,10 @@ static void
 discharge_hover_endurance_should_fall_with_mass(void **state)
 {
 	(void)state;
-	struct batt_chem c = lipo();
+	struct batt_chem c = fixture_lipo();
 	struct mission_model m;
 	struct discharge_pack pk;
-	hand_model(&m);
+	fixture_hand_model(&m, false);
 	hand_pack(&pk, &c);
 	double light = discharge_hover_endurance_s(&pk, &m, 4.385, 15.0, 1.0 / 6.0);
 	double heavy = discharge_hover_endurance_s(&pk, &m, 5.385, 15.0, 1.0 / 6.0);

@@ -10,28 +10,10 @@
  * S_ref = 0.012 · 4.385^(2/3) + 0.02 = 0.012 · 2.6790433 + 0.02 = 0.0521485195 m².
  */
 #include "test_util.h"
+#include "test_fixtures.h"
 #include "mission.h"
 #include "units.h"
 
-static void
-hand_model(struct mission_model *m, bool coaxial)
-{
-	atmo_at(0.0, atmo_isa_temp_k(0.0), &m->air);
-	m->rotor.diameter_m = 0.3385;
-	m->rotor.ct = 0.12;
-	m->rotor.fom = 0.585;
-	m->rotor.n_blades = 2;
-	m->n_rotors = 4;
-	m->coaxial = coaxial;
-	m->f_scale = 0.012;
-	m->added_drag_m2 = 0.02;
-	m->fwd_drag_mult = 1.5;
-	m->cd_h = 1.0;
-	m->cd_v = 1.2;
-	m->eta_drive = 0.85;
-	m->aux_w = 22.5;
-	m->bus_voltage_v = 22.2;
-}
 
 static void
 mission_hover_power_should_follow_the_power_budget(void **state)
@@ -39,7 +21,7 @@ mission_hover_power_should_follow_the_power_budget(void **state)
 	(void)state;
 	struct mission_model m;
 	struct mission_power p;
-	hand_model(&m, false);
+	fixture_hand_model(&m, false);
 	mission_power(&m, 4.385, 0.0, 0.0, &p);
 	/* T = 4.385 · 9.80665 / 4 = 10.7505400625 N */
 	assert_rel(p.thrust_per_rotor_n, 10.7505400625, 1e-12);
@@ -62,7 +44,7 @@ mission_climb_thrust_should_add_the_vertical_drag(void **state)
 	(void)state;
 	struct mission_model m;
 	struct mission_power p;
-	hand_model(&m, false);
+	fixture_hand_model(&m, false);
 	mission_power(&m, 4.385, 2.85, 0.0, &p);
 	/* F_d,v = ½ · 1.2249781262 · 2.85² · 1.2 · 0.0521485195 (no forward multiplier)
 	 *       = 0.311323058 N;  T = (43.00216025 + 0.311323058) / 4 = 10.82837083 N */
@@ -79,7 +61,7 @@ mission_forward_flight_should_pitch_and_tilt_the_thrust(void **state)
 	(void)state;
 	struct mission_model m;
 	struct mission_power p;
-	hand_model(&m, false);
+	fixture_hand_model(&m, false);
 	mission_power(&m, 4.385, 0.0, 13.85, &p);
 	/* F_d = ½ · 1.2249781262 · 13.85² · 1.0 · (1.5 · 0.0521485195) = 9.190330453 N */
 	assert_rel(p.drag_n, 9.190330453, 1e-9);
@@ -98,9 +80,9 @@ mission_coaxial_should_raise_induced_power_by_1_22(void **state)
 	(void)state;
 	struct mission_model m;
 	struct mission_power single, coax;
-	hand_model(&m, false);
+	fixture_hand_model(&m, false);
 	mission_power(&m, 4.385, 0.0, 0.0, &single);
-	hand_model(&m, true);
+	fixture_hand_model(&m, true);
 	mission_power(&m, 4.385, 0.0, 0.0, &coax);
 	assert_rel(coax.rotor.p_induced_w, 1.22 * single.rotor.p_induced_w, 1e-12);
 	assert_rel(coax.rotor.p_profile_w, single.rotor.p_profile_w, 1e-12);
@@ -114,7 +96,7 @@ mission_sweep_should_cover_1_to_30_m_s_in_half_steps(void **state)
 	(void)state;
 	struct mission_model m;
 	double v[64], pw[64], v_min, v_max;
-	hand_model(&m, false);
+	fixture_hand_model(&m, false);
 	/* generous thrust limit: only the pitch limit clips */
 	int n = mission_speed_sweep(&m, 4.385, 1e3, v, pw, 64, &v_min, &v_max);
 	/* (30 - 1) / 0.5 + 1 = 59 points */
@@ -141,7 +123,7 @@ mission_sweep_should_stop_v_max_at_the_thrust_limit(void **state)
 	(void)state;
 	struct mission_model m;
 	double v[64], pw[64], v_min, v_max;
-	hand_model(&m, false);
+	fixture_hand_model(&m, false);
 	/* Thrust per rotor 10.99331604 N at 13.85 m/s; with a limit of 11.0 N
 	 * the highest speed within it lies between 13.5 and 14.5 m/s. */
 	(void)mission_speed_sweep(&m, 4.385, 11.0, v, pw, 64, &v_min, &v_max);
