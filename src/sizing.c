@@ -472,28 +472,38 @@ final_steps(const struct sizing_params *p)
 	return p->trace_steps > 0 ? p->trace_steps : RES_MAX_TRACE - 8;
 }
 
-/* The fixed-point iteration; the series-cell count starts at `cells` and
- * follows next_cells() when auto_cells. */
+/* The fixed-point iteration at goal-relaxation factor gamma_time.  The
+ * series-cell count is the locked one, or starts from the seed mass's
+ * peak power and follows next_cells() inside the loop. */
 static enum sizing_status
-iterate_cells(const struct sizing_params *p, int cells, bool auto_cells,
-              int cells_lo, int cells_hi, double gamma_time, double m0,
-              double c0, struct res_run *out, struct eval *last,
-              double *m_star, double *c_star, struct loop_state *ls_out)
+iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
+        struct eval *last, double *m_star, double *c_star,
+        struct loop_state *ls_out)
 {
+	out->n_history = 0;
+	out->iterations = 0;
+	/* Start from the seed of eq. (altcorrect). */
+	double m = sizing_seed_kg(p->payload_kg, p->air.rho_kg_m3);
+	bool auto_cells = p->cells_fixed <= 0 && !p->kv_locked
+	    && !(p->parts.active && p->parts.cells > 0);
+	int cells = p->cells_fixed > 0 ? p->cells_fixed : 1;
+	if (p->parts.active && p->parts.cells > 0)
+		cells = p->parts.cells;
+	if (auto_cells) {
+		struct loop_state seed = { p->cells_lo, 0.02 * p->wheelbase_m, gamma_time };
+		cells = seed_cells(p, p->cells_lo, p->cells_hi, m, &seed);
+	}
 	int n_down = 0;
 	struct loop_state ls = { cells, 0.02 * p->wheelbase_m, gamma_time };
-	/* Start from the seed of eq. (altcorrect), or warm from a previous
-	 * fixed point when the caller has one (m0, c0 > 0). */
-	double m = m0 > 0.0 ? m0 : sizing_seed_kg(p->payload_kg, p->air.rho_kg_m3);
 	double c = p->capacity_locked ? p->capacity_locked_ah
-	    : c0 > 0.0 ? c0 : seed_capacity_ah(p, &ls, m);
+	    : seed_capacity_ah(p, &ls, m);
 	double c_failed = 0.0;
 	int max_iter = p->max_iter > 0 ? p->max_iter : SIZING_MAX_ITER;
 	enum sizing_status st = SIZING_MAX_ITERATIONS;
 
 	/* Aitken Δ² acceleration (Steffensen): the last mass steps and
 	 * capacities, and how many steady steps since the last jump. */
-	double dm_prev = 0.0, dm_prev2 = 0.0, c_prev = 0.0, c_prev2 = 0.0;
+	double dm_prev = 0.0, dm_prev2 = 0.0, c_prev = 0.0;
 	int steady = 0;
 	for (int k = 1; k <= max_iter; k++) {
 		evaluate(p, &ls, m, c, LOOP_STEPS, NULL, last);
@@ -522,7 +532,7 @@ iterate_cells(const struct sizing_params *p, int cells, bool auto_cells,
 		bool cells_steady = true;
 		if (auto_cells) {
 			int nc = next_cells(p, ls.cells, last->peak.electrical_w, f,
-			    cells_lo, cells_hi, &n_down);
+			    p->cells_lo, p->cells_hi, &n_down);
 			if (nc != ls.cells) {
 				c *= (double)ls.cells / (double)nc;
 				c_failed = 0.0;
@@ -571,9 +581,7 @@ iterate_cells(const struct sizing_params *p, int cells, bool auto_cells,
 		}
 		dm_prev2 = dm_prev;
 		dm_prev = dm;
-		c_prev2 = c_prev;
 		c_prev = c;
-		(void)c_prev2;
 		m = f;
 	}
 	if (st == SIZING_MAX_ITERATIONS && last->dis.end != DIS_COMPLETED
@@ -583,27 +591,6 @@ iterate_cells(const struct sizing_params *p, int cells, bool auto_cells,
 	*c_star = last->capacity_ah;
 	*ls_out = ls;
 	return st;
-}
-
-static enum sizing_status
-iterate(const struct sizing_params *p, int cells_lo, int cells_hi,
-        double gamma_time, struct res_run *out, struct eval *last,
-        double *m_star, double *c_star, struct loop_state *ls_out)
-{
-	out->n_history = 0;
-	out->iterations = 0;
-	bool auto_cells = p->cells_fixed <= 0 && !p->kv_locked
-	    && !(p->parts.active && p->parts.cells > 0);
-	int cells = p->cells_fixed > 0 ? p->cells_fixed : 1;
-	if (p->parts.active && p->parts.cells > 0)
-		cells = p->parts.cells;
-	if (auto_cells) {
-		struct loop_state seed = { cells_lo, 0.02 * p->wheelbase_m, gamma_time };
-		cells = seed_cells(p, cells_lo, cells_hi,
-		    sizing_seed_kg(p->payload_kg, p->air.rho_kg_m3), &seed);
-	}
-	return iterate_cells(p, cells, auto_cells, cells_lo, cells_hi,
-	    gamma_time, 0.0, 0.0, out, last, m_star, c_star, ls_out);
 }
 
 /* dF/dM at the fixed point by central differences, with the capacity
@@ -815,7 +802,7 @@ sizing_run(const struct sizing_params *p, struct res_run *out)
 
 	memset(out, 0, sizeof *out);
 	out->ran = true;
-	enum sizing_status st = iterate(p, p->cells_lo, p->cells_hi, 1.0, out,
+	enum sizing_status st = iterate(p, 1.0, out,
 	    &last, &m_star, &c_star, &ls);
 
 	if (st != SIZING_CONVERGED && p->allow_relax) {
@@ -825,12 +812,12 @@ sizing_run(const struct sizing_params *p, struct res_run *out)
 		struct eval e2;
 		struct loop_state l2;
 		double m2, c2;
-		if (iterate(p, p->cells_lo, p->cells_hi, lo, out, &e2, &m2, &c2, &l2)
+		if (iterate(p, lo, out, &e2, &m2, &c2, &l2)
 		    == SIZING_CONVERGED) {
 			good = lo;
 			for (int k = 0; k < GAMMA_BISECT; k++) {
 				double mid = 0.5 * (lo + hi);
-				if (iterate(p, p->cells_lo, p->cells_hi, mid, out, &e2,
+				if (iterate(p, mid, out, &e2,
 				    &m2, &c2, &l2) == SIZING_CONVERGED) {
 					good = mid;
 					lo = mid;
@@ -840,10 +827,10 @@ sizing_run(const struct sizing_params *p, struct res_run *out)
 			}
 		}
 		if (good > 0.0)
-			st = iterate(p, p->cells_lo, p->cells_hi, good, out, &last,
+			st = iterate(p, good, out, &last,
 			    &m_star, &c_star, &ls);
 		else
-			st = iterate(p, p->cells_lo, p->cells_hi, 1.0, out, &last,
+			st = iterate(p, 1.0, out, &last,
 			    &m_star, &c_star, &ls);
 	}
 
