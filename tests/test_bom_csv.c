@@ -196,29 +196,6 @@ bom_csv_should_count_non_finite_values(void **state)
 	free(r);
 }
 
-/* Byte comparison with a golden file; AEROEVAL_UPDATE_GOLDEN=1 rewrites it. */
-static void
-assert_golden(const char *path, const char *text)
-{
-	size_t n = strlen(text);
-	if (getenv("AEROEVAL_UPDATE_GOLDEN")) {
-		FILE *out = fopen(path, "wb");
-		assert_non_null(out);
-		assert_int_equal(fwrite(text, 1, n, out), n);
-		assert_int_equal(fclose(out), 0);
-	}
-	FILE *in = fopen(path, "rb");
-	if (!in)
-		fail_msg("cannot open %s (run from the repository root)", path);
-	char *want = xmalloc(n + 2);
-	size_t len = fread(want, 1, n + 1, in);
-	fclose(in);
-	if (len != n || memcmp(want, text, n) != 0)
-		fail_msg("%s differs from the render (%zu bytes on file, %zu rendered)",
-		         path, len, n);
-	free(want);
-}
-
 static void
 bom_csv_should_match_golden_files(void **state)
 {

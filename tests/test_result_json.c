@@ -898,28 +898,7 @@ result_json_should_match_golden_file(void **state)
 	(void)state;
 	struct solve_result *r = fixture_new(&SMALL);
 	char *text = result_json_render(r, VERSION);
-	size_t n = strlen(text);
-	if (getenv("AEROEVAL_UPDATE_GOLDEN")) {
-		FILE *fp = fopen(GOLDEN, "wb");
-		assert_non_null(fp);
-		assert_int_equal(fwrite(text, 1, n, fp), n);
-		assert_int_equal(fclose(fp), 0);
-	}
-	FILE *fp = fopen(GOLDEN, "rb");
-	if (!fp)
-		fail_msg("cannot open %s (run from the repository root)", GOLDEN);
-	char *want = xmalloc(n + 2);
-	size_t got = fread(want, 1, n + 1, fp);
-	fclose(fp);
-	want[got] = '\0';
-	if (got != n || memcmp(want, text, n) != 0) {
-		size_t i = 0;
-		while (i < n && i < got && want[i] == text[i])
-			i++;
-		fail_msg("%s differs from the render at byte %zu (lengths %zu and %zu)",
-		         GOLDEN, i, got, n);
-	}
-	free(want);
+	assert_golden(GOLDEN, text);
 	free(text);
 	free(r);
 }

@@ -8,6 +8,8 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 #include <cmocka.h>
 
 /* Relative comparison with a named tolerance; prints both values in full,
@@ -24,6 +26,36 @@ assert_rel_impl(double got, double want, double reltol, const char *expr,
 		print_error("%s = %.12g, want %.12g (rel tol %g)\n", expr, got, want, reltol);
 		_fail(file, line);
 	}
+}
+
+/* Byte comparison of text with the golden file at path (relative to the
+ * repository root); AEROEVAL_UPDATE_GOLDEN=1 rewrites the file first. */
+static inline void
+assert_golden(const char *path, const char *text)
+{
+	size_t n = strlen(text);
+	if (getenv("AEROEVAL_UPDATE_GOLDEN")) {
+		FILE *out = fopen(path, "wb");
+		assert_non_null(out);
+		assert_int_equal(fwrite(text, 1, n, out), n);
+		assert_int_equal(fclose(out), 0);
+	}
+	FILE *in = fopen(path, "rb");
+	if (!in)
+		fail_msg("cannot open %s (run from the repository root)", path);
+	char *want = malloc(n + 2);
+	assert_non_null(want);
+	size_t got = fread(want, 1, n + 1, in);
+	fclose(in);
+	if (got != n || memcmp(want, text, n) != 0) {
+		size_t i = 0;
+		while (i < n && i < got && want[i] == text[i])
+			i++;
+		free(want);
+		fail_msg("%s differs from the render at byte %zu (lengths %zu and %zu)",
+		         path, i, got, n);
+	}
+	free(want);
 }
 
 #endif
