@@ -57,20 +57,25 @@ print_summary(FILE *out, const struct solve_result *r)
 int
 cli_solve(int argc, char **argv)
 {
+	static const char usage[] =
+	    "usage: aeroeval solve [--db DIR] [--summary] MISSION.json\n";
 	const char *db = NULL, *path = NULL;
 	int summary = 0;
 	for (int i = 1; i < argc; i++) {
-		if (strcmp(argv[i], "--db") == 0 && i + 1 < argc)
+		if (strcmp(argv[i], "--db") == 0 && i + 1 < argc) {
 			db = argv[++i];
-		else if (strcmp(argv[i], "--summary") == 0)
+		} else if (strcmp(argv[i], "--summary") == 0) {
 			summary = 1;
-		else if (argv[i][0] == '-' || path != NULL)
-			path = NULL, i = argc;
-		else
+		} else if (argv[i][0] == '-' || path != NULL) {
+			/* An unknown option or a second mission: one at a time. */
+			fputs(usage, stderr);
+			return 2;
+		} else {
 			path = argv[i];
+		}
 	}
 	if (path == NULL) {
-		fprintf(stderr, "usage: aeroeval solve [--db DIR] [--summary] MISSION.json\n");
+		fputs(usage, stderr);
 		return 2;
 	}
 	struct cli_env *env = xcalloc(1, sizeof *env);
