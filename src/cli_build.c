@@ -639,7 +639,6 @@ cli_build(int argc, char **argv)
 		base_fingerprint(&b, tpl_path);
 		b.popts.out_dir = b.out_dir;
 		b.popts.tpl = b.tpl;
-		b.popts.write_files = 1;
 		b.tty = isatty(STDERR_FILENO);
 		if ((size_t)n_workers > b.missions.n)
 			n_workers = (int)b.missions.n;

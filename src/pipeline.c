@@ -90,7 +90,7 @@ pipeline_build(const struct cli_env *env, const struct pipeline_opts *o,
 	unsigned char *bytes = NULL;
 	size_t n_bytes = 0;
 	enum pipeline_status st = pipeline_solve(env, path, r, err, &bytes, &n_bytes);
-	if (st == PIPE_REJECTED || st == PIPE_INTERNAL || !o->write_files)
+	if (st == PIPE_REJECTED || st == PIPE_INTERNAL)
 		goto done;
 
 	/* Render everything in memory first: a render failure writes nothing. */

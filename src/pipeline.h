@@ -28,7 +28,6 @@ enum pipeline_status {
 struct pipeline_opts {
 	const char *out_dir;          /* DIR of DIR/<name>/ */
 	const struct template *tpl;   /* dossier template (NULL: no dossier) */
-	int write_files;              /* 0: solve only (used by `solve`) */
 };
 
 /* Solve the mission at path into *r (callers own r, large: allocate it).
