@@ -384,18 +384,12 @@ explain(const struct sizing_params *p, const struct res_run *o,
 		    "added kilogram needs more than a kilogram of subsystems, so the "
 		    "design sits on the edge of the mass snowball.", o->iterations,
 		    o->lipschitz);
-	/* What binds: the tightest passing check that is not at its limit by
-	 * construction (arm stress, propeller diameter, mission energy). */
-	int best = -1;
-	for (int i = 0; i < o->n_checks; i++)
-		if (o->checks[i].pass && !o->checks[i].sized && o->checks[i].limit != 0.0
-		    && (best < 0 || o->checks[i].margin < o->checks[best].margin))
-			best = i;
-	if (best >= 0)
+	/* What binds: the tightest passing check not sized to its limit. */
+	const struct res_check *t = res_tightest_check(o);
+	if (t != NULL)
 		engine_rationale(r, "Tightest remaining constraint: %s (%.3g %s "
-		    "against a limit of %.3g, margin %.0f %%).", o->checks[best].name,
-		    o->checks[best].value, o->checks[best].unit, o->checks[best].limit,
-		    100.0 * o->checks[best].margin);
+		    "against a limit of %.3g, margin %.0f %%).", t->name, t->value,
+		    t->unit, t->limit, 100.0 * t->margin);
 }
 
 /* Is every number a run stores finite?  The output layers refuse NaN. */

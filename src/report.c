@@ -194,20 +194,6 @@ mass_get(const struct res_mass *m, int i)
 	return *(const double *)(const void *)((const char *)m + mass_items[i].offset);
 }
 
-/* The tightest passing check of a run that is not at its limit by
- * construction (arm stress, propeller diameter, mission energy), or NULL. */
-static const struct res_check *
-tightest_check(const struct res_run *run)
-{
-	const struct res_check *best = NULL;
-	for (int i = 0; i < run->n_checks; i++) {
-		const struct res_check *c = &run->checks[i];
-		if (c->pass && !c->sized && (best == NULL || c->margin < best->margin))
-			best = c;
-	}
-	return best;
-}
-
 static const char *
 role_name(const struct solve_result *r)
 {
@@ -237,7 +223,7 @@ sec_cover(struct rep *rp, int first)
 
 	/* The verdict first: it is what the reader looks for. */
 	if (r->feasible) {
-		const struct res_check *c = tightest_check(&r->custom);
+		const struct res_check *c = res_tightest_check(&r->custom);
 		if (c != NULL)
 			report_sfmt(&sb, "Every check of the custom design passes. The tightest is "
 			     "\"%s\" with a margin of %s %%.", c->name,

@@ -1,6 +1,19 @@
-/* result.c — the few constants of the result contract (see result.h). */
+/* result.c — the few constants and helpers of the result contract (see
+ * result.h). */
 #include "result.h"
 
 /* Spellings of enum res_phase_id, as written to result.json, bom.csv and the
  * dossier; index = enum value. */
 const char *const res_phase_name[PHASE_MAX] = { "climb", "forward", "hover" };
+
+const struct res_check *
+res_tightest_check(const struct res_run *run)
+{
+	const struct res_check *best = NULL;
+	for (int i = 0; i < run->n_checks; i++) {
+		const struct res_check *c = &run->checks[i];
+		if (c->pass && !c->sized && (best == NULL || c->margin < best->margin))
+			best = c;
+	}
+	return best;
+}

@@ -261,4 +261,9 @@ struct solve_result {
 	char rationale[RES_MAX_RATIONALE][RES_TEXT];
 };
 
+/* The tightest passing check of a run that is not at its limit by
+ * construction (arm stress, propeller diameter, mission energy), or NULL:
+ * what binds the design.  The rationale and the dossier cover both name it. */
+const struct res_check *res_tightest_check(const struct res_run *run);
+
 #endif
