@@ -66,7 +66,19 @@ struct fit_ctx {
 	struct model_calibration base; /* starting calibration */
 	struct solve_result *work;
 	size_t n_solves;
+	double full[CAL_N_PARAMS];     /* every coefficient; held ones fixed */
+	int free_idx[CAL_N_PARAMS];    /* the fitted ones' places in full[] */
+	size_t n_free;
 };
+
+/* The whole coefficient vector from the fitted subset. */
+static void
+expand(struct fit_ctx *cx, const double *theta_free, double *theta)
+{
+	memcpy(theta, cx->full, sizeof cx->full);
+	for (size_t j = 0; j < cx->n_free; j++)
+		theta[cx->free_idx[j]] = theta_free[j];
+}
 
 /* Predicts every row at theta into pred[]; -1 if a row fails to converge. */
 static int
@@ -86,9 +98,11 @@ predict_all(struct fit_ctx *cx, const double *theta, double *pred)
 }
 
 static int
-residuals(const double *theta, double *r, size_t m, void *ctx)
+residuals(const double *theta_free, double *r, size_t m, void *ctx)
 {
 	struct fit_ctx *cx = ctx;
+	double theta[CAL_N_PARAMS];
+	expand(cx, theta_free, theta);
 	if (predict_all(cx, theta, r) != 0)
 		return 1;
 	for (size_t i = 0; i < m; i++)
@@ -157,12 +171,30 @@ calibrate_fit_missions(const struct mission_spec *specs, const double *actual_kg
 	if (predict_all(cx, theta, pred) == 0)
 		out->mape_before_pct = mape_of(act, pred, m);
 
+	/* Fit only what enough rows inform; the rest stays where it is. */
+	double th_free[CAL_N_PARAMS], prior[CAL_N_PARAMS], lo[CAL_N_PARAMS], hi[CAL_N_PARAMS];
+	memcpy(cx->full, theta, sizeof theta);
+	for (int j = 0; j < CAL_N_PARAMS; j++) {
+		if (out->n_per_param[j] < CALIBRATE_MIN_ROWS)
+			continue;
+		size_t k = cx->n_free++;
+		cx->free_idx[k] = j;
+		th_free[k] = theta[j];
+		prior[k] = calibrate_prior[j];
+		lo[k] = calibrate_lo[j];
+		hi[k] = calibrate_hi[j];
+	}
+	if (cx->n_free == 0) {
+		out->mape_after_pct = out->mape_before_pct;
+		goto done;
+	}
+
 	struct lsq_options opt;
 	lsq_options_default(&opt);
 	opt.mu = mu;
-	opt.prior = calibrate_prior;
-	opt.theta_lo = calibrate_lo;
-	opt.theta_hi = calibrate_hi;
+	opt.prior = prior;
+	opt.theta_lo = lo;
+	opt.theta_hi = hi;
 	opt.max_iter = 60;
 	/* The mass loop stops at a 1 g step, so the prediction jumps by about
 	 * 1e-5 of itself where the iteration count changes; a 0.1 % step moves
@@ -171,7 +203,7 @@ calibrate_fit_missions(const struct mission_spec *specs, const double *actual_kg
 	opt.epsrel_cost = 1e-8;
 	opt.epsrel_step = 1e-6;
 	struct lsq_result lr;
-	int st = lsq_minimize(residuals, cx, m, CAL_N_PARAMS, theta, &opt, &lr);
+	int st = lsq_minimize(residuals, cx, m, cx->n_free, th_free, &opt, &lr);
 	out->lsq_status = st;
 	out->n_iter = lr.n_iter;
 	if (st != LSQ_OK && st != LSQ_MAXITER && st != LSQ_EBADFUNC) {
@@ -182,6 +214,7 @@ calibrate_fit_missions(const struct mission_spec *specs, const double *actual_kg
 		rc = -2;
 		goto done;
 	}
+	expand(cx, th_free, theta);
 	memcpy(out->theta, theta, sizeof theta);
 	calibrate_apply(theta, &md->cal, &out->after);
 	if (predict_all(cx, theta, pred) == 0)

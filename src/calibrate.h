@@ -41,6 +41,9 @@ extern const double calibrate_prior[CAL_N_PARAMS];
 extern const double calibrate_lo[CAL_N_PARAMS];
 extern const double calibrate_hi[CAL_N_PARAMS];
 
+/* A coefficient informed by fewer rows keeps its prior: one aircraft
+ * cannot tell a class's structural multiplier from its own quirks. */
+#define CALIBRATE_MIN_ROWS 3
 #define CALIBRATE_MU 0.1  /* Tikhonov weight: mild (a 10 % move costs about
                              as much as a 3 % error on one row) */
 

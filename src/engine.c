@@ -270,6 +270,7 @@ engine_params(const struct mission_spec *s, const struct model_data *md,
 	p->fixed_frame_kg = s->fixed_airframe_mass_kg;
 	p->avionics_kg = cls->avionics_kg;
 	p->shell_kg_m2 = cls->shell_kg_m2;
+	p->fairing_section_frac = cls->fairing_section_frac;
 
 	p->packaging_base = md->cal.packaging_base;
 	p->wire_coef = p->small_platform ? md->cal.wire_coef_small : md->cal.wire_coef;

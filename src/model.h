@@ -36,6 +36,7 @@ struct model_class {
 	double gamma;           /* body overhead on spar mass */
 	double avionics_kg;     /* avionics mass */
 	double shell_kg_m2;     /* body-shell areal mass (gauge × density) */
+	double fairing_section_frac; /* moulded arm fairing side / arm length */
 	int cells_min;          /* series-cell range searched */
 	int cells_max;
 	bool small_platform;    /* racing/small wiring and ESC factors */

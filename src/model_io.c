@@ -304,7 +304,8 @@ static void
 load_classes(struct rd *r, const cJSON *root, struct model_data *m)
 {
 	static const char *const keys[] = { "name", "kappa", "gamma", "avionics_kg",
-		"cells_min", "cells_max", "small_platform", "shell_kg_m2", "note", NULL };
+		"cells_min", "cells_max", "small_platform", "shell_kg_m2",
+		"fairing_section_frac", "note", NULL };
 	bool seen[AF_CLASS_MAX] = { false };
 	const cJSON *a = rd_array(r, root, "classes");
 	if (a == NULL)
@@ -329,6 +330,7 @@ load_classes(struct rd *r, const cJSON *root, struct model_data *m)
 		c->gamma = rd_num(r, it, "gamma", 0, 5);
 		c->avionics_kg = rd_num(r, it, "avionics_kg", 0, 20);
 		c->shell_kg_m2 = rd_num(r, it, "shell_kg_m2", 0, 50);
+		c->fairing_section_frac = rd_num(r, it, "fairing_section_frac", 0, 0.5);
 		c->cells_min = rd_int(r, it, "cells_min", 1, 24);
 		c->cells_max = rd_int(r, it, "cells_max", 1, 24);
 		c->small_platform = rd_bool(r, it, "small_platform");

@@ -344,10 +344,14 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	    : SIZING_ESC_KG_PER_A * i_rotor * (double)nr * p->c_esc * scale;
 	e->mass.wiring_kg = p->wire_coef * e->peak_current_a * p->wheelbase_m * scale;
 	e->mass.avionics_kg = p->avionics_kg;
-	/* Body shell around the pack and the electronics (in other_kg). */
-	double v_body = (e->mass.battery_kg / SIZING_PACK_DENSITY_KG_M3
-	    + p->avionics_kg / SIZING_AVIONICS_DENSITY_KG_M3) / SIZING_BODY_FILL;
-	e->shell_kg = p->shell_kg_m2 * SIZING_BODY_SHAPE * 6.0 * pow(v_body, 2.0 / 3.0);
+	/* Body shell around the pack and the electronics, plus the moulded
+	 * arm fairings of classes that have them: each a hollow box of
+	 * side c·L over the arm length L, surface 4c·L² (in other_kg).  λ
+	 * covers it as the paper's "frame and complexity mass". */
+	e->shell_kg = p->shell_kg_m2 * sizing_shell_area_m2(e->mass.battery_kg,
+	    p->avionics_kg, n_arms(p), arm_len, p->fairing_section_frac);
+	if (p->fixed_frame_kg <= 0.0)
+		e->shell_kg *= p->lambda;
 	e->mass.other_kg += e->shell_kg;
 	e->mass.role_aux_kg = p->role_aux_kg;
 	e->mass.payload_kg = p->payload_kg;
@@ -402,6 +406,18 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 		e->c_target_ah = 1.5 * e->capacity_ah;
 		break;
 	}
+}
+
+double
+sizing_shell_area_m2(double battery_kg, double avionics_kg, int n_arms,
+                     double arm_length_m, double fairing_section_frac)
+{
+	double v_body_m3 = (battery_kg / SIZING_PACK_DENSITY_KG_M3
+	    + avionics_kg / SIZING_AVIONICS_DENSITY_KG_M3) / SIZING_BODY_FILL;
+	double box_m2 = SIZING_BODY_SHAPE * 6.0 * pow(v_body_m3, 2.0 / 3.0);
+	double fairings_m2 = (double)n_arms * 4.0 * fairing_section_frac
+	    * arm_length_m * arm_length_m;
+	return box_m2 + fairings_m2;
 }
 
 /* Initial capacity: nominal energy of the mission at the seed mass. */

@@ -149,6 +149,7 @@ struct sizing_params {
 	double fixed_frame_kg;       /* > 0: frame mass given */
 	double avionics_kg;
 	double shell_kg_m2;          /* body-shell areal mass */
+	double fairing_section_frac; /* arm fairing side over arm length; 0: none */
 	/* calibration */
 	double packaging_base;
 	double wire_coef;
@@ -185,5 +186,12 @@ int sizing_auto_cells(double peak_power_w, double mass_kg, double v_nom_cell,
 /* Propeller pitch for hover inflow: blade angle at 75 % radius =
  * inflow angle + 4° incidence, m. */
 double sizing_pitch_m(double diameter_m, double induced_ms, double rps);
+
+/* Body-shell surface, m²: the box around the pack and the electronics
+ * (see SIZING_BODY_*) plus, where the class moulds its arms
+ * (fairing_section_frac c > 0), a hollow fairing of side c·L over each
+ * arm of length L: 4c·L² per arm. */
+double sizing_shell_area_m2(double battery_kg, double avionics_kg, int n_arms,
+                            double arm_length_m, double fairing_section_frac);
 
 #endif

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "lsq.h"
+#include "cohort.h"
 #include "model_io.h"
 #include "validate.h"
 
@@ -34,9 +35,34 @@ theta_should_round_trip_and_keep_the_small_wiring_ratio(void **state)
 	calibrate_apply(th, &md.cal, &out);
 	assert_rel(out.wire_coef, 2 * md.cal.wire_coef, 1e-15);
 	assert_rel(out.wire_coef_small, 2 * md.cal.wire_coef_small, 1e-12);
-	/* The shipped calibration is the paper's, which is the prior. */
+	/* The prior is the paper's: eq. (lambda), packaging base, C_wire. */
+	const double paper[CAL_N_PARAMS] = { 1.50, 1.08, 0.95, 0.80, 1.00, 1.04, 0.0015 };
 	for (int j = 0; j < CAL_N_PARAMS; j++)
-		assert_rel(th[j] / (j == CAL_WIRE_COEF ? 2 : 1), calibrate_prior[j], 1e-12);
+		assert_rel(calibrate_prior[j], paper[j], 1e-15);
+}
+
+/* data/calibration.json is the frozen fit: calibrating the calibration
+ * cohort again from the paper's values lands on the shipped numbers, and
+ * the classes with fewer than CALIBRATE_MIN_ROWS rows keep the paper's. */
+static void
+shipped_calibration_should_be_the_fit_on_the_calibration_cohort(void **state)
+{
+	(void)state;
+	struct cohort c;
+	assert_int_equal(cohort_load("tests/fixtures/cohort/calibration.csv", &c), 0);
+	struct model_data start = md;
+	calibrate_apply(calibrate_prior, &md.cal, &start.cal);
+	struct calibrate_result r;
+	assert_int_equal(calibrate_fit(&c, &start, &r), 0);
+	double shipped[CAL_N_PARAMS];
+	calibrate_theta(&md.cal, shipped);
+	for (int j = 0; j < CAL_N_PARAMS; j++) {
+		assert_rel(r.theta[j], shipped[j], 1e-3);
+		if (r.n_per_param[j] < CALIBRATE_MIN_ROWS)
+			assert_rel(r.theta[j], calibrate_prior[j], 1e-12);
+	}
+	assert_true(r.mape_after_pct < r.mape_before_pct);
+	cohort_free(&c);
 }
 
 /* A mission like one the rule would build. */
@@ -64,9 +90,9 @@ static void
 synthetic(struct mission_spec *s)
 {
 	mission(&s[0], AF_CONSUMER_FOLDING, 4, 0.30, 0.2, 20, ROLE_IMAGING);
-	mission(&s[1], AF_CONSUMER_FOLDING, 4, 0.45, 1.0, 18, ROLE_IMAGING);
-	mission(&s[2], AF_CONSUMER_FOLDING, 4, 0.60, 2.0, 15, ROLE_IMAGING);
-	mission(&s[3], AF_CONSUMER_FOLDING, 6, 0.55, 0.8, 20, ROLE_IMAGING);
+	mission(&s[1], AF_CONSUMER_FOLDING, 4, 0.45, 0.6, 12, ROLE_IMAGING);
+	mission(&s[2], AF_CONSUMER_FOLDING, 4, 0.50, 1.0, 12, ROLE_IMAGING);
+	mission(&s[3], AF_CONSUMER_FOLDING, 6, 0.50, 0.5, 12, ROLE_IMAGING);
 	mission(&s[4], AF_ENTERPRISE_RUGGED, 4, 0.90, 2.0, 15, ROLE_INSPECTION);
 	mission(&s[5], AF_ENTERPRISE_RUGGED, 6, 1.00, 5.0, 20, ROLE_MAPPING);
 	mission(&s[6], AF_ENTERPRISE_RUGGED, 8, 1.20, 5.0, 15, ROLE_IMAGING);
@@ -120,6 +146,10 @@ fit_should_recover_known_coefficients_from_a_synthetic_cohort(void **state)
 	assert_int_equal(r.n_per_param[CAL_LAMBDA_ENT_QUAD], 1);
 	assert_int_equal(r.n_per_param[CAL_LAMBDA_ENT_MULTI], 2);
 	assert_int_equal(r.n_per_param[CAL_LAMBDA_AGRI], 0);
+	/* One and two rows are too few (CALIBRATE_MIN_ROWS): held exactly. */
+	assert_true(r.theta[CAL_LAMBDA_ENT_QUAD] == md.cal.lambda[LAMBDA_ENTERPRISE_QUAD]);
+	assert_true(r.theta[CAL_LAMBDA_ENT_MULTI] == md.cal.lambda[LAMBDA_ENTERPRISE_MULTI]);
+	assert_true(r.theta[CAL_LAMBDA_MICRO] == md.cal.lambda[LAMBDA_MICRO]);
 	/* No Agricultural row: its lambda has no data and stays put. */
 	assert_rel(r.theta[CAL_LAMBDA_AGRI], calibrate_prior[CAL_LAMBDA_AGRI], 1e-9);
 }
@@ -162,6 +192,7 @@ main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(theta_should_round_trip_and_keep_the_small_wiring_ratio),
+		cmocka_unit_test(shipped_calibration_should_be_the_fit_on_the_calibration_cohort),
 		cmocka_unit_test(fit_should_recover_known_coefficients_from_a_synthetic_cohort),
 		cmocka_unit_test(fit_should_keep_absent_classes_at_the_prior_and_respect_bounds),
 		cmocka_unit_test(fit_should_refuse_a_cohort_without_usable_rows),

@@ -201,14 +201,15 @@ model_io_roles_classes_and_calibration_should_match_the_paper(void **state)
 	assert_rel(m->cls[AF_CONSUMER_FOLDING].gamma, 0.15, 1e-12);
 	assert_rel(m->cls[AF_ENTERPRISE_RUGGED].gamma, 0.50, 1e-12);
 	assert_rel(m->cls[AF_AGRICULTURAL].gamma, 1.20, 1e-12);
-	/* eq. (lambda), packaging base, C_wire */
+	/* eq. (lambda): the classes the calibration cohort cannot fit (fewer
+	 * than three usable rows) keep the paper's values; the fitted ones
+	 * are checked against a re-fit in test_calibrate.c. */
 	assert_rel(m->cal.lambda[LAMBDA_MICRO], 1.50, 1e-12);
-	assert_rel(m->cal.lambda[LAMBDA_CONSUMER], 1.08, 1e-12);
 	assert_rel(m->cal.lambda[LAMBDA_ENTERPRISE_QUAD], 0.95, 1e-12);
 	assert_rel(m->cal.lambda[LAMBDA_ENTERPRISE_MULTI], 0.80, 1e-12);
-	assert_rel(m->cal.packaging_base, 1.04, 1e-12);
-	assert_rel(m->cal.wire_coef, 0.0015, 1e-12);
-	assert_rel(m->cal.wire_coef_small, 0.0003, 1e-12);
+	assert_rel(m->cal.lambda[LAMBDA_AGRI], 1.00, 1e-12);
+	/* The small-platform wiring coefficient keeps the paper's 1:5 ratio. */
+	assert_rel(m->cal.wire_coef_small / m->cal.wire_coef, 0.0003 / 0.0015, 1e-9);
 	free(m);
 }
 

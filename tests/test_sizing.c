@@ -142,6 +142,22 @@ breakdown_sum(const struct res_mass *m)
 	    + m->avionics_kg + m->role_aux_kg + m->other_kg;
 }
 
+/* Hand-worked: 0.2 kg pack and 0.12 kg avionics fill (0.2/2200 +
+ * 0.12/1000)/0.5 = 4.21818e-4 m³, a cube of 0.0750 m; the box is 1.2 × 6
+ * faces = 0.040498 m².  Four moulded arms of 0.175 m at c = 0.1 add
+ * 4 × 4 × 0.1 × 0.175² = 0.049 m². */
+static void
+sizing_shell_should_add_moulded_arm_fairings_to_the_body_box(void **state)
+{
+	(void)state;
+	double box = sizing_shell_area_m2(0.2, 0.12, 4, 0.175, 0.0);
+	assert_rel(box, 7.2 * pow(4.21818181818e-4, 2.0 / 3.0), 1e-9);
+	assert_rel(box, 0.040498, 1e-4);
+	assert_rel(sizing_shell_area_m2(0.2, 0.12, 4, 0.175, 0.1) - box, 0.049, 1e-12);
+	/* A hexacopter moulds six arms. */
+	assert_rel(sizing_shell_area_m2(0.2, 0.12, 6, 0.175, 0.1) - box, 0.0735, 1e-12);
+}
+
 static void
 sizing_run_should_converge_to_a_1_g_fixed_point(void **state)
 {
@@ -266,6 +282,7 @@ main(void)
 		cmocka_unit_test_setup_teardown(sizing_run_should_drop_the_parcel_at_r_drop_times_t_total, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_run_should_spray_the_tank_linearly_over_the_mission, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_relaxation_should_scale_times_by_a_gamma_of_at_least_0_05, setup, teardown),
+		cmocka_unit_test(sizing_shell_should_add_moulded_arm_fairings_to_the_body_box),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
