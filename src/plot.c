@@ -1273,7 +1273,8 @@ draw_bars(struct rctx *c, const struct layout *L, const struct item *it)
 			cairo_set_line_width(c->cr, 0.5);
 			cairo_set_dash(c->cr, NULL, 0, 0);
 			rp_apply(c, RP_STROKE);
-			if (it->decimals >= 0 && fabs(y0 - y1) >= FS_NOTE + 2.0) {
+			/* One segment: its value is the total printed above. */
+			if (it->decimals >= 0 && it->n_stack > 1 && fabs(y0 - y1) >= FS_NOTE + 2.0) {
 				snprintf(buf, sizeof buf, "%.*f", it->decimals, v);
 				if (text_width(c->r->font, FS_NOTE, buf) < bw - 2) {
 					int dark = luminance(colour_rgb(c->r->tpl, k)) > 0.6;

@@ -158,7 +158,8 @@ void plot_band(struct plot_panel *pp, const double *x, const double *y_lo,
 /* Vertical stacked bars: n_bars bars (x categories bar_labels), each made of
  * n_stack segments (legend stack_labels); values[i_bar * n_stack + i_stack]
  * >= 0 (others count as 0).  Segments taller than the label get their value
- * printed with `decimals` decimals, and each bar its total above it;
+ * printed with `decimals` decimals (when a bar has more than one), and each
+ * bar its total above it;
  * decimals < 0 prints no numbers.  Makes the panel a bar chart. */
 void plot_stacked_bars(struct plot_panel *pp, int n_bars, const char *const *bar_labels,
                        int n_stack, const char *const *stack_labels,
