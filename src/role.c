@@ -19,31 +19,3 @@ role_payload_at(const struct role_shedding *s, double t_s)
 		return s->payload0_kg;
 	}
 }
-
-double
-role_payload_mean(const struct role_shedding *s, double t_total_s)
-{
-	if (!(t_total_s > 0.0))
-		return s->payload0_kg;
-	switch (s->kind) {
-	case SHED_DROP: {
-		double t = s->drop_time_s < t_total_s ? s->drop_time_s : t_total_s;
-		return (s->payload0_kg * t + (s->payload0_kg - s->drop_mass_kg)
-		    * (t_total_s - t)) / t_total_s;
-	}
-	case SHED_SPRAY: {
-		/* Linear fall until the tank is empty, flat after. */
-		double t_empty = s->spray_rate_kg_s > 0.0
-		    ? s->spray_mass_kg / s->spray_rate_kg_s : t_total_s;
-		if (t_empty > t_total_s)
-			t_empty = t_total_s;
-		double sprayed_end = s->spray_rate_kg_s * t_empty;
-		double area = s->payload0_kg * t_total_s
-		    - 0.5 * sprayed_end * t_empty - sprayed_end * (t_total_s - t_empty);
-		return area / t_total_s;
-	}
-	case SHED_NONE:
-	default:
-		return s->payload0_kg;
-	}
-}

@@ -20,7 +20,4 @@ struct role_shedding {
 /* Payload mass carried at time t_s. */
 double role_payload_at(const struct role_shedding *s, double t_s);
 
-/* Mean payload over [0, t_total_s] (for the average takeoff mass). */
-double role_payload_mean(const struct role_shedding *s, double t_total_s);
-
 #endif

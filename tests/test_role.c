@@ -1,6 +1,6 @@
 /* test_role.c — payload shedding over the mission (paper §VI-H): the
  * delivery drop at t_drop = r_drop · t_total and the linear spray until the
- * tank is empty, and the mean payload that sizes the average takeoff mass.
+ * tank is empty.
  * Hand values in the comments.
  */
 #include "test_util.h"
@@ -48,20 +48,6 @@ role_drop_should_release_the_mass_at_r_times_t_total(void **state)
 }
 
 static void
-role_drop_mean_payload_should_weight_both_sides_of_the_drop(void **state)
-{
-	(void)state;
-	/* r = 0.35: t_drop = 609 s of 1740 s.
-	 * mean = (3.5 · 609 + 1.115 · 1131) / 1740 = (2131.5 + 1261.065) / 1740
-	 *      = 3392.565 / 1740 = 1.94975 kg */
-	struct role_shedding s = drop(0.35, 1740.0);
-	assert_rel(role_payload_mean(&s, 1740.0), 1.94975, 1e-12);
-	/* r = 0.5: (3.5 + 1.115) / 2 = 2.3075 kg */
-	s = drop(0.5, 1740.0);
-	assert_rel(role_payload_mean(&s, 1740.0), 2.3075, 1e-12);
-}
-
-static void
 role_spray_should_fall_linearly_until_the_tank_is_empty(void **state)
 {
 	(void)state;
@@ -76,20 +62,6 @@ role_spray_should_fall_linearly_until_the_tank_is_empty(void **state)
 }
 
 static void
-role_spray_mean_payload_should_be_the_area_under_the_ramp(void **state)
-{
-	(void)state;
-	/* Emptied exactly at the end: mean = 12.385 - 10/2 = 7.385 kg */
-	struct role_shedding s = spray(10.0 / 1385.0);
-	assert_rel(role_payload_mean(&s, 1385.0), 7.385, 1e-12);
-	/* Twice as fast: empty at 692.5 s, then flat at 2.385 kg.
-	 * mean = 12.385 - (½ · 10 · 692.5 + 10 · 692.5) / 1385
-	 *      = 12.385 - (3462.5 + 6925) / 1385 = 12.385 - 7.5 = 4.885 kg */
-	s = spray(20.0 / 1385.0);
-	assert_rel(role_payload_mean(&s, 1385.0), 4.885, 1e-12);
-}
-
-static void
 role_none_should_carry_the_payload_throughout(void **state)
 {
 	(void)state;
@@ -98,8 +70,6 @@ role_none_should_carry_the_payload_throughout(void **state)
 	s.kind = SHED_NONE;
 	s.payload0_kg = 2.385;
 	assert_rel(role_payload_at(&s, 1234.5), 2.385, 0.0);
-	assert_rel(role_payload_mean(&s, 1234.5), 2.385, 0.0);
-	assert_rel(role_payload_mean(&s, 0.0), 2.385, 0.0);
 }
 
 int
@@ -107,9 +77,7 @@ main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(role_drop_should_release_the_mass_at_r_times_t_total),
-		cmocka_unit_test(role_drop_mean_payload_should_weight_both_sides_of_the_drop),
 		cmocka_unit_test(role_spray_should_fall_linearly_until_the_tank_is_empty),
-		cmocka_unit_test(role_spray_mean_payload_should_be_the_area_under_the_ramp),
 		cmocka_unit_test(role_none_should_carry_the_payload_throughout),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
