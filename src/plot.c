@@ -1382,16 +1382,21 @@ draw_annotation_text(struct rctx *c, const struct layout *L, const struct item *
 		draw_text(c, f, FS_NOTE, bx, L->t + 3.0, it->label, PLOT_ALIGN_RIGHT, 1, it->colour);
 		break;
 	case IT_CROSS:
-	case IT_PLABEL:
+	case IT_PLABEL: {
 		if (!isfinite(X) || !isfinite(Y))
 			return;
-		if (X + 5.0 + w > L->r)
-			draw_text(c, f, FS_NOTE, X - 5.0, Y - 4.0, it->label, PLOT_ALIGN_RIGHT, 0,
-			          it->colour);
-		else
-			draw_text(c, f, FS_NOTE, X + 5.0, Y - 4.0, it->label, PLOT_ALIGN_LEFT, 0,
-			          it->colour);
+		/* Point labels above the point, crosshair labels below it, so a
+		 * chosen part near the optimum does not write over it; a white
+		 * ground keeps either legible over a dense scatter. */
+		by = it->kind == IT_CROSS ? Y + 4.0 + FS_NOTE : Y - 4.0;
+		int left = X + 5.0 + w > L->r;
+		bx = left ? X - 5.0 : X + 5.0;
+		double x0 = left ? bx - w : bx;
+		label_ground(c, x0 - 1.0, by - 0.75 * FS_NOTE, x0 + w + 1.0, by + 0.2 * FS_NOTE);
+		draw_text(c, f, FS_NOTE, bx, by, it->label,
+		          left ? PLOT_ALIGN_RIGHT : PLOT_ALIGN_LEFT, 0, it->colour);
 		break;
+	}
 	case IT_TEXT:
 		if (isfinite(X) && isfinite(Y))
 			draw_text(c, f, FS_NOTE, X, Y, it->label, it->align, 0, it->colour);
