@@ -238,8 +238,9 @@ sweep_random_missions_should_give_finite_consistent_results(void **state)
 	/* A sweep that is all infeasible would test little: keep it honest.
 	 * The generator is deliberately harsh (racing at T/W 25, tiny
 	 * propellers on many rotors, 50-minute missions, Li-S packs): most of
-	 * its missions run away physically, and 4-7 % close feasibly. */
-	assert_true(n_feasible > SWEEP_N / 33);
+	 * its missions run away physically, and 2.5-5 % close feasibly (the
+	 * first 400 and all 800 with the frozen calibration). */
+	assert_true(n_feasible > SWEEP_N / 50);
 }
 
 /* Draws a mission (adjusted by `prepare`, may be NULL) that settles,
