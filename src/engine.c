@@ -203,6 +203,10 @@ engine_params(const struct mission_spec *s, const struct model_data *md,
 
 	/* Baseline: null role, dead-weight hover math at θ = 0.60. */
 	p->thrust_margin = baseline ? md->role[ROLE_NONE].thrust_margin : pr->thrust_margin_override;
+	/* A role's default thrust target may be relaxed down to T/W 2 when it
+	 * cannot close; a margin the mission asked for never is. */
+	p->thrust_margin_floor = baseline || s->given[SPECF_ROLE_THRUST_MARGIN]
+	    ? 0.0 : SIZING_MIN_THRUST_MARGIN;
 	p->load_factor = role == ROLE_RACING ? pr->racing_load_factor : ro->load_factor;
 	p->aux_w = baseline ? 0.0 : pr->aux_power_w;
 	p->added_drag_m2 = baseline ? 0.0 : pr->added_drag_m2;
@@ -371,6 +375,17 @@ explain(const struct sizing_params *p, const struct res_run *o,
 	if (p->v_auto)
 		engine_rationale(r, "Forward speed %.1f m/s: the minimum-power speed of "
 		    "the 1–30 m/s sweep.", o->optimal_speed_ms);
+	if (o->thrust_margin < o->thrust_margin_requested)
+		engine_rationale(r, "Thrust relaxation: the %s role's default thrust "
+		    "target (hover throttle %.0f %%, T/W %.1f) does not close with real "
+		    "motor and battery masses — peak power grows faster than the mass "
+		    "it lifts — so the largest target that closes is used: hover "
+		    "throttle %.0f %%, T/W %.1f.  Set payload_role.thrust_margin_override "
+		    "to insist on a target.", spec_enum_role[s->payload_role.type],
+		    100.0 * (1.0 - o->thrust_margin_requested),
+		    1.0 / pow(1.0 - o->thrust_margin_requested, 2.0),
+		    100.0 * (1.0 - o->thrust_margin),
+		    1.0 / pow(1.0 - o->thrust_margin, 2.0));
 	if (o->time_scale < 1.0)
 		engine_rationale(r, "Goal relaxation: the requested mission could not "
 		    "close, so every phase was scaled to %.0f %% of its requested time.",

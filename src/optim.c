@@ -617,6 +617,9 @@ apply_parts(struct sizing_params *p, const struct model_data *md,
 	if (custom->time_scale > 0.0 && custom->time_scale < 1.0)
 		for (int i = 0; i < PHASE_MAX; i++)
 			p->duration_s[i] *= custom->time_scale;
+	if (custom->thrust_margin > 0.0)
+		p->thrust_margin = custom->thrust_margin;
+	p->thrust_margin_floor = 0.0;
 	p->allow_relax = false;
 	p->explore = false;
 }

@@ -115,6 +115,8 @@ struct res_run {
 	double history_kg[RES_MAX_HISTORY];   /* takeoff mass per iteration */
 	double lipschitz;         /* dF/dM at the fixed point */
 	double time_scale;        /* goal relaxation γ (1 = as requested) */
+	double thrust_margin;     /* thrust margin flown, 1 - hover throttle */
+	double thrust_margin_requested; /* the role's or mission's target */
 
 	struct res_mass mass;
 

@@ -582,6 +582,8 @@ put_run(struct jw *w, const char *key, const struct res_run *run)
 	jw_num_array(w, "convergence_history", run->history_kg, nh);
 	jw_num(w, "lipschitz_estimate", run->lipschitz);
 	jw_num(w, "time_scale", run->time_scale);
+	jw_num(w, "thrust_margin", run->thrust_margin);
+	jw_num(w, "thrust_margin_requested", run->thrust_margin_requested);
 
 	JW_STR(w, "chemistry", run->chemistry);
 	jw_int(w, "cell_count", run->cell_count);

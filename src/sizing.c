@@ -809,46 +809,111 @@ marketing_endurance_s(const struct sizing_params *p, const struct eval *e,
 	    BATT_SOC_MIN);
 }
 
+/* Goal relaxation: the largest γ in [0.05, 1) that closes, by bisection
+ * (the loop is monotone in mission time).  Leaves the final iteration's
+ * state in *last, *m_star, *c_star, *ls: at that γ if one closes, else at
+ * the requested mission. */
+static enum sizing_status
+relax_time(const struct sizing_params *p, struct res_run *out,
+           struct eval *last, double *m_star, double *c_star,
+           struct loop_state *ls)
+{
+	double good = 0.0, lo = SIZING_GAMMA_MIN, hi = 1.0;
+	struct eval e2;
+	struct loop_state l2;
+	double m2, c2;
+	if (iterate(p, lo, out, &e2, &m2, &c2, &l2) == SIZING_CONVERGED) {
+		good = lo;
+		for (int k = 0; k < GAMMA_BISECT; k++) {
+			double mid = 0.5 * (lo + hi);
+			if (iterate(p, mid, out, &e2, &m2, &c2, &l2)
+			    == SIZING_CONVERGED) {
+				good = mid;
+				lo = mid;
+			} else {
+				hi = mid;
+			}
+		}
+	}
+	return iterate(p, good > 0.0 ? good : 1.0, out, last, m_star, c_star, ls);
+}
+
+/* Does the loop close at thrust margin t->thrust_margin as a clear
+ * contraction?  Near L = 1 a fixed point exists but sits on the edge of the
+ * mass snowball (every added gram multiplies), so a relaxed target must
+ * leave L <= SIZING_RELAX_MAX_L. */
+static bool
+closes_clearly(const struct sizing_params *t, struct res_run *out)
+{
+	struct eval e2;
+	struct loop_state l2;
+	double m2, c2;
+	if (iterate(t, 1.0, out, &e2, &m2, &c2, &l2) != SIZING_CONVERGED)
+		return false;
+	return lipschitz(t, &l2, m2, c2) <= SIZING_RELAX_MAX_L;
+}
+
+/* Thrust relaxation: a role's default thrust target (racing's T/W 25,
+ * inspection's T/W 4) is a goal, not a requirement, and with real motor
+ * masses it can be out of reach: peak power, motors and the burst battery
+ * then grow faster than the mass they lift.  Use the largest margin in
+ * [floor, requested) that closes clearly (bisection: more margin, more
+ * mass), else the floor itself if its loop closes at all.  Returns false
+ * with *q unchanged when even the floor does not close; otherwise sets
+ * q->thrust_margin, runs the loop at it (its status in *st) and leaves the
+ * final iteration's state as relax_time does. */
+static bool
+relax_thrust(struct sizing_params *q, struct res_run *out, struct eval *last,
+             double *m_star, double *c_star, struct loop_state *ls,
+             enum sizing_status *st)
+{
+	double lo = q->thrust_margin_floor, hi = q->thrust_margin;
+	struct sizing_params t = *q;
+	t.thrust_margin = lo;
+	if (closes_clearly(&t, out)) {
+		for (int k = 0; k < SIZING_MARGIN_BISECT; k++) {
+			t.thrust_margin = 0.5 * (lo + hi);
+			if (closes_clearly(&t, out))
+				lo = t.thrust_margin;
+			else
+				hi = t.thrust_margin;
+		}
+	}
+	struct sizing_params r = *q;
+	r.thrust_margin = lo;
+	*st = iterate(&r, 1.0, out, last, m_star, c_star, ls);
+	if (*st != SIZING_CONVERGED)
+		return false;
+	q->thrust_margin = lo;
+	return true;
+}
+
 enum sizing_status
-sizing_run(const struct sizing_params *p, struct res_run *out)
+sizing_run(const struct sizing_params *p_in, struct res_run *out)
 {
 	struct eval last;
 	struct loop_state ls;
 	double m_star = 0.0, c_star = 0.0;
+	/* A private copy: the thrust relaxation changes the margin flown. */
+	struct sizing_params q = *p_in;
+	const struct sizing_params *p = &q;
 
 	memset(out, 0, sizeof *out);
 	out->ran = true;
+	out->thrust_margin_requested = q.thrust_margin;
 	enum sizing_status st = iterate(p, 1.0, out,
 	    &last, &m_star, &c_star, &ls);
 
-	if (st != SIZING_CONVERGED && p->allow_relax) {
-		/* Goal relaxation: the largest γ in [0.05, 1) that closes, by
-		 * bisection (the loop is monotone in mission time). */
-		double good = 0.0, lo = SIZING_GAMMA_MIN, hi = 1.0;
-		struct eval e2;
-		struct loop_state l2;
-		double m2, c2;
-		if (iterate(p, lo, out, &e2, &m2, &c2, &l2)
-		    == SIZING_CONVERGED) {
-			good = lo;
-			for (int k = 0; k < GAMMA_BISECT; k++) {
-				double mid = 0.5 * (lo + hi);
-				if (iterate(p, mid, out, &e2,
-				    &m2, &c2, &l2) == SIZING_CONVERGED) {
-					good = mid;
-					lo = mid;
-				} else {
-					hi = mid;
-				}
-			}
-		}
-		if (good > 0.0)
-			st = iterate(p, good, out, &last,
-			    &m_star, &c_star, &ls);
-		else
-			st = iterate(p, 1.0, out, &last,
-			    &m_star, &c_star, &ls);
+	if (st != SIZING_CONVERGED && p->allow_relax)
+		st = relax_time(p, out, &last, &m_star, &c_star, &ls);
+	if ((st == SIZING_RUNAWAY || st == SIZING_MAX_ITERATIONS)
+	    && q.thrust_margin_floor > 0.0
+	    && q.thrust_margin_floor < q.thrust_margin) {
+		if (!relax_thrust(&q, out, &last, &m_star, &c_star, &ls, &st))
+			/* Nothing closes: report the run as requested. */
+			st = iterate(p, 1.0, out, &last, &m_star, &c_star, &ls);
 	}
+	out->thrust_margin = q.thrust_margin;
 
 	/* The mass loop converged even when the mission then cannot be flown
 	 * (a locked battery too small): that is a discharge failure. */

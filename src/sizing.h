@@ -26,6 +26,11 @@
 #define SIZING_RATCHET       1.05   /* capacity >= 1.05 × largest failed one */
 #define SIZING_RUNAWAY_KG    150.0  /* runaway-divergence flag, kg */
 #define SIZING_GAMMA_MIN     0.05   /* goal relaxation floor */
+#define SIZING_MARGIN_BISECT 8      /* bisection steps of the thrust relaxation */
+#define SIZING_RELAX_MAX_L   0.75   /* a relaxed thrust target keeps L below this */
+#define SIZING_MIN_THRUST_MARGIN 0.3 /* relaxation floor: hover throttle 70 %,
+                                      * T/W 2.0, the usual minimum for
+                                      * attitude authority in gusts */
 #define SIZING_SEED_FRACTION 0.60   /* M(0) = payload / 0.60 (eq. altcorrect) */
 
 /* Continuous component laws.  The paper's motor and ESC laws
@@ -97,6 +102,9 @@ struct sizing_params {
 	bool allow_relax;            /* locks.auto_reduce_flight_time */
 	/* role */
 	double thrust_margin;        /* hover throttle = 1 - margin */
+	double thrust_margin_floor;  /* > 0: the margin is the role's default
+	                              * target and may be relaxed down to this
+	                              * value when the loop cannot close */
 	double load_factor;
 	double aux_w;
 	double added_drag_m2;
@@ -168,7 +176,12 @@ struct sizing_params {
 /* Size one run.  Fills *out completely (history, masses, phases, trace,
  * sweep, checks are left to feasibility.c) and returns the status.  If the
  * run fails and p->allow_relax, the mission times are scaled down by the
- * largest γ >= 0.05 that closes; out->time_scale records it. */
+ * largest γ >= 0.05 that closes; out->time_scale records it.  If it still
+ * fails and p->thrust_margin_floor > 0 (a role's default thrust target, not
+ * one the mission asked for), the thrust margin is lowered to the largest
+ * value in [floor, requested) whose loop closes with a Lipschitz constant
+ * <= SIZING_RELAX_MAX_L (else to the floor, if that closes at all);
+ * out->thrust_margin and out->thrust_margin_requested record both. */
 enum sizing_status sizing_run(const struct sizing_params *p, struct res_run *out);
 
 /* State of charge left by the 20 % capacity margin (1 - 1/1.2). */

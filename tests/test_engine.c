@@ -6,6 +6,7 @@
  * marked given[], as the parser would; tests run from the repository root.
  */
 #include "test_util.h"
+#include "test_missions.h"
 #include "cli.h"
 #include "diag.h"
 #include "engine.h"
@@ -18,8 +19,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define SET(s, id, member, value) \
-	do { (s)->member = (value); (s)->given[SPECF_##id] = true; } while (0)
 
 struct fixture {
 	struct cli_env env;
@@ -55,17 +54,9 @@ teardown(void **state)
 static void
 imaging_mission(struct mission_spec *s)
 {
-	spec_defaults(s);
-	SET(s, PAYLOAD_KG, payload_kg, 1.385);
-	SET(s, MAX_DIAMETER_M, max_diameter_m, 0.85);
-	SET(s, NUM_ROTORS, num_rotors, 4);
-	SET(s, AIRFRAME_CLASS, airframe_class, AF_ENTERPRISE_RUGGED);
-	SET(s, T_HOVER_S, t_hover_s, 600.0);
-	SET(s, T_CLIMB_S, t_climb_s, 60.0);
-	SET(s, T_FORWARD_S, t_forward_s, 300.0);
-	SET(s, V_CLIMB_MS, v_climb_ms, 2.5);
-	SET(s, V_FORWARD_MS, v_forward_ms, 10.0);
-	SET(s, ROLE_TYPE, payload_role.type, ROLE_IMAGING);
+	static const struct test_profile pr = { 1.385, 0.85, 4,
+	    AF_ENTERPRISE_RUGGED, 600.0, 60.0, 300.0, 2.5, 10.0, ROLE_IMAGING };
+	test_mission(s, &pr);
 }
 
 /* The imaging mission as a coaxial X8: stacked pairs on 4 arms. */

@@ -6,6 +6,7 @@
  * relaxation bounds).  Tests run from the repository root (data/).
  */
 #include "test_util.h"
+#include "test_missions.h"
 #include "cli.h"
 #include "engine.h"
 #include "sizing.h"
@@ -14,10 +15,6 @@
 
 #include <stdlib.h>
 #include <string.h>
-
-/* Set a mission field and mark it given, as the parser would. */
-#define SET(s, id, member, value) \
-	do { (s)->member = (value); (s)->given[SPECF_##id] = true; } while (0)
 
 /* ---- pure helpers -------------------------------------------------------- */
 
@@ -111,17 +108,9 @@ teardown(void **state)
 static void
 delivery_mission(struct mission_spec *s)
 {
-	spec_defaults(s);
-	SET(s, PAYLOAD_KG, payload_kg, 3.5);
-	SET(s, MAX_DIAMETER_M, max_diameter_m, 1.5);
-	SET(s, NUM_ROTORS, num_rotors, 4);
-	SET(s, AIRFRAME_CLASS, airframe_class, AF_ENTERPRISE_RUGGED);
-	SET(s, T_HOVER_S, t_hover_s, 180.0);
-	SET(s, T_CLIMB_S, t_climb_s, 60.0);
-	SET(s, T_FORWARD_S, t_forward_s, 1500.0);
-	SET(s, V_CLIMB_MS, v_climb_ms, 3.0);
-	SET(s, V_FORWARD_MS, v_forward_ms, 15.0);
-	SET(s, ROLE_TYPE, payload_role.type, ROLE_DELIVERY);
+	static const struct test_profile pr = { 3.5, 1.5, 4,
+	    AF_ENTERPRISE_RUGGED, 180.0, 60.0, 1500.0, 3.0, 15.0, ROLE_DELIVERY };
+	test_mission(s, &pr);
 	SET(s, ROLE_DROP_TIME_RATIO, payload_role.delivery_drop_time_ratio, 0.5);
 }
 
@@ -268,6 +257,79 @@ sizing_relaxation_should_scale_times_by_a_gamma_of_at_least_0_05(void **state)
 	free(o);
 }
 
+/* The 5-inch racer of examples/fpv_racing_quad.json. */
+static void
+racing_mission(struct mission_spec *s)
+{
+	static const struct test_profile pr = { 0.03, 0.2, 4, AF_MICRO_AIO,
+	    60.0, 10.0, 120.0, 8.0, 20.0, ROLE_RACING };
+	test_mission(s, &pr);
+}
+
+/* Racing's default T/W 25 (margin 0.8) runs away with real motor masses;
+ * the relaxed target is the largest that closes with L <= 0.75. */
+static void
+sizing_run_should_relax_a_role_default_thrust_target_that_runs_away(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	struct res_run *o = xcalloc(1, sizeof *o);
+	racing_mission(&s);
+	enum sizing_status st = run(&f->env.model, &s, o);
+	assert_int_equal(st, SIZING_CONVERGED);
+	assert_true(o->converged);
+	assert_rel(o->thrust_margin_requested, 0.8, 1e-12);
+	assert_true(o->thrust_margin >= SIZING_MIN_THRUST_MARGIN);
+	assert_true(o->thrust_margin < 0.8);
+	assert_true(o->lipschitz <= SIZING_RELAX_MAX_L);
+	/* T/W = 1/θ² at the relaxed hover throttle θ = 1 - margin. */
+	double theta = 1.0 - o->thrust_margin;
+	assert_rel(o->hover_throttle, theta, 1e-12);
+	assert_rel(o->thrust_to_weight, 1.0 / (theta * theta), 1e-9);
+	/* One bisection step more margin (1/2^8 of the interval) no longer
+	 * closes clearly: the target is the largest, not merely one that
+	 * closes. */
+	struct res_run *o2 = xcalloc(1, sizeof *o2);
+	SET(&s, ROLE_THRUST_MARGIN, payload_role.thrust_margin_override,
+	    o->thrust_margin + (0.8 - SIZING_MIN_THRUST_MARGIN) / 128.0);
+	st = run(&f->env.model, &s, o2);
+	assert_true(st != SIZING_CONVERGED || o2->lipschitz > SIZING_RELAX_MAX_L);
+	free(o2);
+	free(o);
+}
+
+/* A thrust margin the mission asks for is a requirement: never relaxed. */
+static void
+sizing_run_should_not_relax_a_thrust_margin_the_mission_asked_for(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	struct res_run *o = xcalloc(1, sizeof *o);
+	racing_mission(&s);
+	SET(&s, ROLE_THRUST_MARGIN, payload_role.thrust_margin_override, 0.8);
+	enum sizing_status st = run(&f->env.model, &s, o);
+	assert_int_equal(st, SIZING_RUNAWAY);
+	assert_false(o->converged);
+	assert_rel(o->thrust_margin, 0.8, 1e-12);
+	assert_rel(o->thrust_margin_requested, 0.8, 1e-12);
+	free(o);
+}
+
+/* A design that closes at its role's target flies that target. */
+static void
+sizing_run_should_keep_a_thrust_target_that_closes(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	struct res_run *o = xcalloc(1, sizeof *o);
+	delivery_mission(&s);
+	enum sizing_status st = run(&f->env.model, &s, o);
+	assert_int_equal(st, SIZING_CONVERGED);
+	assert_rel(o->thrust_margin, o->thrust_margin_requested, 1e-15);
+	assert_rel(o->thrust_margin, f->env.model.role[ROLE_DELIVERY].thrust_margin, 1e-15);
+	free(o);
+}
+
 int
 main(void)
 {
@@ -282,6 +344,9 @@ main(void)
 		cmocka_unit_test_setup_teardown(sizing_run_should_drop_the_parcel_at_r_drop_times_t_total, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_run_should_spray_the_tank_linearly_over_the_mission, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_relaxation_should_scale_times_by_a_gamma_of_at_least_0_05, setup, teardown),
+		cmocka_unit_test_setup_teardown(sizing_run_should_relax_a_role_default_thrust_target_that_runs_away, setup, teardown),
+		cmocka_unit_test_setup_teardown(sizing_run_should_not_relax_a_thrust_margin_the_mission_asked_for, setup, teardown),
+		cmocka_unit_test_setup_teardown(sizing_run_should_keep_a_thrust_target_that_closes, setup, teardown),
 		cmocka_unit_test(sizing_shell_should_add_moulded_arm_fairings_to_the_body_box),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
