@@ -376,16 +376,15 @@ explain(const struct sizing_params *p, const struct res_run *o,
 		engine_rationale(r, "Forward speed %.1f m/s: the minimum-power speed of "
 		    "the 1–30 m/s sweep.", o->optimal_speed_ms);
 	if (o->thrust_margin < o->thrust_margin_requested)
-		engine_rationale(r, "Thrust relaxation: the %s role's default thrust "
-		    "target (hover throttle %.0f %%, T/W %.1f) does not close with real "
-		    "motor and battery masses — peak power grows faster than the mass "
-		    "it lifts — so the largest target that closes is used: hover "
-		    "throttle %.0f %%, T/W %.1f.  Set payload_role.thrust_margin_override "
-		    "to insist on a target.", spec_enum_role[s->payload_role.type],
-		    100.0 * (1.0 - o->thrust_margin_requested),
+		engine_rationale(r, "Thrust relaxation: the %s role's default target "
+		    "T/W %.1f (hover throttle %.0f %%) does not close with real motor "
+		    "and battery masses, so the largest that closes is used: T/W %.1f "
+		    "(hover throttle %.0f %%).  Set thrust_margin_override to insist.",
+		    spec_enum_role[s->payload_role.type],
 		    1.0 / pow(1.0 - o->thrust_margin_requested, 2.0),
-		    100.0 * (1.0 - o->thrust_margin),
-		    1.0 / pow(1.0 - o->thrust_margin, 2.0));
+		    100.0 * (1.0 - o->thrust_margin_requested),
+		    1.0 / pow(1.0 - o->thrust_margin, 2.0),
+		    100.0 * (1.0 - o->thrust_margin));
 	if (o->time_scale < 1.0)
 		engine_rationale(r, "Goal relaxation: the requested mission could not "
 		    "close, so every phase was scaled to %.0f %% of its requested time.",
