@@ -521,8 +521,11 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 	 * capacities, and how many steady steps since the last jump. */
 	double dm_prev = 0.0, dm_prev2 = 0.0, c_prev = 0.0;
 	int steady = 0;
+	int steps = LOOP_STEPS;
+	bool cap_sized = !p->capacity_locked
+	    && !(p->parts.active && p->parts.battery_kg > 0.0);
 	for (int k = 1; k <= max_iter; k++) {
-		evaluate(p, &ls, m, c, LOOP_STEPS, NULL, last);
+		evaluate(p, &ls, m, c, steps, NULL, last);
 		double f = last->mass.total_kg;
 		if (out->n_history < RES_MAX_HISTORY)
 			out->history_kg[out->n_history++] = f;
@@ -531,7 +534,7 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 		if (!flown && last->capacity_ah > c_failed)
 			c_failed = last->capacity_ah;
 		double c_used = last->capacity_ah;
-		if (!p->capacity_locked && !(p->parts.active && p->parts.battery_kg > 0.0)) {
+		if (cap_sized) {
 			/* Eq. (relaxation) with the ratchet floor. */
 			c = SIZING_RELAX_ALPHA * last->c_target_ah
 			    + (1.0 - SIZING_RELAX_ALPHA) * c_used;
@@ -567,11 +570,21 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 			/* Confirm with the discharge resolution of the final
 			 * record, so that a mission the coarse loop flew is not
 			 * lost to discretisation in the dossier's trace. */
-			if (flown) {
+			if (flown && steps != final_steps(p)) {
 				struct eval fine;
 				evaluate(p, &ls, m, last->capacity_ah, final_steps(p),
 				    NULL, &fine);
 				flown = fine.dis.end == DIS_COMPLETED;
+				if (!flown && cap_sized) {
+					/* The coarse steps hid a voltage or thermal
+					 * limit at the edge: go on at the fine
+					 * resolution, with this capacity as failed. */
+					steps = final_steps(p);
+					c_failed = fmax(c_failed, last->capacity_ah);
+					c = fmax(c, SIZING_RATCHET * c_failed);
+					steady = 0;
+					continue;
+				}
 			}
 			st = flown ? SIZING_CONVERGED : SIZING_DISCHARGE_FAIL;
 			break;

@@ -330,6 +330,33 @@ sizing_run_should_keep_a_thrust_target_that_closes(void **state)
 	free(o);
 }
 
+/* A 5-inch 6S racer at hover throttle 60 % converges on a pack of a few
+ * tens of mAh, where the loop's coarse discharge still lands and the fine
+ * one of the final record hits the cut-off.  The loop must go on at the
+ * fine resolution (that capacity counted as failed) instead of stopping
+ * on a design whose own trace cannot fly the mission. */
+static void
+sizing_run_should_not_stop_on_a_pack_the_fine_discharge_cannot_fly(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	struct res_run *o = xcalloc(1, sizeof *o);
+	static const struct test_profile pr = { 0.0, 0.22, 4, AF_MICRO_AIO,
+	    240.0, 0.0, 0.0, 2.5, 10.0, ROLE_RACING };
+	test_mission(&s, &pr);
+	SET(&s, NOMINAL_CELL_COUNT, nominal_cell_count, 6);
+	SET(&s, LOCK_PROP, locks.is_prop_locked, true);
+	SET(&s, LOCK_DIAMETER_IN, locks.locked_diameter_in, 5.0);
+	SET(&s, LOCK_PITCH_IN, locks.locked_pitch_in, 4.3);
+	SET(&s, ROLE_THRUST_MARGIN, payload_role.thrust_margin_override, 0.4);
+	enum sizing_status st = run(&f->env.model, &s, o);
+	assert_int_equal(st, SIZING_CONVERGED);
+	assert_true(o->converged);
+	assert_string_equal(o->termination, "mission completed");
+	assert_true(o->min_terminal_voltage_v >= 6.0 * 3.3);
+	free(o);
+}
+
 int
 main(void)
 {
@@ -347,6 +374,7 @@ main(void)
 		cmocka_unit_test_setup_teardown(sizing_run_should_relax_a_role_default_thrust_target_that_runs_away, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_run_should_not_relax_a_thrust_margin_the_mission_asked_for, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_run_should_keep_a_thrust_target_that_closes, setup, teardown),
+		cmocka_unit_test_setup_teardown(sizing_run_should_not_stop_on_a_pack_the_fine_discharge_cannot_fly, setup, teardown),
 		cmocka_unit_test(sizing_shell_should_add_moulded_arm_fairings_to_the_body_box),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
