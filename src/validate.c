@@ -131,6 +131,13 @@ validate_mission_from_row(const struct cohort_row *row, const struct model_data 
 	if (!row->has_role)
 		nt |= VALIDATE_NOTE_ROLE_DEFAULT;
 	s->given[SPECF_ROLE_TYPE] = true;
+	/* A published endurance is flown at one takeoff mass (a hover time
+	 * states its takeoff weight; a delivery or spraying time is quoted
+	 * with the load on board), so a shedding role sheds nothing here. */
+	if (md->role[s->payload_role.type].shedding != SHED_NONE) {
+		s->payload_role.mass_shedding = false;
+		s->given[SPECF_ROLE_MASS_SHEDDING] = true;
+	}
 	if (!in_range(SPECF_NUM_ROTORS, row->rotor_count) ||
 	    !in_range(SPECF_PAYLOAD_KG, s->payload_kg))
 		return VALIDATE_SKIP_RANGE;

@@ -20,6 +20,9 @@
  *               exception and cohort rows say so when they are.
  *   class       airframe_class; unknown -> row skipped.
  *   role        role -> payload_role.type; unknown -> "none" (noted).
+ *   shedding    off (payload_role.mass_shedding = false) for the roles that
+ *               shed (delivery, agriculture): a published endurance is
+ *               flown at one takeoff mass, the load on board throughout.
  *   wheelbase   diagonal_wheelbase_mm; else the smallest wheelbase whose
  *               overlap limit (paper eq. overlap, 5 % tip clearance) admits
  *               the row's propeller, W = D / ((1 - 0.05) sin(pi / N_arms))

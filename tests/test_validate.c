@@ -63,6 +63,33 @@ rule_should_take_every_fact_of_a_full_row(void **state)
 	cohort_free(&c);
 }
 
+/* A published endurance is flown with the load on board: the shedding
+ * roles shed nothing in a validation mission; the others keep the
+ * default. */
+static void
+rule_should_turn_shedding_off_for_the_roles_that_shed(void **state)
+{
+	(void)state;
+	struct cohort c;
+	load(FIX "rules.csv", &c);
+	struct mission_spec s;
+	unsigned notes;
+	struct cohort_row r = c.rows[0];
+	const enum role_type shedding[] = { ROLE_DELIVERY, ROLE_AGRICULTURE };
+	for (size_t i = 0; i < 2; i++) {
+		r.role = shedding[i];
+		assert_int_equal(validate_mission_from_row(&r, &md, &s, &notes),
+		    VALIDATE_SKIP_NONE);
+		assert_false(s.payload_role.mass_shedding);
+		assert_true(s.given[SPECF_ROLE_MASS_SHEDDING]);
+	}
+	r.role = ROLE_IMAGING;
+	assert_int_equal(validate_mission_from_row(&r, &md, &s, &notes),
+	    VALIDATE_SKIP_NONE);
+	assert_false(s.given[SPECF_ROLE_MASS_SHEDDING]);
+	cohort_free(&c);
+}
+
 static void
 rule_should_derive_the_wheelbase_from_the_overlap_limit(void **state)
 {
@@ -275,6 +302,7 @@ main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(rule_should_take_every_fact_of_a_full_row),
+		cmocka_unit_test(rule_should_turn_shedding_off_for_the_roles_that_shed),
 		cmocka_unit_test(rule_should_derive_the_wheelbase_from_the_overlap_limit),
 		cmocka_unit_test(rule_should_not_lock_a_propeller_the_wheelbase_cannot_hold),
 		cmocka_unit_test(rule_should_skip_rows_without_a_needed_fact),
