@@ -296,8 +296,8 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	double p_motor_w = e->peak.shaft_w / (double)nr / p->eta_drive;
 	double motor_total = p->parts.active && p->parts.motor_kg_each > 0.0
 	    ? p->parts.motor_kg_each * (double)nr
-	    : fmax(SIZING_MOTOR_MIN_KG, (double)nr * p->c_motor * SIZING_MOTOR_K
-	        * pow(p_motor_w, SIZING_MOTOR_EXP));
+	    : fmax(SIZING_MOTOR_MIN_KG, (double)nr * p->c_motor
+	        * sizing_motor_kg(p_motor_w, 2.0 * M_PI * e->rps_peak));
 	double prop_each = p->parts.active && p->parts.prop_kg_each > 0.0
 	    ? p->parts.prop_kg_each
 	    : p->prop_kg_per_m22 * pow(d, SIZING_PROP_EXPONENT)
@@ -406,6 +406,13 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 		e->c_target_ah = 1.5 * e->capacity_ah;
 		break;
 	}
+}
+
+double
+sizing_motor_kg(double power_max_w, double omega_max_rad_s)
+{
+	return SIZING_MOTOR_K * pow(power_max_w, SIZING_MOTOR_EXP_P)
+	    * pow(omega_max_rad_s, -SIZING_MOTOR_EXP_W);
 }
 
 double

@@ -37,15 +37,21 @@
  * (0.00035 kg per N or A) are ten times lighter than any datasheet, so
  * aeroeval fits them to the published specifications of the parts
  * catalogue instead — component facts, not aircraft facts — by least
- * squares in log space over every single-channel entry with a published
- * mass and rating: motor mass vs maximum power (96 motors, log-sd 0.29).
- * ESC mass is linear in current (FETs and copper in parallel): the median
- * mass per amp of the 17 single ESCs, 1.25 g/A (a power-law fit, driven by
- * the 200 A units, extrapolates unphysically beyond them).  The paper's
- * racing factors (C_motor 0.25, C_esc 0.10) then scale them for racing
- * hardware, which the same data shows is about four times lighter. */
-#define SIZING_MOTOR_K          0.00038 /* kg / W^0.908 */
-#define SIZING_MOTOR_EXP        0.908   /* motor mass ~ P_max^0.908 */
+ * squares in log space.  Motor mass follows the maximum power and the
+ * speed it is delivered at: an electric motor's size is set by its torque
+ * (P / ω), so at equal power a faster motor is lighter.  Fit over the 95
+ * single-channel motors with a published mass, maximum power, maximum
+ * current and KV (ω_max = KV × P_max / I_max): m = 0.0104 P^0.810 ω^-0.384
+ * (kg, W, rad/s), log-sd 0.24 (power alone: 0.28).  ESC mass is linear in
+ * current (FETs and copper in parallel): the median mass per amp of the 17
+ * single ESCs, 1.25 g/A (a power-law fit, driven by the 200 A units,
+ * extrapolates unphysically beyond them).  The paper's racing factors
+ * (C_motor 0.25, C_esc 0.10) then scale them for racing hardware: a
+ * catalogue's iFlight XING2 2207 1750 KV (720 W, 30.5 g) is 0.33 × the
+ * law. */
+#define SIZING_MOTOR_K          0.0104  /* kg / (W^0.810 (rad/s)^-0.384) */
+#define SIZING_MOTOR_EXP_P      0.810   /* motor mass ~ P_max^0.810 */
+#define SIZING_MOTOR_EXP_W      0.384   /* ... × ω_max^-0.384 */
 #define SIZING_MOTOR_MIN_KG     0.008   /* paper's floor on total motor mass */
 #define SIZING_ESC_KG_PER_A     0.00125 /* ESC mass per amp of rating, kg/A */
 #define SIZING_ESC_MIN_A        15.0    /* paper: I_ESC,rotor >= 15 A */
@@ -189,6 +195,9 @@ double sizing_reserve_soc(void);
 
 /* The altitude-corrected seed of eq. (altcorrect), kg. */
 double sizing_seed_kg(double payload_kg, double rho_kg_m3);
+
+/* Continuous motor mass law (see the constants above), kg per motor. */
+double sizing_motor_kg(double power_max_w, double omega_max_rad_s);
 
 /* Series cells for a peak battery power at mass_kg: the smallest count
  * keeping the peak current within 60 A × sqrt(M / 1 kg), clamped to
