@@ -562,9 +562,16 @@ put_checks(struct jw *w, const struct res_run *run)
 	jw_close(w);
 }
 
-/* One sized run; {"ran": false} when the gate stopped it. */
+static void put_selected(struct jw *w, const struct solve_result *r);
+static void put_bom(struct jw *w, const struct solve_result *r);
+
+/* One sized run; {"ran": false} when the gate stopped it.  parts is the
+ * result whose real-parts selection this run's design is (the custom and
+ * BOM-closed runs), or NULL for a run that is not mapped to parts (the
+ * baseline): its "selected" and "bom" are then null. */
 static void
-put_run(struct jw *w, const char *key, const struct res_run *run)
+put_run(struct jw *w, const char *key, const struct res_run *run,
+        const struct solve_result *parts)
 {
 	jw_obj(w, key);
 	jw_bool(w, "ran", run->ran);
@@ -659,6 +666,13 @@ put_run(struct jw *w, const char *key, const struct res_run *run)
 	jw_close(w);
 
 	put_checks(w, run);
+	if (parts != NULL) {
+		put_selected(w, parts);
+		put_bom(w, parts);
+	} else {
+		jw_null(w, "selected");
+		jw_null(w, "bom");
+	}
 	jw_close(w);
 }
 
@@ -798,8 +812,8 @@ result_json_render_checked(const struct solve_result *r,
 	jw_close(&w);
 
 	put_mission(&w, &r->mission);
-	put_run(&w, "baseline", &r->baseline);
-	put_run(&w, "custom", &r->custom);
+	put_run(&w, "baseline", &r->baseline, NULL);
+	put_run(&w, "custom", &r->custom, r);
 	jw_obj(&w, "role_overhead");
 	put_mass(&w, &r->role_overhead);
 	jw_close(&w);
@@ -809,7 +823,7 @@ result_json_render_checked(const struct solve_result *r,
 		jw_null(&w, "continuous_optimum");
 	put_selected(&w, r);
 	if (r->parts_selected)
-		put_run(&w, "bom_closed", &r->closed);
+		put_run(&w, "bom_closed", &r->closed, r);
 	else
 		jw_null(&w, "bom_closed");
 	put_bom(&w, r);

@@ -418,7 +418,8 @@ result_json_should_hold_every_product_key_per_run(void **state)
 		"arm_natural_frequency_hz", "blade_pass_frequency_hz",
 		"resonance_margin", "max_battery_temp_c", "thermal_margin_c",
 		"min_terminal_voltage_v", "time_series", "continuous_optimum",
-		"feasible", "ran", "checks", "speed_sweep", "endurance_explorer"
+		"feasible", "ran", "checks", "speed_sweep", "endurance_explorer",
+		"selected", "bom"
 	};
 	static const char *const phase_keys[] = {
 		"phase", "duration_s", "power_w", "current_a", "energy_wh"
@@ -448,6 +449,14 @@ result_json_should_hold_every_product_key_per_run(void **state)
 			assert_string_equal(str(ph, "phase"), res_phase_name[p]);
 		}
 	}
+	/* The baseline is not mapped to parts; the custom design's parts and
+	 * BOM are the top level's. */
+	assert_true(cJSON_IsNull(get(get(root, "baseline"), "selected")));
+	assert_true(cJSON_IsNull(get(get(root, "baseline"), "bom")));
+	assert_true(cJSON_Compare(get(get(root, "custom"), "selected"),
+	    get(root, "selected"), 1));
+	assert_true(cJSON_Compare(get(get(root, "custom"), "bom"),
+	    get(root, "bom"), 1));
 	const cJSON *opt = get(root, "continuous_optimum");
 	assert_exact(num(opt, "prop_diameter_in"), r->custom.opt.prop_diameter_in);
 	assert_exact(num(opt, "prop_pitch_in"), r->custom.opt.prop_pitch_in);
@@ -695,7 +704,9 @@ result_json_should_report_non_finite_value_as_null_with_path(void **state)
 	r->baseline.trace[3].temp_c = INFINITY;
 	r->bom[1].unit_mass_kg = -INFINITY;
 	char *text = result_json_render_checked(r, VERSION, &f);
-	assert_int_equal(f.n_invalid, 3);
+	/* The BOM line is written three times: in the custom run, in the
+	 * BOM-closed run and at the top level. */
+	assert_int_equal(f.n_invalid, 5);
 	/* The first in document order: baseline comes before custom. */
 	assert_string_equal(f.first_path, "baseline.time_series.temp_c[3]");
 	/* Every value follows a space; keys such as "resonance_margin" and
