@@ -114,6 +114,17 @@ print_table(FILE *out, const struct cohort *c, const struct validate_report *v)
 		notes_line(vr->notes, buf, sizeof buf);
 		fprintf(out, "  %-28.28s %s\n", c->rows[i].name, buf);
 	}
+	header = 0;
+	for (size_t i = 0; i < v->n_rows; i++) {
+		const struct validate_row *vr = &v->rows[i];
+		if (vr->status != VALIDATE_ROW_OK || !vr->thrust_relaxed)
+			continue;
+		if (!header++)
+			fprintf(out, "\nRole thrust targets relaxed (the role's default "
+			    "did not close; README \"Thrust relaxation\"):\n");
+		fprintf(out, "  %-28.28s T/W %.1f\n", c->rows[i].name,
+		    vr->thrust_to_weight);
+	}
 }
 
 static cJSON *
@@ -170,6 +181,8 @@ report_json(const char *path, const struct cohort *c, const struct validate_repo
 			cJSON_AddBoolToObject(o, "feasible", vr->feasible);
 			cJSON_AddNumberToObject(o, "cells", vr->cells);
 			cJSON_AddNumberToObject(o, "capacity_mah", vr->capacity_mah);
+			cJSON_AddNumberToObject(o, "thrust_to_weight", vr->thrust_to_weight);
+			cJSON_AddBoolToObject(o, "thrust_relaxed", vr->thrust_relaxed);
 		}
 		if (vr->has_battery) {
 			cJSON_AddNumberToObject(o, "battery_actual_kg", vr->battery_actual_kg);

@@ -236,6 +236,8 @@ validate_solve_row(const struct mission_spec *spec, const struct model_data *md,
 	vr->feasible = false;
 	vr->cells = 0;
 	vr->capacity_mah = 0.0;
+	vr->thrust_to_weight = 0.0;
+	vr->thrust_relaxed = false;
 	if (rc != 0 || !o->ran || !isfinite(o->mass.total_kg) || !(o->mass.total_kg > 0.0)) {
 		vr->status = VALIDATE_ROW_NOT_RUN;
 		return;
@@ -244,6 +246,8 @@ validate_solve_row(const struct mission_spec *spec, const struct model_data *md,
 	vr->feasible = work->feasible;
 	vr->cells = o->cell_count;
 	vr->capacity_mah = o->capacity_mah;
+	vr->thrust_to_weight = o->thrust_to_weight;
+	vr->thrust_relaxed = o->thrust_margin < o->thrust_margin_requested;
 	vr->battery_pred_kg = o->mass.battery_kg;
 	vr->status = o->converged ? VALIDATE_ROW_OK : VALIDATE_ROW_NOT_CONVERGED;
 }

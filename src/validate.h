@@ -143,6 +143,9 @@ struct validate_row {
 	double battery_err_pct;
 	int cells;                 /* series cells of the design (0 unless run) */
 	double capacity_mah;       /* capacity of the design (0 unless run) */
+	double thrust_to_weight;   /* T/W the design flies (0 unless run) */
+	bool thrust_relaxed;       /* the role's default target did not close
+	                            * and was relaxed (sizing.h) */
 };
 
 /* The whole validation. */

@@ -11,6 +11,7 @@
 
 #include "mission_io.h"
 #include "model_io.h"
+#include "xalloc.h"
 
 #define FIX "tests/fixtures/validate/"
 
@@ -297,6 +298,39 @@ cohort_should_solve_each_row_and_count_only_converged_rows(void **state)
 	cohort_free(&c);
 }
 
+/* A 5-inch racer row: the racing role's default T/W 25 cannot close, so
+ * the row is sized at the relaxed target and says so. */
+static void
+solve_row_should_report_a_relaxed_role_thrust_target(void **state)
+{
+	(void)state;
+	struct cohort c;
+	load(FIX "rules.csv", &c);
+	struct cohort_row r = c.rows[0];
+	r.role = ROLE_RACING;
+	r.airframe_class = AF_MICRO_AIO;
+	r.payload_kg = 0.03;
+	r.diagonal_wheelbase_mm = 200.0;
+	r.prop_diameter_in = 5.0;
+	r.prop_pitch_in = 4.3;
+	r.cell_count = 4;
+	r.hover_time_min = 4.0;
+	struct mission_spec s;
+	unsigned notes;
+	assert_int_equal(validate_mission_from_row(&r, &md, &s, &notes),
+	    VALIDATE_SKIP_NONE);
+	struct solve_result *work = xmalloc(sizeof *work);
+	struct validate_row vr;
+	memset(&vr, 0, sizeof vr);
+	validate_solve_row(&s, &md, work, &vr);
+	assert_int_equal(vr.status, VALIDATE_ROW_OK);
+	assert_true(vr.thrust_relaxed);
+	assert_true(vr.thrust_to_weight >= 1.0 / (0.7 * 0.7) - 1e-9);
+	assert_true(vr.thrust_to_weight < 25.0);
+	free(work);
+	cohort_free(&c);
+}
+
 int
 main(void)
 {
@@ -309,6 +343,7 @@ main(void)
 		cmocka_unit_test(rule_should_never_read_the_masses_it_predicts),
 		cmocka_unit_test(summarize_should_match_a_hand_worked_cohort),
 		cmocka_unit_test(cohort_should_solve_each_row_and_count_only_converged_rows),
+		cmocka_unit_test(solve_row_should_report_a_relaxed_role_thrust_target),
 	};
 	return cmocka_run_group_tests(tests, setup, NULL);
 }
