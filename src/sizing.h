@@ -38,20 +38,20 @@
  * aeroeval fits them to the published specifications of the parts
  * catalogue instead — component facts, not aircraft facts — by least
  * squares in log space.  Motor mass follows the maximum power and the
- * speed it is delivered at: an electric motor's size is set by its torque
- * (P / ω), so at equal power a faster motor is lighter.  Fit over the 95
- * single-channel motors with a published mass, maximum power, maximum
- * current and KV (ω_max = KV × P_max / I_max): m = 0.0104 P^0.810 ω^-0.384
- * (kg, W, rad/s), log-sd 0.24 (power alone: 0.28).  ESC mass is linear in
- * current (FETs and copper in parallel): the median mass per amp of the 17
- * single ESCs, 1.25 g/A (a power-law fit, driven by the 200 A units,
- * extrapolates unphysically beyond them).  The paper's racing factors
- * (C_motor 0.25, C_esc 0.10) then scale them for racing hardware: a
- * catalogue's iFlight XING2 2207 1750 KV (720 W, 30.5 g) is 0.33 × the
- * law. */
-#define SIZING_MOTOR_K          0.0104  /* kg / (W^0.810 (rad/s)^-0.384) */
-#define SIZING_MOTOR_EXP_P      0.810   /* motor mass ~ P_max^0.810 */
-#define SIZING_MOTOR_EXP_W      0.384   /* ... × ω_max^-0.384 */
+ * speed it is delivered at (an electric motor's size is set by its torque,
+ * P / ω, so at equal power a faster motor is lighter).  Fit over the 97
+ * single-channel non-racing motors (KV < 1500 rpm/V) with a published
+ * mass, maximum power, maximum current and KV (ω_max = KV × P_max /
+ * I_max): m = 0.00182 P^0.857 ω^-0.174 (kg, W, rad/s), log-sd 0.19 (power
+ * alone: 0.20).  ESC mass is linear in current (FETs and copper in
+ * parallel): the median mass per amp of the 17 single ESCs, 1.25 g/A (a
+ * power-law fit, driven by the 200 A units, extrapolates unphysically
+ * beyond them).  The paper's racing factors (C_motor 0.25, C_esc 0.10)
+ * then scale them for racing hardware: the catalogue's 13 racing motors
+ * (KV >= 1500) weigh 0.22 × the law (median; 0.17-0.40). */
+#define SIZING_MOTOR_K          0.00182 /* kg / (W^0.857 (rad/s)^-0.174) */
+#define SIZING_MOTOR_EXP_P      0.857   /* motor mass ~ P_max^0.857 */
+#define SIZING_MOTOR_EXP_W      0.174   /* ... × ω_max^-0.174 */
 #define SIZING_MOTOR_MIN_KG     0.008   /* paper's floor on total motor mass */
 #define SIZING_ESC_KG_PER_A     0.00125 /* ESC mass per amp of rating, kg/A */
 #define SIZING_ESC_MIN_A        15.0    /* paper: I_ESC,rotor >= 15 A */

@@ -239,7 +239,7 @@ sweep_random_missions_should_give_finite_consistent_results(void **state)
 	 * The generator is deliberately harsh (racing at T/W 25, tiny
 	 * propellers on many rotors, 50-minute missions, Li-S packs): about
 	 * half of its missions run away physically even after the thrust
-	 * relaxation, and about 6 % close feasibly (48 of the 800). */
+	 * relaxation, and about 6 % close feasibly (49 of the 800). */
 	assert_true(n_feasible > SWEEP_N / 50);
 }
 
