@@ -103,10 +103,27 @@ option_diameter_in(const struct catalog_motor *m, const struct catalog_prop *p)
 
 /* ---- J-score and limits --------------------------------------------------- */
 
-double
-optim_j_score(const struct optim_target *t, int cells, double diameter_in,
-              double pitch_in, double kv, double motor_mass_kg,
-              double *hover_throttle)
+/* Hover rotor speed of a propeller of diameter_in at the target's thrust
+ * per rotor (T = C_t ρ n² D⁴), rev/s.  It depends on the propeller alone,
+ * so the search computes it once per propeller, not per motor and bus. */
+static double
+hover_rps(const struct optim_target *t, double diameter_in)
+{
+	double thrust_n = t->mass_kg * G0_M_S2 / (double)t->n_rotors;
+	return aero_rps_for_thrust(thrust_n, t->ct, t->rho_kg_m3, in_to_m(diameter_in));
+}
+
+/* θ_hvr: hover over full-throttle rotor speed. */
+static double
+hover_theta(double n_hover_rps, double n_max_rps)
+{
+	return n_max_rps > 0.0 ? n_hover_rps / n_max_rps : 1.0 / OPTIM_LOAD_RPM;
+}
+
+/* optim_j_score with θ_hvr already known. */
+static double
+j_score_at(const struct optim_target *t, int cells, double diameter_in,
+           double pitch_in, double kv, double motor_mass_kg, double theta)
 {
 	double kv_t = at_bus(t, t->motor_kv, cells);
 	double j = 0.0;
@@ -117,16 +134,8 @@ optim_j_score(const struct optim_target *t, int cells, double diameter_in,
 		j += OPTIM_W_KV * fabs(kv - kv_t) / kv_t;
 	if (pitch_in > 0.0 && t->prop_pitch_in > 0.0)
 		j += OPTIM_W_PITCH * fabs(pitch_in - t->prop_pitch_in) / t->prop_pitch_in;
-
-	/* Pen_a: hover throttle this motor really gives on this propeller,
-	 * thrust ∝ n² (T = C_t ρ n² D⁴), against the role's target. */
-	double n_max_rps = full_rpm(t, cells, kv) / S_PER_MIN;
-	double thrust_n = t->mass_kg * G0_M_S2 / (double)t->n_rotors;
-	double n_hover_rps = aero_rps_for_thrust(thrust_n, t->ct, t->rho_kg_m3,
-	    in_to_m(diameter_in));
-	double theta = n_max_rps > 0.0 ? n_hover_rps / n_max_rps : 1.0 / OPTIM_LOAD_RPM;
-	if (hover_throttle != NULL)
-		*hover_throttle = theta;
+	/* Pen_a: hover throttle this motor really gives on this propeller
+	 * against the role's target. */
 	j += OPTIM_PEN_THROTTLE * fmax(0.0, theta - t->hover_throttle);
 	/* Pen_m (ours): a motor heavier than the scaling law's. */
 	double m_star = pitch_in > 0.0 ? t->motor_mass_kg : t->drive_mass_kg;
@@ -137,10 +146,39 @@ optim_j_score(const struct optim_target *t, int cells, double diameter_in,
 	return j;
 }
 
-/* Every limit the option breaks, one bit per enum optim_reason. */
+double
+optim_j_score(const struct optim_target *t, int cells, double diameter_in,
+              double pitch_in, double kv, double motor_mass_kg,
+              double *hover_throttle)
+{
+	double theta = hover_theta(hover_rps(t, diameter_in),
+	    full_rpm(t, cells, kv) / S_PER_MIN);
+	if (hover_throttle != NULL)
+		*hover_throttle = theta;
+	return j_score_at(t, cells, diameter_in, pitch_in, kv, motor_mass_kg, theta);
+}
+
+/* What the pair limits need of a propeller (or an integrated system's own),
+ * fixed for one target: the search computes it once per propeller. */
+struct prop_aim {
+	double d_in;          /* diameter */
+	double tip_m;         /* π D: tip speed per rev/s, m */
+	double n_hover_rps;   /* hover_rps() */
+};
+
+static void
+prop_aim_of(const struct optim_target *t, const struct catalog_motor *m,
+            const struct catalog_prop *p, struct prop_aim *a)
+{
+	a->d_in = option_diameter_in(m, p);
+	a->tip_m = M_PI * in_to_m(a->d_in);
+	a->n_hover_rps = hover_rps(t, a->d_in);
+}
+
+/* The limits of the motor alone on `cells` (cell range, current, power):
+ * bits OPTIM_MOTOR_CELLS..OPTIM_MOTOR_POWER, the first three reasons. */
 static unsigned
-limit_mask(const struct optim_target *t, int cells, const struct catalog_motor *m,
-           const struct catalog_prop *p)
+motor_mask(const struct optim_target *t, int cells, const struct catalog_motor *m)
 {
 	unsigned mask = 0;
 	double i_peak = at_bus(t, t->motor_peak_current_a, cells);
@@ -151,23 +189,48 @@ limit_mask(const struct optim_target *t, int cells, const struct catalog_motor *
 		mask |= 1u << OPTIM_MOTOR_CURRENT;
 	if (m->max_power_w > 0.0 && m->max_power_w < t->motor_peak_power_w)
 		mask |= 1u << OPTIM_MOTOR_POWER;
-	double d_in = option_diameter_in(m, p);
-	if (d_in > t->overlap_limit_in + OVERLAP_TOL_IN)
+	return mask;
+}
+
+/* A propeller too large for the wheelbase. */
+static bool
+over_overlap(const struct optim_target *t, double d_in)
+{
+	return d_in > t->overlap_limit_in + OVERLAP_TOL_IN;
+}
+
+/* The limits of the motor on its propeller (p NULL: an integrated system),
+ * bits OPTIM_PROP_OVERLAP..OPTIM_CANNOT_HOVER. */
+static unsigned
+pair_mask(const struct optim_target *t, int cells, const struct catalog_motor *m,
+          const struct catalog_prop *p, const struct prop_aim *a)
+{
+	unsigned mask = 0;
+	double d_in = a->d_in;
+	if (over_overlap(t, d_in))
 		mask |= 1u << OPTIM_PROP_OVERLAP;
 	if ((m->prop_min_in > 0.0 && d_in < m->prop_min_in - RANGE_TOL_IN)
 	    || (m->prop_max_in > 0.0 && d_in > m->prop_max_in + RANGE_TOL_IN))
 		mask |= 1u << OPTIM_PROP_RANGE;
 	double rpm = full_rpm(t, cells, m->kv_rpm_per_v);
-	double mach = M_PI * in_to_m(d_in) * rpm / S_PER_MIN / t->sound_m_s;
+	double mach = a->tip_m * rpm / S_PER_MIN / t->sound_m_s;
 	if (!(mach <= AERO_TIP_MACH_MAX))
 		mask |= 1u << OPTIM_TIP_MACH;
 	if (p != NULL && p->max_rpm > 0.0 && rpm > p->max_rpm)
 		mask |= 1u << OPTIM_PROP_RPM;
-	double theta;
-	optim_j_score(t, cells, d_in, 0.0, m->kv_rpm_per_v, 0.0, &theta);
-	if (!(theta < 1.0))
+	if (!(hover_theta(a->n_hover_rps, rpm / S_PER_MIN) < 1.0))
 		mask |= 1u << OPTIM_CANNOT_HOVER;
 	return mask;
+}
+
+/* Every limit the option breaks, one bit per enum optim_reason. */
+static unsigned
+limit_mask(const struct optim_target *t, int cells, const struct catalog_motor *m,
+           const struct catalog_prop *p)
+{
+	struct prop_aim a;
+	prop_aim_of(t, m, p, &a);
+	return motor_mask(t, cells, m) | pair_mask(t, cells, m, p, &a);
 }
 
 /* The limits a lock takes out of the search: a locked motor is never pruned
@@ -188,13 +251,12 @@ locked_mask(bool motor_locked, bool prop_locked)
 	return mask;
 }
 
+/* The lowest reason bit set: masks hold only bits 1..OPTIM_REASON_MAX-1
+ * (bit 0, OPTIM_OK, is never set), so that is the first in enum order. */
 static enum optim_reason
 first_reason(unsigned mask)
 {
-	for (int k = 1; k < OPTIM_REASON_MAX; k++)
-		if (mask & 1u << k)
-			return (enum optim_reason)k;
-	return OPTIM_OK;
+	return mask != 0 ? (enum optim_reason)__builtin_ctz(mask) : OPTIM_OK;
 }
 
 enum optim_reason
@@ -375,41 +437,77 @@ struct bus_offer {
 	struct optim_choice battery;   /* battery fields only */
 };
 
+/* A usable propeller and what the search needs of it, for one target. */
+struct rank_prop {
+	const struct catalog_prop *p;
+	bool locked;                   /* the mission locks this propeller */
+	bool lock_ok;                  /* no propeller lock, or this one */
+	bool over;                     /* above the overlap limit */
+	struct prop_aim aim;
+};
+
 /* Shared state of one ranking. */
 struct rank_ctx {
 	const struct optim_target *t;
+	const struct catalog *cat;
 	const struct optim_locks *lk;
 	struct optim_census *cs;
 	struct optim_choice *choices;
 	int max_choices, n_kept, n_found;
 	struct res_candidate *cand;    /* NULL: not recorded */
 	int slot;                      /* this motor's candidate, -1 none */
+	const struct rank_prop *props; /* the usable propellers, in file order */
+	size_t n_props;
+	int n_lock_ok;                 /* of them, those a propeller lock admits */
+	const size_t *fit;             /* indices of those within the overlap
+	                                  limit or locked, in file order */
+	size_t n_fit;
+	int n_over;                    /* admitted, free and above the limit */
 };
 
-/* Score one motor + propeller option on one bus. */
+/* The ESC set of one motor on one bus, picked when an option first needs
+ * it (most motors fail a limit on every propeller and never do). */
+struct esc_pick {
+	bool done;
+	const struct catalog_esc *esc;
+	int n_esc;
+};
+
+/* Count an option in the census; true if it failed `why` (not OPTIM_OK). */
+static bool
+option_fails(struct rank_ctx *x, bool eligible, enum optim_reason why)
+{
+	if (eligible)
+		x->cs->n_examined++;
+	if (why == OPTIM_OK)
+		return false;
+	if (eligible)
+		x->cs->n_fail[why]++;
+	return true;
+}
+
+/* One motor + propeller option on one bus that passed every limit the
+ * locks leave (and was counted by option_fails): score it, keep it. */
 static void
 rank_option(struct rank_ctx *x, const struct bus_offer *bus,
             const struct catalog_motor *m, const struct catalog_prop *p,
-            bool eligible, bool motor_locked, bool prop_locked,
-            const struct catalog_esc *esc, int n_esc)
+            const struct prop_aim *a, bool eligible, struct esc_pick *ep)
 {
 	const struct optim_target *t = x->t;
-	if (eligible)
-		x->cs->n_examined++;
-	unsigned ignored = eligible ? locked_mask(motor_locked, prop_locked) : 0;
-	enum optim_reason why = first_reason(limit_mask(t, bus->cells, m, p) & ~ignored);
-	if (why != OPTIM_OK) {
-		if (eligible)
-			x->cs->n_fail[why]++;
-		return;
-	}
-	double theta;
-	double j = optim_j_score(t, bus->cells, option_diameter_in(m, p),
-	    p != NULL ? p->pitch_in : 0.0, m->kv_rpm_per_v, m->mass_kg, &theta);
+	double theta = hover_theta(a->n_hover_rps,
+	    full_rpm(t, bus->cells, m->kv_rpm_per_v) / S_PER_MIN);
+	double j = j_score_at(t, bus->cells, a->d_in, p != NULL ? p->pitch_in : 0.0,
+	    m->kv_rpm_per_v, m->mass_kg, theta);
 	struct res_candidate *rc = x->cand != NULL && x->slot >= 0 ? &x->cand[x->slot] : NULL;
 	if (rc != NULL && j < rc->j_score)
 		rc->j_score = j;
-	if (!m->integrated && esc == NULL) {
+	if (!m->integrated && !ep->done) {
+		/* The ESC must suit the motor's own limits even when the motor
+		 * is free, so it is picked per motor. */
+		pick_esc(t, x->cat, x->lk->esc, bus->cells, m, &ep->esc, &ep->n_esc);
+		ep->done = true;
+	}
+	if (!m->integrated && ep->esc == NULL) {
 		if (eligible)
 			x->cs->n_fail[OPTIM_NO_ESC]++;
 		return;
@@ -429,8 +527,8 @@ rank_option(struct rank_ctx *x, const struct bus_offer *bus,
 	c.cells = bus->cells;
 	c.motor = m;
 	c.prop = p;
-	c.esc = m->integrated ? NULL : esc;
-	c.n_esc = m->integrated ? 0 : n_esc;
+	c.esc = m->integrated ? NULL : ep->esc;
+	c.n_esc = m->integrated ? 0 : ep->n_esc;
 	c.j_score = j;
 	c.hover_throttle = theta;
 	keep_choice(x->choices, &x->n_kept, x->max_choices, &c, t->cells);
@@ -442,35 +540,72 @@ is_lock(const char *lock, const char *id)
 	return lock != NULL && strcmp(lock, id) == 0;
 }
 
-/* Every option of one motor on one bus. */
+/* The motor limits come first in enum order, so a motor that breaks one
+ * fails on it whatever the propeller (rank_motor relies on it). */
+_Static_assert(OPTIM_MOTOR_CELLS == 1 && OPTIM_MOTOR_CURRENT == 2
+    && OPTIM_MOTOR_POWER == 3 && OPTIM_PROP_OVERLAP == 4,
+    "motor limits, then the overlap limit, must be the first reasons");
+
+/* Every option of one motor on one bus.  An option that is not eligible
+ * (another part is locked) is never counted; it only matters when it
+ * passes and a candidate records it, so it is skipped when there is none. */
 static void
-rank_motor(struct rank_ctx *x, const struct catalog *cat,
-           const struct bus_offer *bus, const struct catalog_motor *m)
+rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
+           const struct catalog_motor *m)
 {
+	const struct optim_target *t = x->t;
 	const struct optim_locks *lk = x->lk;
 	bool motor_locked = is_lock(lk->motor, m->id);
 	bool motor_ok = lk->motor == NULL || motor_locked;
-	const struct catalog_esc *esc = NULL;
-	int n_esc = 0;
+	bool has_cand = x->cand != NULL && x->slot >= 0;
+	unsigned own = motor_mask(t, bus->cells, m);
 	if (!m->integrated) {
-		/* The ESC must suit the motor's own limits even when the motor
-		 * is free, so pick it per motor. */
-		pick_esc(x->t, cat, lk->esc, bus->cells, m, &esc, &n_esc);
-		for (size_t j = 0; j < catalog_n_props(cat); j++) {
-			const struct catalog_prop *p = catalog_prop(cat, j);
-			if (!p->usable)
+		if (own != 0 && !motor_locked) {
+			/* A free motor's own limits are never ignored: each of its
+			 * options fails on the first of them and touches nothing
+			 * but the census, so they are counted at once. */
+			if (motor_ok) {
+				x->cs->n_examined += x->n_lock_ok;
+				x->cs->n_fail[first_reason(own)] += x->n_lock_ok;
+			}
+			return;
+		}
+		/* A free propeller above the overlap limit fails there on a
+		 * motor that passes its own limits (the next reason in enum
+		 * order): those options too are counted at once. */
+		size_t n = x->n_props;
+		const size_t *idx = NULL;
+		if (!motor_locked) {
+			if (motor_ok) {
+				x->cs->n_examined += x->n_over;
+				x->cs->n_fail[OPTIM_PROP_OVERLAP] += x->n_over;
+			}
+			n = x->n_fit;
+			idx = x->fit;
+		}
+		struct esc_pick ep = { false, NULL, 0 };
+		for (size_t j = 0; j < n; j++) {
+			const struct rank_prop *rp = &x->props[idx != NULL ? idx[j] : j];
+			bool eligible = motor_ok && rp->lock_ok;
+			if (!eligible && !has_cand)
 				continue;
-			bool prop_locked = is_lock(lk->prop, p->id);
-			bool eligible = motor_ok && (lk->prop == NULL || prop_locked);
-			rank_option(x, bus, m, p, eligible, motor_locked, prop_locked,
-			    esc, n_esc);
+			unsigned ignored = eligible ? locked_mask(motor_locked, rp->locked) : 0;
+			unsigned mask = own | pair_mask(t, bus->cells, m, rp->p, &rp->aim);
+			if (!option_fails(x, eligible, first_reason(mask & ~ignored)))
+				rank_option(x, bus, m, rp->p, &rp->aim, eligible, &ep);
 		}
 	} else {
 		/* An integrated system brings its own propeller and ESC: a
 		 * propeller or ESC lock rules it out. */
 		bool eligible = motor_ok && lk->prop == NULL && lk->esc == NULL;
-		rank_option(x, bus, m, NULL, eligible, motor_locked, motor_locked,
-		    NULL, 0);
+		if (!eligible && !has_cand)
+			return;
+		struct prop_aim a;
+		prop_aim_of(t, m, NULL, &a);
+		unsigned ignored = eligible ? locked_mask(motor_locked, motor_locked) : 0;
+		unsigned mask = own | pair_mask(t, bus->cells, m, NULL, &a);
+		if (!option_fails(x, eligible, first_reason(mask & ~ignored)))
+			rank_option(x, bus, m, NULL, &a, eligible, NULL);
 	}
 }
 
@@ -485,6 +620,7 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 	struct rank_ctx x;
 	memset(&x, 0, sizeof x);
 	x.t = t;
+	x.cat = cat;
 	x.lk = locks != NULL ? locks : &none;
 	x.cs = census != NULL ? census : &local;
 	memset(x.cs, 0, sizeof *x.cs);
@@ -512,6 +648,30 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 	if (n_cand != NULL)
 		*n_cand = n;
 
+	/* What each propeller brings is the same on every motor and bus. */
+	size_t np = catalog_n_props(cat);
+	struct rank_prop *props = xmalloc((np > 0 ? np : 1) * sizeof *props);
+	size_t *fit = xmalloc((np > 0 ? np : 1) * sizeof *fit);
+	for (size_t j = 0; j < np; j++) {
+		const struct catalog_prop *p = catalog_prop(cat, j);
+		if (!p->usable)
+			continue;
+		struct rank_prop *rp = &props[x.n_props];
+		rp->p = p;
+		rp->locked = is_lock(x.lk->prop, p->id);
+		rp->lock_ok = x.lk->prop == NULL || rp->locked;
+		prop_aim_of(t, NULL, p, &rp->aim);
+		rp->over = over_overlap(t, rp->aim.d_in);
+		x.n_lock_ok += rp->lock_ok;
+		if (!rp->over || rp->locked)
+			fit[x.n_fit++] = x.n_props;
+		else if (rp->lock_ok)
+			x.n_over++;
+		x.n_props++;
+	}
+	x.props = props;
+	x.fit = fit;
+
 	for (int s = t->cells_lo; s <= t->cells_hi; s++) {
 		struct bus_offer bus;
 		memset(&bus, 0, sizeof bus);
@@ -524,9 +684,11 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 			if (!m->usable)
 				continue;
 			x.slot = slot[i];
-			rank_motor(&x, cat, &bus, m);
+			rank_motor(&x, &bus, m);
 		}
 	}
+	free(fit);
+	free(props);
 	free(slot);
 	return x.n_found;
 }
