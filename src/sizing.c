@@ -155,6 +155,13 @@ shedding(const struct sizing_params *p, double gamma_time,
 	    : (t_total > 0.0 ? p->payload_kg / t_total : 0.0);
 }
 
+/* A real catalogue battery (BOM-closed run): its capacity is fixed. */
+static bool
+battery_fixed(const struct sizing_params *p)
+{
+	return p->parts.active && p->parts.battery_kg > 0.0;
+}
+
 /* The battery that the loop state describes. */
 static void
 pack_of(const struct sizing_params *p, const struct eval *e,
@@ -262,7 +269,7 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	/* Battery: energy-sized capacity, floored by the power the cells can
 	 * deliver (specific power), unless locked or a real part. */
 	e->capacity_ah = capacity_ah;
-	if (p->parts.active && p->parts.battery_kg > 0.0)
+	if (battery_fixed(p))
 		e->capacity_ah = p->parts.capacity_ah;
 	else if (p->capacity_locked)
 		e->capacity_ah = p->capacity_locked_ah;
@@ -282,7 +289,7 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	double m_power = fmax(p_sustained,
 	    e->peak.electrical_w / p->burst_factor)
 	    / p->chem->p_spec_w_kg * e->eta_pkg;
-	if (p->parts.active && p->parts.battery_kg > 0.0) {
+	if (battery_fixed(p)) {
 		e->mass.battery_kg = p->parts.battery_kg;
 	} else if (!p->capacity_locked && m_power > m_energy) {
 		e->power_binds = true;
@@ -445,8 +452,12 @@ seed_cells(const struct sizing_params *p, int lo, int hi, double mass_kg,
 	struct eval e;
 	for (int k = 0; k < 3; k++) {
 		evaluate(p, ls, mass_kg, 1.0, 8, NULL, &e);
-		ls->cells = sizing_auto_cells(e.peak.electrical_w, mass_kg,
+		int cells = sizing_auto_cells(e.peak.electrical_w, mass_kg,
 		    p->chem->v_nom, lo, hi);
+		/* Unchanged: every further pass would repeat this one. */
+		if (cells == ls->cells)
+			break;
+		ls->cells = cells;
 	}
 	return ls->cells;
 }
@@ -531,7 +542,7 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 		if (!flown && last->capacity_ah > c_failed)
 			c_failed = last->capacity_ah;
 		double c_used = last->capacity_ah;
-		if (!p->capacity_locked && !(p->parts.active && p->parts.battery_kg > 0.0)) {
+		if (!p->capacity_locked && !battery_fixed(p)) {
 			/* Eq. (relaxation) with the ratchet floor. */
 			c = SIZING_RELAX_ALPHA * last->c_target_ah
 			    + (1.0 - SIZING_RELAX_ALPHA) * c_used;
@@ -558,8 +569,7 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 		}
 		/* A power-bound battery is as large as the peak power needs; its
 		 * energy target is then below it and has no further say. */
-		bool cap_steady = p->capacity_locked
-		    || (p->parts.active && p->parts.battery_kg > 0.0)
+		bool cap_steady = p->capacity_locked || battery_fixed(p)
 		    || (last->power_binds && last->c_target_ah <= c_used)
 		    || fabs(c - c_used) <= 1e-4 * c_used;
 		if (fabs(f - m) < SIZING_TOL_KG && cap_steady && cells_steady) {
@@ -621,7 +631,9 @@ lipschitz(const struct sizing_params *p, const struct loop_state *ls,
 	for (int k = 0; k < 3; k++) {
 		evaluate(p, ls, m_star + h, ca, LOOP_STEPS, NULL, &a);
 		evaluate(p, ls, m_star - h, cb, LOOP_STEPS, NULL, &b);
-		if (p->capacity_locked)
+		/* A locked or catalogue capacity ignores the re-targeted one:
+		 * further rounds would repeat this one exactly. */
+		if (p->capacity_locked || battery_fixed(p))
 			break;
 		ca = a.c_target_ah;
 		cb = b.c_target_ah;
