@@ -243,12 +243,22 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 			e->v_fwd_ms = e->v_min_power_ms;
 	}
 
-	mission_power(m, mass_kg, p->v_climb_ms, 0.0, &e->ph[PHASE_CLIMB]);
-	mission_power(m, mass_kg, 0.0, e->v_fwd_ms, &e->ph[PHASE_FORWARD]);
-	mission_power(m, mass_kg, 0.0, 0.0, &e->ph[PHASE_HOVER]);
+	/* The phase powers size a power-bound battery and fly the mission: a
+	 * locked capacity evaluated for its masses alone (steps <= 0, the
+	 * endurance explorer) needs neither, nor the pitch derived from them
+	 * (they stay 0). */
+	bool phases = steps > 0 || !p->capacity_locked;
+	if (phases) {
+		mission_power(m, mass_kg, p->v_climb_ms, 0.0, &e->ph[PHASE_CLIMB]);
+		mission_power(m, mass_kg, 0.0, e->v_fwd_ms, &e->ph[PHASE_FORWARD]);
+		mission_power(m, mass_kg, 0.0, 0.0, &e->ph[PHASE_HOVER]);
+	}
 	mission_peak_power(m, e->t_peak_n, &e->peak);
-	e->pitch_m = p->prop_locked ? p->prop_pitch_m
-	    : sizing_pitch_m(d, e->ph[PHASE_HOVER].rotor.induced_ms, e->rps_hover);
+	if (p->prop_locked)
+		e->pitch_m = p->prop_pitch_m;
+	else if (phases)
+		e->pitch_m = sizing_pitch_m(d, e->ph[PHASE_HOVER].rotor.induced_ms,
+		    e->rps_hover);
 
 	/* Series cells: locked, set by a locked KV, or from the current budget. */
 	if (p->parts.active && p->parts.cells > 0)
