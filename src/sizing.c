@@ -509,14 +509,35 @@ final_steps(const struct sizing_params *p)
 	return p->trace_steps > 0 ? p->trace_steps : RES_MAX_TRACE - 8;
 }
 
+/* Forget what a recording evaluation wrote into rec (the trace and the
+ * speed sweep): the next one then starts from the zeroed record that
+ * sizing_run began with. */
+static void
+clear_record(struct res_run *rec)
+{
+	memset(rec->trace, 0, sizeof rec->trace);
+	rec->n_trace = 0;
+	memset(rec->sweep_v_ms, 0, sizeof rec->sweep_v_ms);
+	memset(rec->sweep_power_w, 0, sizeof rec->sweep_power_w);
+	rec->n_sweep = 0;
+}
+
 /* The fixed-point iteration at goal-relaxation factor gamma_time.  The
  * series-cell count is the locked one, or starts from the seed mass's
- * peak power and follows next_cells() inside the loop. */
+ * peak power and follows next_cells() inside the loop.
+ *
+ * A loop that converges on a flown mission confirms it at the final
+ * resolution: that evaluation, at (*m_star, *c_star, *ls_out), goes to
+ * *fin with *fin_done set, and its trace and sweep into rec unless rec is
+ * NULL.  It is the evaluation sizing_run would make next, so sizing_run
+ * keeps it instead of flying the same mission again. */
 static enum sizing_status
 iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
-        struct eval *last, double *m_star, double *c_star,
+        struct res_run *rec, struct eval *last, struct eval *fin,
+        bool *fin_done, double *m_star, double *c_star,
         struct loop_state *ls_out)
 {
+	*fin_done = false;
 	out->n_history = 0;
 	out->iterations = 0;
 	/* Start from the seed of eq. (altcorrect). */
@@ -588,10 +609,12 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 			 * record, so that a mission the coarse loop flew is not
 			 * lost to discretisation in the dossier's trace. */
 			if (flown) {
-				struct eval fine;
+				if (rec != NULL)
+					clear_record(rec);
 				evaluate(p, &ls, m, last->capacity_ah, final_steps(p),
-				    NULL, &fine);
-				flown = fine.dis.end == DIS_COMPLETED;
+				    rec, fin);
+				*fin_done = true;
+				flown = fin->dis.end == DIS_COMPLETED;
 			}
 			st = flown ? SIZING_CONVERGED : SIZING_DISCHARGE_FAIL;
 			break;
@@ -834,28 +857,30 @@ marketing_endurance_s(const struct sizing_params *p, const struct eval *e,
 enum sizing_status
 sizing_run(const struct sizing_params *p, struct res_run *out)
 {
-	struct eval last;
+	struct eval last, fin;
+	bool fin_done;
 	struct loop_state ls;
 	double m_star = 0.0, c_star = 0.0;
 
 	memset(out, 0, sizeof *out);
 	out->ran = true;
-	enum sizing_status st = iterate(p, 1.0, out,
-	    &last, &m_star, &c_star, &ls);
+	enum sizing_status st = iterate(p, 1.0, out, out, &last, &fin, &fin_done,
+	    &m_star, &c_star, &ls);
 
 	if (st != SIZING_CONVERGED && p->allow_relax) {
 		/* Goal relaxation: the largest γ in [0.05, 1) that closes, by
 		 * bisection (the loop is monotone in mission time). */
 		double good = 0.0, lo = SIZING_GAMMA_MIN, hi = 1.0;
-		struct eval e2;
+		struct eval e2, f2;
+		bool f2_done;
 		struct loop_state l2;
 		double m2, c2;
-		if (iterate(p, lo, out, &e2, &m2, &c2, &l2)
+		if (iterate(p, lo, out, NULL, &e2, &f2, &f2_done, &m2, &c2, &l2)
 		    == SIZING_CONVERGED) {
 			good = lo;
 			for (int k = 0; k < GAMMA_BISECT; k++) {
 				double mid = 0.5 * (lo + hi);
-				if (iterate(p, mid, out, &e2,
+				if (iterate(p, mid, out, NULL, &e2, &f2, &f2_done,
 				    &m2, &c2, &l2) == SIZING_CONVERGED) {
 					good = mid;
 					lo = mid;
@@ -865,12 +890,16 @@ sizing_run(const struct sizing_params *p, struct res_run *out)
 			}
 		}
 		if (good > 0.0)
-			st = iterate(p, good, out, &last,
+			st = iterate(p, good, out, out, &last, &fin, &fin_done,
 			    &m_star, &c_star, &ls);
 		else
-			st = iterate(p, 1.0, out, &last,
+			st = iterate(p, 1.0, out, out, &last, &fin, &fin_done,
 			    &m_star, &c_star, &ls);
 	}
+	/* A confirming evaluation of an earlier iteration may have recorded
+	 * into out: only the last one's record stands. */
+	if (!fin_done)
+		clear_record(out);
 
 	/* The mass loop converged even when the mission then cannot be flown
 	 * (a locked battery too small): that is a discharge failure. */
@@ -883,9 +912,10 @@ sizing_run(const struct sizing_params *p, struct res_run *out)
 		    "than a kilogram of subsystem mass", SIZING_RUNAWAY_KG);
 		return st;
 	}
-	/* The final evaluation at the fixed point keeps the full trace. */
-	struct eval fin;
-	evaluate(p, &ls, m_star, c_star, final_steps(p), out, &fin);
+	/* The final evaluation at the fixed point keeps the full trace (the
+	 * loop's confirming evaluation when it made one: the same). */
+	if (!fin_done)
+		evaluate(p, &ls, m_star, c_star, final_steps(p), out, &fin);
 	record_run(p, &fin, &ls, out);
 	out->lipschitz = lipschitz(p, &ls, m_star, c_star);
 	struct discharge_pack pk;
