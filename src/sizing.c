@@ -511,14 +511,16 @@ final_steps(const struct sizing_params *p)
 
 /* Forget what a recording evaluation wrote into rec (the trace and the
  * speed sweep): the next one then starts from the zeroed record that
- * sizing_run began with. */
+ * sizing_run began with.  A recording writes exactly the first n_trace
+ * samples and n_sweep points, and each one is cleared before the next, so
+ * only those can be non-zero. */
 static void
 clear_record(struct res_run *rec)
 {
-	memset(rec->trace, 0, sizeof rec->trace);
+	memset(rec->trace, 0, (size_t)rec->n_trace * sizeof rec->trace[0]);
 	rec->n_trace = 0;
-	memset(rec->sweep_v_ms, 0, sizeof rec->sweep_v_ms);
-	memset(rec->sweep_power_w, 0, sizeof rec->sweep_power_w);
+	memset(rec->sweep_v_ms, 0, (size_t)rec->n_sweep * sizeof rec->sweep_v_ms[0]);
+	memset(rec->sweep_power_w, 0, (size_t)rec->n_sweep * sizeof rec->sweep_power_w[0]);
 	rec->n_sweep = 0;
 }
 
