@@ -555,8 +555,10 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 	}
 	int n_down = 0;
 	struct loop_state ls = { cells, 0.02 * p->wheelbase_m, gamma_time };
+	/* A catalogue battery's capacity is the part's whatever c says (see
+	 * evaluate()), so it needs no seed evaluation. */
 	double c = p->capacity_locked ? p->capacity_locked_ah
-	    : seed_capacity_ah(p, &ls, m);
+	    : battery_fixed(p) ? p->parts.capacity_ah : seed_capacity_ah(p, &ls, m);
 	double c_failed = 0.0;
 	int max_iter = p->max_iter > 0 ? p->max_iter : SIZING_MAX_ITER;
 	enum sizing_status st = SIZING_MAX_ITERATIONS;
