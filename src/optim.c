@@ -1546,9 +1546,16 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 				break;
 			}
 			tried++;
+			if (i == 0)
+				heaviest = cur->closed.mass.total_kg;
 			int nf = n_failed(&cur->closed);
 			if (fb_failed < 0 || nf < fb_failed) {
-				*fb = *cur;
+				/* The closest so far becomes the fallback.  The next
+				 * try rewrites all it reads of its result, so the two
+				 * buffers swap instead of copying a whole result. */
+				struct solve_result *tmp = fb;
+				fb = cur;
+				cur = tmp;
 				fb_c = c;
 				fb_t = tr;
 				fb_round = round;
@@ -1556,8 +1563,6 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 				fb_finite = finite;
 				copy_text(fb_fail, sizeof fb_fail, fail ? fail : "");
 			}
-			if (i == 0)
-				heaviest = cur->closed.mass.total_kg;
 		}
 		/* Real parts heavier than the aim: thrust, current, power and
 		 * energy grow about as M^1.5 on a given rotor. */
