@@ -199,6 +199,19 @@ over_overlap(const struct optim_target *t, double d_in)
 	return d_in > t->overlap_limit_in + OVERLAP_TOL_IN;
 }
 
+/* A propeller below or above the motor's recommended range. */
+static bool
+below_range(const struct catalog_motor *m, double d_in)
+{
+	return m->prop_min_in > 0.0 && d_in < m->prop_min_in - RANGE_TOL_IN;
+}
+
+static bool
+above_range(const struct catalog_motor *m, double d_in)
+{
+	return m->prop_max_in > 0.0 && d_in > m->prop_max_in + RANGE_TOL_IN;
+}
+
 /* The limits of the motor on its propeller (p NULL: an integrated system),
  * bits OPTIM_PROP_OVERLAP..OPTIM_CANNOT_HOVER. */
 static unsigned
@@ -209,8 +222,7 @@ pair_mask(const struct optim_target *t, int cells, const struct catalog_motor *m
 	double d_in = a->d_in;
 	if (over_overlap(t, d_in))
 		mask |= 1u << OPTIM_PROP_OVERLAP;
-	if ((m->prop_min_in > 0.0 && d_in < m->prop_min_in - RANGE_TOL_IN)
-	    || (m->prop_max_in > 0.0 && d_in > m->prop_max_in + RANGE_TOL_IN))
+	if (below_range(m, d_in) || above_range(m, d_in))
 		mask |= 1u << OPTIM_PROP_RANGE;
 	double rpm = full_rpm(t, cells, m->kv_rpm_per_v);
 	double mach = a->tip_m * rpm / S_PER_MIN / t->sound_m_s;
@@ -456,11 +468,12 @@ struct rank_ctx {
 	int max_choices, n_kept, n_found;
 	struct res_candidate *cand;    /* NULL: not recorded */
 	int slot;                      /* this motor's candidate, -1 none */
-	const struct rank_prop *props; /* the usable propellers, in file order */
+	const struct rank_prop *const *props; /* the usable propellers, in file order */
 	size_t n_props;
 	int n_lock_ok;                 /* of them, those a propeller lock admits */
-	const size_t *fit;             /* indices of those within the overlap
-	                                  limit or locked, in file order */
+	const struct rank_prop *const *fit; /* those within the overlap limit or
+	                                  locked; by diameter when no propeller
+	                                  is locked */
 	size_t n_fit;
 	int n_over;                    /* admitted, free and above the limit */
 };
@@ -541,10 +554,31 @@ is_lock(const char *lock, const char *id)
 }
 
 /* The motor limits come first in enum order, so a motor that breaks one
- * fails on it whatever the propeller (rank_motor relies on it). */
+ * fails on it whatever the propeller (rank_motor relies on it); then the
+ * overlap limit and the recommended range. */
 _Static_assert(OPTIM_MOTOR_CELLS == 1 && OPTIM_MOTOR_CURRENT == 2
-    && OPTIM_MOTOR_POWER == 3 && OPTIM_PROP_OVERLAP == 4,
-    "motor limits, then the overlap limit, must be the first reasons");
+    && OPTIM_MOTOR_POWER == 3 && OPTIM_PROP_OVERLAP == 4
+    && OPTIM_PROP_RANGE == 5,
+    "motor limits, the overlap limit, then the range must be the first reasons");
+
+/* In v[0..n) sorted by diameter, how many lead where below(m, d) holds
+ * (it holds on a prefix); with below false, how many do not trail where
+ * above(m, d) holds (it holds on a suffix). */
+static size_t
+range_cut(const struct catalog_motor *m, const struct rank_prop *const *v,
+          size_t n, bool below)
+{
+	size_t lo = 0, hi = n;
+	while (lo < hi) {
+		size_t mid = lo + (hi - lo) / 2;
+		double d = v[mid]->aim.d_in;
+		if (below ? below_range(m, d) : !above_range(m, d))
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return lo;
+}
 
 /* Every option of one motor on one bus.  An option that is not eligible
  * (another part is locked) is never counted; it only matters when it
@@ -573,19 +607,37 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 		/* A free propeller above the overlap limit fails there on a
 		 * motor that passes its own limits (the next reason in enum
 		 * order): those options too are counted at once. */
+		const struct rank_prop *const *v = x->props;
 		size_t n = x->n_props;
-		const size_t *idx = NULL;
 		if (!motor_locked) {
 			if (motor_ok) {
 				x->cs->n_examined += x->n_over;
 				x->cs->n_fail[OPTIM_PROP_OVERLAP] += x->n_over;
 			}
+			v = x->fit;
 			n = x->n_fit;
-			idx = x->fit;
+		}
+		if (!motor_locked && lk->prop == NULL) {
+			/* With no propeller locked, those left are free, all
+			 * admitted and sorted by diameter: the ones outside the
+			 * motor's range (the next reason) lead and trail, and
+			 * are counted at once.  The census, the candidates and
+			 * the kept choices do not depend on the order. */
+			size_t first = range_cut(m, v, n, true);
+			size_t end = range_cut(m, v, n, false);
+			if (end < first)
+				end = first; /* a range with min > max: all fail */
+			if (motor_ok) {
+				int out = (int)(n - (end - first));
+				x->cs->n_examined += out;
+				x->cs->n_fail[OPTIM_PROP_RANGE] += out;
+			}
+			v += first;
+			n = end - first;
 		}
 		struct esc_pick ep = { false, NULL, 0 };
 		for (size_t j = 0; j < n; j++) {
-			const struct rank_prop *rp = &x->props[idx != NULL ? idx[j] : j];
+			const struct rank_prop *rp = v[j];
 			bool eligible = motor_ok && rp->lock_ok;
 			if (!eligible && !has_cand)
 				continue;
@@ -607,6 +659,15 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 		if (!option_fails(x, eligible, first_reason(mask & ~ignored)))
 			rank_option(x, bus, m, NULL, &a, eligible, NULL);
 	}
+}
+
+/* qsort order of rank_prop pointers: by diameter. */
+static int
+rank_prop_cmp(const void *a, const void *b)
+{
+	double da = (*(const struct rank_prop *const *)a)->aim.d_in;
+	double db = (*(const struct rank_prop *const *)b)->aim.d_in;
+	return (da > db) - (da < db);
 }
 
 int
@@ -651,7 +712,8 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 	/* What each propeller brings is the same on every motor and bus. */
 	size_t np = catalog_n_props(cat);
 	struct rank_prop *props = xmalloc((np > 0 ? np : 1) * sizeof *props);
-	size_t *fit = xmalloc((np > 0 ? np : 1) * sizeof *fit);
+	const struct rank_prop **all = xmalloc((np > 0 ? np : 1) * sizeof *all);
+	const struct rank_prop **fit = xmalloc((np > 0 ? np : 1) * sizeof *fit);
 	for (size_t j = 0; j < np; j++) {
 		const struct catalog_prop *p = catalog_prop(cat, j);
 		if (!p->usable)
@@ -663,13 +725,15 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 		prop_aim_of(t, NULL, p, &rp->aim);
 		rp->over = over_overlap(t, rp->aim.d_in);
 		x.n_lock_ok += rp->lock_ok;
+		all[x.n_props++] = rp;
 		if (!rp->over || rp->locked)
-			fit[x.n_fit++] = x.n_props;
+			fit[x.n_fit++] = rp;
 		else if (rp->lock_ok)
 			x.n_over++;
-		x.n_props++;
 	}
-	x.props = props;
+	if (x.lk->prop == NULL)
+		qsort(fit, x.n_fit, sizeof *fit, rank_prop_cmp);
+	x.props = all;
 	x.fit = fit;
 
 	for (int s = t->cells_lo; s <= t->cells_hi; s++) {
@@ -688,6 +752,7 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 		}
 	}
 	free(fit);
+	free(all);
 	free(props);
 	free(slot);
 	return x.n_found;
