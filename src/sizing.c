@@ -665,13 +665,15 @@ lipschitz(const struct sizing_params *p, const struct loop_state *ls,
 	double h = LIPSCHITZ_STEP * m_star;
 	struct eval a, b;
 	double ca = c_star, cb = c_star;
-	for (int k = 0; k < 3; k++) {
-		evaluate(p, ls, m_star + h, ca, LOOP_STEPS, NULL, &a);
-		evaluate(p, ls, m_star - h, cb, LOOP_STEPS, NULL, &b);
-		/* A locked or catalogue capacity ignores the re-targeted one:
-		 * further rounds would repeat this one exactly. */
-		if (p->capacity_locked || battery_fixed(p))
-			break;
+	/* A locked or catalogue capacity ignores the re-targeted one: further
+	 * rounds would repeat the first exactly. */
+	int rounds = p->capacity_locked || battery_fixed(p) ? 1 : 3;
+	for (int k = 0; k < rounds; k++) {
+		/* The masses come before the discharge in evaluate(): the last
+		 * round, whose capacity target nobody reads, needs no flight. */
+		int steps = k + 1 < rounds ? LOOP_STEPS : 0;
+		evaluate(p, ls, m_star + h, ca, steps, NULL, &a);
+		evaluate(p, ls, m_star - h, cb, steps, NULL, &b);
 		ca = a.c_target_ah;
 		cb = b.c_target_ah;
 	}
