@@ -243,10 +243,11 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 			e->v_fwd_ms = e->v_min_power_ms;
 	}
 
-	/* The phase powers size a power-bound battery and fly the mission: a
-	 * locked capacity evaluated for its masses alone (steps <= 0, the
-	 * endurance explorer) needs neither, nor the pitch derived from them
-	 * (they stay 0). */
+	/* The phase powers size a power-bound battery, seed the capacity and
+	 * fly the mission: a locked capacity evaluated for its masses alone
+	 * (steps <= 0: the endurance explorer, a locked run's Lipschitz
+	 * round) needs none of that, nor the pitch derived from them (they
+	 * stay 0). */
 	bool phases = steps > 0 || !p->capacity_locked;
 	if (phases) {
 		mission_power(m, mass_kg, p->v_climb_ms, 0.0, &e->ph[PHASE_CLIMB]);
@@ -377,8 +378,9 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	    + e->mass.prop_kg + e->mass.esc_kg + e->mass.wiring_kg
 	    + e->mass.avionics_kg + e->mass.role_aux_kg + e->mass.other_kg;
 
-	/* steps <= 0: the caller needs the masses only (a locked capacity in
-	 * the endurance explorer), not the mission's discharge. */
+	/* steps <= 0: the caller needs the masses or powers only (the seeds,
+	 * the last Lipschitz round, the endurance explorer's locked-capacity
+	 * loops), not the mission's discharge. */
 	if (steps <= 0) {
 		e->dis.end = DIS_COMPLETED;
 		e->c_target_ah = e->capacity_ah;
@@ -442,8 +444,10 @@ static double
 seed_capacity_ah(const struct sizing_params *p, const struct loop_state *ls,
                  double mass_kg)
 {
+	/* The phase powers alone: no discharge (they are computed, the
+	 * capacity being free here; see evaluate()). */
 	struct eval e;
-	evaluate(p, ls, mass_kg, 1.0, 8, NULL, &e);
+	evaluate(p, ls, mass_kg, 1.0, 0, NULL, &e);
 	double d[PHASE_MAX], wh = 0.0;
 	durations(p, ls->gamma_time, d);
 	for (int i = 0; i < PHASE_MAX; i++)
@@ -461,7 +465,8 @@ seed_cells(const struct sizing_params *p, int lo, int hi, double mass_kg,
 	ls->cells = lo;
 	struct eval e;
 	for (int k = 0; k < 3; k++) {
-		evaluate(p, ls, mass_kg, 1.0, 8, NULL, &e);
+		/* The peak power alone: no discharge. */
+		evaluate(p, ls, mass_kg, 1.0, 0, NULL, &e);
 		int cells = sizing_auto_cells(e.peak.electrical_w, mass_kg,
 		    p->chem->v_nom, lo, hi);
 		/* Unchanged: every further pass would repeat this one. */
