@@ -51,7 +51,7 @@ step_init(const struct discharge_pack *p, double hac_w_k, double ambient_c,
 
 /* One step: draw power_w for sc->dt_s.  Returns DIS_COMPLETED when the step
  * was flown, another end code when it was not. */
-static enum discharge_end
+static inline enum discharge_end
 step(const struct step_ctx *sc, double power_w, struct cell_state *st,
      double *current_a, double *v_oc_v, double *v_term_v)
 {
