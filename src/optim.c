@@ -366,13 +366,14 @@ pick_battery(const struct optim_target *t, const struct catalog *cat,
 				continue;
 			if (lock != NULL && strcmp(b->id, lock) != 0)
 				continue;
-			bool same = strcmp(chem_family(b->chemistry), fam) == 0;
-			if (pass == 0 && !same)
-				continue;
 			if (cells % b->cells_series != 0)
 				continue;
 			int ns = cells / b->cells_series;
 			if (ns > OPTIM_MAX_SERIES && lock == NULL)
+				continue;
+			/* The family test last: it is the dearest filter (string
+			 * compares), and only the first pass applies it. */
+			if (pass == 0 && strcmp(chem_family(b->chemistry), fam) != 0)
 				continue;
 			int np = parallel_needed(b, need_ah, need_a);
 			if (np > OPTIM_MAX_PARALLEL) {
