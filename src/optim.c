@@ -280,9 +280,10 @@ optim_limits(const struct optim_target *t, int cells,
 
 /* ---- ESC and battery ------------------------------------------------------ */
 
+/* What an ESC must meet on `cells` whatever the motor: the frame size of a
+ * stack board, the cell range, the continuous current. */
 static bool
-esc_fits(const struct optim_target *t, int cells, const struct catalog_motor *m,
-         const struct catalog_esc *e)
+esc_fits_bus(const struct optim_target *t, int cells, const struct catalog_esc *e)
 {
 	double i_need = OPTIM_CURRENT_MARGIN * at_bus(t, t->motor_peak_current_a, cells);
 	if (e->channels > 1 && t->wheelbase_m > OPTIM_STACK_MAX_WHEELBASE_M)
@@ -292,10 +293,21 @@ esc_fits(const struct optim_target *t, int cells, const struct catalog_motor *m,
 		return false;
 	if (e->continuous_current_a < i_need)
 		return false;
-	/* A full-stick punch can draw what the motor takes. */
-	if (e->burst_current_a > 0.0 && e->burst_current_a < m->max_current_a)
-		return false;
 	return true;
+}
+
+/* A full-stick punch can draw what the motor takes. */
+static bool
+esc_carries_burst(const struct catalog_motor *m, const struct catalog_esc *e)
+{
+	return !(e->burst_current_a > 0.0 && e->burst_current_a < m->max_current_a);
+}
+
+static bool
+esc_fits(const struct optim_target *t, int cells, const struct catalog_motor *m,
+         const struct catalog_esc *e)
+{
+	return esc_fits_bus(t, cells, e) && esc_carries_burst(m, e);
 }
 
 static int
@@ -459,6 +471,12 @@ struct rank_prop {
 	struct prop_aim aim;
 };
 
+/* An ESC set that suits the bus being ranked, the motor's burst aside. */
+struct esc_offer {
+	const struct catalog_esc *e;
+	double kg;                     /* boards × board mass */
+};
+
 /* Shared state of one ranking. */
 struct rank_ctx {
 	const struct optim_target *t;
@@ -477,6 +495,9 @@ struct rank_ctx {
 	                                  is locked */
 	size_t n_fit;
 	int n_over;                    /* admitted, free and above the limit */
+	const struct esc_offer *escs;  /* with no ESC locked: the sets that
+	                                  suit this bus, lightest first */
+	size_t n_escs;
 };
 
 /* The ESC set of one motor on one bus, picked when an option first needs
@@ -486,6 +507,30 @@ struct esc_pick {
 	const struct catalog_esc *esc;
 	int n_esc;
 };
+
+/* pick_esc() for motor m on the bus being ranked.  The ESC must suit the
+ * motor's own limits even when the motor is free, so it is picked per
+ * motor; with no ESC locked, the first of the bus's sets (lightest, then
+ * by id: pick_esc's order) that carries the motor's burst. */
+static void
+rank_pick_esc(struct rank_ctx *x, int cells, const struct catalog_motor *m,
+              struct esc_pick *ep)
+{
+	ep->done = true;
+	if (x->lk->esc != NULL) {
+		pick_esc(x->t, x->cat, x->lk->esc, cells, m, &ep->esc, &ep->n_esc);
+		return;
+	}
+	ep->esc = NULL;
+	ep->n_esc = 0;
+	for (size_t i = 0; i < x->n_escs; i++) {
+		if (esc_carries_burst(m, x->escs[i].e)) {
+			ep->esc = x->escs[i].e;
+			ep->n_esc = esc_boards(x->t, ep->esc);
+			return;
+		}
+	}
+}
 
 /* Count an option in the census; true if it failed `why` (not OPTIM_OK). */
 static bool
@@ -515,12 +560,8 @@ rank_option(struct rank_ctx *x, const struct bus_offer *bus,
 	struct res_candidate *rc = x->cand != NULL && x->slot >= 0 ? &x->cand[x->slot] : NULL;
 	if (rc != NULL && j < rc->j_score)
 		rc->j_score = j;
-	if (!m->integrated && !ep->done) {
-		/* The ESC must suit the motor's own limits even when the motor
-		 * is free, so it is picked per motor. */
-		pick_esc(t, x->cat, x->lk->esc, bus->cells, m, &ep->esc, &ep->n_esc);
-		ep->done = true;
-	}
+	if (!m->integrated && !ep->done)
+		rank_pick_esc(x, bus->cells, m, ep);
 	if (!m->integrated && ep->esc == NULL) {
 		if (eligible)
 			x->cs->n_fail[OPTIM_NO_ESC]++;
@@ -662,6 +703,16 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 	}
 }
 
+/* qsort order of ESC sets: pick_esc's, lightest, then by id. */
+static int
+esc_offer_cmp(const void *a, const void *b)
+{
+	const struct esc_offer *x = a, *y = b;
+	if (x->kg != y->kg)
+		return x->kg < y->kg ? -1 : 1;
+	return strcmp(x->e->id, y->e->id);
+}
+
 /* qsort order of rank_prop pointers: by diameter. */
 static int
 rank_prop_cmp(const void *a, const void *b)
@@ -736,6 +787,9 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 		qsort(fit, x.n_fit, sizeof *fit, rank_prop_cmp);
 	x.props = all;
 	x.fit = fit;
+	size_t ne = catalog_n_escs(cat);
+	struct esc_offer *escs = xmalloc((ne > 0 ? ne : 1) * sizeof *escs);
+	x.escs = escs;
 
 	for (int s = t->cells_lo; s <= t->cells_hi; s++) {
 		struct bus_offer bus;
@@ -744,6 +798,16 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 		bus.have_battery = pick_battery(t, cat, x.lk->battery, s,
 		    at_bus(t, t->capacity_ah, s), at_bus(t, t->bus_peak_current_a, s),
 		    &bus.battery);
+		x.n_escs = 0;
+		for (size_t i = 0; i < ne && x.lk->esc == NULL; i++) {
+			const struct catalog_esc *e = catalog_esc(cat, i);
+			if (!e->usable || !esc_fits_bus(t, s, e))
+				continue;
+			escs[x.n_escs].e = e;
+			escs[x.n_escs].kg = (double)esc_boards(t, e) * e->mass_kg;
+			x.n_escs++;
+		}
+		qsort(escs, x.n_escs, sizeof *escs, esc_offer_cmp);
 		for (size_t i = 0; i < nm; i++) {
 			const struct catalog_motor *m = catalog_motor(cat, i);
 			if (!m->usable)
@@ -752,6 +816,7 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 			rank_motor(&x, &bus, m);
 		}
 	}
+	free(escs);
 	free(fit);
 	free(all);
 	free(props);
