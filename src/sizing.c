@@ -177,14 +177,15 @@ pack_of(const struct sizing_params *p, const struct eval *e,
 }
 
 /*
- * Evaluate every subsystem at takeoff mass M with capacity C: the map f of
- * eq. (implicit).  `steps` sets the discharge resolution; trace/sweep are
- * filled only when given (the final evaluation).
+ * Evaluate every subsystem at takeoff mass M with capacity C, all but the
+ * discharge: the masses of the map f of eq. (implicit), which do not depend
+ * on it.  `flight` says whether the mission will be flown (see phases
+ * below); the sweep is recorded into rec when given (the final evaluation).
  */
 static void
-evaluate(const struct sizing_params *p, const struct loop_state *ls,
-         double mass_kg, double capacity_ah, int steps, struct res_run *rec,
-         struct eval *e)
+evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
+                double mass_kg, double capacity_ah, bool flight,
+                struct res_run *rec, struct eval *e)
 {
 	const struct atmo_state *air = &p->air;
 	int nr = p->n_rotors;
@@ -248,7 +249,7 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	 * (steps <= 0: the endurance explorer, a locked run's Lipschitz
 	 * round) needs none of that, nor the pitch derived from them (they
 	 * stay 0). */
-	bool phases = steps > 0 || !p->capacity_locked;
+	bool phases = flight || !p->capacity_locked;
 	if (phases) {
 		mission_power(m, mass_kg, p->v_climb_ms, 0.0, &e->ph[PHASE_CLIMB]);
 		mission_power(m, mass_kg, 0.0, e->v_fwd_ms, &e->ph[PHASE_FORWARD]);
@@ -378,23 +379,22 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	    + e->mass.prop_kg + e->mass.esc_kg + e->mass.wiring_kg
 	    + e->mass.avionics_kg + e->mass.role_aux_kg + e->mass.other_kg;
 
-	/* steps <= 0: the caller needs the masses or powers only (the seeds,
-	 * the last Lipschitz round, the endurance explorer's locked-capacity
-	 * loops), not the mission's discharge. */
-	if (steps <= 0) {
-		e->dis.end = DIS_COMPLETED;
-		e->c_target_ah = e->capacity_ah;
-		return;
-	}
+}
 
-	/* Fly the mission at this mass and capacity. */
+/* Fly the mission of an evaluate_masses() result e (made with flight
+ * true) in `steps` steps at goal relaxation gamma_time, trace into rec
+ * when given, and set the capacity it needs. */
+static void
+evaluate_flight(const struct sizing_params *p, double gamma_time, int steps,
+                struct res_run *rec, struct eval *e)
+{
 	struct discharge_pack pk;
 	pack_of(p, e, &pk);
 	struct discharge_mission dm;
-	dm.model = m;
-	dm.dry_mass_kg = mass_kg - p->payload_kg;
-	shedding(p, ls->gamma_time, &dm.shed);
-	durations(p, ls->gamma_time, dm.duration_s);
+	dm.model = &e->model;
+	dm.dry_mass_kg = e->mass_kg - p->payload_kg;
+	shedding(p, gamma_time, &dm.shed);
+	durations(p, gamma_time, dm.duration_s);
 	dm.speed_ms[PHASE_CLIMB] = p->v_climb_ms;
 	dm.speed_ms[PHASE_FORWARD] = e->v_fwd_ms;
 	dm.speed_ms[PHASE_HOVER] = 0.0;
@@ -403,7 +403,7 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	    rec ? RES_MAX_TRACE : 0, rec ? &rec->n_trace : NULL, &e->dis);
 
 	/* Capacity the mission needs, with the 20 % margin. */
-	double t_req = total_duration(p, ls->gamma_time);
+	double t_req = total_duration(p, gamma_time);
 	switch (e->dis.end) {
 	case DIS_COMPLETED:
 		e->c_target_ah = SIZING_CAP_MARGIN * e->dis.ah_used;
@@ -425,6 +425,24 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 		e->c_target_ah = 1.5 * e->capacity_ah;
 		break;
 	}
+}
+
+/* Both: the map f at (M, C) with the mission flown in `steps` steps; steps
+ * <= 0 when the caller needs the masses or powers only (the seeds, the
+ * last Lipschitz round, the endurance explorer's locked-capacity loops),
+ * not the mission's discharge. */
+static void
+evaluate(const struct sizing_params *p, const struct loop_state *ls,
+         double mass_kg, double capacity_ah, int steps, struct res_run *rec,
+         struct eval *e)
+{
+	evaluate_masses(p, ls, mass_kg, capacity_ah, steps > 0, rec, e);
+	if (steps <= 0) {
+		e->dis.end = DIS_COMPLETED;
+		e->c_target_ah = e->capacity_ah;
+		return;
+	}
+	evaluate_flight(p, ls->gamma_time, steps, rec, e);
 }
 
 double
