@@ -547,6 +547,44 @@ clear_record(struct res_run *rec)
 	rec->n_sweep = 0;
 }
 
+/* The loop's evaluations of the last three iterations, and what is known of
+ * their flights: the Aitken test looks back three iterations. */
+#define LOOP_RING 3
+struct loop_ring {
+	struct eval e[LOOP_RING];
+	signed char flown[LOOP_RING];  /* -1 not flown yet, else whether it flew */
+	bool cells_steady[LOOP_RING];
+};
+
+/* Whether iteration k's evaluation flew the mission, flying it the first
+ * time it is asked. */
+static bool
+loop_flown(const struct sizing_params *p, double gamma_time,
+           struct loop_ring *r, int k)
+{
+	int i = k % LOOP_RING;
+	if (r->flown[i] < 0) {
+		evaluate_flight(p, gamma_time, LOOP_STEPS, NULL, &r->e[i]);
+		r->flown[i] = r->e[i].dis.end == DIS_COMPLETED;
+	}
+	return r->flown[i] != 0;
+}
+
+/* Were the three iterations up to k steady (same cells, mission flown)
+ * since the last Aitken jump at iteration last_jump (0: none)?  That is
+ * the loop's count of steady steps reaching 3. */
+static bool
+loop_steady(const struct sizing_params *p, double gamma_time,
+            struct loop_ring *r, int k, int last_jump)
+{
+	if (k - 2 <= last_jump)
+		return false;
+	for (int j = k - 2; j <= k; j++)
+		if (!r->cells_steady[j % LOOP_RING] || !loop_flown(p, gamma_time, r, j))
+			return false;
+	return true;
+}
+
 /* The fixed-point iteration at goal-relaxation factor gamma_time.  The
  * series-cell count is the locked one, or starts from the seed mass's
  * peak power and follows next_cells() inside the loop.
@@ -585,24 +623,31 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 	double c_failed = 0.0;
 	int max_iter = p->max_iter > 0 ? p->max_iter : SIZING_MAX_ITER;
 	enum sizing_status st = SIZING_MAX_ITERATIONS;
+	/* A locked or catalogue capacity takes nothing from the flights: the
+	 * masses do not depend on them, and what reads them (convergence,
+	 * the Aitken test, the record) asks for the ones it needs.  A free
+	 * capacity is re-targeted from every flight. */
+	bool lazy = p->capacity_locked || battery_fixed(p);
+	struct loop_ring ring;
 
 	/* Aitken Δ² acceleration (Steffensen): the last mass steps and
-	 * capacities, and how many steady steps since the last jump. */
+	 * capacities, and the iteration of the last jump. */
 	double dm_prev = 0.0, dm_prev2 = 0.0, c_prev = 0.0;
-	int steady = 0;
-	for (int k = 1; k <= max_iter; k++) {
-		evaluate(p, &ls, m, c, LOOP_STEPS, NULL, last);
-		double f = last->mass.total_kg;
+	int last_jump = 0, k = 1;
+	for (; k <= max_iter; k++) {
+		struct eval *e = &ring.e[k % LOOP_RING];
+		evaluate_masses(p, &ls, m, c, true, NULL, e);
+		ring.flown[k % LOOP_RING] = -1;
+		double f = e->mass.total_kg;
 		if (out->n_history < RES_MAX_HISTORY)
 			out->history_kg[out->n_history++] = f;
 		out->iterations++;
-		bool flown = last->dis.end == DIS_COMPLETED;
-		if (!flown && last->capacity_ah > c_failed)
-			c_failed = last->capacity_ah;
-		double c_used = last->capacity_ah;
-		if (!p->capacity_locked && !battery_fixed(p)) {
+		double c_used = e->capacity_ah;
+		if (!lazy) {
+			if (!loop_flown(p, gamma_time, &ring, k) && e->capacity_ah > c_failed)
+				c_failed = e->capacity_ah;
 			/* Eq. (relaxation) with the ratchet floor. */
-			c = SIZING_RELAX_ALPHA * last->c_target_ah
+			c = SIZING_RELAX_ALPHA * e->c_target_ah
 			    + (1.0 - SIZING_RELAX_ALPHA) * c_used;
 			if (c_failed > 0.0 && c < SIZING_RATCHET * c_failed)
 				c = SIZING_RATCHET * c_failed;
@@ -613,10 +658,10 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 		}
 		/* The next iteration sees this one's arm (rotor-arm interference)
 		 * and, when automatic, its series-cell count. */
-		ls.arm_width_m = last->arm.d_out_m;
+		ls.arm_width_m = e->arm.d_out_m;
 		bool cells_steady = true;
 		if (auto_cells) {
-			int nc = next_cells(p, ls.cells, last->peak.electrical_w, f,
+			int nc = next_cells(p, ls.cells, e->peak.electrical_w, f,
 			    p->cells_lo, p->cells_hi, &n_down);
 			if (nc != ls.cells) {
 				c *= (double)ls.cells / (double)nc;
@@ -625,20 +670,22 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 				cells_steady = false;
 			}
 		}
+		ring.cells_steady[k % LOOP_RING] = cells_steady;
 		/* A power-bound battery is as large as the peak power needs; its
 		 * energy target is then below it and has no further say. */
-		bool cap_steady = p->capacity_locked || battery_fixed(p)
-		    || (last->power_binds && last->c_target_ah <= c_used)
+		bool cap_steady = lazy
+		    || (e->power_binds && e->c_target_ah <= c_used)
 		    || fabs(c - c_used) <= 1e-4 * c_used;
 		if (fabs(f - m) < SIZING_TOL_KG && cap_steady && cells_steady) {
 			m = f;
 			/* Confirm with the discharge resolution of the final
 			 * record, so that a mission the coarse loop flew is not
 			 * lost to discretisation in the dossier's trace. */
+			bool flown = loop_flown(p, gamma_time, &ring, k);
 			if (flown) {
 				if (rec != NULL)
 					clear_record(rec);
-				evaluate(p, &ls, m, last->capacity_ah, final_steps(p),
+				evaluate(p, &ls, m, e->capacity_ah, final_steps(p),
 				    rec, fin);
 				*fin_done = true;
 				flown = fin->dis.end == DIS_COMPLETED;
@@ -647,14 +694,15 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 			break;
 		}
 		/* A slow linear contraction (L near 1) is extrapolated to its
-		 * limit once two successive step ratios agree; the loop then
-		 * re-anchors on the true map at the extrapolated point. */
+		 * limit once two successive step ratios agree and the last three
+		 * steps were steady; the loop then re-anchors on the true map at
+		 * the extrapolated point. */
 		double dm = f - m;
-		steady = cells_steady && flown ? steady + 1 : 0;
-		if (steady >= 3 && dm_prev != 0.0 && dm_prev2 != 0.0) {
+		if (dm_prev != 0.0 && dm_prev2 != 0.0) {
 			double r1 = dm_prev / dm_prev2, r2 = dm / dm_prev;
 			if (r2 > AITKEN_R_MIN && r2 < AITKEN_R_MAX
-			    && fabs(r2 - r1) < AITKEN_R_AGREE * r2) {
+			    && fabs(r2 - r1) < AITKEN_R_AGREE * r2
+			    && loop_steady(p, gamma_time, &ring, k, last_jump)) {
 				double gain = r2 / (1.0 - r2);
 				f += gain * dm;
 				/* The history holds the iterates the loop used. */
@@ -662,7 +710,7 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 				if (!p->capacity_locked && !p->parts.active)
 					c += gain * (c - c_prev);
 				dm = 0.0;
-				steady = 0;
+				last_jump = k;
 			}
 		}
 		dm_prev2 = dm_prev;
@@ -670,7 +718,12 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 		c_prev = c;
 		m = f;
 	}
-	if (st == SIZING_MAX_ITERATIONS && last->dis.end != DIS_COMPLETED
+	/* The last evaluation, flown (the record of a runaway reads it). */
+	if (k > max_iter)
+		k = max_iter;
+	bool flown = loop_flown(p, gamma_time, &ring, k);
+	*last = ring.e[k % LOOP_RING];
+	if (st == SIZING_MAX_ITERATIONS && !flown
 	    && (p->capacity_locked || p->parts.active))
 		st = SIZING_DISCHARGE_FAIL;
 	*m_star = m;
