@@ -547,6 +547,17 @@ clear_record(struct res_run *rec)
 	rec->n_sweep = 0;
 }
 
+/* The converged loop's evaluation at the final resolution, recorded into
+ * rec when given (cleared first: only the last recording stands). */
+static void
+confirm(const struct sizing_params *p, const struct loop_state *ls,
+        double mass_kg, double capacity_ah, struct res_run *rec, struct eval *fin)
+{
+	if (rec != NULL)
+		clear_record(rec);
+	evaluate(p, ls, mass_kg, capacity_ah, final_steps(p), rec, fin);
+}
+
 /* The loop's evaluations of the last three iterations, and what is known of
  * their flights: the Aitken test looks back three iterations. */
 #define LOOP_RING 3
@@ -593,7 +604,9 @@ loop_steady(const struct sizing_params *p, double gamma_time,
  * resolution: that evaluation, at (*m_star, *c_star, *ls_out), goes to
  * *fin with *fin_done set, and its trace and sweep into rec unless rec is
  * NULL.  It is the evaluation sizing_run would make next, so sizing_run
- * keeps it instead of flying the same mission again. */
+ * keeps it instead of flying the same mission again.  *last is the last
+ * loop evaluation; its flight (dis) is there only when the loop ran away
+ * or out of iterations (sizing_run reads it for a runaway's record). */
 static enum sizing_status
 iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
         struct res_run *rec, struct eval *last, struct eval *fin,
@@ -680,15 +693,24 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 			m = f;
 			/* Confirm with the discharge resolution of the final
 			 * record, so that a mission the coarse loop flew is not
-			 * lost to discretisation in the dossier's trace. */
-			bool flown = loop_flown(p, gamma_time, &ring, k);
-			if (flown) {
-				if (rec != NULL)
-					clear_record(rec);
-				evaluate(p, &ls, m, e->capacity_ah, final_steps(p),
-				    rec, fin);
+			 * lost to discretisation in the dossier's trace.  When
+			 * this is the run's record (no goal relaxation follows)
+			 * and the coarse flight is still unflown, the final one
+			 * comes first: sizing_run needs it either way, and the
+			 * coarse one matters only if the final one flew. */
+			bool flown;
+			if (ring.flown[k % LOOP_RING] < 0 && rec != NULL && !p->allow_relax) {
+				confirm(p, &ls, m, e->capacity_ah, rec, fin);
 				*fin_done = true;
-				flown = fin->dis.end == DIS_COMPLETED;
+				flown = fin->dis.end == DIS_COMPLETED
+				    && loop_flown(p, gamma_time, &ring, k);
+			} else {
+				flown = loop_flown(p, gamma_time, &ring, k);
+				if (flown) {
+					confirm(p, &ls, m, e->capacity_ah, rec, fin);
+					*fin_done = true;
+					flown = fin->dis.end == DIS_COMPLETED;
+				}
 			}
 			st = flown ? SIZING_CONVERGED : SIZING_DISCHARGE_FAIL;
 			break;
@@ -718,14 +740,17 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 		c_prev = c;
 		m = f;
 	}
-	/* The last evaluation, flown (the record of a runaway reads it). */
+	/* The last evaluation, flown where it is read: by the record of a
+	 * runaway, and here when the iterations ran out. */
 	if (k > max_iter)
 		k = max_iter;
-	bool flown = loop_flown(p, gamma_time, &ring, k);
+	if (st == SIZING_RUNAWAY || st == SIZING_MAX_ITERATIONS) {
+		bool flown = loop_flown(p, gamma_time, &ring, k);
+		if (st == SIZING_MAX_ITERATIONS && !flown
+		    && (p->capacity_locked || p->parts.active))
+			st = SIZING_DISCHARGE_FAIL;
+	}
 	*last = ring.e[k % LOOP_RING];
-	if (st == SIZING_MAX_ITERATIONS && !flown
-	    && (p->capacity_locked || p->parts.active))
-		st = SIZING_DISCHARGE_FAIL;
 	*m_star = m;
 	*c_star = last->capacity_ah;
 	*ls_out = ls;
