@@ -1126,20 +1126,34 @@ struct closer {
 	const struct res_run *custom;
 };
 
-/* Re-solve the custom mission on choice c into sr->closed (violations into
- * sr), upsizing the battery while it runs short.  Returns the name of the
- * first check the real parts fail that the continuous design passed, or
- * NULL when they close as well as it did.  *finite is false if a number
- * came out non-finite. */
+/* Swap two result buffers. */
+static void
+swap_results(struct solve_result **a, struct solve_result **b)
+{
+	struct solve_result *tmp = *a;
+	*a = *b;
+	*b = tmp;
+}
+
+/* Re-solve the custom mission on choice c into (*srp)->closed (violations
+ * into *srp), upsizing the battery while it runs short.  Returns the name
+ * of the first check the real parts fail that the continuous design
+ * passed, or NULL when they close as well as it did.  *finite is false if
+ * a number came out non-finite.  *sparep is a second buffer: an upsized
+ * battery is tried in one while the other keeps the attempt before, so
+ * that going back to it needs no second solve (the buffers may swap). */
 static const char *
 close_choice(const struct closer *k, struct optim_choice *c,
-             struct solve_result *sr, bool *finite)
+             struct solve_result **srp, struct solve_result **sparep,
+             bool *finite)
 {
 	double need_ah = at_bus(k->t, k->t->capacity_ah, c->cells);
 	double need_a = at_bus(k->t, k->t->bus_peak_current_a, c->cells);
 	struct optim_choice prev = *c;
 	int prev_failed = -1;
-	const char *parts_fail = NULL;
+	bool prev_finite = true;
+	const char *parts_fail = NULL, *prev_parts_fail = NULL;
+	struct solve_result *sr = *srp;
 	for (int attempt = 0;; attempt++) {
 		struct sizing_params p = *k->p0;
 		apply_parts(&p, k->md, k->t, k->custom, c);
@@ -1153,12 +1167,15 @@ close_choice(const struct closer *k, struct optim_choice *c,
 		parts_fail = parts_checks(&p, c, k->custom, &sr->closed, sr);
 		int nf = n_failed(&sr->closed);
 		if (prev_failed >= 0 && nf >= prev_failed) {
-			/* A larger battery did not help: go back to the last one
-			 * (once more through the loop, which then stops). */
+			/* A larger battery did not help: go back to the last one,
+			 * whose solve the spare buffer still holds (solving it
+			 * again would give the same). */
 			*c = prev;
-			prev_failed = -1;
-			attempt = BATTERY_TRIES;
-			continue;
+			swap_results(srp, sparep);
+			sr = *srp;
+			*finite = prev_finite;
+			parts_fail = prev_parts_fail;
+			break;
 		}
 		double step;
 		if (!*finite || st == SIZING_RUNAWAY || attempt + 1 >= BATTERY_TRIES
@@ -1174,6 +1191,10 @@ close_choice(const struct closer *k, struct optim_choice *c,
 			break;
 		prev = *c;
 		prev_failed = nf;
+		prev_finite = *finite;
+		prev_parts_fail = parts_fail;
+		swap_results(srp, sparep);
+		sr = *srp;
 		*c = up;
 	}
 	const char *fail = new_failure(k->custom, &sr->closed);
@@ -1651,6 +1672,7 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 	struct closer k = { &p, md, &tr, cat, &lk, &r->custom };
 	struct solve_result *fb = xcalloc(1, sizeof *fb);
 	struct solve_result *cur = xcalloc(1, sizeof *cur);
+	struct solve_result *spare = xcalloc(1, sizeof *spare);
 	struct optim_choice fb_c = ch[0], use_c = ch[0];
 	struct optim_target fb_t = t, use_t = t;  /* the aim each was found at */
 	int fb_round = 0, use_round = 0;
@@ -1668,7 +1690,7 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 		double heaviest = 0.0;
 		for (int i = 0; i < kept; i++) {
 			struct optim_choice c = ch[i];
-			const char *fail = close_choice(&k, &c, cur, &finite);
+			const char *fail = close_choice(&k, &c, &cur, &spare, &finite);
 			if (fail == NULL && finite) {
 				use = cur;
 				use_c = c;
@@ -1732,6 +1754,7 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 	locked_limits(&use_t, &lk, &use_c, r);
 	free(fb);
 	free(cur);
+	free(spare);
 	/* The crosshair figure scores every motor against the aim the chosen
 	 * parts were found at. */
 	if (use_round > 0) {
