@@ -1673,6 +1673,9 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 	struct solve_result *fb = xcalloc(1, sizeof *fb);
 	struct solve_result *cur = xcalloc(1, sizeof *cur);
 	struct solve_result *spare = xcalloc(1, sizeof *spare);
+	struct res_candidate *round_cand = xmalloc((size_t)OPTIM_ROUNDS
+	    * RES_MAX_CANDIDATES * sizeof *round_cand);
+	int round_n_cand[OPTIM_ROUNDS] = { 0 };
 	struct optim_choice fb_c = ch[0], use_c = ch[0];
 	struct optim_target fb_t = t, use_t = t;  /* the aim each was found at */
 	int fb_round = 0, use_round = 0;
@@ -1682,8 +1685,11 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 	const struct solve_result *use = NULL;
 	int tried = 0;
 	for (int round = 0; round < OPTIM_ROUNDS && use == NULL; round++) {
+		/* A re-aimed round scores the candidates too: the crosshair
+		 * figure shows those of the round the parts come from. */
 		int n = round == 0 ? n_found
-		    : optim_rank(&tr, cat, &lk, ch, OPTIM_MAX_TRIES, NULL, NULL, NULL);
+		    : optim_rank(&tr, cat, &lk, ch, OPTIM_MAX_TRIES, NULL,
+		        &round_cand[round * RES_MAX_CANDIDATES], &round_n_cand[round]);
 		if (n == 0)
 			break;
 		int kept = n < OPTIM_MAX_TRIES ? n : OPTIM_MAX_TRIES;
@@ -1756,13 +1762,16 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 	free(cur);
 	free(spare);
 	/* The crosshair figure scores every motor against the aim the chosen
-	 * parts were found at. */
+	 * parts were found at (scored by that round's ranking). */
 	if (use_round > 0) {
-		optim_rank(&use_t, cat, &lk, ch, 0, NULL, r->candidates, &r->n_candidates);
+		r->n_candidates = round_n_cand[use_round];
+		memcpy(r->candidates, &round_cand[use_round * RES_MAX_CANDIDATES],
+		    (size_t)r->n_candidates * sizeof r->candidates[0]);
 		engine_rationale(r, "Real parts came out heavier than the continuous "
 		    "design, so the search was re-aimed at %.2f kg (%d round%s).",
 		    use_t.mass_kg, use_round, use_round == 1 ? "" : "s");
 	}
+	free(round_cand);
 
 	fill_parts(&t, &use_c, r);
 	struct sizing_params pc = p;
