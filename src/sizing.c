@@ -463,7 +463,7 @@ seed_capacity_ah(const struct sizing_params *p, const struct loop_state *ls,
                  double mass_kg)
 {
 	/* The phase powers alone: no discharge (they are computed, the
-	 * capacity being free here; see evaluate()). */
+	 * capacity being free here; see evaluate_masses()). */
 	struct eval e;
 	evaluate(p, ls, mass_kg, 1.0, 0, NULL, &e);
 	double d[PHASE_MAX], wh = 0.0;
@@ -630,7 +630,7 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 	int n_down = 0;
 	struct loop_state ls = { cells, 0.02 * p->wheelbase_m, gamma_time };
 	/* A catalogue battery's capacity is the part's whatever c says (see
-	 * evaluate()), so it needs no seed evaluation. */
+	 * evaluate_masses()), so it needs no seed evaluation. */
 	double c = p->capacity_locked ? p->capacity_locked_ah
 	    : battery_fixed(p) ? p->parts.capacity_ah : seed_capacity_ah(p, &ls, m);
 	double c_failed = 0.0;
