@@ -36,15 +36,32 @@ batt_ocv_cell(const struct batt_chem *c, double soc, double c_rate)
 	    - c->k * (1.0 / soc - 1.0);
 }
 
+void
+batt_r_sys_init(const struct batt_chem *c, int cells, double capacity_ah,
+                int cycles, int n_rotors, struct batt_r_sys *out)
+{
+	double cap = capacity_ah > 1e-6 ? capacity_ah : 1e-6;
+	out->r_cells_ohm = 1e-3 * c->r_cell_mohm * (double)cells
+	    * (BATT_REF_CAPACITY_AH / cap);
+	out->f_aging = 1.0 + BATT_AGING_PER_CYCLE * (double)cycles;
+	out->r_esc_ohm = BATT_RDS_ON_OHM / (double)n_rotors;
+}
+
+double
+batt_r_sys_at(const struct batt_r_sys *rs, double temp_c)
+{
+	/* The products in eq. (rsys) order, so that the split changes no bit. */
+	double f_temp = exp(-BATT_TEMP_COEF_PER_K * (temp_c - 25.0));
+	return rs->r_cells_ohm * f_temp * rs->f_aging + rs->r_esc_ohm;
+}
+
 double
 batt_r_sys_ohm(const struct batt_chem *c, int cells, double capacity_ah,
                double temp_c, int cycles, int n_rotors)
 {
-	double f_temp = exp(-BATT_TEMP_COEF_PER_K * (temp_c - 25.0));
-	double f_aging = 1.0 + BATT_AGING_PER_CYCLE * (double)cycles;
-	double cap = capacity_ah > 1e-6 ? capacity_ah : 1e-6;
-	return 1e-3 * c->r_cell_mohm * (double)cells * (BATT_REF_CAPACITY_AH / cap)
-	    * f_temp * f_aging + BATT_RDS_ON_OHM / (double)n_rotors;
+	struct batt_r_sys rs;
+	batt_r_sys_init(c, cells, capacity_ah, cycles, n_rotors, &rs);
+	return batt_r_sys_at(&rs, temp_c);
 }
 
 enum batt_status

@@ -52,6 +52,19 @@ double batt_ocv_cell(const struct batt_chem *c, double soc, double c_rate);
 double batt_r_sys_ohm(const struct batt_chem *c, int cells, double capacity_ah,
                       double temp_c, int cycles, int n_rotors);
 
+/* The same split into what a pack fixes and what its temperature changes,
+ * for a time-step simulation that evaluates it every step:
+ * batt_r_sys_at(&rs, T) after batt_r_sys_init() equals batt_r_sys_ohm()
+ * to the last bit. */
+struct batt_r_sys {
+	double r_cells_ohm;    /* 1e-3 R_i N (C_ref / C): the cells at 25 °C, new */
+	double f_aging;        /* 1 + k_ag · cycles */
+	double r_esc_ohm;      /* R_ds,on / N_r: the ESC MOSFETs */
+};
+void batt_r_sys_init(const struct batt_chem *c, int cells, double capacity_ah,
+                     int cycles, int n_rotors, struct batt_r_sys *out);
+double batt_r_sys_at(const struct batt_r_sys *rs, double temp_c);
+
 /* Current drawn for power_w from a source v_oc behind r_ohm:
  * I = (V - sqrt(V² - 4 R P)) / (2 R), computed as 2P / (V + sqrt(...)) so
  * that it stays exact as R -> 0.  Returns the status; *current_a is

@@ -26,16 +26,39 @@ struct cell_state {
 	double c_rate;          /* of the previous step, for B_eff */
 };
 
-/* One step: draw power_w for dt_s.  Returns DIS_COMPLETED when the step
- * was flown, another end code when it was not. */
-static enum discharge_end
-step(const struct discharge_pack *p, double hac_w_k, double ambient_c,
-     double power_w, double dt_s, struct cell_state *st, double *current_a,
-     double *v_oc_v, double *v_term_v)
+/* What every step of one time step dt_s shares: the pack's fixed part of
+ * R_sys and the thermal decay over dt_s, computed once (each costs an exp)
+ * instead of per step. */
+struct step_ctx {
+	const struct discharge_pack *p;
+	double ambient_c;
+	double dt_s;
+	struct batt_r_sys rs;
+	struct therm_step ts;
+};
+
+static void
+step_init(const struct discharge_pack *p, double hac_w_k, double ambient_c,
+          double dt_s, struct step_ctx *sc)
 {
-	double r_sys = batt_r_sys_ohm(p->chem, p->cells, p->capacity_ah,
-	    st->temp_c, p->cycles, p->n_rotors);
-	double r_esc = BATT_RDS_ON_OHM / (double)p->n_rotors;
+	sc->p = p;
+	sc->ambient_c = ambient_c;
+	sc->dt_s = dt_s;
+	batt_r_sys_init(p->chem, p->cells, p->capacity_ah, p->cycles, p->n_rotors,
+	    &sc->rs);
+	therm_step_init(hac_w_k, p->mass_kg, dt_s, &sc->ts);
+}
+
+/* One step: draw power_w for sc->dt_s.  Returns DIS_COMPLETED when the step
+ * was flown, another end code when it was not. */
+static inline enum discharge_end
+step(const struct step_ctx *sc, double power_w, struct cell_state *st,
+     double *current_a, double *v_oc_v, double *v_term_v)
+{
+	const struct discharge_pack *p = sc->p;
+	double dt_s = sc->dt_s;
+	double r_sys = batt_r_sys_at(&sc->rs, st->temp_c);
+	double r_esc = sc->rs.r_esc_ohm;
 	double v_oc = (double)p->cells * batt_ocv_cell(p->chem, st->soc, st->c_rate);
 	double i;
 	enum batt_status bs = batt_current_a(v_oc, r_sys, power_w, &i);
@@ -51,8 +74,7 @@ step(const struct discharge_pack *p, double hac_w_k, double ambient_c,
 		return DIS_VOLTAGE_FLOOR;
 	/* Only the cells heat the pack; the MOSFET loss stays in the ESC. */
 	double heat_w = i * i * (r_sys - r_esc);
-	st->temp_c = therm_step_c(st->temp_c, ambient_c, heat_w, hac_w_k,
-	    p->mass_kg, dt_s);
+	st->temp_c = therm_step_apply(&sc->ts, st->temp_c, sc->ambient_c, heat_w);
 	st->soc -= i * dt_s / (S_PER_H * p->capacity_ah);
 	st->c_rate = i / p->capacity_ah;
 	if (st->temp_c > THERM_RUNAWAY_C)
@@ -113,6 +135,8 @@ discharge_run(const struct discharge_pack *pack,
 		if (n < MIN_STEPS_PER_PHASE)
 			n = MIN_STEPS_PER_PHASE;
 		double dt = dur / (double)n;
+		struct step_ctx sc;
+		step_init(pack, hac, mis->ambient_c, dt, &sc);
 		double v_climb = ph == PHASE_CLIMB ? mis->speed_ms[ph] : 0.0;
 		double v_fwd = ph == PHASE_FORWARD ? mis->speed_ms[ph] : 0.0;
 		bool sheds = mis->shed.kind != SHED_NONE;
@@ -135,8 +159,8 @@ discharge_run(const struct discharge_pack *pack,
 				}
 			}
 			double i = 0.0, v_oc = 0.0, v_term = 0.0;
-			enum discharge_end e = step(pack, hac, mis->ambient_c,
-			    pw.electrical_w, dt, &st, &i, &v_oc, &v_term);
+			enum discharge_end e = step(&sc, pw.electrical_w, &st, &i, &v_oc,
+			    &v_term);
 			if (e == DIS_OVERFLOW || e == DIS_COLLAPSE) {
 				out->end = e;
 				break;
@@ -204,13 +228,15 @@ discharge_hover_endurance_steps_s(const struct discharge_pack *pack,
 	if (!(dt > 0.0))
 		return 0.0;
 	struct cell_state st = { 1.0, ambient_c, 0.0 };
-	double hac = therm_hac_w_k(pack->mass_kg, pack->h_conv_w_m2k);
+	struct step_ctx sc;
+	step_init(pack, therm_hac_w_k(pack->mass_kg, pack->h_conv_w_m2k), ambient_c,
+	    dt, &sc);
 	double t = 0.0;
 	for (int k = 0; k < ENDURANCE_MAX_STEPS; k++) {
 		double i, v_oc, v_term;
 		double soc0 = st.soc;
-		enum discharge_end e = step(pack, hac, ambient_c, pw.electrical_w,
-		    dt, &st, &i, &v_oc, &v_term);
+		enum discharge_end e = step(&sc, pw.electrical_w, &st, &i, &v_oc,
+		    &v_term);
 		if (e == DIS_OVERFLOW || e == DIS_COLLAPSE || e == DIS_VOLTAGE_FLOOR)
 			return t;
 		if (st.soc <= reserve_soc) {

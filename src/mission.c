@@ -24,9 +24,21 @@ apply_coaxial(const struct mission_model *m, struct aero_point *p)
 	p->p_shaft_w += extra;
 }
 
-void
-mission_power(const struct mission_model *m, double mass_kg, double v_climb_ms,
-              double v_fwd_ms, struct mission_power *out)
+/* Drag reference area in forward flight at mass_kg, m² (a pow: the speed
+ * sweep computes it once for all its speeds). */
+static double
+forward_ref_area_m2(const struct mission_model *m, double mass_kg)
+{
+	/* Mapping LiDAR's multiplier acts in forward flight only. */
+	return aero_ref_area_m2(m->f_scale, mass_kg, m->added_drag_m2)
+	    * m->fwd_drag_mult;
+}
+
+/* mission_power with the forward reference area s_fwd_m2 already known
+ * (read only when v_fwd_ms > 0). */
+static void
+phase_power(const struct mission_model *m, double mass_kg, double v_climb_ms,
+            double v_fwd_ms, double s_fwd_m2, struct mission_power *out)
 {
 	double weight_n = mass_kg * G0_M_S2;
 	double n = (double)m->n_rotors;
@@ -36,10 +48,7 @@ mission_power(const struct mission_model *m, double mass_kg, double v_climb_ms,
 	out->pitch_deg = 0.0;
 	out->drag_n = 0.0;
 	if (v_fwd_ms > 0.0) {
-		/* Mapping LiDAR's multiplier acts in forward flight only. */
-		double s_ref = aero_ref_area_m2(m->f_scale, mass_kg, m->added_drag_m2)
-		    * m->fwd_drag_mult;
-		out->drag_n = aero_drag_n(rho, v_fwd_ms, m->cd_h, s_ref);
+		out->drag_n = aero_drag_n(rho, v_fwd_ms, m->cd_h, s_fwd_m2);
 		out->pitch_deg = atan(out->drag_n / weight_n) * 180.0 / M_PI;
 		out->thrust_per_rotor_n = sqrt(weight_n * weight_n
 		    + out->drag_n * out->drag_n) / n;
@@ -56,6 +65,14 @@ mission_power(const struct mission_model *m, double mass_kg, double v_climb_ms,
 	    v_fwd_ms > 0.0 ? v_fwd_ms : 0.0, parasite_w, &out->rotor);
 	apply_coaxial(m, &out->rotor);
 	finish(m, out);
+}
+
+void
+mission_power(const struct mission_model *m, double mass_kg, double v_climb_ms,
+              double v_fwd_ms, struct mission_power *out)
+{
+	double s_fwd_m2 = v_fwd_ms > 0.0 ? forward_ref_area_m2(m, mass_kg) : 0.0;
+	phase_power(m, mass_kg, v_climb_ms, v_fwd_ms, s_fwd_m2, out);
 }
 
 void
@@ -84,10 +101,11 @@ mission_speed_sweep(const struct mission_model *m, double mass_kg,
 	*v_max_ms = MISSION_SWEEP_V1_MS;
 	int steps = (int)((MISSION_SWEEP_V1_MS - MISSION_SWEEP_V0_MS)
 	    / MISSION_SWEEP_STEP_MS + 0.5);
+	double s_fwd_m2 = forward_ref_area_m2(m, mass_kg); /* the same at every speed */
 	for (int i = 0; i <= steps; i++) {
 		double v = MISSION_SWEEP_V0_MS + MISSION_SWEEP_STEP_MS * (double)i;
 		struct mission_power p;
-		mission_power(m, mass_kg, 0.0, v, &p);
+		phase_power(m, mass_kg, 0.0, v, s_fwd_m2, &p);
 		if (n < max_points) {
 			v_ms[n] = v;
 			power_w[n] = p.electrical_w;

@@ -103,10 +103,27 @@ option_diameter_in(const struct catalog_motor *m, const struct catalog_prop *p)
 
 /* ---- J-score and limits --------------------------------------------------- */
 
-double
-optim_j_score(const struct optim_target *t, int cells, double diameter_in,
-              double pitch_in, double kv, double motor_mass_kg,
-              double *hover_throttle)
+/* Hover rotor speed of a propeller of diameter_in at the target's thrust
+ * per rotor (T = C_t ρ n² D⁴), rev/s.  It depends on the propeller alone,
+ * so the search computes it once per propeller, not per motor and bus. */
+static double
+hover_rps(const struct optim_target *t, double diameter_in)
+{
+	double thrust_n = t->mass_kg * G0_M_S2 / (double)t->n_rotors;
+	return aero_rps_for_thrust(thrust_n, t->ct, t->rho_kg_m3, in_to_m(diameter_in));
+}
+
+/* θ_hvr: hover over full-throttle rotor speed. */
+static double
+hover_theta(double n_hover_rps, double n_max_rps)
+{
+	return n_max_rps > 0.0 ? n_hover_rps / n_max_rps : 1.0 / OPTIM_LOAD_RPM;
+}
+
+/* optim_j_score with θ_hvr already known. */
+static double
+j_score_at(const struct optim_target *t, int cells, double diameter_in,
+           double pitch_in, double kv, double motor_mass_kg, double theta)
 {
 	double kv_t = at_bus(t, t->motor_kv, cells);
 	double j = 0.0;
@@ -117,16 +134,8 @@ optim_j_score(const struct optim_target *t, int cells, double diameter_in,
 		j += OPTIM_W_KV * fabs(kv - kv_t) / kv_t;
 	if (pitch_in > 0.0 && t->prop_pitch_in > 0.0)
 		j += OPTIM_W_PITCH * fabs(pitch_in - t->prop_pitch_in) / t->prop_pitch_in;
-
-	/* Pen_a: hover throttle this motor really gives on this propeller,
-	 * thrust ∝ n² (T = C_t ρ n² D⁴), against the role's target. */
-	double n_max_rps = full_rpm(t, cells, kv) / S_PER_MIN;
-	double thrust_n = t->mass_kg * G0_M_S2 / (double)t->n_rotors;
-	double n_hover_rps = aero_rps_for_thrust(thrust_n, t->ct, t->rho_kg_m3,
-	    in_to_m(diameter_in));
-	double theta = n_max_rps > 0.0 ? n_hover_rps / n_max_rps : 1.0 / OPTIM_LOAD_RPM;
-	if (hover_throttle != NULL)
-		*hover_throttle = theta;
+	/* Pen_a: hover throttle this motor really gives on this propeller
+	 * against the role's target. */
 	j += OPTIM_PEN_THROTTLE * fmax(0.0, theta - t->hover_throttle);
 	/* Pen_m (ours): a motor heavier than the scaling law's. */
 	double m_star = pitch_in > 0.0 ? t->motor_mass_kg : t->drive_mass_kg;
@@ -137,10 +146,39 @@ optim_j_score(const struct optim_target *t, int cells, double diameter_in,
 	return j;
 }
 
-/* Every limit the option breaks, one bit per enum optim_reason. */
+double
+optim_j_score(const struct optim_target *t, int cells, double diameter_in,
+              double pitch_in, double kv, double motor_mass_kg,
+              double *hover_throttle)
+{
+	double theta = hover_theta(hover_rps(t, diameter_in),
+	    full_rpm(t, cells, kv) / S_PER_MIN);
+	if (hover_throttle != NULL)
+		*hover_throttle = theta;
+	return j_score_at(t, cells, diameter_in, pitch_in, kv, motor_mass_kg, theta);
+}
+
+/* What the pair limits need of a propeller (or an integrated system's own),
+ * fixed for one target: the search computes it once per propeller. */
+struct prop_aim {
+	double d_in;          /* diameter */
+	double tip_m;         /* π D: tip speed per rev/s, m */
+	double n_hover_rps;   /* hover_rps() */
+};
+
+static void
+prop_aim_of(const struct optim_target *t, const struct catalog_motor *m,
+            const struct catalog_prop *p, struct prop_aim *a)
+{
+	a->d_in = option_diameter_in(m, p);
+	a->tip_m = M_PI * in_to_m(a->d_in);
+	a->n_hover_rps = hover_rps(t, a->d_in);
+}
+
+/* The limits of the motor alone on `cells` (cell range, current, power):
+ * bits OPTIM_MOTOR_CELLS..OPTIM_MOTOR_POWER, the first three reasons. */
 static unsigned
-limit_mask(const struct optim_target *t, int cells, const struct catalog_motor *m,
-           const struct catalog_prop *p)
+motor_mask(const struct optim_target *t, int cells, const struct catalog_motor *m)
 {
 	unsigned mask = 0;
 	double i_peak = at_bus(t, t->motor_peak_current_a, cells);
@@ -151,23 +189,60 @@ limit_mask(const struct optim_target *t, int cells, const struct catalog_motor *
 		mask |= 1u << OPTIM_MOTOR_CURRENT;
 	if (m->max_power_w > 0.0 && m->max_power_w < t->motor_peak_power_w)
 		mask |= 1u << OPTIM_MOTOR_POWER;
-	double d_in = option_diameter_in(m, p);
-	if (d_in > t->overlap_limit_in + OVERLAP_TOL_IN)
+	return mask;
+}
+
+/* A propeller too large for the wheelbase. */
+static bool
+over_overlap(const struct optim_target *t, double d_in)
+{
+	return d_in > t->overlap_limit_in + OVERLAP_TOL_IN;
+}
+
+/* A propeller below or above the motor's recommended range. */
+static bool
+below_range(const struct catalog_motor *m, double d_in)
+{
+	return m->prop_min_in > 0.0 && d_in < m->prop_min_in - RANGE_TOL_IN;
+}
+
+static bool
+above_range(const struct catalog_motor *m, double d_in)
+{
+	return m->prop_max_in > 0.0 && d_in > m->prop_max_in + RANGE_TOL_IN;
+}
+
+/* The limits of the motor on its propeller (p NULL: an integrated system),
+ * bits OPTIM_PROP_OVERLAP..OPTIM_CANNOT_HOVER. */
+static unsigned
+pair_mask(const struct optim_target *t, int cells, const struct catalog_motor *m,
+          const struct catalog_prop *p, const struct prop_aim *a)
+{
+	unsigned mask = 0;
+	double d_in = a->d_in;
+	if (over_overlap(t, d_in))
 		mask |= 1u << OPTIM_PROP_OVERLAP;
-	if ((m->prop_min_in > 0.0 && d_in < m->prop_min_in - RANGE_TOL_IN)
-	    || (m->prop_max_in > 0.0 && d_in > m->prop_max_in + RANGE_TOL_IN))
+	if (below_range(m, d_in) || above_range(m, d_in))
 		mask |= 1u << OPTIM_PROP_RANGE;
 	double rpm = full_rpm(t, cells, m->kv_rpm_per_v);
-	double mach = M_PI * in_to_m(d_in) * rpm / S_PER_MIN / t->sound_m_s;
+	double mach = a->tip_m * rpm / S_PER_MIN / t->sound_m_s;
 	if (!(mach <= AERO_TIP_MACH_MAX))
 		mask |= 1u << OPTIM_TIP_MACH;
 	if (p != NULL && p->max_rpm > 0.0 && rpm > p->max_rpm)
 		mask |= 1u << OPTIM_PROP_RPM;
-	double theta;
-	optim_j_score(t, cells, d_in, 0.0, m->kv_rpm_per_v, 0.0, &theta);
-	if (!(theta < 1.0))
+	if (!(hover_theta(a->n_hover_rps, rpm / S_PER_MIN) < 1.0))
 		mask |= 1u << OPTIM_CANNOT_HOVER;
 	return mask;
+}
+
+/* Every limit the option breaks, one bit per enum optim_reason. */
+static unsigned
+limit_mask(const struct optim_target *t, int cells, const struct catalog_motor *m,
+           const struct catalog_prop *p)
+{
+	struct prop_aim a;
+	prop_aim_of(t, m, p, &a);
+	return motor_mask(t, cells, m) | pair_mask(t, cells, m, p, &a);
 }
 
 /* The limits a lock takes out of the search: a locked motor is never pruned
@@ -188,13 +263,12 @@ locked_mask(bool motor_locked, bool prop_locked)
 	return mask;
 }
 
+/* The lowest reason bit set: masks hold only bits 1..OPTIM_REASON_MAX-1
+ * (bit 0, OPTIM_OK, is never set), so that is the first in enum order. */
 static enum optim_reason
 first_reason(unsigned mask)
 {
-	for (int k = 1; k < OPTIM_REASON_MAX; k++)
-		if (mask & 1u << k)
-			return (enum optim_reason)k;
-	return OPTIM_OK;
+	return mask != 0 ? (enum optim_reason)__builtin_ctz(mask) : OPTIM_OK;
 }
 
 enum optim_reason
@@ -206,9 +280,10 @@ optim_limits(const struct optim_target *t, int cells,
 
 /* ---- ESC and battery ------------------------------------------------------ */
 
+/* What an ESC must meet on `cells` whatever the motor: the frame size of a
+ * stack board, the cell range, the continuous current. */
 static bool
-esc_fits(const struct optim_target *t, int cells, const struct catalog_motor *m,
-         const struct catalog_esc *e)
+esc_fits_bus(const struct optim_target *t, int cells, const struct catalog_esc *e)
 {
 	double i_need = OPTIM_CURRENT_MARGIN * at_bus(t, t->motor_peak_current_a, cells);
 	if (e->channels > 1 && t->wheelbase_m > OPTIM_STACK_MAX_WHEELBASE_M)
@@ -218,10 +293,21 @@ esc_fits(const struct optim_target *t, int cells, const struct catalog_motor *m,
 		return false;
 	if (e->continuous_current_a < i_need)
 		return false;
-	/* A full-stick punch can draw what the motor takes. */
-	if (e->burst_current_a > 0.0 && e->burst_current_a < m->max_current_a)
-		return false;
 	return true;
+}
+
+/* A full-stick punch can draw what the motor takes. */
+static bool
+esc_carries_burst(const struct catalog_motor *m, const struct catalog_esc *e)
+{
+	return !(e->burst_current_a > 0.0 && e->burst_current_a < m->max_current_a);
+}
+
+static bool
+esc_fits(const struct optim_target *t, int cells, const struct catalog_motor *m,
+         const struct catalog_esc *e)
+{
+	return esc_fits_bus(t, cells, e) && esc_carries_burst(m, e);
 }
 
 static int
@@ -292,13 +378,14 @@ pick_battery(const struct optim_target *t, const struct catalog *cat,
 				continue;
 			if (lock != NULL && strcmp(b->id, lock) != 0)
 				continue;
-			bool same = strcmp(chem_family(b->chemistry), fam) == 0;
-			if (pass == 0 && !same)
-				continue;
 			if (cells % b->cells_series != 0)
 				continue;
 			int ns = cells / b->cells_series;
 			if (ns > OPTIM_MAX_SERIES && lock == NULL)
+				continue;
+			/* The family test last: it is the dearest filter (string
+			 * compares), and only the first pass applies it. */
+			if (pass == 0 && strcmp(chem_family(b->chemistry), fam) != 0)
 				continue;
 			int np = parallel_needed(b, need_ah, need_a);
 			if (np > OPTIM_MAX_PARALLEL) {
@@ -375,41 +462,107 @@ struct bus_offer {
 	struct optim_choice battery;   /* battery fields only */
 };
 
+/* A usable propeller and what the search needs of it, for one target. */
+struct rank_prop {
+	const struct catalog_prop *p;
+	bool locked;                   /* the mission locks this propeller */
+	bool lock_ok;                  /* no propeller lock, or this one */
+	bool over;                     /* above the overlap limit */
+	struct prop_aim aim;
+};
+
+/* An ESC set that suits the bus being ranked, the motor's burst aside. */
+struct esc_offer {
+	const struct catalog_esc *e;
+	double kg;                     /* boards × board mass */
+};
+
 /* Shared state of one ranking. */
 struct rank_ctx {
 	const struct optim_target *t;
+	const struct catalog *cat;
 	const struct optim_locks *lk;
 	struct optim_census *cs;
 	struct optim_choice *choices;
 	int max_choices, n_kept, n_found;
 	struct res_candidate *cand;    /* NULL: not recorded */
 	int slot;                      /* this motor's candidate, -1 none */
+	const struct rank_prop *const *props; /* the usable propellers, in file order */
+	size_t n_props;
+	int n_lock_ok;                 /* of them, those a propeller lock admits */
+	const struct rank_prop *const *fit; /* those within the overlap limit or
+	                                  locked; by diameter when no propeller
+	                                  is locked */
+	size_t n_fit;
+	int n_over;                    /* admitted, free and above the limit */
+	const struct esc_offer *escs;  /* with no ESC locked: the sets that
+	                                  suit this bus, lightest first */
+	size_t n_escs;
 };
 
-/* Score one motor + propeller option on one bus. */
+/* The ESC set of one motor on one bus, picked when an option first needs
+ * it (most motors fail a limit on every propeller and never do). */
+struct esc_pick {
+	bool done;
+	const struct catalog_esc *esc;
+	int n_esc;
+};
+
+/* pick_esc() for motor m on the bus being ranked.  The ESC must suit the
+ * motor's own limits even when the motor is free, so it is picked per
+ * motor; with no ESC locked, the first of the bus's sets (lightest, then
+ * by id: pick_esc's order) that carries the motor's burst. */
+static void
+rank_pick_esc(struct rank_ctx *x, int cells, const struct catalog_motor *m,
+              struct esc_pick *ep)
+{
+	ep->done = true;
+	if (x->lk->esc != NULL) {
+		pick_esc(x->t, x->cat, x->lk->esc, cells, m, &ep->esc, &ep->n_esc);
+		return;
+	}
+	ep->esc = NULL;
+	ep->n_esc = 0;
+	for (size_t i = 0; i < x->n_escs; i++) {
+		if (esc_carries_burst(m, x->escs[i].e)) {
+			ep->esc = x->escs[i].e;
+			ep->n_esc = esc_boards(x->t, ep->esc);
+			return;
+		}
+	}
+}
+
+/* Count an option in the census; true if it failed `why` (not OPTIM_OK). */
+static bool
+option_fails(struct rank_ctx *x, bool eligible, enum optim_reason why)
+{
+	if (eligible)
+		x->cs->n_examined++;
+	if (why == OPTIM_OK)
+		return false;
+	if (eligible)
+		x->cs->n_fail[why]++;
+	return true;
+}
+
+/* One motor + propeller option on one bus that passed every limit the
+ * locks leave (and was counted by option_fails): score it, keep it. */
 static void
 rank_option(struct rank_ctx *x, const struct bus_offer *bus,
             const struct catalog_motor *m, const struct catalog_prop *p,
-            bool eligible, bool motor_locked, bool prop_locked,
-            const struct catalog_esc *esc, int n_esc)
+            const struct prop_aim *a, bool eligible, struct esc_pick *ep)
 {
 	const struct optim_target *t = x->t;
-	if (eligible)
-		x->cs->n_examined++;
-	unsigned ignored = eligible ? locked_mask(motor_locked, prop_locked) : 0;
-	enum optim_reason why = first_reason(limit_mask(t, bus->cells, m, p) & ~ignored);
-	if (why != OPTIM_OK) {
-		if (eligible)
-			x->cs->n_fail[why]++;
-		return;
-	}
-	double theta;
-	double j = optim_j_score(t, bus->cells, option_diameter_in(m, p),
-	    p != NULL ? p->pitch_in : 0.0, m->kv_rpm_per_v, m->mass_kg, &theta);
+	double theta = hover_theta(a->n_hover_rps,
+	    full_rpm(t, bus->cells, m->kv_rpm_per_v) / S_PER_MIN);
+	double j = j_score_at(t, bus->cells, a->d_in, p != NULL ? p->pitch_in : 0.0,
+	    m->kv_rpm_per_v, m->mass_kg, theta);
 	struct res_candidate *rc = x->cand != NULL && x->slot >= 0 ? &x->cand[x->slot] : NULL;
 	if (rc != NULL && j < rc->j_score)
 		rc->j_score = j;
-	if (!m->integrated && esc == NULL) {
+	if (!m->integrated && !ep->done)
+		rank_pick_esc(x, bus->cells, m, ep);
+	if (!m->integrated && ep->esc == NULL) {
 		if (eligible)
 			x->cs->n_fail[OPTIM_NO_ESC]++;
 		return;
@@ -429,8 +582,8 @@ rank_option(struct rank_ctx *x, const struct bus_offer *bus,
 	c.cells = bus->cells;
 	c.motor = m;
 	c.prop = p;
-	c.esc = m->integrated ? NULL : esc;
-	c.n_esc = m->integrated ? 0 : n_esc;
+	c.esc = m->integrated ? NULL : ep->esc;
+	c.n_esc = m->integrated ? 0 : ep->n_esc;
 	c.j_score = j;
 	c.hover_throttle = theta;
 	keep_choice(x->choices, &x->n_kept, x->max_choices, &c, t->cells);
@@ -442,36 +595,131 @@ is_lock(const char *lock, const char *id)
 	return lock != NULL && strcmp(lock, id) == 0;
 }
 
-/* Every option of one motor on one bus. */
-static void
-rank_motor(struct rank_ctx *x, const struct catalog *cat,
-           const struct bus_offer *bus, const struct catalog_motor *m)
+/* The motor limits come first in enum order, so a motor that breaks one
+ * fails on it whatever the propeller (rank_motor relies on it); then the
+ * overlap limit and the recommended range. */
+_Static_assert(OPTIM_MOTOR_CELLS == 1 && OPTIM_MOTOR_CURRENT == 2
+    && OPTIM_MOTOR_POWER == 3 && OPTIM_PROP_OVERLAP == 4
+    && OPTIM_PROP_RANGE == 5,
+    "motor limits, the overlap limit, then the range must be the first reasons");
+
+/* In v[0..n) sorted by diameter, how many lead where below(m, d) holds
+ * (it holds on a prefix); with below false, how many do not trail where
+ * above(m, d) holds (it holds on a suffix). */
+static size_t
+range_cut(const struct catalog_motor *m, const struct rank_prop *const *v,
+          size_t n, bool below)
 {
+	size_t lo = 0, hi = n;
+	while (lo < hi) {
+		size_t mid = lo + (hi - lo) / 2;
+		double d = v[mid]->aim.d_in;
+		if (below ? below_range(m, d) : !above_range(m, d))
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return lo;
+}
+
+/* Every option of one motor on one bus.  An option that is not eligible
+ * (another part is locked) is never counted; it only matters when it
+ * passes and a candidate records it, so it is skipped when there is none. */
+static void
+rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
+           const struct catalog_motor *m)
+{
+	const struct optim_target *t = x->t;
 	const struct optim_locks *lk = x->lk;
 	bool motor_locked = is_lock(lk->motor, m->id);
 	bool motor_ok = lk->motor == NULL || motor_locked;
-	const struct catalog_esc *esc = NULL;
-	int n_esc = 0;
+	bool has_cand = x->cand != NULL && x->slot >= 0;
+	unsigned own = motor_mask(t, bus->cells, m);
 	if (!m->integrated) {
-		/* The ESC must suit the motor's own limits even when the motor
-		 * is free, so pick it per motor. */
-		pick_esc(x->t, cat, lk->esc, bus->cells, m, &esc, &n_esc);
-		for (size_t j = 0; j < catalog_n_props(cat); j++) {
-			const struct catalog_prop *p = catalog_prop(cat, j);
-			if (!p->usable)
+		if (own != 0 && !motor_locked) {
+			/* A free motor's own limits are never ignored: each of its
+			 * options fails on the first of them and touches nothing
+			 * but the census, so they are counted at once. */
+			if (motor_ok) {
+				x->cs->n_examined += x->n_lock_ok;
+				x->cs->n_fail[first_reason(own)] += x->n_lock_ok;
+			}
+			return;
+		}
+		/* A free propeller above the overlap limit fails there on a
+		 * motor that passes its own limits (the next reason in enum
+		 * order): those options too are counted at once. */
+		const struct rank_prop *const *v = x->props;
+		size_t n = x->n_props;
+		if (!motor_locked) {
+			if (motor_ok) {
+				x->cs->n_examined += x->n_over;
+				x->cs->n_fail[OPTIM_PROP_OVERLAP] += x->n_over;
+			}
+			v = x->fit;
+			n = x->n_fit;
+		}
+		if (!motor_locked && lk->prop == NULL) {
+			/* With no propeller locked, those left are free, all
+			 * admitted and sorted by diameter: the ones outside the
+			 * motor's range (the next reason) lead and trail, and
+			 * are counted at once.  The census, the candidates and
+			 * the kept choices do not depend on the order. */
+			size_t first = range_cut(m, v, n, true);
+			size_t end = range_cut(m, v, n, false);
+			if (end < first)
+				end = first; /* a range with min > max: all fail */
+			if (motor_ok) {
+				int out = (int)(n - (end - first));
+				x->cs->n_examined += out;
+				x->cs->n_fail[OPTIM_PROP_RANGE] += out;
+			}
+			v += first;
+			n = end - first;
+		}
+		struct esc_pick ep = { false, NULL, 0 };
+		for (size_t j = 0; j < n; j++) {
+			const struct rank_prop *rp = v[j];
+			bool eligible = motor_ok && rp->lock_ok;
+			if (!eligible && !has_cand)
 				continue;
-			bool prop_locked = is_lock(lk->prop, p->id);
-			bool eligible = motor_ok && (lk->prop == NULL || prop_locked);
-			rank_option(x, bus, m, p, eligible, motor_locked, prop_locked,
-			    esc, n_esc);
+			unsigned ignored = eligible ? locked_mask(motor_locked, rp->locked) : 0;
+			unsigned mask = own | pair_mask(t, bus->cells, m, rp->p, &rp->aim);
+			if (!option_fails(x, eligible, first_reason(mask & ~ignored)))
+				rank_option(x, bus, m, rp->p, &rp->aim, eligible, &ep);
 		}
 	} else {
 		/* An integrated system brings its own propeller and ESC: a
 		 * propeller or ESC lock rules it out. */
 		bool eligible = motor_ok && lk->prop == NULL && lk->esc == NULL;
-		rank_option(x, bus, m, NULL, eligible, motor_locked, motor_locked,
-		    NULL, 0);
+		if (!eligible && !has_cand)
+			return;
+		struct prop_aim a;
+		prop_aim_of(t, m, NULL, &a);
+		unsigned ignored = eligible ? locked_mask(motor_locked, motor_locked) : 0;
+		unsigned mask = own | pair_mask(t, bus->cells, m, NULL, &a);
+		if (!option_fails(x, eligible, first_reason(mask & ~ignored)))
+			rank_option(x, bus, m, NULL, &a, eligible, NULL);
 	}
+}
+
+/* qsort order of ESC sets: pick_esc's, lightest, then by id. */
+static int
+esc_offer_cmp(const void *a, const void *b)
+{
+	const struct esc_offer *x = a, *y = b;
+	if (x->kg != y->kg)
+		return x->kg < y->kg ? -1 : 1;
+	return strcmp(x->e->id, y->e->id);
+}
+
+/* qsort order of rank_prop pointers: by diameter. */
+static int
+rank_prop_cmp(const void *a, const void *b)
+{
+	double da = (*(const struct rank_prop *const *)a)->aim.d_in;
+	double db = (*(const struct rank_prop *const *)b)->aim.d_in;
+	return (da > db) - (da < db);
 }
 
 int
@@ -485,6 +733,7 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 	struct rank_ctx x;
 	memset(&x, 0, sizeof x);
 	x.t = t;
+	x.cat = cat;
 	x.lk = locks != NULL ? locks : &none;
 	x.cs = census != NULL ? census : &local;
 	memset(x.cs, 0, sizeof *x.cs);
@@ -512,6 +761,36 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 	if (n_cand != NULL)
 		*n_cand = n;
 
+	/* What each propeller brings is the same on every motor and bus. */
+	size_t np = catalog_n_props(cat);
+	struct rank_prop *props = xmalloc((np > 0 ? np : 1) * sizeof *props);
+	const struct rank_prop **all = xmalloc((np > 0 ? np : 1) * sizeof *all);
+	const struct rank_prop **fit = xmalloc((np > 0 ? np : 1) * sizeof *fit);
+	for (size_t j = 0; j < np; j++) {
+		const struct catalog_prop *p = catalog_prop(cat, j);
+		if (!p->usable)
+			continue;
+		struct rank_prop *rp = &props[x.n_props];
+		rp->p = p;
+		rp->locked = is_lock(x.lk->prop, p->id);
+		rp->lock_ok = x.lk->prop == NULL || rp->locked;
+		prop_aim_of(t, NULL, p, &rp->aim);
+		rp->over = over_overlap(t, rp->aim.d_in);
+		x.n_lock_ok += rp->lock_ok;
+		all[x.n_props++] = rp;
+		if (!rp->over || rp->locked)
+			fit[x.n_fit++] = rp;
+		else if (rp->lock_ok)
+			x.n_over++;
+	}
+	if (x.lk->prop == NULL)
+		qsort(fit, x.n_fit, sizeof *fit, rank_prop_cmp);
+	x.props = all;
+	x.fit = fit;
+	size_t ne = catalog_n_escs(cat);
+	struct esc_offer *escs = xmalloc((ne > 0 ? ne : 1) * sizeof *escs);
+	x.escs = escs;
+
 	for (int s = t->cells_lo; s <= t->cells_hi; s++) {
 		struct bus_offer bus;
 		memset(&bus, 0, sizeof bus);
@@ -519,14 +798,28 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 		bus.have_battery = pick_battery(t, cat, x.lk->battery, s,
 		    at_bus(t, t->capacity_ah, s), at_bus(t, t->bus_peak_current_a, s),
 		    &bus.battery);
+		x.n_escs = 0;
+		for (size_t i = 0; i < ne && x.lk->esc == NULL; i++) {
+			const struct catalog_esc *e = catalog_esc(cat, i);
+			if (!e->usable || !esc_fits_bus(t, s, e))
+				continue;
+			escs[x.n_escs].e = e;
+			escs[x.n_escs].kg = (double)esc_boards(t, e) * e->mass_kg;
+			x.n_escs++;
+		}
+		qsort(escs, x.n_escs, sizeof *escs, esc_offer_cmp);
 		for (size_t i = 0; i < nm; i++) {
 			const struct catalog_motor *m = catalog_motor(cat, i);
 			if (!m->usable)
 				continue;
 			x.slot = slot[i];
-			rank_motor(&x, cat, &bus, m);
+			rank_motor(&x, &bus, m);
 		}
 	}
+	free(escs);
+	free(fit);
+	free(all);
+	free(props);
 	free(slot);
 	return x.n_found;
 }
@@ -836,20 +1129,34 @@ struct closer {
 	const struct res_run *custom;
 };
 
-/* Re-solve the custom mission on choice c into sr->closed (violations into
- * sr), upsizing the battery while it runs short.  Returns the name of the
- * first check the real parts fail that the continuous design passed, or
- * NULL when they close as well as it did.  *finite is false if a number
- * came out non-finite. */
+/* Swap two result buffers. */
+static void
+swap_results(struct solve_result **a, struct solve_result **b)
+{
+	struct solve_result *tmp = *a;
+	*a = *b;
+	*b = tmp;
+}
+
+/* Re-solve the custom mission on choice c into (*srp)->closed (violations
+ * into *srp), upsizing the battery while it runs short.  Returns the name
+ * of the first check the real parts fail that the continuous design
+ * passed, or NULL when they close as well as it did.  *finite is false if
+ * a number came out non-finite.  *sparep is a second buffer: an upsized
+ * battery is tried in one while the other keeps the attempt before, so
+ * that going back to it needs no second solve (the buffers may swap). */
 static const char *
 close_choice(const struct closer *k, struct optim_choice *c,
-             struct solve_result *sr, bool *finite)
+             struct solve_result **srp, struct solve_result **sparep,
+             bool *finite)
 {
 	double need_ah = at_bus(k->t, k->t->capacity_ah, c->cells);
 	double need_a = at_bus(k->t, k->t->bus_peak_current_a, c->cells);
 	struct optim_choice prev = *c;
 	int prev_failed = -1;
-	const char *parts_fail = NULL;
+	bool prev_finite = true;
+	const char *parts_fail = NULL, *prev_parts_fail = NULL;
+	struct solve_result *sr = *srp;
 	for (int attempt = 0;; attempt++) {
 		struct sizing_params p = *k->p0;
 		apply_parts(&p, k->md, k->t, k->custom, c);
@@ -863,12 +1170,15 @@ close_choice(const struct closer *k, struct optim_choice *c,
 		parts_fail = parts_checks(&p, c, k->custom, &sr->closed, sr);
 		int nf = n_failed(&sr->closed);
 		if (prev_failed >= 0 && nf >= prev_failed) {
-			/* A larger battery did not help: go back to the last one
-			 * (once more through the loop, which then stops). */
+			/* A larger battery did not help: go back to the last one,
+			 * whose solve the spare buffer still holds (solving it
+			 * again would give the same). */
 			*c = prev;
-			prev_failed = -1;
-			attempt = BATTERY_TRIES;
-			continue;
+			swap_results(srp, sparep);
+			sr = *srp;
+			*finite = prev_finite;
+			parts_fail = prev_parts_fail;
+			break;
 		}
 		double step;
 		if (!*finite || st == SIZING_RUNAWAY || attempt + 1 >= BATTERY_TRIES
@@ -884,6 +1194,10 @@ close_choice(const struct closer *k, struct optim_choice *c,
 			break;
 		prev = *c;
 		prev_failed = nf;
+		prev_finite = *finite;
+		prev_parts_fail = parts_fail;
+		swap_results(srp, sparep);
+		sr = *srp;
 		*c = up;
 	}
 	const char *fail = new_failure(k->custom, &sr->closed);
@@ -1361,6 +1675,10 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 	struct closer k = { &p, md, &tr, cat, &lk, &r->custom };
 	struct solve_result *fb = xcalloc(1, sizeof *fb);
 	struct solve_result *cur = xcalloc(1, sizeof *cur);
+	struct solve_result *spare = xcalloc(1, sizeof *spare);
+	struct res_candidate *round_cand = xmalloc((size_t)OPTIM_ROUNDS
+	    * RES_MAX_CANDIDATES * sizeof *round_cand);
+	int round_n_cand[OPTIM_ROUNDS] = { 0 };
 	struct optim_choice fb_c = ch[0], use_c = ch[0];
 	struct optim_target fb_t = t, use_t = t;  /* the aim each was found at */
 	int fb_round = 0, use_round = 0;
@@ -1370,15 +1688,18 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 	const struct solve_result *use = NULL;
 	int tried = 0;
 	for (int round = 0; round < OPTIM_ROUNDS && use == NULL; round++) {
+		/* A re-aimed round scores the candidates too: the crosshair
+		 * figure shows those of the round the parts come from. */
 		int n = round == 0 ? n_found
-		    : optim_rank(&tr, cat, &lk, ch, OPTIM_MAX_TRIES, NULL, NULL, NULL);
+		    : optim_rank(&tr, cat, &lk, ch, OPTIM_MAX_TRIES, NULL,
+		        &round_cand[round * RES_MAX_CANDIDATES], &round_n_cand[round]);
 		if (n == 0)
 			break;
 		int kept = n < OPTIM_MAX_TRIES ? n : OPTIM_MAX_TRIES;
 		double heaviest = 0.0;
 		for (int i = 0; i < kept; i++) {
 			struct optim_choice c = ch[i];
-			const char *fail = close_choice(&k, &c, cur, &finite);
+			const char *fail = close_choice(&k, &c, &cur, &spare, &finite);
 			if (fail == NULL && finite) {
 				use = cur;
 				use_c = c;
@@ -1387,9 +1708,16 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 				break;
 			}
 			tried++;
+			if (i == 0)
+				heaviest = cur->closed.mass.total_kg;
 			int nf = n_failed(&cur->closed);
 			if (fb_failed < 0 || nf < fb_failed) {
-				*fb = *cur;
+				/* The closest so far becomes the fallback.  The next
+				 * try rewrites all it reads of its result, so the two
+				 * buffers swap instead of copying a whole result. */
+				struct solve_result *tmp = fb;
+				fb = cur;
+				cur = tmp;
 				fb_c = c;
 				fb_t = tr;
 				fb_round = round;
@@ -1397,8 +1725,6 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 				fb_finite = finite;
 				copy_text(fb_fail, sizeof fb_fail, fail ? fail : "");
 			}
-			if (i == 0)
-				heaviest = cur->closed.mass.total_kg;
 		}
 		/* Real parts heavier than the aim: thrust, current, power and
 		 * energy grow about as M^1.5 on a given rotor. */
@@ -1437,14 +1763,18 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 	locked_limits(&use_t, &lk, &use_c, r);
 	free(fb);
 	free(cur);
+	free(spare);
 	/* The crosshair figure scores every motor against the aim the chosen
-	 * parts were found at. */
+	 * parts were found at (scored by that round's ranking). */
 	if (use_round > 0) {
-		optim_rank(&use_t, cat, &lk, ch, 0, NULL, r->candidates, &r->n_candidates);
+		r->n_candidates = round_n_cand[use_round];
+		memcpy(r->candidates, &round_cand[use_round * RES_MAX_CANDIDATES],
+		    (size_t)r->n_candidates * sizeof r->candidates[0]);
 		engine_rationale(r, "Real parts came out heavier than the continuous "
 		    "design, so the search was re-aimed at %.2f kg (%d round%s).",
 		    use_t.mass_kg, use_round, use_round == 1 ? "" : "s");
 	}
+	free(round_cand);
 
 	fill_parts(&t, &use_c, r);
 	struct sizing_params pc = p;

@@ -155,6 +155,13 @@ shedding(const struct sizing_params *p, double gamma_time,
 	    : (t_total > 0.0 ? p->payload_kg / t_total : 0.0);
 }
 
+/* A real catalogue battery (BOM-closed run): its capacity is fixed. */
+static bool
+battery_fixed(const struct sizing_params *p)
+{
+	return p->parts.active && p->parts.battery_kg > 0.0;
+}
+
 /* The battery that the loop state describes. */
 static void
 pack_of(const struct sizing_params *p, const struct eval *e,
@@ -170,14 +177,15 @@ pack_of(const struct sizing_params *p, const struct eval *e,
 }
 
 /*
- * Evaluate every subsystem at takeoff mass M with capacity C: the map f of
- * eq. (implicit).  `steps` sets the discharge resolution; trace/sweep are
- * filled only when given (the final evaluation).
+ * Evaluate every subsystem at takeoff mass M with capacity C, all but the
+ * discharge: the masses of the map f of eq. (implicit), which do not depend
+ * on it.  `flight` says whether the mission will be flown (see phases
+ * below); the sweep is recorded into rec when given (the final evaluation).
  */
 static void
-evaluate(const struct sizing_params *p, const struct loop_state *ls,
-         double mass_kg, double capacity_ah, int steps, struct res_run *rec,
-         struct eval *e)
+evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
+                double mass_kg, double capacity_ah, bool flight,
+                struct res_run *rec, struct eval *e)
 {
 	const struct atmo_state *air = &p->air;
 	int nr = p->n_rotors;
@@ -236,12 +244,23 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 			e->v_fwd_ms = e->v_min_power_ms;
 	}
 
-	mission_power(m, mass_kg, p->v_climb_ms, 0.0, &e->ph[PHASE_CLIMB]);
-	mission_power(m, mass_kg, 0.0, e->v_fwd_ms, &e->ph[PHASE_FORWARD]);
-	mission_power(m, mass_kg, 0.0, 0.0, &e->ph[PHASE_HOVER]);
+	/* The phase powers size a power-bound battery, seed the capacity and
+	 * fly the mission: a locked capacity evaluated for its masses alone
+	 * (steps <= 0: the endurance explorer, a locked run's Lipschitz
+	 * round) needs none of that, nor the pitch derived from them (they
+	 * stay 0). */
+	bool phases = flight || !p->capacity_locked;
+	if (phases) {
+		mission_power(m, mass_kg, p->v_climb_ms, 0.0, &e->ph[PHASE_CLIMB]);
+		mission_power(m, mass_kg, 0.0, e->v_fwd_ms, &e->ph[PHASE_FORWARD]);
+		mission_power(m, mass_kg, 0.0, 0.0, &e->ph[PHASE_HOVER]);
+	}
 	mission_peak_power(m, e->t_peak_n, &e->peak);
-	e->pitch_m = p->prop_locked ? p->prop_pitch_m
-	    : sizing_pitch_m(d, e->ph[PHASE_HOVER].rotor.induced_ms, e->rps_hover);
+	if (p->prop_locked)
+		e->pitch_m = p->prop_pitch_m;
+	else if (phases)
+		e->pitch_m = sizing_pitch_m(d, e->ph[PHASE_HOVER].rotor.induced_ms,
+		    e->rps_hover);
 
 	/* Series cells: locked, set by a locked KV, or from the current budget. */
 	if (p->parts.active && p->parts.cells > 0)
@@ -262,7 +281,7 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	/* Battery: energy-sized capacity, floored by the power the cells can
 	 * deliver (specific power), unless locked or a real part. */
 	e->capacity_ah = capacity_ah;
-	if (p->parts.active && p->parts.battery_kg > 0.0)
+	if (battery_fixed(p))
 		e->capacity_ah = p->parts.capacity_ah;
 	else if (p->capacity_locked)
 		e->capacity_ah = p->capacity_locked_ah;
@@ -282,7 +301,7 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	double m_power = fmax(p_sustained,
 	    e->peak.electrical_w / p->burst_factor)
 	    / p->chem->p_spec_w_kg * e->eta_pkg;
-	if (p->parts.active && p->parts.battery_kg > 0.0) {
+	if (battery_fixed(p)) {
 		e->mass.battery_kg = p->parts.battery_kg;
 	} else if (!p->capacity_locked && m_power > m_energy) {
 		e->power_binds = true;
@@ -360,22 +379,22 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	    + e->mass.prop_kg + e->mass.esc_kg + e->mass.wiring_kg
 	    + e->mass.avionics_kg + e->mass.role_aux_kg + e->mass.other_kg;
 
-	/* steps <= 0: the caller needs the masses only (a locked capacity in
-	 * the endurance explorer), not the mission's discharge. */
-	if (steps <= 0) {
-		e->dis.end = DIS_COMPLETED;
-		e->c_target_ah = e->capacity_ah;
-		return;
-	}
+}
 
-	/* Fly the mission at this mass and capacity. */
+/* Fly the mission of an evaluate_masses() result e (made with flight
+ * true) in `steps` steps at goal relaxation gamma_time, trace into rec
+ * when given, and set the capacity it needs. */
+static void
+evaluate_flight(const struct sizing_params *p, double gamma_time, int steps,
+                struct res_run *rec, struct eval *e)
+{
 	struct discharge_pack pk;
 	pack_of(p, e, &pk);
 	struct discharge_mission dm;
-	dm.model = m;
-	dm.dry_mass_kg = mass_kg - p->payload_kg;
-	shedding(p, ls->gamma_time, &dm.shed);
-	durations(p, ls->gamma_time, dm.duration_s);
+	dm.model = &e->model;
+	dm.dry_mass_kg = e->mass_kg - p->payload_kg;
+	shedding(p, gamma_time, &dm.shed);
+	durations(p, gamma_time, dm.duration_s);
 	dm.speed_ms[PHASE_CLIMB] = p->v_climb_ms;
 	dm.speed_ms[PHASE_FORWARD] = e->v_fwd_ms;
 	dm.speed_ms[PHASE_HOVER] = 0.0;
@@ -384,7 +403,7 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 	    rec ? RES_MAX_TRACE : 0, rec ? &rec->n_trace : NULL, &e->dis);
 
 	/* Capacity the mission needs, with the 20 % margin. */
-	double t_req = total_duration(p, ls->gamma_time);
+	double t_req = total_duration(p, gamma_time);
 	switch (e->dis.end) {
 	case DIS_COMPLETED:
 		e->c_target_ah = SIZING_CAP_MARGIN * e->dis.ah_used;
@@ -406,6 +425,24 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 		e->c_target_ah = 1.5 * e->capacity_ah;
 		break;
 	}
+}
+
+/* Both: the map f at (M, C) with the mission flown in `steps` steps; steps
+ * <= 0 when the caller needs the masses or powers only (the seeds, the
+ * last Lipschitz round, the endurance explorer's locked-capacity loops),
+ * not the mission's discharge. */
+static void
+evaluate(const struct sizing_params *p, const struct loop_state *ls,
+         double mass_kg, double capacity_ah, int steps, struct res_run *rec,
+         struct eval *e)
+{
+	evaluate_masses(p, ls, mass_kg, capacity_ah, steps > 0, rec, e);
+	if (steps <= 0) {
+		e->dis.end = DIS_COMPLETED;
+		e->c_target_ah = e->capacity_ah;
+		return;
+	}
+	evaluate_flight(p, ls->gamma_time, steps, rec, e);
 }
 
 double
@@ -432,8 +469,10 @@ static double
 seed_capacity_ah(const struct sizing_params *p, const struct loop_state *ls,
                  double mass_kg)
 {
+	/* The phase powers alone: no discharge (they are computed, the
+	 * capacity being free here; see evaluate_masses()). */
 	struct eval e;
-	evaluate(p, ls, mass_kg, 1.0, 8, NULL, &e);
+	evaluate(p, ls, mass_kg, 1.0, 0, NULL, &e);
 	double d[PHASE_MAX], wh = 0.0;
 	durations(p, ls->gamma_time, d);
 	for (int i = 0; i < PHASE_MAX; i++)
@@ -451,9 +490,14 @@ seed_cells(const struct sizing_params *p, int lo, int hi, double mass_kg,
 	ls->cells = lo;
 	struct eval e;
 	for (int k = 0; k < 3; k++) {
-		evaluate(p, ls, mass_kg, 1.0, 8, NULL, &e);
-		ls->cells = sizing_auto_cells(e.peak.electrical_w, mass_kg,
+		/* The peak power alone: no discharge. */
+		evaluate(p, ls, mass_kg, 1.0, 0, NULL, &e);
+		int cells = sizing_auto_cells(e.peak.electrical_w, mass_kg,
 		    p->chem->v_nom, lo, hi);
+		/* Unchanged: every further pass would repeat this one. */
+		if (cells == ls->cells)
+			break;
+		ls->cells = cells;
 	}
 	return ls->cells;
 }
@@ -495,14 +539,89 @@ final_steps(const struct sizing_params *p)
 	return p->trace_steps > 0 ? p->trace_steps : RES_MAX_TRACE - 8;
 }
 
+/* Forget what a recording evaluation wrote into rec (the trace and the
+ * speed sweep): the next one then starts from the zeroed record that
+ * sizing_run began with.  A recording writes exactly the first n_trace
+ * samples and n_sweep points, and each one is cleared before the next, so
+ * only those can be non-zero. */
+static void
+clear_record(struct res_run *rec)
+{
+	memset(rec->trace, 0, (size_t)rec->n_trace * sizeof rec->trace[0]);
+	rec->n_trace = 0;
+	memset(rec->sweep_v_ms, 0, (size_t)rec->n_sweep * sizeof rec->sweep_v_ms[0]);
+	memset(rec->sweep_power_w, 0, (size_t)rec->n_sweep * sizeof rec->sweep_power_w[0]);
+	rec->n_sweep = 0;
+}
+
+/* The converged loop's evaluation at the final resolution, recorded into
+ * rec when given (cleared first: only the last recording stands). */
+static void
+confirm(const struct sizing_params *p, const struct loop_state *ls,
+        double mass_kg, double capacity_ah, struct res_run *rec, struct eval *fin)
+{
+	if (rec != NULL)
+		clear_record(rec);
+	evaluate(p, ls, mass_kg, capacity_ah, final_steps(p), rec, fin);
+}
+
+/* The loop's evaluations of the last three iterations, and what is known of
+ * their flights: the Aitken test looks back three iterations. */
+#define LOOP_RING 3
+struct loop_ring {
+	struct eval e[LOOP_RING];
+	signed char flown[LOOP_RING];  /* -1 not flown yet, else whether it flew */
+	bool cells_steady[LOOP_RING];
+	int steps;                     /* discharge steps of a loop flight */
+};
+
+/* Whether iteration k's evaluation flew the mission, flying it the first
+ * time it is asked. */
+static bool
+loop_flown(const struct sizing_params *p, double gamma_time,
+           struct loop_ring *r, int k)
+{
+	int i = k % LOOP_RING;
+	if (r->flown[i] < 0) {
+		evaluate_flight(p, gamma_time, r->steps, NULL, &r->e[i]);
+		r->flown[i] = r->e[i].dis.end == DIS_COMPLETED;
+	}
+	return r->flown[i] != 0;
+}
+
+/* Were the three iterations up to k steady (same cells, mission flown)
+ * since the last Aitken jump at iteration last_jump (0: none)?  That is
+ * the loop's count of steady steps reaching 3. */
+static bool
+loop_steady(const struct sizing_params *p, double gamma_time,
+            struct loop_ring *r, int k, int last_jump)
+{
+	if (k - 2 <= last_jump)
+		return false;
+	for (int j = k - 2; j <= k; j++)
+		if (!r->cells_steady[j % LOOP_RING] || !loop_flown(p, gamma_time, r, j))
+			return false;
+	return true;
+}
+
 /* The fixed-point iteration at goal-relaxation factor gamma_time.  The
  * series-cell count is the locked one, or starts from the seed mass's
- * peak power and follows next_cells() inside the loop. */
+ * peak power and follows next_cells() inside the loop.
+ *
+ * A loop that converges on a flown mission confirms it at the final
+ * resolution: that evaluation, at (*m_star, *c_star, *ls_out), goes to
+ * *fin with *fin_done set, and its trace and sweep into rec unless rec is
+ * NULL.  It is the evaluation sizing_run would make next, so sizing_run
+ * keeps it instead of flying the same mission again.  *last is the last
+ * loop evaluation; its flight (dis) is there only when the loop ran away
+ * or out of iterations (sizing_run reads it for a runaway's record). */
 static enum sizing_status
 iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
-        struct eval *last, double *m_star, double *c_star,
+        struct res_run *rec, struct eval *last, struct eval *fin,
+        bool *fin_done, double *m_star, double *c_star,
         struct loop_state *ls_out)
 {
+	*fin_done = false;
 	out->n_history = 0;
 	out->iterations = 0;
 	/* Start from the seed of eq. (altcorrect). */
@@ -518,32 +637,39 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 	}
 	int n_down = 0;
 	struct loop_state ls = { cells, 0.02 * p->wheelbase_m, gamma_time };
+	/* A catalogue battery's capacity is the part's whatever c says (see
+	 * evaluate_masses()), so it needs no seed evaluation. */
 	double c = p->capacity_locked ? p->capacity_locked_ah
-	    : seed_capacity_ah(p, &ls, m);
+	    : battery_fixed(p) ? p->parts.capacity_ah : seed_capacity_ah(p, &ls, m);
 	double c_failed = 0.0;
 	int max_iter = p->max_iter > 0 ? p->max_iter : SIZING_MAX_ITER;
 	enum sizing_status st = SIZING_MAX_ITERATIONS;
+	/* A locked or catalogue capacity takes nothing from the flights: the
+	 * masses do not depend on them, and what reads them (convergence,
+	 * the Aitken test, the record) asks for the ones it needs.  A free
+	 * capacity is re-targeted from every flight. */
+	bool lazy = p->capacity_locked || battery_fixed(p);
+	struct loop_ring ring;
+	ring.steps = LOOP_STEPS;
 
 	/* Aitken Δ² acceleration (Steffensen): the last mass steps and
-	 * capacities, and how many steady steps since the last jump. */
+	 * capacities, and the iteration of the last jump. */
 	double dm_prev = 0.0, dm_prev2 = 0.0, c_prev = 0.0;
-	int steady = 0;
-	int steps = LOOP_STEPS;
-	bool cap_sized = !p->capacity_locked
-	    && !(p->parts.active && p->parts.battery_kg > 0.0);
-	for (int k = 1; k <= max_iter; k++) {
-		evaluate(p, &ls, m, c, steps, NULL, last);
-		double f = last->mass.total_kg;
+	int last_jump = 0, k = 1;
+	for (; k <= max_iter; k++) {
+		struct eval *e = &ring.e[k % LOOP_RING];
+		evaluate_masses(p, &ls, m, c, true, NULL, e);
+		ring.flown[k % LOOP_RING] = -1;
+		double f = e->mass.total_kg;
 		if (out->n_history < RES_MAX_HISTORY)
 			out->history_kg[out->n_history++] = f;
 		out->iterations++;
-		bool flown = last->dis.end == DIS_COMPLETED;
-		if (!flown && last->capacity_ah > c_failed)
-			c_failed = last->capacity_ah;
-		double c_used = last->capacity_ah;
-		if (cap_sized) {
+		double c_used = e->capacity_ah;
+		if (!lazy) {
+			if (!loop_flown(p, gamma_time, &ring, k) && e->capacity_ah > c_failed)
+				c_failed = e->capacity_ah;
 			/* Eq. (relaxation) with the ratchet floor. */
-			c = SIZING_RELAX_ALPHA * last->c_target_ah
+			c = SIZING_RELAX_ALPHA * e->c_target_ah
 			    + (1.0 - SIZING_RELAX_ALPHA) * c_used;
 			if (c_failed > 0.0 && c < SIZING_RATCHET * c_failed)
 				c = SIZING_RATCHET * c_failed;
@@ -554,10 +680,10 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 		}
 		/* The next iteration sees this one's arm (rotor-arm interference)
 		 * and, when automatic, its series-cell count. */
-		ls.arm_width_m = last->arm.d_out_m;
+		ls.arm_width_m = e->arm.d_out_m;
 		bool cells_steady = true;
 		if (auto_cells) {
-			int nc = next_cells(p, ls.cells, last->peak.electrical_w, f,
+			int nc = next_cells(p, ls.cells, e->peak.electrical_w, f,
 			    p->cells_lo, p->cells_hi, &n_down);
 			if (nc != ls.cells) {
 				c *= (double)ls.cells / (double)nc;
@@ -566,45 +692,60 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 				cells_steady = false;
 			}
 		}
+		ring.cells_steady[k % LOOP_RING] = cells_steady;
 		/* A power-bound battery is as large as the peak power needs; its
 		 * energy target is then below it and has no further say. */
-		bool cap_steady = p->capacity_locked
-		    || (p->parts.active && p->parts.battery_kg > 0.0)
-		    || (last->power_binds && last->c_target_ah <= c_used)
+		bool cap_steady = lazy
+		    || (e->power_binds && e->c_target_ah <= c_used)
 		    || fabs(c - c_used) <= 1e-4 * c_used;
 		if (fabs(f - m) < SIZING_TOL_KG && cap_steady && cells_steady) {
 			m = f;
 			/* Confirm with the discharge resolution of the final
 			 * record, so that a mission the coarse loop flew is not
-			 * lost to discretisation in the dossier's trace. */
-			if (flown && steps != final_steps(p)) {
-				struct eval fine;
-				evaluate(p, &ls, m, last->capacity_ah, final_steps(p),
-				    NULL, &fine);
-				flown = fine.dis.end == DIS_COMPLETED;
-				if (!flown && cap_sized) {
-					/* The coarse steps hid a voltage or thermal
-					 * limit at the edge: go on at the fine
-					 * resolution, with this capacity as failed. */
-					steps = final_steps(p);
-					c_failed = fmax(c_failed, last->capacity_ah);
-					c = fmax(c, SIZING_RATCHET * c_failed);
-					steady = 0;
-					continue;
+			 * lost to discretisation in the dossier's trace.  When
+			 * this is the run's record (no goal relaxation follows)
+			 * and the coarse flight is still unflown, the final one
+			 * comes first: sizing_run needs it either way, and the
+			 * coarse one matters only if the final one flew. */
+			bool flown;
+			if (ring.flown[k % LOOP_RING] < 0 && rec != NULL && !p->allow_relax) {
+				confirm(p, &ls, m, e->capacity_ah, rec, fin);
+				*fin_done = true;
+				flown = fin->dis.end == DIS_COMPLETED
+				    && loop_flown(p, gamma_time, &ring, k);
+			} else {
+				flown = loop_flown(p, gamma_time, &ring, k);
+				if (flown) {
+					confirm(p, &ls, m, e->capacity_ah, rec, fin);
+					*fin_done = true;
+					flown = fin->dis.end == DIS_COMPLETED;
+					if (!flown && !lazy && ring.steps != final_steps(p)) {
+						/* The coarse steps hid a voltage or
+						 * thermal limit at the edge: go on at
+						 * the final resolution, with this
+						 * capacity as failed. */
+						ring.steps = final_steps(p);
+						c_failed = fmax(c_failed, e->capacity_ah);
+						c = fmax(c, SIZING_RATCHET * c_failed);
+						*fin_done = false;
+						last_jump = k;
+						continue;
+					}
 				}
 			}
 			st = flown ? SIZING_CONVERGED : SIZING_DISCHARGE_FAIL;
 			break;
 		}
 		/* A slow linear contraction (L near 1) is extrapolated to its
-		 * limit once two successive step ratios agree; the loop then
-		 * re-anchors on the true map at the extrapolated point. */
+		 * limit once two successive step ratios agree and the last three
+		 * steps were steady; the loop then re-anchors on the true map at
+		 * the extrapolated point. */
 		double dm = f - m;
-		steady = cells_steady && flown ? steady + 1 : 0;
-		if (steady >= 3 && dm_prev != 0.0 && dm_prev2 != 0.0) {
+		if (dm_prev != 0.0 && dm_prev2 != 0.0) {
 			double r1 = dm_prev / dm_prev2, r2 = dm / dm_prev;
 			if (r2 > AITKEN_R_MIN && r2 < AITKEN_R_MAX
-			    && fabs(r2 - r1) < AITKEN_R_AGREE * r2) {
+			    && fabs(r2 - r1) < AITKEN_R_AGREE * r2
+			    && loop_steady(p, gamma_time, &ring, k, last_jump)) {
 				double gain = r2 / (1.0 - r2);
 				f += gain * dm;
 				/* The history holds the iterates the loop used. */
@@ -612,7 +753,7 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 				if (!p->capacity_locked && !p->parts.active)
 					c += gain * (c - c_prev);
 				dm = 0.0;
-				steady = 0;
+				last_jump = k;
 			}
 		}
 		dm_prev2 = dm_prev;
@@ -620,9 +761,17 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 		c_prev = c;
 		m = f;
 	}
-	if (st == SIZING_MAX_ITERATIONS && last->dis.end != DIS_COMPLETED
-	    && (p->capacity_locked || p->parts.active))
-		st = SIZING_DISCHARGE_FAIL;
+	/* The last evaluation, flown where it is read: by the record of a
+	 * runaway, and here when the iterations ran out. */
+	if (k > max_iter)
+		k = max_iter;
+	if (st == SIZING_RUNAWAY || st == SIZING_MAX_ITERATIONS) {
+		bool flown = loop_flown(p, gamma_time, &ring, k);
+		if (st == SIZING_MAX_ITERATIONS && !flown
+		    && (p->capacity_locked || p->parts.active))
+			st = SIZING_DISCHARGE_FAIL;
+	}
+	*last = ring.e[k % LOOP_RING];
 	*m_star = m;
 	*c_star = last->capacity_ah;
 	*ls_out = ls;
@@ -638,11 +787,15 @@ lipschitz(const struct sizing_params *p, const struct loop_state *ls,
 	double h = LIPSCHITZ_STEP * m_star;
 	struct eval a, b;
 	double ca = c_star, cb = c_star;
-	for (int k = 0; k < 3; k++) {
-		evaluate(p, ls, m_star + h, ca, LOOP_STEPS, NULL, &a);
-		evaluate(p, ls, m_star - h, cb, LOOP_STEPS, NULL, &b);
-		if (p->capacity_locked)
-			break;
+	/* A locked or catalogue capacity ignores the re-targeted one: further
+	 * rounds would repeat the first exactly. */
+	int rounds = p->capacity_locked || battery_fixed(p) ? 1 : 3;
+	for (int k = 0; k < rounds; k++) {
+		/* The masses come before the discharge in evaluate(): the last
+		 * round, whose capacity target nobody reads, needs no flight. */
+		int steps = k + 1 < rounds ? LOOP_STEPS : 0;
+		evaluate(p, ls, m_star + h, ca, steps, NULL, &a);
+		evaluate(p, ls, m_star - h, cb, steps, NULL, &b);
 		ca = a.c_target_ah;
 		cb = b.c_target_ah;
 	}
@@ -830,24 +983,26 @@ marketing_endurance_s(const struct sizing_params *p, const struct eval *e,
 }
 
 /* Goal relaxation: the largest γ in [0.05, 1) that closes, by bisection
- * (the loop is monotone in mission time).  Leaves the final iteration's
- * state in *last, *m_star, *c_star, *ls: at that γ if one closes, else at
- * the requested mission. */
+ * (the loop is monotone in mission time).  The trials record nothing; the
+ * final loop, at that γ if one closes, else at the requested mission,
+ * records into out and leaves its state as iterate() does. */
 static enum sizing_status
 relax_time(const struct sizing_params *p, struct res_run *out,
-           struct eval *last, double *m_star, double *c_star,
-           struct loop_state *ls)
+           struct eval *last, struct eval *fin, bool *fin_done,
+           double *m_star, double *c_star, struct loop_state *ls)
 {
 	double good = 0.0, lo = SIZING_GAMMA_MIN, hi = 1.0;
-	struct eval e2;
+	struct eval e2, f2;
+	bool f2_done;
 	struct loop_state l2;
 	double m2, c2;
-	if (iterate(p, lo, out, &e2, &m2, &c2, &l2) == SIZING_CONVERGED) {
+	if (iterate(p, lo, out, NULL, &e2, &f2, &f2_done, &m2, &c2, &l2)
+	    == SIZING_CONVERGED) {
 		good = lo;
 		for (int k = 0; k < GAMMA_BISECT; k++) {
 			double mid = 0.5 * (lo + hi);
-			if (iterate(p, mid, out, &e2, &m2, &c2, &l2)
-			    == SIZING_CONVERGED) {
+			if (iterate(p, mid, out, NULL, &e2, &f2, &f2_done,
+			    &m2, &c2, &l2) == SIZING_CONVERGED) {
 				good = mid;
 				lo = mid;
 			} else {
@@ -855,20 +1010,23 @@ relax_time(const struct sizing_params *p, struct res_run *out,
 			}
 		}
 	}
-	return iterate(p, good > 0.0 ? good : 1.0, out, last, m_star, c_star, ls);
+	return iterate(p, good > 0.0 ? good : 1.0, out, out, last, fin,
+	    fin_done, m_star, c_star, ls);
 }
 
 /* Does the loop close at thrust margin t->thrust_margin as a clear
  * contraction?  Near L = 1 a fixed point exists but sits on the edge of the
  * mass snowball (every added gram multiplies), so a relaxed target must
- * leave L <= SIZING_RELAX_MAX_L. */
+ * leave L <= SIZING_RELAX_MAX_L.  Records nothing. */
 static bool
 closes_clearly(const struct sizing_params *t, struct res_run *out)
 {
-	struct eval e2;
+	struct eval e2, f2;
+	bool f2_done;
 	struct loop_state l2;
 	double m2, c2;
-	if (iterate(t, 1.0, out, &e2, &m2, &c2, &l2) != SIZING_CONVERGED)
+	if (iterate(t, 1.0, out, NULL, &e2, &f2, &f2_done, &m2, &c2, &l2)
+	    != SIZING_CONVERGED)
 		return false;
 	return lipschitz(t, &l2, m2, c2) <= SIZING_RELAX_MAX_L;
 }
@@ -880,12 +1038,12 @@ closes_clearly(const struct sizing_params *t, struct res_run *out)
  * [floor, requested) that closes clearly (bisection: more margin, more
  * mass), else the floor itself if its loop closes at all.  Returns false
  * with *q unchanged when even the floor does not close; otherwise sets
- * q->thrust_margin, runs the loop at it (its status in *st) and leaves the
- * final iteration's state as relax_time does. */
+ * q->thrust_margin, runs the loop at it, recording into out (its status
+ * in *st), and leaves its state as iterate() does. */
 static bool
 relax_thrust(struct sizing_params *q, struct res_run *out, struct eval *last,
-             double *m_star, double *c_star, struct loop_state *ls,
-             enum sizing_status *st)
+             struct eval *fin, bool *fin_done, double *m_star, double *c_star,
+             struct loop_state *ls, enum sizing_status *st)
 {
 	double lo = q->thrust_margin_floor, hi = q->thrust_margin;
 	struct sizing_params t = *q;
@@ -901,7 +1059,7 @@ relax_thrust(struct sizing_params *q, struct res_run *out, struct eval *last,
 	}
 	struct sizing_params r = *q;
 	r.thrust_margin = lo;
-	*st = iterate(&r, 1.0, out, last, m_star, c_star, ls);
+	*st = iterate(&r, 1.0, out, out, last, fin, fin_done, m_star, c_star, ls);
 	if (*st != SIZING_CONVERGED)
 		return false;
 	q->thrust_margin = lo;
@@ -911,7 +1069,8 @@ relax_thrust(struct sizing_params *q, struct res_run *out, struct eval *last,
 enum sizing_status
 sizing_run(const struct sizing_params *p_in, struct res_run *out)
 {
-	struct eval last;
+	struct eval last, fin;
+	bool fin_done;
 	struct loop_state ls;
 	double m_star = 0.0, c_star = 0.0;
 	/* A private copy: the thrust relaxation changes the margin flown. */
@@ -921,19 +1080,25 @@ sizing_run(const struct sizing_params *p_in, struct res_run *out)
 	memset(out, 0, sizeof *out);
 	out->ran = true;
 	out->thrust_margin_requested = q.thrust_margin;
-	enum sizing_status st = iterate(p, 1.0, out,
-	    &last, &m_star, &c_star, &ls);
+	enum sizing_status st = iterate(p, 1.0, out, out, &last, &fin, &fin_done,
+	    &m_star, &c_star, &ls);
 
 	if (st != SIZING_CONVERGED && p->allow_relax)
-		st = relax_time(p, out, &last, &m_star, &c_star, &ls);
+		st = relax_time(p, out, &last, &fin, &fin_done, &m_star, &c_star, &ls);
 	if ((st == SIZING_RUNAWAY || st == SIZING_MAX_ITERATIONS)
 	    && q.thrust_margin_floor > 0.0
 	    && q.thrust_margin_floor < q.thrust_margin) {
-		if (!relax_thrust(&q, out, &last, &m_star, &c_star, &ls, &st))
+		if (!relax_thrust(&q, out, &last, &fin, &fin_done, &m_star,
+		    &c_star, &ls, &st))
 			/* Nothing closes: report the run as requested. */
-			st = iterate(p, 1.0, out, &last, &m_star, &c_star, &ls);
+			st = iterate(p, 1.0, out, out, &last, &fin, &fin_done,
+			    &m_star, &c_star, &ls);
 	}
 	out->thrust_margin = q.thrust_margin;
+	/* A confirming evaluation of an earlier iteration may have recorded
+	 * into out: only the last one's record stands. */
+	if (!fin_done)
+		clear_record(out);
 
 	/* The mass loop converged even when the mission then cannot be flown
 	 * (a locked battery too small): that is a discharge failure. */
@@ -946,9 +1111,10 @@ sizing_run(const struct sizing_params *p_in, struct res_run *out)
 		    "than a kilogram of subsystem mass", SIZING_RUNAWAY_KG);
 		return st;
 	}
-	/* The final evaluation at the fixed point keeps the full trace. */
-	struct eval fin;
-	evaluate(p, &ls, m_star, c_star, final_steps(p), out, &fin);
+	/* The final evaluation at the fixed point keeps the full trace (the
+	 * loop's confirming evaluation when it made one: the same). */
+	if (!fin_done)
+		evaluate(p, &ls, m_star, c_star, final_steps(p), out, &fin);
 	record_run(p, &fin, &ls, out);
 	out->lipschitz = lipschitz(p, &ls, m_star, c_star);
 	struct discharge_pack pk;

@@ -22,6 +22,20 @@ double therm_hac_w_k(double battery_mass_kg, double h_w_m2k);
 double therm_step_c(double temp_c, double ambient_c, double heat_w,
                     double hac_w_k, double battery_mass_kg, double dt_s);
 
+/* The same for many steps of one dt_s: therm_step_init() computes the
+ * decay factor exp(-hA dt / C_th) once, therm_step_apply() equals
+ * therm_step_c() to the last bit. */
+struct therm_step {
+	double c_th_j_k;       /* M_bat C_p */
+	double hac_w_k;        /* hA_c */
+	double dt_s;
+	double decay;          /* exp(-hA_c dt / C_th) */
+};
+void therm_step_init(double hac_w_k, double battery_mass_kg, double dt_s,
+                     struct therm_step *out);
+double therm_step_apply(const struct therm_step *ts, double temp_c,
+                        double ambient_c, double heat_w);
+
 /* Winding resistance at temp_c from its 25 °C value, ohm. */
 double therm_winding_resistance_ohm(double r_nom_ohm, double temp_c);
 

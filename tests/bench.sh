@@ -2,7 +2,8 @@
 # bench.sh — how fast aeroeval is, as a table (`make bench`; not a test).
 #
 # usage: sh tests/bench.sh BUILD        (from the repository root)
-# 1. in-process solve time per example (BUILD/bench: median of 200 solves)
+# 1. in-process solve time per example (BUILD/bench: median of 200 solves,
+#    with and without the parts catalogue)
 # 2. whole-process `aeroeval solve` and `aeroeval build` per example
 #    (mean wall time of REPEAT runs, dossier included once build writes it)
 # 3. a batch of BATCH missions (examples/delivery_quad.json with the payload

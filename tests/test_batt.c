@@ -127,6 +127,21 @@ batt_r_sys_factors_should_act_one_at_a_time(void **state)
 	assert_rel(batt_r_sys_ohm(&c, 1, 5.0, 45.0, 0, 8) - esc, 0.00385525793, 1e-9);
 }
 
+static void
+batt_r_sys_at_should_equal_batt_r_sys_ohm_at_every_temperature(void **state)
+{
+	(void)state;
+	struct batt_chem c = fixture_lipo();
+	/* One pack, initialised once, evaluated as a discharge does: every
+	 * temperature gives batt_r_sys_ohm's value to the last bit. */
+	struct batt_r_sys rs;
+	batt_r_sys_init(&c, 6, 12.385, 235, 6, &rs);
+	const double temps_c[] = { -18.5, 0.0, 23.85, 38.5, 59.95 };
+	for (size_t i = 0; i < sizeof temps_c / sizeof temps_c[0]; i++)
+		assert_true(batt_r_sys_at(&rs, temps_c[i])
+		    == batt_r_sys_ohm(&c, 6, 12.385, temps_c[i], 235, 6));
+}
+
 /* ---- current from the power balance ------------------------------------ */
 
 static void
@@ -330,6 +345,7 @@ main(void)
 		cmocka_unit_test(batt_packaging_should_be_1_03_for_enterprise_at_14s_and_above),
 		cmocka_unit_test(batt_packaging_should_be_1_15_for_cylindrical_cells),
 		cmocka_unit_test(batt_mass_should_be_energy_over_specific_energy_times_packaging),
+		cmocka_unit_test(batt_r_sys_at_should_equal_batt_r_sys_ohm_at_every_temperature),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -82,6 +82,27 @@ therm_step_without_cooling_should_be_adiabatic(void **state)
 }
 
 static void
+therm_step_apply_should_equal_therm_step_c_step_after_step(void **state)
+{
+	(void)state;
+	/* One decay factor for a run of steps of the same dt, as a discharge
+	 * phase uses it: each step equals therm_step_c to the last bit, with
+	 * cooling and without. */
+	const double hacs[] = { therm_hac_w_k(0.8385, 12.0), 0.0 };
+	for (size_t k = 0; k < 2; k++) {
+		struct therm_step ts;
+		therm_step_init(hacs[k], 0.8385, 7.35, &ts);
+		double a = 31.5, b = 31.5;
+		for (int i = 0; i < 5; i++) {
+			double heat_w = 18.5 + 2.385 * i;
+			a = therm_step_apply(&ts, a, 23.85, heat_w);
+			b = therm_step_c(b, 23.85, heat_w, hacs[k], 0.8385, 7.35);
+			assert_true(a == b);
+		}
+	}
+}
+
+static void
 therm_winding_resistance_should_rise_with_alpha_cu(void **state)
 {
 	(void)state;
@@ -110,6 +131,7 @@ main(void)
 		cmocka_unit_test(therm_step_should_compose_like_the_exact_solution),
 		cmocka_unit_test(therm_step_should_settle_at_the_steady_state_for_a_huge_step),
 		cmocka_unit_test(therm_step_without_cooling_should_be_adiabatic),
+		cmocka_unit_test(therm_step_apply_should_equal_therm_step_c_step_after_step),
 		cmocka_unit_test(therm_winding_resistance_should_rise_with_alpha_cu),
 		cmocka_unit_test(therm_runaway_limit_should_be_60_c),
 	};
