@@ -39,11 +39,11 @@ while IFS='|' read -r name paper why; do
 	printf '%-24s | %-62s | %s\n' "$name" "$row" "$paper"
 	printf '%-24s   why: %s\n' "" "$why"
 done <<'EOF'
-sar_imaging_quad|5.57 kg 26x9 KV 200 4S 12650 mAh|mission inputs are not published (examples/ are reconstructions); our 5S comes from the 60 A x sqrt(M) current budget; KV is the continuous target at our bus voltage, not a catalogue motor
+sar_imaging_quad|5.57 kg 26x9 KV 200 4S 12650 mAh|mission inputs are not published (examples/ are reconstructions); our 6S comes from the 60 A x sqrt(M) current budget; KV is the continuous target at our bus voltage, not a catalogue motor
 delivery_quad|12.41 kg 39.5x14 KV 80 6S 36861 mAh|the paper's pack (6S 36.9 Ah, ~820 Wh) holds ~5x our energy: its mission must be longer or heavier than the reconstructed one
 agri_spray_octo|50.33 kg 38x12 KV 50 12S 14568 mAh|ours is infeasible (downwash over the 8 m/s cap); 18S from the current budget against the paper's 12S, hence the lower KV
-fpv_racing_quad|0.31 kg 5x2 KV 2300 4S 1264 mAh|MTOW close; ours picks 6S for the burst power at T/W 11 (thrust margin 0.70), so KV and capacity fall against the paper's 4S
-lidar_mapping_quad|2.81 kg 21x7 KV 200 3S 7071 mAh|same cell count and prop, MTOW and capacity about 10 % low; the rest is the reconstructed mission
+fpv_racing_quad|0.31 kg 5x2 KV 2300 4S 1264 mAh|ours is about 40 % lighter: the example asks for T/W 8.2 (thrust margin 0.65; the racing default T/W 25 relaxes to about 10) against the paper's T/W 25, and our racing motors (C_motor 0.25) and 3-minute-mission pack are light; 5S from the burst power
+lidar_mapping_quad|2.81 kg 21x7 KV 200 3S 7071 mAh|same cell count and prop, MTOW and capacity about 12 % high; the rest is the reconstructed mission
 coaxial_inspection_quad|7.77 kg 15x4 KV 450 6S 26881 mAh|the paper's pack (6S 26.9 Ah, ~600 Wh) holds several times our energy: mission inputs are not published
 EOF
 
@@ -122,10 +122,10 @@ aux_power	+0.200	-0.385	10 W	the re-sized battery carries the aux energy, so hov
 added_drag_area	+0.062	-2.531	0.1 m2	same re-sizing effect on hover time; drag acts in the forward leg only
 cg_shift	0.000	-0.169	5 cm	MTOW agrees (0); a CG offset only sizes the arms and gates trim here, with no trim-power cost in hover
 battery_capacity_lock	+0.100	+0.100	1000 mAh	locked at the nominal capacity and cell count; signs agree, our slopes are larger
-prop_diameter_lock	-0.150	0.000	in	the nominal prop is the overlap limit, so only the smaller side exists (one-sided); smaller props cost mass
+prop_diameter_lock	-0.150	0.000	in	the nominal prop is the overlap limit, so only the smaller side exists (one-sided); our slope near it is small and of the other sign (reason not established)
 delivery_drop_mass	-0.022	0.000	kg	on a delivery copy of the mission; the lighter return leg lets the battery shrink (size of the gap not known)
 delivery_drop_time_ratio	+0.033	0.000	0.1 ratio	on a delivery copy; a later drop carries the parcel longer
-spray_rate	-0.490	0.000	0.005 kg/s	on an agriculture copy; the nominal rate is payload / mission time, and slower spraying breaks the downwash cap
+spray_rate	-0.490	0.000	0.005 kg/s	on an agriculture copy; the nominal rate is payload / mission time; faster spraying sheds the tank sooner, so less energy and mass
 EOF
 echo
 echo "Outputs: $out/sensitivity.json, $out/sensitivity.pdf, $out/*.result.json"
