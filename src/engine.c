@@ -375,7 +375,7 @@ explain(const struct sizing_params *p, const struct res_run *o,
 	if (p->v_auto)
 		engine_rationale(r, "Forward speed %.1f m/s: the minimum-power speed of "
 		    "the 1–30 m/s sweep.", o->optimal_speed_ms);
-	if (o->thrust_margin < o->thrust_margin_requested)
+	if (res_thrust_relaxed(o))
 		engine_rationale(r, "Thrust relaxation: the %s role's default target "
 		    "T/W %.1f (hover throttle %.0f %%) does not close with real motor "
 		    "and battery masses, so the largest that closes is used: T/W %.1f "

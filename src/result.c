@@ -6,6 +6,12 @@
  * dossier; index = enum value. */
 const char *const res_phase_name[PHASE_MAX] = { "climb", "forward", "hover" };
 
+bool
+res_thrust_relaxed(const struct res_run *run)
+{
+	return run->thrust_margin < run->thrust_margin_requested;
+}
+
 const struct res_check *
 res_tightest_check(const struct res_run *run)
 {

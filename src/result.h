@@ -268,4 +268,9 @@ struct solve_result {
  * what binds the design.  The rationale and the dossier cover both name it. */
 const struct res_check *res_tightest_check(const struct res_run *run);
 
+/* Did the run fly a lower thrust margin than its role's default target
+ * (the thrust relaxation of sizing.h)?  The rationale, validate and the
+ * sensitivity suite all ask. */
+bool res_thrust_relaxed(const struct res_run *run);
+
 #endif

@@ -247,7 +247,7 @@ validate_solve_row(const struct mission_spec *spec, const struct model_data *md,
 	vr->cells = o->cell_count;
 	vr->capacity_mah = o->capacity_mah;
 	vr->thrust_to_weight = o->thrust_to_weight;
-	vr->thrust_relaxed = o->thrust_margin < o->thrust_margin_requested;
+	vr->thrust_relaxed = res_thrust_relaxed(o);
 	vr->battery_pred_kg = o->mass.battery_kg;
 	vr->status = o->converged ? VALIDATE_ROW_OK : VALIDATE_ROW_NOT_CONVERGED;
 }
