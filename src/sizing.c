@@ -982,6 +982,18 @@ marketing_endurance_s(const struct sizing_params *p, const struct eval *e,
 	    BATT_SOC_MIN);
 }
 
+/* A trial loop of the relaxations: iterate() recording nothing, with its
+ * final state in *ls, *m_star, *c_star (the fixed point when it closed). */
+static enum sizing_status
+trial(const struct sizing_params *p, double gamma_time, struct res_run *out,
+      struct loop_state *ls, double *m_star, double *c_star)
+{
+	struct eval last, fin;
+	bool fin_done;
+	return iterate(p, gamma_time, out, NULL, &last, &fin, &fin_done, m_star,
+	    c_star, ls);
+}
+
 /* Goal relaxation: the largest γ in [0.05, 1) that closes, by bisection
  * (the loop is monotone in mission time).  The trials record nothing; the
  * final loop, at that γ if one closes, else at the requested mission,
@@ -992,17 +1004,13 @@ relax_time(const struct sizing_params *p, struct res_run *out,
            double *m_star, double *c_star, struct loop_state *ls)
 {
 	double good = 0.0, lo = SIZING_GAMMA_MIN, hi = 1.0;
-	struct eval e2, f2;
-	bool f2_done;
 	struct loop_state l2;
 	double m2, c2;
-	if (iterate(p, lo, out, NULL, &e2, &f2, &f2_done, &m2, &c2, &l2)
-	    == SIZING_CONVERGED) {
+	if (trial(p, lo, out, &l2, &m2, &c2) == SIZING_CONVERGED) {
 		good = lo;
 		for (int k = 0; k < GAMMA_BISECT; k++) {
 			double mid = 0.5 * (lo + hi);
-			if (iterate(p, mid, out, NULL, &e2, &f2, &f2_done,
-			    &m2, &c2, &l2) == SIZING_CONVERGED) {
+			if (trial(p, mid, out, &l2, &m2, &c2) == SIZING_CONVERGED) {
 				good = mid;
 				lo = mid;
 			} else {
@@ -1021,12 +1029,9 @@ relax_time(const struct sizing_params *p, struct res_run *out,
 static bool
 closes_clearly(const struct sizing_params *t, struct res_run *out)
 {
-	struct eval e2, f2;
-	bool f2_done;
 	struct loop_state l2;
 	double m2, c2;
-	if (iterate(t, 1.0, out, NULL, &e2, &f2, &f2_done, &m2, &c2, &l2)
-	    != SIZING_CONVERGED)
+	if (trial(t, 1.0, out, &l2, &m2, &c2) != SIZING_CONVERGED)
 		return false;
 	return lipschitz(t, &l2, m2, c2) <= SIZING_RELAX_MAX_L;
 }
@@ -1057,9 +1062,8 @@ relax_thrust(struct sizing_params *q, struct res_run *out, struct eval *last,
 				hi = t.thrust_margin;
 		}
 	}
-	struct sizing_params r = *q;
-	r.thrust_margin = lo;
-	*st = iterate(&r, 1.0, out, out, last, fin, fin_done, m_star, c_star, ls);
+	t.thrust_margin = lo;
+	*st = iterate(&t, 1.0, out, out, last, fin, fin_done, m_star, c_star, ls);
 	if (*st != SIZING_CONVERGED)
 		return false;
 	q->thrust_margin = lo;
