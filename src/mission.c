@@ -88,6 +88,28 @@ mission_peak_power(const struct mission_model *m, double thrust_per_rotor_n,
 	finish(m, out);
 }
 
+/* The sweep's grid: speed i of 0..mission_sweep_last(). */
+static int
+sweep_last(void)
+{
+	return (int)((MISSION_SWEEP_V1_MS - MISSION_SWEEP_V0_MS)
+	    / MISSION_SWEEP_STEP_MS + 0.5);
+}
+
+static double
+sweep_speed_ms(int i)
+{
+	return MISSION_SWEEP_V0_MS + MISSION_SWEEP_STEP_MS * (double)i;
+}
+
+/* Past the thrust or pitch limit at this operating point? */
+static bool
+sweep_over(const struct mission_power *p, double max_thrust_per_rotor_n)
+{
+	return p->thrust_per_rotor_n > max_thrust_per_rotor_n
+	    || p->pitch_deg > MISSION_PITCH_MAX_DEG;
+}
+
 int
 mission_speed_sweep(const struct mission_model *m, double mass_kg,
                     double max_thrust_per_rotor_n, double *v_ms,
@@ -99,11 +121,10 @@ mission_speed_sweep(const struct mission_model *m, double mass_kg,
 	bool limited = false;
 	*v_min_power_ms = MISSION_SWEEP_V0_MS;
 	*v_max_ms = MISSION_SWEEP_V1_MS;
-	int steps = (int)((MISSION_SWEEP_V1_MS - MISSION_SWEEP_V0_MS)
-	    / MISSION_SWEEP_STEP_MS + 0.5);
+	int steps = sweep_last();
 	double s_fwd_m2 = forward_ref_area_m2(m, mass_kg); /* the same at every speed */
 	for (int i = 0; i <= steps; i++) {
-		double v = MISSION_SWEEP_V0_MS + MISSION_SWEEP_STEP_MS * (double)i;
+		double v = sweep_speed_ms(i);
 		struct mission_power p;
 		phase_power(m, mass_kg, 0.0, v, s_fwd_m2, &p);
 		if (n < max_points) {
@@ -111,8 +132,7 @@ mission_speed_sweep(const struct mission_model *m, double mass_kg,
 			power_w[n] = p.electrical_w;
 			n++;
 		}
-		bool over = p.thrust_per_rotor_n > max_thrust_per_rotor_n
-		    || p.pitch_deg > MISSION_PITCH_MAX_DEG;
+		bool over = sweep_over(&p, max_thrust_per_rotor_n);
 		if (over && !limited) {
 			limited = true;
 			*v_max_ms = v - MISSION_SWEEP_STEP_MS;
@@ -123,4 +143,67 @@ mission_speed_sweep(const struct mission_model *m, double mass_kg,
 		}
 	}
 	return n;
+}
+
+/* The speed search's memo: each grid speed's power and limit flag,
+ * computed on first use. */
+struct sweep_memo {
+	const struct mission_model *m;
+	double mass_kg, s_fwd_m2, max_thrust_n;
+	double power_w[MISSION_SWEEP_MAX_POINTS];
+	signed char over[MISSION_SWEEP_MAX_POINTS]; /* -1: not computed */
+};
+
+static void
+memo_at(struct sweep_memo *s, int i)
+{
+	if (s->over[i] >= 0)
+		return;
+	struct mission_power p;
+	phase_power(s->m, s->mass_kg, 0.0, sweep_speed_ms(i), s->s_fwd_m2, &p);
+	s->power_w[i] = p.electrical_w;
+	s->over[i] = sweep_over(&p, s->max_thrust_n);
+}
+
+void
+mission_speed_search(const struct mission_model *m, double mass_kg,
+                     double max_thrust_per_rotor_n, double *v_min_power_ms,
+                     double *v_max_ms)
+{
+	struct sweep_memo s = { m, mass_kg, forward_ref_area_m2(m, mass_kg),
+	    max_thrust_per_rotor_n, { 0.0 }, { 0 } };
+	int last = sweep_last();
+	for (int i = 0; i <= last; i++)
+		s.over[i] = -1;
+	/* Thrust and pitch grow with speed (drag ~ V²): the speeds within the
+	 * limits are a prefix 0..n_ok-1, found by bisection. */
+	int lo = 0, hi = last + 1; /* over(hi) or hi past the end; !over(lo - 1) */
+	while (lo < hi) {
+		int mid = lo + (hi - lo) / 2;
+		memo_at(&s, mid);
+		if (s.over[mid])
+			hi = mid;
+		else
+			lo = mid + 1;
+	}
+	int n_ok = lo;
+	*v_max_ms = n_ok <= last ? sweep_speed_ms(n_ok) - MISSION_SWEEP_STEP_MS
+	    : MISSION_SWEEP_V1_MS;
+	*v_min_power_ms = MISSION_SWEEP_V0_MS;
+	if (n_ok == 0)
+		return;
+	/* The power falls, then rises with speed: its first minimum is the
+	 * first i whose successor is not lower (bisection on that test). */
+	lo = 0;
+	hi = n_ok - 1;
+	while (lo < hi) {
+		int mid = lo + (hi - lo) / 2;
+		memo_at(&s, mid);
+		memo_at(&s, mid + 1);
+		if (s.power_w[mid + 1] < s.power_w[mid])
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	*v_min_power_ms = sweep_speed_ms(lo);
 }

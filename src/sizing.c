@@ -13,6 +13,11 @@
 #include "units.h"
 
 #define LOOP_STEPS        120   /* discharge steps per loop iteration */
+/* Steps of the final, recorded flight: twice the loop's, so a limit the
+ * loop's steps hide shows; each phase's count rounds down and is floored
+ * at 4, so the trace holds at most FINAL_STEPS + 13 samples. */
+#define FINAL_STEPS       240
+_Static_assert(FINAL_STEPS + 13 <= RES_MAX_TRACE, "trace buffer too small");
 #define BLADE_INCIDENCE_DEG 4.0 /* best-L/D incidence at blade Reynolds numbers */
 #define S_SCALE_LO_KG     0.3   /* S_scale = 0.25 below this M_ref */
 #define S_SCALE_HI_KG     1.8   /* S_scale = 1 above this M_ref */
@@ -232,17 +237,16 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 
 	/* Forward speed: the minimum-power speed when "auto". */
 	e->v_fwd_ms = p->v_forward_ms;
-	if (p->v_auto || rec != NULL) {
-		double vbuf[RES_MAX_SWEEP], pbuf[RES_MAX_SWEEP];
-		double *vv = rec ? rec->sweep_v_ms : vbuf;
-		double *pp = rec ? rec->sweep_power_w : pbuf;
-		int n = mission_speed_sweep(m, mass_kg, e->t_peak_n, vv, pp,
-		    RES_MAX_SWEEP, &e->v_min_power_ms, &e->v_max_ms);
-		if (rec)
-			rec->n_sweep = n;
-		if (p->v_auto)
-			e->v_fwd_ms = e->v_min_power_ms;
-	}
+	if (rec != NULL)
+		rec->n_sweep = mission_speed_sweep(m, mass_kg, e->t_peak_n,
+		    rec->sweep_v_ms, rec->sweep_power_w, RES_MAX_SWEEP,
+		    &e->v_min_power_ms, &e->v_max_ms);
+	else if (p->v_auto)
+		/* The loop needs the speed, not the curve. */
+		mission_speed_search(m, mass_kg, e->t_peak_n, &e->v_min_power_ms,
+		    &e->v_max_ms);
+	if (p->v_auto)
+		e->v_fwd_ms = e->v_min_power_ms;
 
 	/* The phase powers size a power-bound battery, seed the capacity and
 	 * fly the mission: a locked capacity evaluated for its masses alone
@@ -536,7 +540,7 @@ next_cells(const struct sizing_params *p, int cells, double peak_w,
 static int
 final_steps(const struct sizing_params *p)
 {
-	return p->trace_steps > 0 ? p->trace_steps : RES_MAX_TRACE - 8;
+	return p->trace_steps > 0 ? p->trace_steps : FINAL_STEPS;
 }
 
 /* Forget what a recording evaluation wrote into rec (the trace and the
