@@ -104,6 +104,15 @@ struct res_optimum {
 	double motor_peak_power_w;
 };
 
+/* Where a run's mass loop closed: enough to evaluate its design again. */
+struct res_fixed_point {
+	double mass_kg;           /* M* */
+	double capacity_ah;       /* C* */
+	double arm_width_m;       /* the arm diameter the rotors saw */
+	double time_scale;        /* γ the loop flew */
+	int cells;                /* series cells */
+};
+
 /* One sized run (baseline, custom, or the BOM-closed custom design). */
 struct res_run {
 	bool ran;                 /* false if the gate stopped it before the loop */
@@ -117,6 +126,7 @@ struct res_run {
 	double time_scale;        /* goal relaxation γ (1 = as requested) */
 	double thrust_margin;     /* thrust margin flown, 1 - hover throttle */
 	double thrust_margin_requested; /* the role's or mission's target */
+	struct res_fixed_point fixed;
 
 	struct res_mass mass;
 

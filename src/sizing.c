@@ -971,6 +971,30 @@ explore(const struct sizing_params *p, const struct loop_state *ls,
 	}
 }
 
+/* Hover endurance to the reserve of design e at takeoff mass m_star. */
+static double
+hover_endurance_s(const struct sizing_params *p, const struct eval *e,
+                  double m_star)
+{
+	struct discharge_pack pk;
+	pack_of(p, e, &pk);
+	return discharge_hover_endurance_s(&pk, &e->model, m_star, p->ambient_c,
+	    sizing_reserve_soc());
+}
+
+double
+sizing_hover_endurance_s(const struct sizing_params *p, const struct res_run *run)
+{
+	/* The margin the run flew (a relaxation may have lowered it). */
+	struct sizing_params q = *p;
+	q.thrust_margin = run->thrust_margin;
+	const struct res_fixed_point *fx = &run->fixed;
+	struct loop_state ls = { fx->cells, fx->arm_width_m, fx->time_scale };
+	struct eval e;
+	evaluate_masses(&q, &ls, fx->mass_kg, fx->capacity_ah, true, NULL, &e);
+	return hover_endurance_s(&q, &e, fx->mass_kg);
+}
+
 /* Marketing mode: the manufacturer's best case — hover without payload or
  * auxiliary load, ISA sea level at 25 °C, down to an empty pack. */
 static double
@@ -1124,11 +1148,11 @@ sizing_run(const struct sizing_params *p_in, struct res_run *out)
 	if (!fin_done)
 		evaluate(p, &ls, m_star, c_star, final_steps(p), out, &fin);
 	record_run(p, &fin, &ls, out);
+	out->fixed = (struct res_fixed_point){ m_star, c_star, ls.arm_width_m,
+	    ls.gamma_time, ls.cells };
 	out->lipschitz = lipschitz(p, &ls, m_star, c_star);
-	struct discharge_pack pk;
-	pack_of(p, &fin, &pk);
-	out->hover_endurance_s = discharge_hover_endurance_s(&pk, &fin.model,
-	    m_star, p->ambient_c, sizing_reserve_soc());
+	if (!p->defer_hover_endurance)
+		out->hover_endurance_s = hover_endurance_s(p, &fin, m_star);
 	if (p->marketing)
 		out->marketing_endurance_s = marketing_endurance_s(p, &fin, m_star);
 	if (p->explore)

@@ -174,6 +174,9 @@ struct sizing_params {
 	/* extras of the final evaluation */
 	bool marketing;              /* evaluate_marketing_limits */
 	bool explore;                /* endurance explorer */
+	/* leave hover_endurance_s at 0 for sizing_hover_endurance_s() to
+	 * fill later (the parts search, which keeps one run of many) */
+	bool defer_hover_endurance;
 	/* numerics */
 	int max_iter;
 	int trace_steps;             /* discharge steps of the final run */
@@ -192,6 +195,11 @@ enum sizing_status sizing_run(const struct sizing_params *p, struct res_run *out
 
 /* State of charge left by the 20 % capacity margin (1 - 1/1.2). */
 double sizing_reserve_soc(void);
+
+/* The hover endurance to the reserve of run, a sizing_run() of p, as
+ * sizing_run() computes it: the design re-evaluated at run->fixed. */
+double sizing_hover_endurance_s(const struct sizing_params *p,
+                                const struct res_run *run);
 
 /* The altitude-corrected seed of eq. (altcorrect), kg. */
 double sizing_seed_kg(double payload_kg, double rho_kg_m3);

@@ -357,6 +357,39 @@ sizing_run_should_not_stop_on_a_pack_the_fine_discharge_cannot_fly(void **state)
 	free(o);
 }
 
+/* The parts search defers the hover endurance to the one run it keeps:
+ * re-evaluated at the run's fixed point it is the same number, bit for
+ * bit, for a dropped parcel, a relaxed thrust target and an automatic
+ * (minimum-power) forward speed. */
+static void
+sizing_hover_endurance_should_match_the_runs_own(void **state)
+{
+	struct fixture *f = *state;
+	const struct model_data *md = &f->env.model;
+	struct mission_spec s[3];
+	delivery_mission(&s[0]);
+	racing_mission(&s[1]);
+	delivery_mission(&s[2]);
+	SET(&s[2], V_FORWARD_MS, v_forward_auto, true);
+	struct res_run *o = xcalloc(1, sizeof *o);
+	struct res_run *d = xcalloc(1, sizeof *d);
+	for (int i = 0; i < 3; i++) {
+		struct sizing_params p;
+		engine_resolve(&s[i], md, NULL);
+		engine_params(&s[i], md, false, &p);
+		assert_int_equal(sizing_run(&p, o), SIZING_CONVERGED);
+		assert_true(o->hover_endurance_s > 0.0);
+		p.defer_hover_endurance = true;
+		assert_int_equal(sizing_run(&p, d), SIZING_CONVERGED);
+		assert_true(d->hover_endurance_s == 0.0);
+		assert_true(sizing_hover_endurance_s(&p, d) == o->hover_endurance_s);
+		if (i == 1) /* the racer flies a relaxed target */
+			assert_true(o->thrust_margin < o->thrust_margin_requested);
+	}
+	free(d);
+	free(o);
+}
+
 int
 main(void)
 {
@@ -375,6 +408,7 @@ main(void)
 		cmocka_unit_test_setup_teardown(sizing_run_should_not_relax_a_thrust_margin_the_mission_asked_for, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_run_should_keep_a_thrust_target_that_closes, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_run_should_not_stop_on_a_pack_the_fine_discharge_cannot_fly, setup, teardown),
+		cmocka_unit_test_setup_teardown(sizing_hover_endurance_should_match_the_runs_own, setup, teardown),
 		cmocka_unit_test(sizing_shell_should_add_moulded_arm_fairings_to_the_body_box),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
