@@ -11,6 +11,7 @@
 #include "structure.h"
 #include "therm.h"
 #include "units.h"
+#include "strbuf.h"
 
 /* Fixes are formatted into this scratch before they are copied. */
 #define FIX_LEN RES_TEXT
@@ -25,15 +26,15 @@ feasibility_violation(struct solve_result *r, const char *run,
 		return;
 	struct res_violation *v = &r->violations[r->n_violations++];
 	memset(v, 0, sizeof *v);
-	snprintf(v->run, sizeof v->run, "%s", run);
-	snprintf(v->stage, sizeof v->stage, "%s", stage);
-	snprintf(v->code, sizeof v->code, "%s", code);
+	str_copy(v->run, sizeof v->run, run);
+	str_copy(v->stage, sizeof v->stage, stage);
+	str_copy(v->code, sizeof v->code, code);
 	va_list ap;
 	va_start(ap, fmt);
 	vsnprintf(v->message, sizeof v->message, fmt, ap);
 	va_end(ap);
 	for (int i = 0; fixes != NULL && fixes[i] != NULL && i < RES_MAX_FIXES; i++) {
-		snprintf(v->fixes[i], sizeof v->fixes[i], "%s", fixes[i]);
+		str_copy(v->fixes[i], sizeof v->fixes[i], fixes[i]);
 		v->n_fixes++;
 	}
 }
@@ -137,8 +138,8 @@ add_check(struct res_run *run, const char *name, const char *unit,
 		return NULL;
 	struct res_check *c = &run->checks[run->n_checks++];
 	memset(c, 0, sizeof *c);
-	snprintf(c->name, sizeof c->name, "%s", name);
-	snprintf(c->unit, sizeof c->unit, "%s", unit);
+	str_copy(c->name, sizeof c->name, name);
+	str_copy(c->unit, sizeof c->unit, unit);
 	c->value = isfinite(value) ? value : 0.0;
 	c->limit = limit;
 	c->upper = upper;

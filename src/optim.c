@@ -11,6 +11,7 @@
 #include "engine.h"
 #include "feasibility.h"
 #include "sizing.h"
+#include "strbuf.h"
 #include "therm.h"
 #include "units.h"
 #include "xalloc.h"
@@ -41,17 +42,6 @@ const char *const optim_reason_text[OPTIM_REASON_MAX] = {
 };
 
 /* ---- small helpers -------------------------------------------------------- */
-
-/* Copy src into dst[n], truncating. */
-static void
-copy_text(char *dst, size_t n, const char *src)
-{
-	size_t len = strlen(src);
-	if (len >= n)
-		len = n - 1;
-	memcpy(dst, src, len);
-	dst[len] = '\0';
-}
 
 /* Append a formatted piece to dst[n]. */
 static void __attribute__((format(printf, 3, 4)))
@@ -752,7 +742,7 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 		slot[i] = n;
 		struct res_candidate *c = &cand[n++];
 		memset(c, 0, sizeof *c);
-		copy_text(c->id, sizeof c->id, m->id);
+		str_copy(c->id, sizeof c->id, m->id);
 		c->kv = m->kv_rpm_per_v;
 		c->mass_kg = m->mass_kg;
 		c->j_score = OPTIM_PRUNED;
@@ -853,7 +843,7 @@ make_target(const struct sizing_params *p, const struct res_run *o,
 	t->rho_kg_m3 = p->air.rho_kg_m3;
 	t->sound_m_s = p->air.sound_m_s;
 	t->v_cell_nom_v = p->chem->v_nom;
-	copy_text(t->chemistry, sizeof t->chemistry, p->chem->name);
+	str_copy(t->chemistry, sizeof t->chemistry, p->chem->name);
 	/* The bus is the mission's when it fixes it (cells, KV or battery
 	 * locked); else any count from S* up to the class maximum. */
 	bool fixed = p->cells_fixed > 0 || p->kv_locked || p->capacity_locked;
@@ -937,8 +927,8 @@ parts_check(struct res_run *run, const char *name, const char *unit,
 		return pass;
 	struct res_check *c = &run->checks[run->n_checks++];
 	memset(c, 0, sizeof *c);
-	copy_text(c->name, sizeof c->name, name);
-	copy_text(c->unit, sizeof c->unit, unit);
+	str_copy(c->name, sizeof c->name, name);
+	str_copy(c->unit, sizeof c->unit, unit);
 	c->value = isfinite(value) ? value : 0.0;
 	c->limit = isfinite(limit) ? limit : 0.0;
 	c->upper = upper;
@@ -1411,9 +1401,9 @@ part_common(struct res_part *rp, const char *id, const char *manufacturer,
 {
 	memset(rp, 0, sizeof *rp);
 	rp->chosen = true;
-	copy_text(rp->id, sizeof rp->id, id);
-	copy_text(rp->manufacturer, sizeof rp->manufacturer, manufacturer);
-	copy_text(rp->part_number, sizeof rp->part_number, part_number);
+	str_copy(rp->id, sizeof rp->id, id);
+	str_copy(rp->manufacturer, sizeof rp->manufacturer, manufacturer);
+	str_copy(rp->part_number, sizeof rp->part_number, part_number);
 	rp->unit_price_usd = price_usd > 0.0 ? price_usd : 0.0;
 }
 
@@ -1500,15 +1490,15 @@ bom_add(struct solve_result *r, int qty, const char *category,
 	memset(b, 0, sizeof *b);
 	b->item = ++r->n_bom;
 	b->qty = qty;
-	copy_text(b->category, sizeof b->category, category);
-	copy_text(b->manufacturer, sizeof b->manufacturer, manufacturer);
-	copy_text(b->part_number, sizeof b->part_number, part_number);
-	copy_text(b->description, sizeof b->description, description);
+	str_copy(b->category, sizeof b->category, category);
+	str_copy(b->manufacturer, sizeof b->manufacturer, manufacturer);
+	str_copy(b->part_number, sizeof b->part_number, part_number);
+	str_copy(b->description, sizeof b->description, description);
 	b->unit_mass_kg = unit_kg;
 	b->total_mass_kg = unit_kg * (double)qty;
 	b->unit_price_usd = unit_usd > 0.0 ? unit_usd : 0.0;
 	b->total_price_usd = b->unit_price_usd * (double)qty;
-	copy_text(b->catalogue_id, sizeof b->catalogue_id, id);
+	str_copy(b->catalogue_id, sizeof b->catalogue_id, id);
 }
 
 static void
@@ -1725,7 +1715,7 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 				fb_round = round;
 				fb_failed = nf;
 				fb_finite = finite;
-				copy_text(fb_fail, sizeof fb_fail, fail ? fail : "");
+				str_copy(fb_fail, sizeof fb_fail, fail ? fail : "");
 			}
 		}
 		/* Real parts heavier than the aim: thrust, current, power and
@@ -1747,7 +1737,7 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 		use_t = fb_t;
 		use_round = fb_round;
 		finite = fb_finite;
-		copy_text(failed, sizeof failed, fb_fail[0] ? fb_fail : "a check");
+		str_copy(failed, sizeof failed, fb_fail[0] ? fb_fail : "a check");
 	}
 	r->closed = use->closed;
 	struct sizing_params pu = p;

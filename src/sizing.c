@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stddef.h>
 #include <string.h>
 
 #include "aero.h"
@@ -11,6 +12,7 @@
 #include "structure.h"
 #include "therm.h"
 #include "units.h"
+#include "strbuf.h"
 
 #define LOOP_STEPS        120   /* discharge steps per loop iteration */
 /* Steps of the final, recorded flight: twice the loop's, so a limit the
@@ -543,15 +545,25 @@ final_steps(const struct sizing_params *p)
 	return p->trace_steps > 0 ? p->trace_steps : FINAL_STEPS;
 }
 
+/* Zero *out but its trace samples: they are most of its size, only the
+ * first n_trace are ever read, and each recording writes those. */
+static void
+clear_run(struct res_run *out)
+{
+	char *base = (char *)out;
+	char *tail = (char *)(out->trace + RES_MAX_TRACE);
+	memset(base, 0, offsetof(struct res_run, trace));
+	memset(tail, 0, sizeof *out - (size_t)(tail - base));
+}
+
 /* Forget what a recording evaluation wrote into rec (the trace and the
- * speed sweep): the next one then starts from the zeroed record that
- * sizing_run began with.  A recording writes exactly the first n_trace
- * samples and n_sweep points, and each one is cleared before the next, so
- * only those can be non-zero. */
+ * speed sweep): the next one then starts from the record that sizing_run
+ * began with.  A recording writes exactly the first n_trace samples (the
+ * only ones read, see clear_run()) and n_sweep points, and each one is
+ * cleared before the next, so only those points can be non-zero. */
 static void
 clear_record(struct res_run *rec)
 {
-	memset(rec->trace, 0, (size_t)rec->n_trace * sizeof rec->trace[0]);
 	rec->n_trace = 0;
 	memset(rec->sweep_v_ms, 0, (size_t)rec->n_sweep * sizeof rec->sweep_v_ms[0]);
 	memset(rec->sweep_power_w, 0, (size_t)rec->n_sweep * sizeof rec->sweep_power_w[0]);
@@ -814,7 +826,7 @@ record_run(const struct sizing_params *p, const struct eval *e,
 	double d[PHASE_MAX];
 	durations(p, ls->gamma_time, d);
 	out->mass = e->mass;
-	snprintf(out->chemistry, sizeof out->chemistry, "%s", p->chem->name);
+	str_copy(out->chemistry, sizeof out->chemistry, p->chem->name);
 	out->cell_count = e->cells;
 	out->pack_count = p->pack_count;
 	out->capacity_mah = e->capacity_ah * 1000.0;
@@ -906,7 +918,7 @@ record_run(const struct sizing_params *p, const struct eval *e,
 		    p->parts.motor_resistance_ohm, out->winding_temp_c);
 		out->motor_copper_loss_w = i_m * i_m * out->motor_winding_resistance_ohm;
 	}
-	snprintf(out->termination, sizeof out->termination, "%s",
+	str_copy(out->termination, sizeof out->termination,
 	    discharge_end_text[e->dis.end]);
 }
 
@@ -928,14 +940,17 @@ explore(const struct sizing_params *p, const struct loop_state *ls,
 	out->n_endurance = 0;
 	double first_slope = 0.0;
 	out->endurance_inflection_scale = 0.0;
-	/* Each point starts from its neighbour's fixed point: adjacent
-	 * capacities give adjacent masses, so a few iterations close it. */
+	/* Each point starts from the line through its two neighbours' fixed
+	 * points (the mass grows smoothly with the capacity), or from the one
+	 * neighbour at the second point, so a few iterations close it. */
 	double m_prev = sizing_seed_kg(q.payload_kg, q.air.rho_kg_m3);
 	for (int i = 0; i < ENDURANCE_SCALES; i++) {
 		double s = 0.25 + 2.75 * (double)i / (double)(ENDURANCE_SCALES - 1);
 		q.capacity_locked_ah = c_star * s;
 		struct loop_state l2 = *ls;
-		double m = m_prev;
+		int n_pts = out->n_endurance;
+		double m = n_pts >= 2
+		    ? 2.0 * m_prev - out->endurance_mass_kg[n_pts - 2] : m_prev;
 		struct eval e;
 		for (int k = 0; k < EXPLORER_MAX_ITER; k++) {
 			evaluate(&q, &l2, m, q.capacity_locked_ah, 0, NULL, &e);
@@ -1109,7 +1124,7 @@ sizing_run(const struct sizing_params *p_in, struct res_run *out)
 	struct sizing_params q = *p_in;
 	const struct sizing_params *p = &q;
 
-	memset(out, 0, sizeof *out);
+	clear_run(out);
 	out->ran = true;
 	out->thrust_margin_requested = q.thrust_margin;
 	enum sizing_status st = iterate(p, 1.0, out, out, &last, &fin, &fin_done,

@@ -119,3 +119,13 @@ strbuf_take(struct strbuf *sb, size_t *len)
 	strbuf_init(sb);
 	return p;
 }
+
+void
+str_copy(char *dst, size_t n, const char *src)
+{
+	size_t len = strlen(src);
+	if (len >= n)
+		len = n - 1;
+	memcpy(dst, src, len);
+	dst[len] = '\0';
+}

@@ -36,6 +36,10 @@ void strbuf_append(struct strbuf *sb, const void *data, size_t n);
 /* Appends the C string s (without its NUL). */
 void strbuf_append_str(struct strbuf *sb, const char *s);
 
+/* Copies the C string src into dst[n] (n > 0), truncated to n - 1 bytes
+ * as snprintf(dst, n, "%s", src) would, without parsing a format. */
+void str_copy(char *dst, size_t n, const char *src);
+
 /* Appends one byte. */
 void strbuf_append_char(struct strbuf *sb, char c);
 
