@@ -283,7 +283,6 @@ engine_params(const struct mission_spec *s, const struct model_data *md,
 	p->enterprise = s->airframe_class == AF_ENTERPRISE_RUGGED;
 
 	p->marketing = !baseline && s->evaluate_marketing_limits;
-	p->explore = !baseline;
 	p->max_iter = SIZING_MAX_ITER;
 }
 
@@ -488,4 +487,18 @@ engine_solve(const struct mission_spec *spec, const struct model_data *md,
 		rc = 3;
 	r->feasible = r->n_violations == 0 && r->custom.ran && r->custom.feasible;
 	return rc;
+}
+
+void
+engine_explore(struct solve_result *r, const struct model_data *md)
+{
+	struct res_run *o = &r->custom;
+	o->n_endurance = 0;
+	o->endurance_inflection_scale = 0.0;
+	/* A run that ran away has no fixed point to explore around. */
+	if (!o->ran || !(o->fixed.mass_kg > 0.0))
+		return;
+	struct sizing_params p;
+	engine_params(&r->mission, md, false, &p);
+	sizing_explore(&p, o);
 }

@@ -27,6 +27,13 @@ struct catalog;
 int engine_solve(const struct mission_spec *spec, const struct model_data *md,
                  const struct catalog *cat, struct solve_result *r);
 
+/* The endurance explorer of r's custom run (sizing_explore()), for the
+ * outputs that show it: result.json and the dossier.  Kept out of
+ * engine_solve() because nothing the design is decided on reads it, and
+ * the batch analyses (validate, sensitivity) solve hundreds of missions
+ * without it. */
+void engine_explore(struct solve_result *r, const struct model_data *md);
+
 /* Resolve the mission into the custom-run parameters (after the
  * requirements layer has been applied to *spec).  Exposed for the
  * sensitivity study and the tests. */

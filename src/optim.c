@@ -904,7 +904,6 @@ apply_parts(struct sizing_params *p, const struct model_data *md,
 		p->thrust_margin = custom->thrust_margin;
 	p->thrust_margin_floor = 0.0;
 	p->allow_relax = false;
-	p->explore = false;
 }
 
 /* One row of the closed run's checks table (when there is room: the verdict

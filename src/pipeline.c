@@ -48,6 +48,7 @@ pipeline_solve(const struct cli_env *env, const char *path,
 	}
 	memset(r, 0, sizeof *r);
 	int rc = engine_solve(&spec, &env->model, env->cat, r);
+	engine_explore(r, &env->model);
 	sha256_hex(buf, n, r->input_sha256);
 	memcpy(r->catalogue_sha256, env->catalogue_sha256, sizeof r->catalogue_sha256);
 	if (bytes != NULL) {

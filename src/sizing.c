@@ -924,11 +924,16 @@ record_run(const struct sizing_params *p, const struct eval *e,
 
 /* Endurance explorer: hover endurance vs capacity scale with the mass loop
  * re-closed at each locked capacity (the mass-growth penalty). */
-static void
-explore(const struct sizing_params *p, const struct loop_state *ls,
-        double c_star, struct res_run *out)
+void
+sizing_explore(const struct sizing_params *p, struct res_run *out)
 {
+	const struct res_fixed_point *fx = &out->fixed;
+	const struct loop_state fixed = { fx->cells, fx->arm_width_m, fx->time_scale };
+	const struct loop_state *ls = &fixed;
+	double c_star = fx->capacity_ah;
 	struct sizing_params q = *p;
+	/* The margin the run flew (a relaxation may have lowered it). */
+	q.thrust_margin = out->thrust_margin;
 	q.capacity_locked = true;
 	q.allow_relax = false;
 	q.max_iter = EXPLORER_MAX_ITER;
@@ -1170,8 +1175,6 @@ sizing_run(const struct sizing_params *p_in, struct res_run *out)
 		out->hover_endurance_s = hover_endurance_s(p, &fin, m_star);
 	if (p->marketing)
 		out->marketing_endurance_s = marketing_endurance_s(p, &fin, m_star);
-	if (p->explore)
-		explore(p, &ls, c_star, out);
 	if (st == SIZING_MAX_ITERATIONS)
 		snprintf(out->termination, sizeof out->termination,
 		    "no convergence in %d iterations", out->iterations);

@@ -173,7 +173,6 @@ struct sizing_params {
 	struct sizing_parts parts;
 	/* extras of the final evaluation */
 	bool marketing;              /* evaluate_marketing_limits */
-	bool explore;                /* endurance explorer */
 	/* leave hover_endurance_s at 0 for sizing_hover_endurance_s() to
 	 * fill later (the parts search, which keeps one run of many) */
 	bool defer_hover_endurance;
@@ -195,6 +194,13 @@ enum sizing_status sizing_run(const struct sizing_params *p, struct res_run *out
 
 /* State of charge left by the 20 % capacity margin (1 - 1/1.2). */
 double sizing_reserve_soc(void);
+
+/* The endurance explorer of run, a converged or capacity-limited
+ * sizing_run() of p (run->fixed set): hover endurance and takeoff mass at
+ * RES_MAX_ENDURANCE capacity scales from 0.25 to 3, the mass loop re-closed
+ * at each locked capacity, into run->endurance_*.  An analysis of the
+ * design, not part of it: the outputs that show it ask for it. */
+void sizing_explore(const struct sizing_params *p, struct res_run *run);
 
 /* The hover endurance to the reserve of run, a sizing_run() of p, as
  * sizing_run() computes it: the design re-evaluated at run->fixed. */

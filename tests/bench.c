@@ -5,9 +5,10 @@
  * SOLVES times (default 200) and prints one table row per mission: the
  * median, the fastest and the slowest solve, the median of SOLVES solves
  * without the parts catalogue (the continuous design only: no parts
- * selection, no BOM-closed run), and the time to render result.json
- * (median), in microseconds.  Ends with the medians over all missions and
- * the peak resident memory of this process.
+ * selection, no BOM-closed run), the endurance explorer that the outputs
+ * ask for after the solve (engine_explore(), median of 20), and the time
+ * to render result.json (median of 20), in microseconds.  Ends with the
+ * medians over all missions and the peak resident memory of this process.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -68,8 +69,8 @@ main(int argc, char **argv)
 	double *meds_noparts = xmalloc((size_t)argc * sizeof *meds_noparts);
 	int n_meds = 0;
 
-	printf("%-32s %10s %10s %10s %12s %12s  %s\n", "mission", "median_us",
-	    "min_us", "max_us", "noparts_us", "render_us", "status");
+	printf("%-32s %10s %10s %10s %12s %11s %10s  %s\n", "mission", "median_us",
+	    "min_us", "max_us", "noparts_us", "explore_us", "render_us", "status");
 	for (int a = first; a < argc; a++) {
 		struct diag *dg = diag_alloc(stderr);
 		struct mission_spec spec;
@@ -99,13 +100,19 @@ main(int argc, char **argv)
 		engine_solve(&spec, &env->model, env->cat, r);
 		for (int i = 0; i < RENDERS; i++) {
 			double t0 = now_us();
+			engine_explore(r, &env->model);
+			t[i] = now_us() - t0;
+		}
+		double med_explore = median(t, RENDERS);
+		for (int i = 0; i < RENDERS; i++) {
+			double t0 = now_us();
 			struct result_json_faults jf;
 			free(result_json_render_checked(r, "bench", &jf));
 			t[i] = now_us() - t0;
 		}
 		const char *base = strrchr(argv[a], '/');
-		printf("%-32s %10.0f %10.0f %10.0f %12.0f %12.0f  %s\n",
-		    base ? base + 1 : argv[a], med, lo, hi, med_noparts,
+		printf("%-32s %10.0f %10.0f %10.0f %12.0f %11.0f %10.0f  %s\n",
+		    base ? base + 1 : argv[a], med, lo, hi, med_noparts, med_explore,
 		    median(t, RENDERS), r->feasible ? "feasible" : "infeasible");
 		meds_noparts[n_meds] = med_noparts;
 		meds[n_meds++] = med;

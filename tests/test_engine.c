@@ -247,6 +247,40 @@ engine_marketing_endurance_should_exceed_the_mission_hover_endurance(void **stat
 	assert_true(f->a->custom.marketing_endurance_s > f->a->custom.hover_endurance_s);
 }
 
+/* The explorer is asked for after the solve: engine_solve() leaves it
+ * empty; engine_explore() fills the curve from ×0.25 to ×3, and through
+ * the design point (×1, between two grid points) it passes the run's own
+ * mass and hover endurance within the loop's tolerance and the coarser
+ * discharge it flies (0.5 %). */
+static void
+engine_explore_should_pass_through_the_design_point(void **state)
+{
+	struct fixture *f = *state;
+	struct mission_spec s;
+	imaging_mission(&s);
+	solve(f, &s, f->a);
+	const struct res_run *c = &f->a->custom;
+	assert_sound_run(c);
+	assert_int_equal(c->n_endurance, 0);
+	engine_explore(f->a, &f->env.model);
+	assert_int_equal(c->n_endurance, RES_MAX_ENDURANCE);
+	assert_rel(c->endurance_scale[0], 0.25, 1e-12);
+	assert_rel(c->endurance_scale[RES_MAX_ENDURANCE - 1], 3.0, 1e-12);
+	int i = 1;
+	while (c->endurance_scale[i] < 1.0)
+		i++;
+	double w = (1.0 - c->endurance_scale[i - 1])
+	    / (c->endurance_scale[i] - c->endurance_scale[i - 1]);
+	double t = c->endurance_time_s[i - 1]
+	    + w * (c->endurance_time_s[i] - c->endurance_time_s[i - 1]);
+	double m = c->endurance_mass_kg[i - 1]
+	    + w * (c->endurance_mass_kg[i] - c->endurance_mass_kg[i - 1]);
+	assert_rel(t, c->hover_endurance_s, 5e-3);
+	assert_rel(m, c->mass.total_kg, 5e-3);
+	for (int k = 1; k < c->n_endurance; k++) /* more battery, more mass */
+		assert_true(c->endurance_mass_kg[k] > c->endurance_mass_kg[k - 1]);
+}
+
 static void
 engine_hover_phase_should_follow_the_paper_rotor_model(void **state)
 {
@@ -617,6 +651,7 @@ main(void)
 		T(engine_should_reject_a_mission_without_flight_time),
 		T(engine_mass_runaway_should_be_reported_with_finite_numbers),
 		T(engine_marketing_endurance_should_exceed_the_mission_hover_endurance),
+		T(engine_explore_should_pass_through_the_design_point),
 		T(engine_mtow_should_grow_with_payload),
 		T(engine_mtow_at_5000_m_should_exceed_sea_level),
 		T(engine_peak_battery_temperature_should_rise_with_ambient),

@@ -95,6 +95,7 @@ solve(struct fixture *fx, const char *name, double payload_kg, unsigned char **b
 	}
 	struct solve_result *r = xcalloc(1, sizeof *r);
 	assert_int_equal(engine_solve(&spec, &fx->env.model, fx->env.cat, r), 0);
+	engine_explore(r, &fx->env.model);
 	sha256_hex(*bytes, *n, r->input_sha256);
 	snprintf(r->catalogue_sha256, sizeof r->catalogue_sha256, "%064d", 0);
 	return r;
