@@ -176,6 +176,24 @@ hash_file(struct sha256_ctx *c, const char *path)
 	free(buf);
 }
 
+/* A large file that only an install replaces (the program, the fonts), by
+ * its name, size and modification time: hashing their megabytes took
+ * longer than compiling a mission.  Replacing one changes its mtime. */
+static void
+hash_file_identity(struct sha256_ctx *c, const char *path)
+{
+	struct stat st;
+	char id[96];
+	hash_str(c, path);
+	if (stat(path, &st) != 0) {
+		hash_str(c, "missing");
+		return;
+	}
+	snprintf(id, sizeof id, "%lld %lld.%09ld", (long long)st.st_size,
+	    (long long)st.st_mtim.tv_sec, (long)st.st_mtim.tv_nsec);
+	hash_str(c, id);
+}
+
 static void
 hex_final(struct sha256_ctx *c, char out[SHA256_HEX_LEN])
 {
@@ -186,9 +204,12 @@ hex_final(struct sha256_ctx *c, char out[SHA256_HEX_LEN])
 }
 
 /* Everything a mission's outputs depend on besides the mission file: the
- * engine (its version and the program's own bytes, so a rebuilt compiler
- * recompiles), the catalogue, the reference tables, the template with its
- * fonts and logo, and SOURCE_DATE_EPOCH (it can set the dossier date). */
+ * engine (its version and the program file's identity, so a rebuilt
+ * compiler recompiles), the catalogue, the reference tables, the template
+ * with its fonts and logo, and SOURCE_DATE_EPOCH (it can set the dossier
+ * date).  The data and the template are hashed by content (a checkout
+ * that only touches them stays up to date), the program and the fonts by
+ * identity (hash_file_identity()). */
 static void
 base_fingerprint(struct build *b, const char *tpl_path)
 {
@@ -196,14 +217,14 @@ base_fingerprint(struct build *b, const char *tpl_path)
 	sha256_init(&c);
 	hash_str(&c, BUILD_STAMP_MAGIC);
 	hash_str(&c, AEROEVAL_VERSION);
-	unsigned char *exe = NULL;
-	size_t n = 0;
-	char msg[256];
-	if (fsout_read_file("/proc/self/exe", 256u << 20, &exe, &n, msg, sizeof msg) == 0)
-		hash_field(&c, exe, n);
-	else
-		hash_str(&c, "no program bytes");
-	free(exe);
+	char exe[4096];
+	ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+	if (n > 0) {
+		exe[n] = '\0';
+		hash_file_identity(&c, exe);
+	} else {
+		hash_str(&c, "no program file");
+	}
 	hash_str(&c, b->env->catalogue_sha256);
 	struct path_list data = { 0 };
 	list_json(b->env->data_dir, &data);
@@ -218,9 +239,9 @@ base_fingerprint(struct build *b, const char *tpl_path)
 		hash_file(&c, tpl_path);
 	else
 		hash_str(&c, "default");
-	hash_file(&c, b->tpl->font_regular);
-	hash_file(&c, b->tpl->font_bold);
-	hash_file(&c, b->tpl->font_mono);
+	hash_file_identity(&c, b->tpl->font_regular);
+	hash_file_identity(&c, b->tpl->font_bold);
+	hash_file_identity(&c, b->tpl->font_mono);
 	if (b->tpl->logo[0] != '\0')
 		hash_file(&c, b->tpl->logo);
 	const char *epoch = getenv("SOURCE_DATE_EPOCH");

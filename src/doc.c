@@ -84,13 +84,27 @@ doc_error(const struct doc *d)
 
 /* ---- text measuring and wrapping ------------------------------------------- */
 
+/* Advance width of len bytes of s in font units (1/1000 em): the sum of
+ * the glyphs' widths, so the width of a concatenation is the sum of its
+ * parts' (libharu applies no kerning). */
+static HPDF_UINT
+units_of(HPDF_Font f, const char *s, size_t len)
+{
+	if (len == 0 || f == NULL)
+		return 0;
+	return HPDF_Font_TextWidth(f, (const HPDF_BYTE *)s, (HPDF_UINT)len).width;
+}
+
+static double
+to_points(HPDF_UINT units, double size)
+{
+	return units * size / 1000.0;
+}
+
 static double
 width_of(HPDF_Font f, double size, const char *s, size_t len)
 {
-	if (len == 0 || f == NULL)
-		return 0.0;
-	HPDF_TextWidth tw = HPDF_Font_TextWidth(f, (const HPDF_BYTE *)s, (HPDF_UINT)len);
-	return tw.width * size / 1000.0;
+	return to_points(units_of(f, s, len), size);
 }
 
 /* One output line: a slice of the source text. */
@@ -146,8 +160,10 @@ wrap_text(HPDF_Font f, double size, double width, const char *text, struct lines
 				q++;
 			if (q == eol)
 				break;
+			/* The line's width grows by each word and the spaces
+			 * before it, measured once (widths add up). */
 			const char *start = q, *end = q;
-			double w = 0.0;
+			HPDF_UINT units = 0;
 			for (;;) {
 				const char *ws = end;
 				while (ws < eol && *ws == ' ')
@@ -157,15 +173,18 @@ wrap_text(HPDF_Font f, double size, double width, const char *text, struct lines
 				const char *we = ws;
 				while (we < eol && *we != ' ')
 					we++;
-				double nw = width_of(f, size, start, (size_t)(we - start));
+				HPDF_UINT nu = units + units_of(f, end, (size_t)(we - end));
+				double nw = to_points(nu, size);
 				if (end != start && nw > width)
 					break;
 				if (end == start && nw > width) {
 					/* First word alone overflows: take what fits of it. */
 					const char *c = start;
+					HPDF_UINT cu = 0;
 					while (c < we) {
 						size_t cl = utf8_len(c);
-						if (c != start && width_of(f, size, start, (size_t)(c + cl - start)) > width)
+						cu += units_of(f, c, cl);
+						if (c != start && to_points(cu, size) > width)
 							break;
 						c += cl;
 					}
@@ -173,9 +192,8 @@ wrap_text(HPDF_Font f, double size, double width, const char *text, struct lines
 					break;
 				}
 				end = we;
-				w = nw;
+				units = nu;
 			}
-			(void)w;
 			lines_push(out, start, (size_t)(end - start));
 			emitted = 1;
 			q = end;

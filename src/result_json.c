@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "bom_csv.h"
+#include "numfmt.h"
 #include "xalloc.h"
 
 #define JW_MAX_DEPTH 12   /* deepest nesting written is 5 (top.run.phases[i].x) */
@@ -283,34 +284,17 @@ jw_int(struct jw *w, const char *key, int v)
 	jw_puts(w, t);
 }
 
-/* The shortest of %.15g, %.16g, %.17g that reads back as x; %.17g always
- * does for a finite double.  -0 prints as 0.  snprintf uses the C locale:
- * aeroeval never calls setlocale, so the point is '.'. */
-static void
-jw_format_double(char out[32], double x)
-{
-	if (x == 0.0) {
-		strcpy(out, "0");
-		return;
-	}
-	for (int prec = 15; prec <= 17; prec++) {
-		snprintf(out, 32, "%.*g", prec, x);
-		if (strtod(out, NULL) == x)
-			return;
-	}
-}
-
 static void
 jw_num(struct jw *w, const char *key, double x)
 {
-	char t[32];
+	char t[NUMFMT_SHORTEST_LEN];
 	jw_begin(w, key);
 	if (!isfinite(x)) {
 		jw_fault(w, key);
 		jw_puts(w, "null");
 		return;
 	}
-	jw_format_double(t, x);
+	numfmt_shortest(t, x);
 	jw_puts(w, t);
 }
 

@@ -49,7 +49,7 @@ echo "== 2. whole process, mean of $REPEAT runs (ms)"
 printf '%-32s %10s %10s\n' mission solve_ms build_ms
 for f in examples/*.json; do
 	s=$(mean_ms "$bin" solve "$f")
-	b=$(mean_ms "$bin" build -o "$work/out" "$f")
+	b=$(mean_ms "$bin" build --force -o "$work/out" "$f")
 	printf '%-32s %10s %10s\n' "$(basename "$f")" "$s" "$b"
 done
 echo

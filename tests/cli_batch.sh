@@ -87,6 +87,15 @@ cp templates/a4.json "$T/tpl.json"
 rebuilds_after_change template --template "$T/tpl.json" "$T/tpl.json"
 cp -R data/catalog "$T/db"
 rebuilds_after_change catalogue --db "$T/db" "$T/db/motors.json"
+# A rebuilt compiler (a new mtime on the program file) recompiles everything.
+cp "$AE" "$T/ae-copy"
+AEROEVAL_DATA="$(pwd)/data" "$T/ae-copy" build -q -o "$T/exe" examples/ 2>/dev/null
+AEROEVAL_DATA="$(pwd)/data" "$T/ae-copy" build -o "$T/exe" examples/ 2>"$T/exe.1.err"
+touch -d 2030-03-03 "$T/ae-copy"
+AEROEVAL_DATA="$(pwd)/data" "$T/ae-copy" build -o "$T/exe" examples/ 2>"$T/exe.2.err"
+summary "$T/exe.1.err" | grep -q "^build: 0 compiled" \
+	&& summary "$T/exe.2.err" | grep -q "^build: $n_ex compiled"
+check $? "rebuilt_compiler_rebuilds"
 
 rm "$T/j1/sar_imaging_quad/bom.csv"
 "$AE" build -o "$T/j1" examples/ 2>"$T/r.err"
