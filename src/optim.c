@@ -1149,8 +1149,8 @@ close_choice(const struct closer *k, struct optim_choice *c,
 	for (int attempt = 0;; attempt++) {
 		struct sizing_params p = *k->p0;
 		apply_parts(&p, k->md, k->t, k->custom, c);
-		/* Only the run kept needs it (optim_select fills it in). */
-		p.defer_hover_endurance = true;
+		/* Only the run kept needs them (optim_select fills them in). */
+		p.defer_extras = true;
 		sr->n_violations = 0;
 		enum sizing_status st = sizing_run(&p, &sr->closed);
 		/* It flew the continuous design's relaxed mission, if any. */
@@ -1741,7 +1741,7 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 	r->closed = use->closed;
 	struct sizing_params pu = p;
 	apply_parts(&pu, md, &use_t, &r->custom, &use_c);
-	r->closed.hover_endurance_s = sizing_hover_endurance_s(&pu, &r->closed);
+	sizing_complete(&pu, &r->closed);
 	finite = finite && isfinite(r->closed.hover_endurance_s);
 	append_violations(r, use);
 	if (failed[0]) {

@@ -239,12 +239,13 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 
 	/* Forward speed: the minimum-power speed when "auto". */
 	e->v_fwd_ms = p->v_forward_ms;
-	if (rec != NULL)
+	if (rec != NULL && !p->defer_extras)
 		rec->n_sweep = mission_speed_sweep(m, mass_kg, e->t_peak_n,
 		    rec->sweep_v_ms, rec->sweep_power_w, RES_MAX_SWEEP,
 		    &e->v_min_power_ms, &e->v_max_ms);
-	else if (p->v_auto)
-		/* The loop needs the speed, not the curve. */
+	else if (p->v_auto || rec != NULL)
+		/* The loop, and a record that leaves the curve to
+		 * sizing_complete(), need the speeds only. */
 		mission_speed_search(m, mass_kg, e->t_peak_n, &e->v_min_power_ms,
 		    &e->v_max_ms);
 	if (p->v_auto)
@@ -1002,17 +1003,18 @@ hover_endurance_s(const struct sizing_params *p, const struct eval *e,
 	    sizing_reserve_soc());
 }
 
-double
-sizing_hover_endurance_s(const struct sizing_params *p, const struct res_run *run)
+void
+sizing_complete(const struct sizing_params *p, struct res_run *run)
 {
 	/* The margin the run flew (a relaxation may have lowered it). */
 	struct sizing_params q = *p;
 	q.thrust_margin = run->thrust_margin;
+	q.defer_extras = false;
 	const struct res_fixed_point *fx = &run->fixed;
 	struct loop_state ls = { fx->cells, fx->arm_width_m, fx->time_scale };
 	struct eval e;
-	evaluate_masses(&q, &ls, fx->mass_kg, fx->capacity_ah, true, NULL, &e);
-	return hover_endurance_s(&q, &e, fx->mass_kg);
+	evaluate_masses(&q, &ls, fx->mass_kg, fx->capacity_ah, true, run, &e);
+	run->hover_endurance_s = hover_endurance_s(&q, &e, fx->mass_kg);
 }
 
 /* Marketing mode: the manufacturer's best case — hover without payload or
@@ -1171,7 +1173,7 @@ sizing_run(const struct sizing_params *p_in, struct res_run *out)
 	out->fixed = (struct res_fixed_point){ m_star, c_star, ls.arm_width_m,
 	    ls.gamma_time, ls.cells };
 	out->lipschitz = lipschitz(p, &ls, m_star, c_star);
-	if (!p->defer_hover_endurance)
+	if (!p->defer_extras)
 		out->hover_endurance_s = hover_endurance_s(p, &fin, m_star);
 	if (p->marketing)
 		out->marketing_endurance_s = marketing_endurance_s(p, &fin, m_star);

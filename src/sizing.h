@@ -173,9 +173,10 @@ struct sizing_params {
 	struct sizing_parts parts;
 	/* extras of the final evaluation */
 	bool marketing;              /* evaluate_marketing_limits */
-	/* leave hover_endurance_s at 0 for sizing_hover_endurance_s() to
-	 * fill later (the parts search, which keeps one run of many) */
-	bool defer_hover_endurance;
+	/* leave hover_endurance_s at 0 and the speed sweep unrecorded for
+	 * sizing_complete() to fill in later (the parts search, which keeps
+	 * one run of many) */
+	bool defer_extras;
 	/* numerics */
 	int max_iter;
 	int trace_steps;             /* discharge steps of the final run */
@@ -202,10 +203,11 @@ double sizing_reserve_soc(void);
  * design, not part of it: the outputs that show it ask for it. */
 void sizing_explore(const struct sizing_params *p, struct res_run *run);
 
-/* The hover endurance to the reserve of run, a sizing_run() of p, as
- * sizing_run() computes it: the design re-evaluated at run->fixed. */
-double sizing_hover_endurance_s(const struct sizing_params *p,
-                                const struct res_run *run);
+/* What a sizing_run() of p with p->defer_extras left out of run: the
+ * hover endurance to the reserve and the power-vs-speed sweep, as
+ * sizing_run() would have recorded them (the design re-evaluated at
+ * run->fixed). */
+void sizing_complete(const struct sizing_params *p, struct res_run *run);
 
 /* The altitude-corrected seed of eq. (altcorrect), kg. */
 double sizing_seed_kg(double payload_kg, double rho_kg_m3);

@@ -69,7 +69,8 @@ static const char solve_rejected[] = "the mission was rejected";
 
 /* Parse text[0..len) as the mission file `file` (diagnostics to diag_out,
  * NULL: kept quiet), solve it into *r with env's data and check it as
- * above.  Returns NULL, solve_rejected, or solve_check()'s sentence. */
+ * above (the explorer included, as the outputs ask for it).  Returns
+ * NULL, solve_rejected, or solve_check()'s sentence. */
 static const char *
 solve_text(const struct cli_env *env, const char *file, const char *text,
            size_t len, FILE *diag_out, struct solve_result *r, char *detail,
@@ -86,6 +87,7 @@ solve_text(const struct cli_env *env, const char *file, const char *text,
 		return solve_rejected;
 	memset(r, 0, sizeof *r);
 	int rc = engine_solve(&spec, &env->model, env->cat, r);
+	engine_explore(r, &env->model); /* as the outputs do */
 	return solve_check(rc, r, detail, n);
 }
 

@@ -357,12 +357,12 @@ sizing_run_should_not_stop_on_a_pack_the_fine_discharge_cannot_fly(void **state)
 	free(o);
 }
 
-/* The parts search defers the hover endurance to the one run it keeps:
- * re-evaluated at the run's fixed point it is the same number, bit for
- * bit, for a dropped parcel, a relaxed thrust target and an automatic
- * (minimum-power) forward speed. */
+/* The parts search defers the hover endurance and the speed sweep to the
+ * one run it keeps: re-evaluated at the run's fixed point they are the
+ * same numbers, bit for bit, for a dropped parcel, a relaxed thrust target
+ * and an automatic (minimum-power) forward speed. */
 static void
-sizing_hover_endurance_should_match_the_runs_own(void **state)
+sizing_complete_should_give_the_runs_own_extras(void **state)
 {
 	struct fixture *f = *state;
 	const struct model_data *md = &f->env.model;
@@ -379,10 +379,24 @@ sizing_hover_endurance_should_match_the_runs_own(void **state)
 		engine_params(&s[i], md, false, &p);
 		assert_int_equal(sizing_run(&p, o), SIZING_CONVERGED);
 		assert_true(o->hover_endurance_s > 0.0);
-		p.defer_hover_endurance = true;
+		p.defer_extras = true;
 		assert_int_equal(sizing_run(&p, d), SIZING_CONVERGED);
 		assert_true(d->hover_endurance_s == 0.0);
-		assert_true(sizing_hover_endurance_s(&p, d) == o->hover_endurance_s);
+		assert_int_equal(d->n_sweep, 0);
+		sizing_complete(&p, d);
+		assert_true(d->hover_endurance_s == o->hover_endurance_s);
+		assert_int_equal(d->n_sweep, o->n_sweep);
+		assert_true(d->n_sweep > 0);
+		assert_memory_equal(d->sweep_v_ms, o->sweep_v_ms,
+		    (size_t)o->n_sweep * sizeof o->sweep_v_ms[0]);
+		assert_memory_equal(d->sweep_power_w, o->sweep_power_w,
+		    (size_t)o->n_sweep * sizeof o->sweep_power_w[0]);
+		/* and the rest of the record is the run's own */
+		assert_true(d->optimal_speed_ms == o->optimal_speed_ms);
+		assert_true(d->v_min_power_ms == o->v_min_power_ms);
+		assert_true(d->v_max_ms == o->v_max_ms);
+		assert_true(d->mass.total_kg == o->mass.total_kg);
+		assert_true(d->max_battery_temp_c == o->max_battery_temp_c);
 		if (i == 1) /* the racer flies a relaxed target */
 			assert_true(o->thrust_margin < o->thrust_margin_requested);
 	}
@@ -408,7 +422,7 @@ main(void)
 		cmocka_unit_test_setup_teardown(sizing_run_should_not_relax_a_thrust_margin_the_mission_asked_for, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_run_should_keep_a_thrust_target_that_closes, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_run_should_not_stop_on_a_pack_the_fine_discharge_cannot_fly, setup, teardown),
-		cmocka_unit_test_setup_teardown(sizing_hover_endurance_should_match_the_runs_own, setup, teardown),
+		cmocka_unit_test_setup_teardown(sizing_complete_should_give_the_runs_own_extras, setup, teardown),
 		cmocka_unit_test(sizing_shell_should_add_moulded_arm_fairings_to_the_body_box),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
