@@ -1,6 +1,7 @@
 /* discharge.c — time-step discharge simulation (see discharge.h). */
 #include "discharge.h"
 
+#include <math.h>
 #include <string.h>
 
 #include "therm.h"
@@ -103,6 +104,84 @@ record(struct res_sample *trace, int max_trace, int *n_trace, double t,
 	s->phase = phase;
 }
 
+/* The power along a phase of a continuous spray.  The mass falls linearly
+ * while the tank empties, and the power is a smooth function of it: it is
+ * computed exactly at the mid-step mass of the ends and the middle of each
+ * stretch of SPRAY_NODE steps and interpolated by the parabola through
+ * them in between (within 1e-7 of the power computed at every step, far
+ * below the time step's own error, for a quarter of the rotor solves).  A
+ * stretch where the tank runs dry is not linear in mass: its steps are
+ * computed one by one. */
+#define SPRAY_NODE 8
+
+struct power_track {
+	const struct discharge_mission *mis;
+	double v_climb_ms, v_fwd_ms;
+	double t0_s, dt_s;     /* the phase's start and step */
+	int n;                 /* its steps */
+	int k0, km, k1;        /* the stretch [k0, k1] in use and its middle; -1: none */
+	bool smooth;           /* the mass is linear over it: interpolate */
+	double p0_w, pm_w, p1_w; /* the power at k0, km, k1 (pm, p1 when smooth) */
+};
+
+static double
+track_mass_kg(const struct power_track *pt, int k)
+{
+	return pt->mis->dry_mass_kg + role_payload_at(&pt->mis->shed,
+	    pt->t0_s + ((double)k + 0.5) * pt->dt_s);
+}
+
+static double
+track_power_w(const struct power_track *pt, double mass_kg)
+{
+	struct mission_power pw;
+	mission_power(pt->mis->model, mass_kg, pt->v_climb_ms, pt->v_fwd_ms, &pw);
+	return pw.electrical_w;
+}
+
+/* Start the stretch at step k0 whose power is p0_w. */
+static void
+track_stretch(struct power_track *pt, int k0, double p0_w)
+{
+	int k1 = k0 + SPRAY_NODE < pt->n - 1 ? k0 + SPRAY_NODE : pt->n - 1;
+	int km = (k0 + k1) / 2;
+	double m0 = track_mass_kg(pt, k0), mm = track_mass_kg(pt, km);
+	double m1 = track_mass_kg(pt, k1);
+	pt->k0 = k0;
+	pt->km = km;
+	pt->k1 = k1;
+	pt->p0_w = p0_w;
+	pt->smooth = km > k0 && k1 > km && fabs(mm - (m0 + (m1 - m0)
+	    * (double)(km - k0) / (double)(k1 - k0))) <= 1e-12 * m1;
+	if (pt->smooth) {
+		pt->pm_w = track_power_w(pt, mm);
+		pt->p1_w = track_power_w(pt, m1);
+	}
+}
+
+/* Step k's power (steps come in order); its mid-step mass into *mass_kg. */
+static double
+spray_power_w(struct power_track *pt, int k, double *mass_kg)
+{
+	*mass_kg = track_mass_kg(pt, k);
+	if (pt->k1 < 0 || k > pt->k1) {
+		/* The next stretch starts at the end of a smooth one, whose
+		 * power is known, else at this step. */
+		if (pt->k1 == k - 1 && pt->smooth)
+			track_stretch(pt, pt->k1, pt->p1_w);
+		else
+			track_stretch(pt, k, track_power_w(pt, *mass_kg));
+	}
+	if (!pt->smooth)
+		return k == pt->k0 ? pt->p0_w : track_power_w(pt, *mass_kg);
+	/* Lagrange's parabola through the three nodes. */
+	double x = (double)k, x0 = (double)pt->k0, xm = (double)pt->km;
+	double x1 = (double)pt->k1;
+	return pt->p0_w * (x - xm) * (x - x1) / ((x0 - xm) * (x0 - x1))
+	    + pt->pm_w * (x - x0) * (x - x1) / ((xm - x0) * (xm - x1))
+	    + pt->p1_w * (x - x0) * (x - xm) / ((x1 - x0) * (x1 - xm));
+}
+
 void
 discharge_run(const struct discharge_pack *pack,
               const struct discharge_mission *mis, int steps,
@@ -139,15 +218,17 @@ discharge_run(const struct discharge_pack *pack,
 		step_init(pack, hac, mis->ambient_c, dt, &sc);
 		double v_climb = ph == PHASE_CLIMB ? mis->speed_ms[ph] : 0.0;
 		double v_fwd = ph == PHASE_FORWARD ? mis->speed_ms[ph] : 0.0;
-		bool sheds = mis->shed.kind != SHED_NONE;
+		struct power_track pt = { mis, v_climb, v_fwd, t, dt, n, -1, -1, -1,
+		    false, 0.0, 0.0, 0.0 };
 		struct mission_power pw;
 		double mass = mis->dry_mass_kg + role_payload_at(&mis->shed, t);
 		mission_power(mis->model, mass, v_climb, v_fwd, &pw);
 		double pw_mass = mass; /* the mass pw was computed for */
+		double power_w = pw.electrical_w;
 		double e_wh = 0.0, q_ah = 0.0, p_sum = 0.0;
 		int flown = 0;
 		for (int k = 0; k < n; k++) {
-			if (sheds) {
+			if (mis->shed.kind == SHED_DROP) {
 				/* Mid-step mass: the payload shed during the step.  A
 				 * drop leaves the mass constant between steps: the
 				 * power (a pure function of it) is then reused. */
@@ -156,10 +237,13 @@ discharge_run(const struct discharge_pack *pack,
 				if (mass != pw_mass) {
 					mission_power(mis->model, mass, v_climb, v_fwd, &pw);
 					pw_mass = mass;
+					power_w = pw.electrical_w;
 				}
+			} else if (mis->shed.kind == SHED_SPRAY) {
+				power_w = spray_power_w(&pt, k, &mass);
 			}
 			double i = 0.0, v_oc = 0.0, v_term = 0.0;
-			enum discharge_end e = step(&sc, pw.electrical_w, &st, &i, &v_oc,
+			enum discharge_end e = step(&sc, power_w, &st, &i, &v_oc,
 			    &v_term);
 			if (e == DIS_OVERFLOW || e == DIS_COLLAPSE) {
 				out->end = e;
@@ -167,14 +251,14 @@ discharge_run(const struct discharge_pack *pack,
 			}
 			if (first) {
 				record(trace, max_trace, n_trace, 0.0, &(struct cell_state){ 1.0, mis->ambient_c, 0.0 },
-				    v_oc, v_term, i, pw.electrical_w, mass, ph);
+				    v_oc, v_term, i, power_w, mass, ph);
 				first = false;
 			}
 			t += dt;
 			flown++;
-			e_wh += pw.electrical_w * dt / S_PER_H;
+			e_wh += power_w * dt / S_PER_H;
 			q_ah += i * dt / S_PER_H;
-			p_sum += pw.electrical_w;
+			p_sum += power_w;
 			if (i > out->peak_current_a)
 				out->peak_current_a = i;
 			if (v_term < out->min_v_term_v)
@@ -182,7 +266,7 @@ discharge_run(const struct discharge_pack *pack,
 			if (st.temp_c > out->peak_temp_c)
 				out->peak_temp_c = st.temp_c;
 			record(trace, max_trace, n_trace, t, &st, v_oc, v_term, i,
-			    pw.electrical_w, mass, ph);
+			    power_w, mass, ph);
 			if (e != DIS_COMPLETED) {
 				out->end = e;
 				break;
