@@ -21,7 +21,7 @@
 /* An integrated system's mass covers its propeller and ESC; sizing.c reads a
  * zero part mass as "use the scaling law", so those parts get this token. */
 #define INTEGRATED_PART_KG 1e-9
-#define BATTERY_TRIES    4     /* closings with an upsized battery per combination */
+#define BATTERY_TRIES    4     /* closings per combination, with upsized battery or ESC */
 #define UPSIZE_MIN       1.15  /* least capacity step after a failed discharge */
 #define UPSIZE_MAX       3.0   /* largest capacity step */
 #define FLOWN_TOL        0.999 /* mission flown: as in feasibility.c */
@@ -272,18 +272,27 @@ optim_limits(const struct optim_target *t, int cells,
 
 /* What an ESC must meet on `cells` whatever the motor: the frame size of a
  * stack board, the cell range, the continuous current. */
+/* An ESC set for `cells` that carries i_need_a per motor continuously. */
 static bool
-esc_fits_bus(const struct optim_target *t, int cells, const struct catalog_esc *e)
+esc_carries(const struct optim_target *t, int cells, const struct catalog_esc *e,
+            double i_need_a)
 {
-	double i_need = OPTIM_CURRENT_MARGIN * at_bus(t, t->motor_peak_current_a, cells);
 	if (e->channels > 1 && t->wheelbase_m > OPTIM_STACK_MAX_WHEELBASE_M)
 		return false;
 	if ((e->cells_min > 0 && cells < e->cells_min)
 	    || (e->cells_max > 0 && cells > e->cells_max))
 		return false;
-	if (e->continuous_current_a < i_need)
+	if (e->continuous_current_a < i_need_a)
 		return false;
 	return true;
+}
+
+/* ... the target's full-throttle current with the 10 % margin. */
+static bool
+esc_fits_bus(const struct optim_target *t, int cells, const struct catalog_esc *e)
+{
+	return esc_carries(t, cells, e,
+	    OPTIM_CURRENT_MARGIN * at_bus(t, t->motor_peak_current_a, cells));
 }
 
 /* A full-stick punch can draw what the motor takes. */
@@ -307,12 +316,13 @@ esc_boards(const struct optim_target *t, const struct catalog_esc *e)
 	return (t->n_rotors + ch - 1) / ch;
 }
 
-/* The lightest ESC set for motor m on `cells` (a locked ESC is taken as
- * is); false if none. */
+/* The lightest ESC set for motor m on `cells` that carries i_need_a per
+ * motor and the motor's burst (a locked ESC is taken as is); false if
+ * none. */
 static bool
-pick_esc(const struct optim_target *t, const struct catalog *cat,
-         const char *lock, int cells, const struct catalog_motor *m,
-         const struct catalog_esc **out, int *n_boards)
+pick_esc_for(const struct optim_target *t, const struct catalog *cat,
+             const char *lock, int cells, const struct catalog_motor *m,
+             double i_need_a, const struct catalog_esc **out, int *n_boards)
 {
 	const struct catalog_esc *best = NULL;
 	double best_kg = 0.0;
@@ -323,7 +333,8 @@ pick_esc(const struct optim_target *t, const struct catalog *cat,
 		if (lock != NULL) {
 			if (strcmp(e->id, lock) != 0)
 				continue;
-		} else if (!esc_fits(t, cells, m, e)) {
+		} else if (!esc_carries(t, cells, e, i_need_a)
+		    || !esc_carries_burst(m, e)) {
 			continue;
 		}
 		double kg = (double)esc_boards(t, e) * e->mass_kg;
@@ -336,6 +347,17 @@ pick_esc(const struct optim_target *t, const struct catalog *cat,
 	*out = best;
 	*n_boards = best != NULL ? esc_boards(t, best) : 0;
 	return best != NULL;
+}
+
+/* ... for the target's full-throttle current with the 10 % margin. */
+static bool
+pick_esc(const struct optim_target *t, const struct catalog *cat,
+         const char *lock, int cells, const struct catalog_motor *m,
+         const struct catalog_esc **out, int *n_boards)
+{
+	return pick_esc_for(t, cat, lock, cells, m,
+	    OPTIM_CURRENT_MARGIN * at_bus(t, t->motor_peak_current_a, cells),
+	    out, n_boards);
 }
 
 /* Packs needed in parallel for capacity and continuous current. */
@@ -1127,8 +1149,30 @@ swap_results(struct solve_result **a, struct solve_result **b)
 	*b = tmp;
 }
 
+/* The ESC of choice c runs short of the closed design o's full-throttle
+ * current: the lightest set that carries it (and the motor's burst) goes
+ * into up->esc.  False when the ESC suffices, is locked or none larger
+ * exists. */
+static bool
+esc_upsized(const struct closer *k, const struct optim_choice *c,
+            const struct res_run *o, struct optim_choice *up)
+{
+	double i_need = OPTIM_CURRENT_MARGIN * o->opt.motor_peak_current_a;
+	if (c->esc == NULL || k->lk->esc != NULL
+	    || c->esc->continuous_current_a >= i_need)
+		return false;
+	const struct catalog_esc *e;
+	int n;
+	if (!pick_esc_for(k->t, k->cat, NULL, c->cells, c->motor, i_need, &e, &n))
+		return false;
+	up->esc = e;
+	up->n_esc = n;
+	return true;
+}
+
 /* Re-solve the custom mission on choice c into (*srp)->closed (violations
- * into *srp), upsizing the battery while it runs short.  Returns the name
+ * into *srp), upsizing the battery while it runs short and the ESC while
+ * it carries less than the closed design's current.  Returns the name
  * of the first check the real parts fail that the continuous design
  * passed, or NULL when they close as well as it did.  *finite is false if
  * a number came out non-finite.  *sparep is a second buffer: an upsized
@@ -1161,7 +1205,7 @@ close_choice(const struct closer *k, struct optim_choice *c,
 		parts_fail = parts_checks(&p, c, k->custom, &sr->closed, sr);
 		int nf = n_failed(&sr->closed);
 		if (prev_failed >= 0 && nf >= prev_failed) {
-			/* A larger battery did not help: go back to the last one,
+			/* A larger battery or ESC did not help: go back to the last one,
 			 * whose solve the spare buffer still holds (solving it
 			 * again would give the same). */
 			*c = prev;
@@ -1171,17 +1215,26 @@ close_choice(const struct closer *k, struct optim_choice *c,
 			parts_fail = prev_parts_fail;
 			break;
 		}
-		double step;
-		if (!*finite || st == SIZING_RUNAWAY || attempt + 1 >= BATTERY_TRIES
-		    || !battery_short(sr, &step))
+		if (!*finite || st == SIZING_RUNAWAY || attempt + 1 >= BATTERY_TRIES)
 			break;
-		need_ah = fmax(need_ah, sr->closed.capacity_mah / 1000.0) * step;
-		need_a = fmax(need_a, sr->closed.peak_current_a) * step;
+		/* A battery or an ESC sized for the continuous design may be
+		 * short for the heavier real-parts one: try the next larger. */
 		struct optim_choice up = *c;
-		if (!pick_battery(k->t, k->cat, k->lk->battery, c->cells, need_ah,
-		    need_a, &up))
-			break;
-		if (up.battery == c->battery && up.parallel_packs == c->parallel_packs)
+		bool larger = false;
+		double step;
+		if (battery_short(sr, &step)) {
+			need_ah = fmax(need_ah, sr->closed.capacity_mah / 1000.0) * step;
+			need_a = fmax(need_a, sr->closed.peak_current_a) * step;
+			struct optim_choice b = *c;
+			if (pick_battery(k->t, k->cat, k->lk->battery, c->cells, need_ah,
+			    need_a, &b) && (b.battery != c->battery
+			    || b.parallel_packs != c->parallel_packs)) {
+				up = b;
+				larger = true;
+			}
+		}
+		larger = esc_upsized(k, c, &sr->closed, &up) || larger;
+		if (!larger)
 			break;
 		prev = *c;
 		prev_failed = nf;
@@ -1585,6 +1638,11 @@ explain(const struct optim_target *t, const struct optim_choice *c,
 	    c->parallel_packs, c->cells, c->battery->capacity_ah * 1000.0
 	    * (double)c->parallel_packs, (double)(c->series_packs * c->parallel_packs)
 	    * c->battery->mass_kg);
+	if (c->esc != NULL)
+		engine_rationale(w, "ESC: %d x %s, %.0f A continuous for the %.0f A "
+		    "each motor draws at full throttle with 10 %% margin.", c->n_esc,
+		    c->esc->id, c->esc->continuous_current_a,
+		    OPTIM_CURRENT_MARGIN * r->closed.opt.motor_peak_current_a);
 	if (tried > 0)
 		engine_rationale(w, "%d better-scoring combination%s did not close the "
 		    "mission on real parts.", tried, tried == 1 ? "" : "s");

@@ -29,7 +29,9 @@
  * optim_select then closes the loop on real parts: the custom mission is
  * re-solved with the real masses (sizing_run with parts.active) into
  * r->closed, checked, and compared.  The best combinations are closed in J
- * order (a battery that runs short is upsized from the catalogue); when
+ * order (a battery that runs short, or an ESC picked for the continuous
+ * design's current that the heavier real-parts design exceeds, is upsized
+ * from the catalogue and the design closed again); when
  * none closes and real parts came out heavier, the search is re-aimed at
  * that mass (thrust, currents and capacity scaled with M^1.5) and run
  * again, at most OPTIM_ROUNDS times.  A design the real parts cannot close

@@ -472,6 +472,48 @@ solve_sar_locked(const struct env_state *s, const char *motor, const char *prop,
 	return solve(s, &m);
 }
 
+/* The ESC the ranking picks carries the continuous design's current; the
+ * real-parts design of the delivery quad draws more, so the closing
+ * upsizes the ESC (as it does a short battery) instead of giving up the
+ * best-scoring motor and propeller: the parts kept are the best J of the
+ * search, and their ESC carries the closed design's current with margin. */
+static void
+optim_select_should_upsize_an_esc_the_closed_design_outgrows(void **state)
+{
+	const struct env_state *s = *state;
+	struct mission_spec m;
+	load_mission(s, EXAMPLE_DIR "/delivery_quad.json", &m);
+	struct solve_result *r = solve(s, &m);
+	assert_true(r->parts_selected);
+	assert_true(r->feasible);
+	double best_j = 1e300;
+	for (int i = 0; i < r->n_candidates; i++)
+		if (r->candidates[i].feasible && r->candidates[i].j_score < best_j)
+			best_j = r->candidates[i].j_score;
+	assert_rel(r->motor.j_score, best_j, 1e-12);
+	const struct catalog_esc *e = catalog_find_esc(s->env.cat, r->esc.id);
+	assert_non_null(e);
+	double i_need = OPTIM_CURRENT_MARGIN * r->closed.opt.motor_peak_current_a;
+	assert_true(e->continuous_current_a >= i_need);
+	/* the ESC set the ranking would pick for the continuous current is
+	 * lighter and too small for the closed design */
+	bool smaller_exists = false;
+	for (size_t i = 0; i < catalog_n_escs(s->env.cat); i++) {
+		const struct catalog_esc *x = catalog_esc(s->env.cat, i);
+		smaller_exists |= x->usable && x->mass_kg < e->mass_kg
+		    && x->continuous_current_a < i_need
+		    && x->continuous_current_a >= OPTIM_CURRENT_MARGIN
+		        * r->custom.opt.motor_peak_current_a
+		        * (double)r->custom.cell_count / (double)r->closed.cell_count;
+	}
+	assert_true(smaller_exists);
+	bool said = false;
+	for (int i = 0; i < r->n_rationale; i++)
+		said |= strncmp(r->rationale[i], "ESC: ", 5) == 0;
+	assert_true(said);
+	free(r);
+}
+
 static void
 optim_select_should_honour_a_motor_lock_by_id(void **state)
 {
@@ -566,6 +608,8 @@ main(void)
 		cmocka_unit_test_setup_teardown(optim_select_should_close_every_example_with_a_bom_that_sums,
 		    setup_env, teardown_env),
 		cmocka_unit_test_setup_teardown(optim_select_should_be_deterministic,
+		    setup_env, teardown_env),
+		cmocka_unit_test_setup_teardown(optim_select_should_upsize_an_esc_the_closed_design_outgrows,
 		    setup_env, teardown_env),
 		cmocka_unit_test_setup_teardown(optim_select_should_honour_a_motor_lock_by_id,
 		    setup_env, teardown_env),
