@@ -8,10 +8,10 @@
 
 #include "aero.h"
 #include "mission.h"
+#include "strbuf.h"
 #include "structure.h"
 #include "therm.h"
 #include "units.h"
-#include "strbuf.h"
 
 /* Fixes are formatted into this scratch before they are copied. */
 #define FIX_LEN RES_TEXT

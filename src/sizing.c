@@ -2,17 +2,17 @@
 #include "sizing.h"
 
 #include <math.h>
-#include <stdio.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "aero.h"
 #include "discharge.h"
 #include "mission.h"
+#include "strbuf.h"
 #include "structure.h"
 #include "therm.h"
 #include "units.h"
-#include "strbuf.h"
 
 #define LOOP_STEPS        120   /* discharge steps per loop iteration */
 /* Steps of the final, recorded flight: twice the loop's, so a limit the
@@ -929,8 +929,7 @@ void
 sizing_explore(const struct sizing_params *p, struct res_run *out)
 {
 	const struct res_fixed_point *fx = &out->fixed;
-	const struct loop_state fixed = { fx->cells, fx->arm_width_m, fx->time_scale };
-	const struct loop_state *ls = &fixed;
+	const struct loop_state ls = { fx->cells, fx->arm_width_m, fx->time_scale };
 	double c_star = fx->capacity_ah;
 	struct sizing_params q = *p;
 	/* The margin the run flew (a relaxation may have lowered it). */
@@ -946,14 +945,14 @@ sizing_explore(const struct sizing_params *p, struct res_run *out)
 	out->n_endurance = 0;
 	double first_slope = 0.0;
 	out->endurance_inflection_scale = 0.0;
-	/* Each point starts from the line through its two neighbours' fixed
-	 * points (the mass grows smoothly with the capacity), or from the one
-	 * neighbour at the second point, so a few iterations close it. */
+	/* Each point starts from the line through the two points before it
+	 * (the mass grows smoothly with the capacity), the second from the
+	 * first and the first from the seed, so a few iterations close it. */
 	double m_prev = sizing_seed_kg(q.payload_kg, q.air.rho_kg_m3);
 	for (int i = 0; i < ENDURANCE_SCALES; i++) {
 		double s = 0.25 + 2.75 * (double)i / (double)(ENDURANCE_SCALES - 1);
 		q.capacity_locked_ah = c_star * s;
-		struct loop_state l2 = *ls;
+		struct loop_state l2 = ls;
 		int n_pts = out->n_endurance;
 		double m = n_pts >= 2
 		    ? 2.0 * m_prev - out->endurance_mass_kg[n_pts - 2] : m_prev;
