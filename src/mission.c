@@ -1,6 +1,8 @@
 /* mission.c — three-phase mission power model (see mission.h). */
 #include "mission.h"
 
+#include <stddef.h>
+
 #include "units.h"
 
 static void
@@ -173,6 +175,12 @@ mission_speed_search(const struct mission_model *m, double mass_kg,
 	struct sweep_memo s = { m, mass_kg, forward_ref_area_m2(m, mass_kg),
 	    max_thrust_per_rotor_n, { 0.0 }, { 0 } };
 	int last = sweep_last();
+	if (last >= MISSION_SWEEP_MAX_POINTS) {
+		/* A grid finer than the memo holds: sweep it all. */
+		(void)mission_speed_sweep(m, mass_kg, max_thrust_per_rotor_n, NULL,
+		    NULL, 0, v_min_power_ms, v_max_ms);
+		return;
+	}
 	for (int i = 0; i <= last; i++)
 		s.over[i] = -1;
 	/* Thrust and pitch grow with speed (drag ~ V²): the speeds within the
