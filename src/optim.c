@@ -272,6 +272,16 @@ optim_limits(const struct optim_target *t, int cells,
 
 /* What an ESC must meet on `cells` whatever the motor: the frame size of a
  * stack board, the cell range, the continuous current. */
+/* The highest bus an ESC takes: its published cell range, else 6S.  An ESC
+ * rated above 6S says so (HV parts give 12S or 14S), and a 6S part on a
+ * higher bus fails at power-up, so one whose range is not in the
+ * catalogue is never put on more than 6S. */
+static int
+esc_max_cells(const struct catalog_esc *e)
+{
+	return e->cells_max > 0 ? e->cells_max : OPTIM_ESC_UNRATED_MAX_CELLS;
+}
+
 /* An ESC set for `cells` that carries i_need_a per motor continuously. */
 static bool
 esc_carries(const struct optim_target *t, int cells, const struct catalog_esc *e,
@@ -279,8 +289,7 @@ esc_carries(const struct optim_target *t, int cells, const struct catalog_esc *e
 {
 	if (e->channels > 1 && t->wheelbase_m > OPTIM_STACK_MAX_WHEELBASE_M)
 		return false;
-	if ((e->cells_min > 0 && cells < e->cells_min)
-	    || (e->cells_max > 0 && cells > e->cells_max))
+	if ((e->cells_min > 0 && cells < e->cells_min) || cells > esc_max_cells(e))
 		return false;
 	if (e->continuous_current_a < i_need_a)
 		return false;
@@ -1332,9 +1341,11 @@ locked_limits(const struct optim_target *t, const struct optim_locks *lk,
 		const char *fx[] = { "Remove locks.esc_part to let the optimizer choose", NULL };
 		feasibility_violation(r, "closed", "parts", "LOCKED_PART_LIMIT", fx,
 		    "The locked ESC %s does not carry %.0f A continuous (or the "
-		    "motor's %.0f A burst) on %dS.", c->esc->id,
+		    "motor's %.0f A burst) on %dS, or is not rated for %dS (up to "
+		    "%dS%s).", c->esc->id,
 		    OPTIM_CURRENT_MARGIN * at_bus(t, t->motor_peak_current_a, c->cells),
-		    c->motor->max_current_a, c->cells);
+		    c->motor->max_current_a, c->cells, c->cells, esc_max_cells(c->esc),
+		    c->esc->cells_max > 0 ? "" : ": no published range, taken as 6S");
 	}
 }
 

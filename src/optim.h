@@ -63,6 +63,7 @@
  * phase leads out to the motors: practice limits them to small frames
  * whose leads stay short. */
 #define OPTIM_STACK_MAX_WHEELBASE_M 0.35
+#define OPTIM_ESC_UNRATED_MAX_CELLS 6 /* bus limit of an ESC with no published cell range */
 #define OPTIM_CURRENT_MARGIN 1.1    /* motor and ESC rating over the peak current */
 #define OPTIM_MAX_SERIES     4      /* most catalogue packs in series ... */
 #define OPTIM_MAX_PARALLEL   4      /* ... and in parallel (a locked pack may exceed) */

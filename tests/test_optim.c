@@ -419,6 +419,16 @@ optim_select_should_close_every_example_with_a_bom_that_sums(void **state)
 		assert_rel(r->battery.unit_mass_kg * r->battery.qty, r->closed.mass.battery_kg, 1e-9);
 		assert_int_equal(r->battery.qty, r->battery_series_packs * r->battery_parallel_packs);
 		assert_true(r->n_candidates > 0);
+		/* The ESC is rated for the bus: its published cell range, or 6S
+		 * when the catalogue gives none. */
+		if (r->esc.id[0] != '\0') {
+			const struct catalog_esc *e = catalog_find_esc(s->env.cat, r->esc.id);
+			assert_non_null(e);
+			int cells = r->closed.cell_count;
+			assert_true(cells <= (e->cells_max > 0 ? e->cells_max
+			    : OPTIM_ESC_UNRATED_MAX_CELLS));
+			assert_true(e->cells_min <= 0 || cells >= e->cells_min);
+		}
 		/* Infeasible real parts are always said so, never silent. */
 		if (!r->closed.feasible)
 			assert_false(r->feasible);
