@@ -85,6 +85,21 @@ full_rpm(const struct optim_target *t, int cells, double kv)
 	return kv * (double)cells * t->v_cell_nom_v * OPTIM_LOAD_RPM;
 }
 
+/* The per-motor current motor and ESC must carry: the full-throttle
+ * current with the 10 % margin, of the target on `cells` ... */
+static double
+target_current_a(const struct optim_target *t, int cells)
+{
+	return OPTIM_CURRENT_MARGIN * at_bus(t, t->motor_peak_current_a, cells);
+}
+
+/* ... or of a closed real-parts design. */
+static double
+closed_current_a(const struct res_run *o)
+{
+	return OPTIM_CURRENT_MARGIN * o->opt.motor_peak_current_a;
+}
+
 static double
 option_diameter_in(const struct catalog_motor *m, const struct catalog_prop *p)
 {
@@ -171,11 +186,10 @@ static unsigned
 motor_mask(const struct optim_target *t, int cells, const struct catalog_motor *m)
 {
 	unsigned mask = 0;
-	double i_peak = at_bus(t, t->motor_peak_current_a, cells);
 	if ((m->cells_min > 0 && cells < m->cells_min)
 	    || (m->cells_max > 0 && cells > m->cells_max))
 		mask |= 1u << OPTIM_MOTOR_CELLS;
-	if (m->max_current_a < OPTIM_CURRENT_MARGIN * i_peak)
+	if (m->max_current_a < target_current_a(t, cells))
 		mask |= 1u << OPTIM_MOTOR_CURRENT;
 	if (m->max_power_w > 0.0 && m->max_power_w < t->motor_peak_power_w)
 		mask |= 1u << OPTIM_MOTOR_POWER;
@@ -270,8 +284,6 @@ optim_limits(const struct optim_target *t, int cells,
 
 /* ---- ESC and battery ------------------------------------------------------ */
 
-/* What an ESC must meet on `cells` whatever the motor: the frame size of a
- * stack board, the cell range, the continuous current. */
 /* The highest bus an ESC takes: its published cell range, else 6S.  An ESC
  * rated above 6S says so (HV parts give 12S or 14S), and a 6S part on a
  * higher bus fails at power-up, so one whose range is not in the
@@ -282,7 +294,8 @@ esc_max_cells(const struct catalog_esc *e)
 	return e->cells_max > 0 ? e->cells_max : OPTIM_ESC_UNRATED_MAX_CELLS;
 }
 
-/* An ESC set for `cells` that carries i_need_a per motor continuously. */
+/* What an ESC must meet on `cells` whatever the motor: the frame size of a
+ * stack board, the cell range, i_need_a per motor continuously. */
 static bool
 esc_carries(const struct optim_target *t, int cells, const struct catalog_esc *e,
             double i_need_a)
@@ -296,12 +309,11 @@ esc_carries(const struct optim_target *t, int cells, const struct catalog_esc *e
 	return true;
 }
 
-/* ... the target's full-throttle current with the 10 % margin. */
+/* ... for the target's current. */
 static bool
 esc_fits_bus(const struct optim_target *t, int cells, const struct catalog_esc *e)
 {
-	return esc_carries(t, cells, e,
-	    OPTIM_CURRENT_MARGIN * at_bus(t, t->motor_peak_current_a, cells));
+	return esc_carries(t, cells, e, target_current_a(t, cells));
 }
 
 /* A full-stick punch can draw what the motor takes. */
@@ -311,11 +323,20 @@ esc_carries_burst(const struct catalog_motor *m, const struct catalog_esc *e)
 	return !(e->burst_current_a > 0.0 && e->burst_current_a < m->max_current_a);
 }
 
+/* An ESC for motor m on `cells` carrying i_need_a per motor ... */
+static bool
+esc_fits_at(const struct optim_target *t, int cells, const struct catalog_motor *m,
+            const struct catalog_esc *e, double i_need_a)
+{
+	return esc_carries(t, cells, e, i_need_a) && esc_carries_burst(m, e);
+}
+
+/* ... or the target's current. */
 static bool
 esc_fits(const struct optim_target *t, int cells, const struct catalog_motor *m,
          const struct catalog_esc *e)
 {
-	return esc_fits_bus(t, cells, e) && esc_carries_burst(m, e);
+	return esc_fits_at(t, cells, m, e, target_current_a(t, cells));
 }
 
 static int
@@ -342,8 +363,7 @@ pick_esc_for(const struct optim_target *t, const struct catalog *cat,
 		if (lock != NULL) {
 			if (strcmp(e->id, lock) != 0)
 				continue;
-		} else if (!esc_carries(t, cells, e, i_need_a)
-		    || !esc_carries_burst(m, e)) {
+		} else if (!esc_fits_at(t, cells, m, e, i_need_a)) {
 			continue;
 		}
 		double kg = (double)esc_boards(t, e) * e->mass_kg;
@@ -364,8 +384,7 @@ pick_esc(const struct optim_target *t, const struct catalog *cat,
          const char *lock, int cells, const struct catalog_motor *m,
          const struct catalog_esc **out, int *n_boards)
 {
-	return pick_esc_for(t, cat, lock, cells, m,
-	    OPTIM_CURRENT_MARGIN * at_bus(t, t->motor_peak_current_a, cells),
+	return pick_esc_for(t, cat, lock, cells, m, target_current_a(t, cells),
 	    out, n_boards);
 }
 
@@ -1005,7 +1024,7 @@ parts_checks(const struct sizing_params *p, const struct optim_choice *c,
 		    "throttle; the role needs %.2f.", m->manufacturer, m->part_number,
 		    m_to_in(d_m), c->cells, tw, custom->thrust_to_weight);
 	}
-	double i_m = OPTIM_CURRENT_MARGIN * o->opt.motor_peak_current_a;
+	double i_m = closed_current_a(o);
 	if (!parts_check(o, "Motor current at full throttle (× 1.1)", "A", i_m,
 	    m->max_current_a, true, &first)) {
 		snprintf(f1, sizeof f1, "No catalogue motor carries %.0f A at %dS: add one to data/catalog/motors.json or use --db",
@@ -1166,7 +1185,7 @@ static bool
 esc_upsized(const struct closer *k, const struct optim_choice *c,
             const struct res_run *o, struct optim_choice *up)
 {
-	double i_need = OPTIM_CURRENT_MARGIN * o->opt.motor_peak_current_a;
+	double i_need = closed_current_a(o);
 	if (c->esc == NULL || k->lk->esc != NULL
 	    || c->esc->continuous_current_a >= i_need)
 		return false;
@@ -1343,8 +1362,8 @@ locked_limits(const struct optim_target *t, const struct optim_locks *lk,
 		    "The locked ESC %s does not carry %.0f A continuous (or the "
 		    "motor's %.0f A burst) on %dS, or is not rated for %dS (up to "
 		    "%dS%s).", c->esc->id,
-		    OPTIM_CURRENT_MARGIN * at_bus(t, t->motor_peak_current_a, c->cells),
-		    c->motor->max_current_a, c->cells, c->cells, esc_max_cells(c->esc),
+		    target_current_a(t, c->cells), c->motor->max_current_a, c->cells,
+		    c->cells, esc_max_cells(c->esc),
 		    c->esc->cells_max > 0 ? "" : ": no published range, taken as 6S");
 	}
 }
@@ -1356,7 +1375,7 @@ static void
 reason_fix(const struct optim_target *t, enum optim_reason why, char *out, size_t n)
 {
 	int s = t->cells_hi;
-	double i_m = OPTIM_CURRENT_MARGIN * at_bus(t, t->motor_peak_current_a, s);
+	double i_m = target_current_a(t, s);
 	switch (why) {
 	case OPTIM_MOTOR_CURRENT:
 		snprintf(out, n, "No catalogue motor carries %.0f A at %dS; add one to "
@@ -1653,7 +1672,7 @@ explain(const struct optim_target *t, const struct optim_choice *c,
 		engine_rationale(w, "ESC: %d x %s, %.0f A continuous for the %.0f A "
 		    "each motor draws at full throttle with 10 %% margin.", c->n_esc,
 		    c->esc->id, c->esc->continuous_current_a,
-		    OPTIM_CURRENT_MARGIN * r->closed.opt.motor_peak_current_a);
+		    closed_current_a(&r->closed));
 	if (tried > 0)
 		engine_rationale(w, "%d better-scoring combination%s did not close the "
 		    "mission on real parts.", tried, tried == 1 ? "" : "s");

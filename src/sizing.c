@@ -923,17 +923,28 @@ record_run(const struct sizing_params *p, const struct eval *e,
 	    discharge_end_text[e->dis.end]);
 }
 
+/* The parameters and loop state run, a sizing_run() of p, closed at: p
+ * with the thrust margin it flew (a relaxation may have lowered it), and
+ * its fixed point's cells, arm and γ. */
+static void
+at_fixed_point(const struct sizing_params *p, const struct res_run *run,
+               struct sizing_params *q, struct loop_state *ls)
+{
+	const struct res_fixed_point *fx = &run->fixed;
+	*q = *p;
+	q->thrust_margin = run->thrust_margin;
+	*ls = (struct loop_state){ fx->cells, fx->arm_width_m, fx->time_scale };
+}
+
 /* Endurance explorer: hover endurance vs capacity scale with the mass loop
  * re-closed at each locked capacity (the mass-growth penalty). */
 void
 sizing_explore(const struct sizing_params *p, struct res_run *out)
 {
-	const struct res_fixed_point *fx = &out->fixed;
-	const struct loop_state ls = { fx->cells, fx->arm_width_m, fx->time_scale };
-	double c_star = fx->capacity_ah;
-	struct sizing_params q = *p;
-	/* The margin the run flew (a relaxation may have lowered it). */
-	q.thrust_margin = out->thrust_margin;
+	struct sizing_params q;
+	struct loop_state ls;
+	at_fixed_point(p, out, &q, &ls);
+	double c_star = out->fixed.capacity_ah;
 	q.capacity_locked = true;
 	q.allow_relax = false;
 	q.max_iter = EXPLORER_MAX_ITER;
@@ -1005,12 +1016,11 @@ hover_endurance_s(const struct sizing_params *p, const struct eval *e,
 void
 sizing_complete(const struct sizing_params *p, struct res_run *run)
 {
-	/* The margin the run flew (a relaxation may have lowered it). */
-	struct sizing_params q = *p;
-	q.thrust_margin = run->thrust_margin;
+	struct sizing_params q;
+	struct loop_state ls;
+	at_fixed_point(p, run, &q, &ls);
 	q.defer_extras = false;
 	const struct res_fixed_point *fx = &run->fixed;
-	struct loop_state ls = { fx->cells, fx->arm_width_m, fx->time_scale };
 	struct eval e;
 	evaluate_masses(&q, &ls, fx->mass_kg, fx->capacity_ah, true, run, &e);
 	run->hover_endurance_s = hover_endurance_s(&q, &e, fx->mass_kg);
