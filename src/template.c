@@ -8,6 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "strbuf.h"
 #include "xalloc.h"
 
 #define DEJAVU_DIR "/usr/share/fonts/truetype/dejavu/"
@@ -49,12 +50,6 @@ tl_error(struct tload *tl, const char *path, const char *fmt, ...)
 }
 
 static void
-copy_str(char *dst, size_t cap, const char *src)
-{
-	snprintf(dst, cap, "%s", src);
-}
-
-static void
 set_colour(struct template_colour *c, unsigned rgb)
 {
 	c->r = ((rgb >> 16) & 0xff) / 255.0;
@@ -71,16 +66,16 @@ fill_default(struct template *t)
 	static const unsigned series[] = { 0x0072b2, 0xd55e00, 0x009e73, 0xcc79a7,
 	                                   0xe69f00, 0x56b4e9, 0x7f7f7f, 0x000000 };
 	memset(t, 0, sizeof *t);
-	copy_str(t->name, sizeof t->name, "A4 default");
+	str_copy(t->name, sizeof t->name, "A4 default");
 	t->page_width_mm = 210.0;
 	t->page_height_mm = 297.0;
 	t->margin_top_mm = 22.0;
 	t->margin_bottom_mm = 20.0;
 	t->margin_left_mm = 20.0;
 	t->margin_right_mm = 20.0;
-	copy_str(t->font_regular, sizeof t->font_regular, DEJAVU_DIR "DejaVuSans.ttf");
-	copy_str(t->font_bold, sizeof t->font_bold, DEJAVU_DIR "DejaVuSans-Bold.ttf");
-	copy_str(t->font_mono, sizeof t->font_mono, DEJAVU_DIR "DejaVuSansMono.ttf");
+	str_copy(t->font_regular, sizeof t->font_regular, DEJAVU_DIR "DejaVuSans.ttf");
+	str_copy(t->font_bold, sizeof t->font_bold, DEJAVU_DIR "DejaVuSans-Bold.ttf");
+	str_copy(t->font_mono, sizeof t->font_mono, DEJAVU_DIR "DejaVuSansMono.ttf");
 	t->font_size_pt = 9.5;
 	set_colour(&t->text, 0x1a1a1a);
 	set_colour(&t->primary, 0x1f3a5f);
@@ -95,7 +90,7 @@ fill_default(struct template *t)
 	t->n_series = TEMPLATE_MAX_SERIES;
 	for (int i = 0; i < TEMPLATE_SEC_MAX; i++) {
 		t->sections[i].id = (enum template_section_id)i;
-		copy_str(t->sections[i].title, sizeof t->sections[i].title, section_titles[i]);
+		str_copy(t->sections[i].title, sizeof t->sections[i].title, section_titles[i]);
 		t->sections[i].enabled = i != TEMPLATE_SEC_SENSITIVITY;
 	}
 	t->n_sections = TEMPLATE_SEC_MAX;
@@ -281,7 +276,7 @@ get_file(struct tload *tl, const cJSON *it, const char *path, char *out, size_t 
 		tl_error(tl, path, "file \"%s\" not found or not readable", full);
 		return;
 	}
-	copy_str(out, cap, full);
+	str_copy(out, cap, full);
 }
 
 /* ---- the sections of a template file ---------------------------------- */
@@ -444,7 +439,7 @@ load_sections(struct tload *tl, const cJSON *it, struct template *t)
 			continue;
 		struct template_section *dst = &t->sections[t->n_sections++];
 		dst->id = (enum template_section_id)k;
-		copy_str(dst->title, sizeof dst->title,
+		str_copy(dst->title, sizeof dst->title,
 		         title != NULL ? title->valuestring : section_titles[k]);
 		dst->enabled = en != NULL ? cJSON_IsTrue(en) : 1;
 	}
@@ -502,7 +497,7 @@ template_load(const char *path, FILE *err)
 	const cJSON *it;
 	if ((it = cJSON_GetObjectItemCaseSensitive(root, "name")) != NULL) {
 		if (cJSON_IsString(it) && strlen(it->valuestring) < sizeof t->name)
-			copy_str(t->name, sizeof t->name, it->valuestring);
+			str_copy(t->name, sizeof t->name, it->valuestring);
 		else
 			tl_error(&tl, "name", "must be a string shorter than %zu bytes", sizeof t->name);
 	}
