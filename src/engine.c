@@ -2,8 +2,10 @@
 #include "engine.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "aero.h"
@@ -11,6 +13,7 @@
 #include "optim.h"
 #include "structure.h"
 #include "units.h"
+#include "xalloc.h"
 
 /* f_scale per aero body class (paper §IV-D). */
 static const double body_f_scale[BODY_CLASS_MAX] = { 0.004, 0.012, 0.05 };
@@ -439,52 +442,156 @@ scrub(struct res_run *o)
 			o->history_kg[i] = SIZING_RUNAWAY_KG;
 }
 
-static void
-solve_run(const struct mission_spec *s, const struct model_data *md,
-          bool baseline, struct res_run *o, struct solve_result *r, int *rc)
+/* The feasibility gate of one run; false, with o marked as not run, when
+ * it stops the run. */
+static bool
+run_gate(const struct sizing_params *p, const char *name, struct res_run *o,
+         struct solve_result *r)
 {
-	struct sizing_params p;
-	const char *name = baseline ? "baseline" : "custom";
-	engine_params(s, md, baseline, &p);
-	if (!feasibility_gate(&p, name, r)) {
-		memset(o, 0, sizeof *o);
-		o->ran = false;
-		snprintf(o->termination, sizeof o->termination,
-		    "rejected by the feasibility gate");
-		return;
-	}
-	enum sizing_status st = sizing_run(&p, o);
+	if (feasibility_gate(p, name, r))
+		return true;
+	memset(o, 0, sizeof *o);
+	o->ran = false;
+	snprintf(o->termination, sizeof o->termination,
+	    "rejected by the feasibility gate");
+	return false;
+}
+
+/* What follows one run's mass loop: the non-finite guard, the checks and
+ * violations, the custom run's rationale. */
+static void
+run_finish(const struct sizing_params *p, const char *name, bool baseline,
+           enum sizing_status st, const struct mission_spec *s,
+           struct res_run *o, struct solve_result *r, int *rc)
+{
 	if (!run_finite(o)) {
 		scrub(o);
 		if (st != SIZING_RUNAWAY)
 			*rc = 3;
 	}
-	feasibility_checks(&p, st, name, o, r);
+	feasibility_checks(p, st, name, o, r);
 	if (!baseline && o->ran)
-		explain(&p, o, s, r);
+		explain(p, o, s, r);
+}
+
+/* The baseline's mass loop, run on a second thread while the custom run and
+ * the parts search go on: neither reads anything of it. */
+struct baseline_job {
+	struct sizing_params p;
+	struct res_run *o;
+	enum sizing_status st;
+};
+
+static void *
+baseline_main(void *arg)
+{
+	struct baseline_job *j = arg;
+	j->st = sizing_run(&j->p, j->o);
+	return NULL;
+}
+
+/* Run f(r, arg) with r's violations from v_at and rationale lines from
+ * r_at set aside, then put them back after what f added: entries come out
+ * in the order a sequential solve writes them (lists that fill up keep
+ * their first entries, as they do when written in order). */
+static void
+insert_at(struct solve_result *r, int v_at, int r_at,
+          void (*f)(struct solve_result *r, void *arg), void *arg)
+{
+	int nv = r->n_violations - v_at, nr = r->n_rationale - r_at;
+	struct res_violation *v = xmalloc((size_t)(nv > 0 ? nv : 1) * sizeof *v);
+	char (*t)[RES_TEXT] = xmalloc((size_t)(nr > 0 ? nr : 1) * sizeof *t);
+	memcpy(v, &r->violations[v_at], (size_t)nv * sizeof *v);
+	memcpy(t, &r->rationale[r_at], (size_t)nr * sizeof *t);
+	r->n_violations = v_at;
+	r->n_rationale = r_at;
+	f(r, arg);
+	for (int i = 0; i < nv && r->n_violations < RES_MAX_VIOLATIONS; i++)
+		r->violations[r->n_violations++] = v[i];
+	for (int i = 0; i < nr && r->n_rationale < RES_MAX_RATIONALE; i++)
+		memcpy(r->rationale[r->n_rationale++], t[i], sizeof t[i]);
+	free(v);
+	free(t);
+}
+
+/* The baseline's checks and violations (insert_at()'s f). */
+struct baseline_finish {
+	const struct baseline_job *job;
+	int *rc;
+};
+
+static void
+finish_baseline(struct solve_result *r, void *arg)
+{
+	const struct baseline_finish *bf = arg;
+	run_finish(&bf->job->p, "baseline", true, bf->job->st, &r->mission,
+	    &r->baseline, r, bf->rc);
+}
+
+/* The role overhead and its rationale line (insert_at()'s f). */
+static void
+role_overhead(struct solve_result *r, void *arg)
+{
+	(void)arg;
+	if (!r->baseline.ran || !r->custom.ran)
+		return;
+	mass_diff(&r->custom.mass, &r->baseline.mass, &r->role_overhead);
+	engine_rationale(r, "The %s role adds %.2f kg over the dead-weight "
+	    "baseline (%.2f kg → %.2f kg).",
+	    spec_enum_role[r->mission.payload_role.type],
+	    r->role_overhead.total_kg, r->baseline.mass.total_kg,
+	    r->custom.mass.total_kg);
 }
 
 int
 engine_solve(const struct mission_spec *spec, const struct model_data *md,
              const struct catalog *cat, struct solve_result *r)
 {
+	return engine_solve_search(spec, md, cat, OPTIM_SEARCH_SCREENED, r);
+}
+
+int
+engine_solve_search(const struct mission_spec *spec,
+                    const struct model_data *md, const struct catalog *cat,
+                    enum optim_search search, struct solve_result *r)
+{
 	int rc = 0;
 	r->mission = *spec;
 	engine_resolve(&r->mission, md, r);
-	solve_run(&r->mission, md, true, &r->baseline, r, &rc);
-	solve_run(&r->mission, md, false, &r->custom, r, &rc);
-	if (r->baseline.ran && r->custom.ran) {
-		mass_diff(&r->custom.mass, &r->baseline.mass, &r->role_overhead);
-		engine_rationale(r, "The %s role adds %.2f kg over the dead-weight "
-		    "baseline (%.2f kg → %.2f kg).",
-		    spec_enum_role[r->mission.payload_role.type],
-		    r->role_overhead.total_kg, r->baseline.mass.total_kg,
-		    r->custom.mass.total_kg);
-	}
+
+	/* The baseline and the custom run are independent: the baseline's
+	 * loop runs on a second thread (in line if none can be had), its
+	 * checks after the join, in their place among the violations. */
+	struct baseline_job job;
+	engine_params(&r->mission, md, true, &job.p);
+	job.o = &r->baseline;
+	job.st = SIZING_CONVERGED;
+	bool base_ran = run_gate(&job.p, "baseline", &r->baseline, r);
+	pthread_t tid;
+	bool threaded = base_ran
+	    && pthread_create(&tid, NULL, baseline_main, &job) == 0;
+	if (base_ran && !threaded)
+		baseline_main(&job);
+	int v_base = r->n_violations;
+
+	struct sizing_params p;
+	engine_params(&r->mission, md, false, &p);
+	if (run_gate(&p, "custom", &r->custom, r))
+		run_finish(&p, "custom", false, sizing_run(&p, &r->custom),
+		    &r->mission, &r->custom, r, &rc);
+	int r_role = r->n_rationale;
 	/* Real parts on top of a converged custom run (optim.h). */
 	if (cat != NULL && r->custom.ran && r->custom.converged
-	    && optim_select(&r->mission, md, cat, r) != 0)
+	    && optim_select_search(&r->mission, md, cat, search, r) != 0)
 		rc = 3;
+
+	if (threaded)
+		pthread_join(tid, NULL);
+	if (base_ran) {
+		struct baseline_finish bf = { &job, &rc };
+		insert_at(r, v_base, r->n_rationale, finish_baseline, &bf);
+	}
+	insert_at(r, r->n_violations, r_role, role_overhead, NULL);
 	r->feasible = r->n_violations == 0 && r->custom.ran && r->custom.feasible;
 	return rc;
 }

@@ -14,6 +14,7 @@
 #define AEROEVAL_ENGINE_H
 
 #include "model.h"
+#include "optim.h"
 #include "result.h"
 #include "sizing.h"
 #include "spec.h"
@@ -26,6 +27,12 @@ struct catalog;
  * value caught before it could reach an output). */
 int engine_solve(const struct mission_spec *spec, const struct model_data *md,
                  const struct catalog *cat, struct solve_result *r);
+
+/* engine_solve() with the parts search given (optim.h): the tests compare
+ * the screened search with the exhaustive one. */
+int engine_solve_search(const struct mission_spec *spec,
+                        const struct model_data *md, const struct catalog *cat,
+                        enum optim_search search, struct solve_result *r);
 
 /* The endurance explorer of r's custom run (sizing_explore()), for the
  * outputs that show it: result.json and the dossier.  Kept out of

@@ -27,7 +27,8 @@ void feasibility_checks(const struct sizing_params *p, enum sizing_status st,
                         const char *run, struct res_run *run_out,
                         struct solve_result *r);
 
-/* Append one violation; fixes is a NULL-terminated list (may be NULL). */
+/* Append one violation; fixes is a NULL-terminated list (may be NULL).
+ * With r->terse, run, stage and code only (fixes and fmt are not read). */
 void feasibility_violation(struct solve_result *r, const char *run,
                            const char *stage, const char *code,
                            const char *const *fixes, const char *fmt, ...)

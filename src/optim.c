@@ -399,16 +399,16 @@ parallel_needed(const struct catalog_battery *b, double need_ah, double need_a)
 }
 
 /* The lightest battery of catalogue packs that builds `cells` in series and
- * holds need_ah at need_a within the continuous C rating, same chemistry
- * family as the mission when one exists.  Fills c->battery and the pack
- * counts; false if none. */
+ * holds need_ah at need_a within the continuous C rating, of chemistry
+ * family `keep` when given, else the mission's family when one exists.
+ * Fills c->battery and the pack counts; false if none. */
 static bool
 pick_battery(const struct optim_target *t, const struct catalog *cat,
              const char *lock, int cells, double need_ah, double need_a,
-             struct optim_choice *c)
+             const char *keep, struct optim_choice *c)
 {
-	const char *fam = chem_family(t->chemistry);
-	for (int pass = 0; pass < 2; pass++) {
+	const char *fam = keep != NULL ? keep : chem_family(t->chemistry);
+	for (int pass = 0; pass < (keep != NULL ? 1 : 2); pass++) {
 		const struct catalog_battery *best = NULL;
 		int best_np = 0;
 		double best_kg = 0.0;
@@ -837,7 +837,7 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 		bus.cells = s;
 		bus.have_battery = pick_battery(t, cat, x.lk->battery, s,
 		    at_bus(t, t->capacity_ah, s), at_bus(t, t->bus_peak_current_a, s),
-		    &bus.battery);
+		    NULL, &bus.battery);
 		x.n_escs = 0;
 		for (size_t i = 0; i < ne && x.lk->esc == NULL; i++) {
 			const struct catalog_esc *e = catalog_esc(cat, i);
@@ -961,7 +961,8 @@ apply_parts(struct sizing_params *p, const struct model_data *md,
  * goes to *first unless one is there already. */
 static bool
 parts_check(struct res_run *run, const char *name, const char *unit,
-            double value, double limit, bool upper, const char **first)
+            double value, double limit, bool upper, bool mass_bound,
+            const char **first)
 {
 	double scale = fabs(limit) > 1e-12 ? fabs(limit) : 1.0;
 	double tol = CHECK_RELTOL * scale;
@@ -983,6 +984,7 @@ parts_check(struct res_run *run, const char *name, const char *unit,
 	c->upper = upper;
 	c->margin = upper ? (c->limit - c->value) / scale : (c->value - c->limit) / scale;
 	c->pass = pass;
+	c->mass_bound = mass_bound;
 	return pass;
 }
 
@@ -1011,14 +1013,17 @@ parts_checks(const struct sizing_params *p, const struct optim_choice *c,
 	const char *fx[4] = { f1, f2, f3, NULL };
 
 	const char *first = NULL;
+	bool text = !r->terse; /* a trial closing keeps the codes only */
 	if (!parts_check(o, "Thrust-to-weight of the real motor and propeller", "",
-	    tw, custom->thrust_to_weight, false, &first)) {
+	    tw, custom->thrust_to_weight, false, true, &first)) {
 		/* Thrust goes with rpm², rpm with KV: the KV that would do. */
-		snprintf(f1, sizeof f1, "Add a motor of about %.0f KV for %dS to the catalogue (or use --db)",
-		    tw > 0.0 ? m->kv_rpm_per_v * sqrt(custom->thrust_to_weight / tw) : 0.0,
-		    c->cells);
-		snprintf(f2, sizeof f2, "Lock a higher-KV motor with locks.motor_part");
-		snprintf(f3, sizeof f3, "Lower the thrust margin (payload_role.thrust_margin_override)");
+		if (text) {
+			snprintf(f1, sizeof f1, "Add a motor of about %.0f KV for %dS to the catalogue (or use --db)",
+			    tw > 0.0 ? m->kv_rpm_per_v * sqrt(custom->thrust_to_weight / tw) : 0.0,
+			    c->cells);
+			snprintf(f2, sizeof f2, "Lock a higher-KV motor with locks.motor_part");
+			snprintf(f3, sizeof f3, "Lower the thrust margin (payload_role.thrust_margin_override)");
+		}
 		feasibility_violation(r, "closed", "parts", "PARTS_THRUST", fx,
 		    "%s %s on %.1f in propellers at %dS reaches T/W %.2f at full "
 		    "throttle; the role needs %.2f.", m->manufacturer, m->part_number,
@@ -1026,10 +1031,12 @@ parts_checks(const struct sizing_params *p, const struct optim_choice *c,
 	}
 	double i_m = closed_current_a(o);
 	if (!parts_check(o, "Motor current at full throttle (× 1.1)", "A", i_m,
-	    m->max_current_a, true, &first)) {
-		snprintf(f1, sizeof f1, "No catalogue motor carries %.0f A at %dS: add one to data/catalog/motors.json or use --db",
-		    i_m, c->cells);
-		snprintf(f2, sizeof f2, "Raise the bus voltage (nominal_cell_count) to lower the current");
+	    m->max_current_a, true, true, &first)) {
+		if (text) {
+			snprintf(f1, sizeof f1, "No catalogue motor carries %.0f A at %dS: add one to data/catalog/motors.json or use --db",
+			    i_m, c->cells);
+			snprintf(f2, sizeof f2, "Raise the bus voltage (nominal_cell_count) to lower the current");
+		}
 		fx[2] = NULL;
 		feasibility_violation(r, "closed", "parts", "MOTOR_CURRENT", fx,
 		    "%s %s is rated for %.0f A; the closed design draws %.0f A per "
@@ -1039,10 +1046,12 @@ parts_checks(const struct sizing_params *p, const struct optim_choice *c,
 	}
 	if (m->max_power_w > 0.0) {
 		if (!parts_check(o, "Motor power at full throttle", "W",
-		    o->opt.motor_peak_power_w, m->max_power_w, true, &first)) {
-			snprintf(f1, sizeof f1, "No catalogue motor is rated for %.0f W: add one to data/catalog/motors.json or use --db",
-			    o->opt.motor_peak_power_w);
-			snprintf(f2, sizeof f2, "Lower the thrust margin or the payload");
+		    o->opt.motor_peak_power_w, m->max_power_w, true, true, &first)) {
+			if (text) {
+				snprintf(f1, sizeof f1, "No catalogue motor is rated for %.0f W: add one to data/catalog/motors.json or use --db",
+				    o->opt.motor_peak_power_w);
+				snprintf(f2, sizeof f2, "Lower the thrust margin or the payload");
+			}
 			fx[2] = NULL;
 			feasibility_violation(r, "closed", "parts", "MOTOR_POWER", fx,
 			    "%s %s is rated for %.0f W; the closed design needs %.0f W "
@@ -1052,11 +1061,14 @@ parts_checks(const struct sizing_params *p, const struct optim_choice *c,
 		}
 	}
 	if (c->esc != NULL) {
+		/* An upsized ESC cures it: not mass-bound. */
 		if (!parts_check(o, "ESC current at full throttle (× 1.1)", "A", i_m,
-		    c->esc->continuous_current_a, true, &first)) {
-			snprintf(f1, sizeof f1, "No catalogue ESC carries %.0f A at %dS: add one to data/catalog/escs.json or use --db",
-			    i_m, c->cells);
-			snprintf(f2, sizeof f2, "Remove locks.esc_part to let the optimizer choose");
+		    c->esc->continuous_current_a, true, false, &first)) {
+			if (text) {
+				snprintf(f1, sizeof f1, "No catalogue ESC carries %.0f A at %dS: add one to data/catalog/escs.json or use --db",
+				    i_m, c->cells);
+				snprintf(f2, sizeof f2, "Remove locks.esc_part to let the optimizer choose");
+			}
 			fx[2] = NULL;
 			feasibility_violation(r, "closed", "parts", "ESC_CURRENT", fx,
 			    "%s %s carries %.0f A continuous; the closed design needs "
@@ -1068,9 +1080,11 @@ parts_checks(const struct sizing_params *p, const struct optim_choice *c,
 	const struct catalog_battery *b = c->battery;
 	double i_max = (double)c->parallel_packs * b->capacity_ah * b->continuous_c;
 	if (!parts_check(o, "Battery current within the continuous C rating", "A",
-	    o->peak_current_a, i_max, true, &first)) {
-		snprintf(f1, sizeof f1, "Add packs in parallel or a higher-C pack to data/catalog/batteries.json");
-		snprintf(f2, sizeof f2, "Remove locks.battery_part to let the optimizer choose");
+	    o->peak_current_a, i_max, true, false, &first)) {
+		if (text) {
+			snprintf(f1, sizeof f1, "Add packs in parallel or a higher-C pack to data/catalog/batteries.json");
+			snprintf(f2, sizeof f2, "Remove locks.battery_part to let the optimizer choose");
+		}
 		fx[2] = NULL;
 		feasibility_violation(r, "closed", "parts", "BATTERY_C_RATE", fx,
 		    "%d × %s %s deliver %.0f A continuous (%.0fC); full throttle draws "
@@ -1080,9 +1094,11 @@ parts_checks(const struct sizing_params *p, const struct optim_choice *c,
 	}
 	double mach = M_PI * d_m * n_max / p->air.sound_m_s;
 	if (!parts_check(o, "Tip Mach at the real motor's full rpm", "", mach,
-	    AERO_TIP_MACH_MAX, true, &first)) {
-		snprintf(f1, sizeof f1, "Use a lower-KV motor or a smaller propeller");
-		snprintf(f2, sizeof f2, "Remove the motor or propeller lock");
+	    AERO_TIP_MACH_MAX, true, true, &first)) {
+		if (text) {
+			snprintf(f1, sizeof f1, "Use a lower-KV motor or a smaller propeller");
+			snprintf(f2, sizeof f2, "Remove the motor or propeller lock");
+		}
 		fx[2] = NULL;
 		feasibility_violation(r, "closed", "parts", "PARTS_TIP_MACH", fx,
 		    "At full rpm (%.0f rpm) the %.1f in propeller tip reaches Mach "
@@ -1115,20 +1131,25 @@ battery_short(const struct solve_result *sr, double *step)
 	return false;
 }
 
+/* Did the continuous design fail the check of this name? */
+static bool
+custom_failed(const struct res_run *custom, const char *name)
+{
+	bool old = false;
+	for (int k = 0; k < custom->n_checks; k++)
+		if (strcmp(custom->checks[k].name, name) == 0)
+			old = !custom->checks[k].pass;
+	return old;
+}
+
 /* A failed check of the closed run that the continuous design passed. */
 static const char *
 new_failure(const struct res_run *custom, const struct res_run *closed)
 {
-	for (int i = 0; i < closed->n_checks; i++) {
-		if (closed->checks[i].pass)
-			continue;
-		bool old = false;
-		for (int k = 0; k < custom->n_checks; k++)
-			if (strcmp(custom->checks[k].name, closed->checks[i].name) == 0)
-				old = !custom->checks[k].pass;
-		if (!old)
+	for (int i = 0; i < closed->n_checks; i++)
+		if (!closed->checks[i].pass
+		    && !custom_failed(custom, closed->checks[i].name))
 			return closed->checks[i].name;
-	}
 	return NULL;
 }
 
@@ -1198,24 +1219,64 @@ esc_upsized(const struct closer *k, const struct optim_choice *c,
 	return true;
 }
 
+/* Screen choice c before closing it: its mass fixed point on the real
+ * parts without the mission's flights (sizing_params.masses_only, a fifth
+ * or less of a closing), into sr with the checks that need none.  *n_bound
+ * gets how many failed checks more mass only worsens (res_check.mass_bound).
+ * True when one of them is new (a parts check, or one the continuous design
+ * passed): then the closing fails, and with n_bound failures at least,
+ * however close_choice() upsizes the battery or the ESC, since both only
+ * add mass (each picks the lightest set for a need that only grows, and
+ * the battery keeps its chemistry family).  False when the screen cannot
+ * tell (the loop did not converge, a number is not finite). */
+static bool
+screen_fails(const struct closer *k, const struct optim_choice *c,
+             struct solve_result *sr, int *n_bound)
+{
+	struct sizing_params p = *k->p0;
+	apply_parts(&p, k->md, k->t, k->custom, c);
+	p.defer_extras = true;
+	p.masses_only = true;
+	sr->n_violations = 0;
+	enum sizing_status st = sizing_run(&p, &sr->closed);
+	if (k->custom->time_scale > 0.0 && k->custom->time_scale < 1.0)
+		sr->closed.time_scale = k->custom->time_scale;
+	*n_bound = 0;
+	if (st != SIZING_CONVERGED || !closed_finite(&sr->closed))
+		return false;
+	feasibility_checks(&p, st, "closed", &sr->closed, sr);
+	parts_checks(&p, c, k->custom, &sr->closed, sr);
+	bool fails = false;
+	const struct res_run *o = &sr->closed;
+	for (int i = 0; i < o->n_checks; i++) {
+		if (o->checks[i].pass || !o->checks[i].mass_bound)
+			continue;
+		(*n_bound)++;
+		fails = fails || !custom_failed(k->custom, o->checks[i].name);
+	}
+	return fails;
+}
+
 /* Re-solve the custom mission on choice c into (*srp)->closed (violations
  * into *srp), upsizing the battery while it runs short and the ESC while
  * it carries less than the closed design's current.  Returns the name
  * of the first check the real parts fail that the continuous design
  * passed, or NULL when they close as well as it did.  *finite is false if
- * a number came out non-finite.  *sparep is a second buffer: an upsized
- * battery is tried in one while the other keeps the attempt before, so
- * that going back to it needs no second solve (the buffers may swap). */
+ * a number came out non-finite; *stp gets the loop status of the attempt
+ * kept.  *sparep is a second buffer: an upsized battery is tried in one
+ * while the other keeps the attempt before, so that going back to it needs
+ * no second solve (the buffers may swap). */
 static const char *
 close_choice(const struct closer *k, struct optim_choice *c,
              struct solve_result **srp, struct solve_result **sparep,
-             bool *finite)
+             bool *finite, enum sizing_status *stp)
 {
 	double need_ah = at_bus(k->t, k->t->capacity_ah, c->cells);
 	double need_a = at_bus(k->t, k->t->bus_peak_current_a, c->cells);
 	struct optim_choice prev = *c;
 	int prev_failed = -1;
 	bool prev_finite = true;
+	enum sizing_status prev_st = SIZING_CONVERGED;
 	const char *parts_fail = NULL, *prev_parts_fail = NULL;
 	struct solve_result *sr = *srp;
 	for (int attempt = 0;; attempt++) {
@@ -1225,6 +1286,7 @@ close_choice(const struct closer *k, struct optim_choice *c,
 		p.defer_extras = true;
 		sr->n_violations = 0;
 		enum sizing_status st = sizing_run(&p, &sr->closed);
+		*stp = st;
 		/* It flew the continuous design's relaxed mission, if any. */
 		if (k->custom->time_scale > 0.0 && k->custom->time_scale < 1.0)
 			sr->closed.time_scale = k->custom->time_scale;
@@ -1240,6 +1302,7 @@ close_choice(const struct closer *k, struct optim_choice *c,
 			swap_results(srp, sparep);
 			sr = *srp;
 			*finite = prev_finite;
+			*stp = prev_st;
 			parts_fail = prev_parts_fail;
 			break;
 		}
@@ -1253,9 +1316,12 @@ close_choice(const struct closer *k, struct optim_choice *c,
 		if (battery_short(sr, &step)) {
 			need_ah = fmax(need_ah, sr->closed.capacity_mah / 1000.0) * step;
 			need_a = fmax(need_a, sr->closed.peak_current_a) * step;
+			/* The larger pack keeps the chemistry (and so the cell
+			 * profile) of the one it replaces. */
 			struct optim_choice b = *c;
 			if (pick_battery(k->t, k->cat, k->lk->battery, c->cells, need_ah,
-			    need_a, &b) && (b.battery != c->battery
+			    need_a, chem_family(c->battery->chemistry), &b)
+			    && (b.battery != c->battery
 			    || b.parallel_packs != c->parallel_packs)) {
 				up = b;
 				larger = true;
@@ -1267,6 +1333,7 @@ close_choice(const struct closer *k, struct optim_choice *c,
 		prev = *c;
 		prev_failed = nf;
 		prev_finite = *finite;
+		prev_st = st;
 		prev_parts_fail = parts_fail;
 		swap_results(srp, sparep);
 		sr = *srp;
@@ -1694,9 +1761,19 @@ int
 optim_select(const struct mission_spec *spec, const struct model_data *md,
              const struct catalog *cat, struct solve_result *r)
 {
+	return optim_select_search(spec, md, cat, OPTIM_SEARCH_SCREENED, r);
+}
+
+int
+optim_select_search(const struct mission_spec *spec,
+                    const struct model_data *md, const struct catalog *cat,
+                    enum optim_search search, struct solve_result *r)
+{
 	r->parts_selected = false;
 	r->n_bom = 0;
 	r->n_candidates = 0;
+	r->n_closings = 0;
+	r->n_screened_out = 0;
 	r->bom_mass_kg = 0.0;
 	r->bom_price_usd = 0.0;
 	memset(&r->motor, 0, sizeof r->motor);
@@ -1752,9 +1829,13 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 	 * else keep the one with the fewest failed checks and report it. */
 	struct optim_target tr = t;
 	struct closer k = { &p, md, &tr, cat, &lk, &r->custom };
-	struct solve_result *fb = xcalloc(1, sizeof *fb);
-	struct solve_result *cur = xcalloc(1, sizeof *cur);
-	struct solve_result *spare = xcalloc(1, sizeof *spare);
+	/* Trial buffers: each try writes all it reads of its result (see
+	 * close_choice()), and keeps its violations' codes only. */
+	struct solve_result *fb = xmalloc(sizeof *fb);
+	struct solve_result *cur = xmalloc(sizeof *cur);
+	struct solve_result *spare = xmalloc(sizeof *spare);
+	fb->terse = cur->terse = spare->terse = true;
+	fb->n_violations = 0;
 	struct res_candidate *round_cand = xmalloc((size_t)OPTIM_ROUNDS
 	    * RES_MAX_CANDIDATES * sizeof *round_cand);
 	int round_n_cand[OPTIM_ROUNDS] = { 0 };
@@ -1764,7 +1845,8 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 	char fb_fail[64] = "";
 	int fb_failed = -1;
 	bool fb_finite = true, finite = true;
-	const struct solve_result *use = NULL;
+	enum sizing_status st = SIZING_CONVERGED, fb_st = st, use_st = st;
+	struct solve_result *use = NULL;
 	int tried = 0;
 	for (int round = 0; round < OPTIM_ROUNDS && use == NULL; round++) {
 		/* A re-aimed round scores the candidates too: the crosshair
@@ -1776,19 +1858,35 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 			break;
 		int kept = n < OPTIM_MAX_TRIES ? n : OPTIM_MAX_TRIES;
 		double heaviest = 0.0;
+		bool first_closed = false;
 		for (int i = 0; i < kept; i++) {
 			struct optim_choice c = ch[i];
-			const char *fail = close_choice(&k, &c, &cur, &spare, &finite);
+			/* A combination the screen shows to fail, with at least as
+			 * many failed checks as the fallback (which a later one
+			 * must beat strictly), changes nothing: it is not closed. */
+			int n_bound;
+			if (search == OPTIM_SEARCH_SCREENED && fb_failed >= 0
+			    && screen_fails(&k, &c, cur, &n_bound) && n_bound >= fb_failed) {
+				tried++;
+				r->n_screened_out++;
+				continue;
+			}
+			const char *fail = close_choice(&k, &c, &cur, &spare, &finite,
+			    &st);
+			r->n_closings++;
 			if (fail == NULL && finite) {
 				use = cur;
+				use_st = st;
 				use_c = c;
 				use_t = tr;
 				use_round = round;
 				break;
 			}
 			tried++;
-			if (i == 0)
+			if (i == 0) {
 				heaviest = cur->closed.mass.total_kg;
+				first_closed = true;
+			}
 			int nf = n_failed(&cur->closed);
 			if (fb_failed < 0 || nf < fb_failed) {
 				/* The closest so far becomes the fallback.  The next
@@ -1802,8 +1900,17 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 				fb_round = round;
 				fb_failed = nf;
 				fb_finite = finite;
+				fb_st = st;
 				str_copy(fb_fail, sizeof fb_fail, fail ? fail : "");
 			}
+		}
+		if (use == NULL && !first_closed && round + 1 < OPTIM_ROUNDS) {
+			/* The next round aims at the best combination's closed
+			 * mass: close it now that it is needed. */
+			struct optim_choice c = ch[0];
+			close_choice(&k, &c, &cur, &spare, &finite, &st);
+			r->n_closings++;
+			heaviest = cur->closed.mass.total_kg;
 		}
 		/* Real parts heavier than the aim: thrust, current, power and
 		 * energy grow about as M^1.5 on a given rotor. */
@@ -1823,12 +1930,19 @@ optim_select(const struct mission_spec *spec, const struct model_data *md,
 		use_c = fb_c;
 		use_t = fb_t;
 		use_round = fb_round;
+		use_st = fb_st;
 		finite = fb_finite;
 		str_copy(failed, sizeof failed, fb_fail[0] ? fb_fail : "a check");
 	}
-	r->closed = use->closed;
+	/* The closing kept gets its checks again, with the violations' text
+	 * (the same checks: the same run and parameters). */
 	struct sizing_params pu = p;
 	apply_parts(&pu, md, &use_t, &r->custom, &use_c);
+	use->terse = false;
+	use->n_violations = 0;
+	feasibility_checks(&pu, use_st, "closed", &use->closed, use);
+	parts_checks(&pu, &use_c, &r->custom, &use->closed, use);
+	r->closed = use->closed;
 	sizing_complete(&pu, &r->closed);
 	finite = finite && isfinite(r->closed.hover_endurance_s);
 	append_violations(r, use);

@@ -179,4 +179,15 @@ int optim_rank(const struct optim_target *t, const struct catalog *cat,
 int optim_select(const struct mission_spec *spec, const struct model_data *md,
                  const struct catalog *cat, struct solve_result *r);
 
+/* How optim_select() closes the ranked combinations.  SCREENED skips the
+ * closing of a combination whose mass fixed point alone shows that it fails
+ * and cannot be the closest; EXHAUSTIVE closes every one, and is there to
+ * show (tests/test_optim.c) that both choose the same parts. */
+enum optim_search { OPTIM_SEARCH_SCREENED, OPTIM_SEARCH_EXHAUSTIVE };
+
+/* optim_select() with the search given. */
+int optim_select_search(const struct mission_spec *spec,
+                        const struct model_data *md, const struct catalog *cat,
+                        enum optim_search search, struct solve_result *r);
+
 #endif

@@ -83,6 +83,9 @@ struct res_check {
 	double margin;       /* (limit - value)/limit or (value - limit)/limit */
 	bool pass;
 	bool sized;          /* the design is sized to this limit by construction */
+	bool mass_bound;     /* with motor, propeller and bus fixed, more takeoff
+	                      * mass only takes it further from passing (the parts
+	                      * search's screen relies on it) */
 };
 
 struct res_violation {
@@ -265,8 +268,13 @@ struct solve_result {
 	double bom_price_usd;
 	int n_candidates;
 	struct res_candidate candidates[RES_MAX_CANDIDATES];
+	int n_closings;                /* combinations closed by the parts search */
+	int n_screened_out;            /* combinations its screen left unclosed */
 
 	bool feasible;
+	/* violations keep run, stage and code only, no text: the parts
+	 * search's trial closings, of which one is kept (and re-checked) */
+	bool terse;
 	int n_violations;
 	struct res_violation violations[RES_MAX_VIOLATIONS];
 	int n_rationale;

@@ -717,19 +717,24 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 		    || fabs(c - c_used) <= 1e-4 * c_used;
 		if (fabs(f - m) < SIZING_TOL_KG && cap_steady && cells_steady) {
 			m = f;
+			if (p->masses_only && lazy) {
+				/* The masses are those of the full loop: its
+				 * flights come after this point. */
+				st = SIZING_CONVERGED;
+				break;
+			}
 			/* Confirm with the discharge resolution of the final
 			 * record, so that a mission the coarse loop flew is not
 			 * lost to discretisation in the dossier's trace.  When
 			 * this is the run's record (no goal relaxation follows)
-			 * and the coarse flight is still unflown, the final one
-			 * comes first: sizing_run needs it either way, and the
-			 * coarse one matters only if the final one flew. */
+			 * and the coarse flight is still unflown (a locked or
+			 * catalogue battery: its masses never needed it), the
+			 * final flight alone says whether the mission is flown. */
 			bool flown;
 			if (ring.flown[k % LOOP_RING] < 0 && rec != NULL && !p->allow_relax) {
 				confirm(p, &ls, m, e->capacity_ah, rec, fin);
 				*fin_done = true;
-				flown = fin->dis.end == DIS_COMPLETED
-				    && loop_flown(p, gamma_time, &ring, k);
+				flown = fin->dis.end == DIS_COMPLETED;
 			} else {
 				flown = loop_flown(p, gamma_time, &ring, k);
 				if (flown) {
@@ -1176,11 +1181,17 @@ sizing_run(const struct sizing_params *p_in, struct res_run *out)
 	}
 	/* The final evaluation at the fixed point keeps the full trace (the
 	 * loop's confirming evaluation when it made one: the same). */
-	if (!fin_done)
+	bool masses_only = p->masses_only && (p->capacity_locked || battery_fixed(p));
+	if (masses_only)
+		/* The evaluation the full run's confirming flight starts with. */
+		evaluate_masses(p, &ls, m_star, c_star, true, out, &fin);
+	else if (!fin_done)
 		evaluate(p, &ls, m_star, c_star, final_steps(p), out, &fin);
 	record_run(p, &fin, &ls, out);
 	out->fixed = (struct res_fixed_point){ m_star, c_star, ls.arm_width_m,
 	    ls.gamma_time, ls.cells };
+	if (masses_only)
+		return st;
 	out->lipschitz = lipschitz(p, &ls, m_star, c_star);
 	if (!p->defer_extras)
 		out->hover_endurance_s = hover_endurance_s(p, &fin, m_star);

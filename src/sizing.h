@@ -177,6 +177,11 @@ struct sizing_params {
 	 * sizing_complete() to fill in later (the parts search, which keeps
 	 * one run of many) */
 	bool defer_extras;
+	/* stop at the mass fixed point: no confirming flight, no Lipschitz
+	 * constant, nothing the discharge gives recorded.  Only for a loop
+	 * whose masses do not depend on its flights (capacity locked or a
+	 * catalogue battery): the parts search screens combinations with it */
+	bool masses_only;
 	/* numerics */
 	int max_iter;
 	int trace_steps;             /* discharge steps of the final run */
