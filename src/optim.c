@@ -125,30 +125,82 @@ hover_theta(double n_hover_rps, double n_max_rps)
 	return n_max_rps > 0.0 ? n_hover_rps / n_max_rps : 1.0 / OPTIM_LOAD_RPM;
 }
 
+/* The terms of J (eq. J), each as its own function so that the search can
+ * compute those of a propeller, and of a motor on one bus, once for every
+ * pairing; j_sum() adds them in one fixed order, so a J is the same bits
+ * however its terms were come by.  The max(0, x) are written out: fmax()
+ * is a call, and this is the search's inner loop. */
+static double
+positive_part(double x)
+{
+	return x > 0.0 ? x : 0.0;
+}
+
+static double
+j_diameter_term(const struct optim_target *t, double diameter_in)
+{
+	if (!(t->prop_diameter_in > 0.0))
+		return 0.0;
+	return OPTIM_W_DIAMETER * fabs(diameter_in - t->prop_diameter_in)
+	    / t->prop_diameter_in;
+}
+
+static double
+j_kv_term(const struct optim_target *t, int cells, double kv)
+{
+	double kv_t = at_bus(t, t->motor_kv, cells);
+	return kv_t > 0.0 ? OPTIM_W_KV * fabs(kv - kv_t) / kv_t : 0.0;
+}
+
+static double
+j_pitch_term(const struct optim_target *t, double pitch_in)
+{
+	if (!(pitch_in > 0.0 && t->prop_pitch_in > 0.0))
+		return 0.0;
+	return OPTIM_W_PITCH * fabs(pitch_in - t->prop_pitch_in) / t->prop_pitch_in;
+}
+
+/* Pen_a: hover throttle this motor really gives on this propeller against
+ * the role's target. */
+static double
+j_throttle_term(const struct optim_target *t, double theta)
+{
+	return OPTIM_PEN_THROTTLE * positive_part(theta - t->hover_throttle);
+}
+
+/* Pen_m (ours): a motor heavier than the scaling law's (for an integrated
+ * system, pitch_in 0, than the law's motor, propeller and ESC). */
+static double
+j_mass_term(const struct optim_target *t, bool pitched, double motor_mass_kg)
+{
+	double m_star = pitched ? t->motor_mass_kg : t->drive_mass_kg;
+	if (!(m_star > 0.0))
+		return 0.0;
+	return OPTIM_W_MASS * positive_part(motor_mass_kg / m_star - 1.0);
+}
+
+/* Pen_θ: cruise body pitch above 20° (the same for every part). */
+static double
+j_cruise_term(const struct optim_target *t)
+{
+	return OPTIM_PEN_PITCH * positive_part(t->forward_pitch_deg - OPTIM_PITCH_FREE_DEG);
+}
+
+static double
+j_sum(double diameter, double kv, double pitch, double throttle, double mass,
+      double cruise)
+{
+	return diameter + kv + pitch + throttle + mass + cruise;
+}
+
 /* optim_j_score with θ_hvr already known. */
 static double
 j_score_at(const struct optim_target *t, int cells, double diameter_in,
            double pitch_in, double kv, double motor_mass_kg, double theta)
 {
-	double kv_t = at_bus(t, t->motor_kv, cells);
-	double j = 0.0;
-	if (t->prop_diameter_in > 0.0)
-		j += OPTIM_W_DIAMETER * fabs(diameter_in - t->prop_diameter_in)
-		    / t->prop_diameter_in;
-	if (kv_t > 0.0)
-		j += OPTIM_W_KV * fabs(kv - kv_t) / kv_t;
-	if (pitch_in > 0.0 && t->prop_pitch_in > 0.0)
-		j += OPTIM_W_PITCH * fabs(pitch_in - t->prop_pitch_in) / t->prop_pitch_in;
-	/* Pen_a: hover throttle this motor really gives on this propeller
-	 * against the role's target. */
-	j += OPTIM_PEN_THROTTLE * fmax(0.0, theta - t->hover_throttle);
-	/* Pen_m (ours): a motor heavier than the scaling law's. */
-	double m_star = pitch_in > 0.0 ? t->motor_mass_kg : t->drive_mass_kg;
-	if (m_star > 0.0)
-		j += OPTIM_W_MASS * fmax(0.0, motor_mass_kg / m_star - 1.0);
-	/* Pen_θ: cruise body pitch above 20° (the same for every part). */
-	j += OPTIM_PEN_PITCH * fmax(0.0, t->forward_pitch_deg - OPTIM_PITCH_FREE_DEG);
-	return j;
+	return j_sum(j_diameter_term(t, diameter_in), j_kv_term(t, cells, kv),
+	    j_pitch_term(t, pitch_in), j_throttle_term(t, theta),
+	    j_mass_term(t, pitch_in > 0.0, motor_mass_kg), j_cruise_term(t));
 }
 
 double
@@ -217,10 +269,12 @@ above_range(const struct catalog_motor *m, double d_in)
 }
 
 /* The limits of the motor on its propeller (p NULL: an integrated system),
- * bits OPTIM_PROP_OVERLAP..OPTIM_CANNOT_HOVER. */
+ * bits OPTIM_PROP_OVERLAP..OPTIM_CANNOT_HOVER; rpm is the motor's
+ * full_rpm() on the bus, *theta gets the hover throttle. */
 static unsigned
-pair_mask(const struct optim_target *t, int cells, const struct catalog_motor *m,
-          const struct catalog_prop *p, const struct prop_aim *a)
+pair_mask(const struct optim_target *t, const struct catalog_motor *m,
+          const struct catalog_prop *p, const struct prop_aim *a, double rpm,
+          double *theta)
 {
 	unsigned mask = 0;
 	double d_in = a->d_in;
@@ -228,13 +282,13 @@ pair_mask(const struct optim_target *t, int cells, const struct catalog_motor *m
 		mask |= 1u << OPTIM_PROP_OVERLAP;
 	if (below_range(m, d_in) || above_range(m, d_in))
 		mask |= 1u << OPTIM_PROP_RANGE;
-	double rpm = full_rpm(t, cells, m->kv_rpm_per_v);
 	double mach = a->tip_m * rpm / S_PER_MIN / t->sound_m_s;
 	if (!(mach <= AERO_TIP_MACH_MAX))
 		mask |= 1u << OPTIM_TIP_MACH;
 	if (p != NULL && p->max_rpm > 0.0 && rpm > p->max_rpm)
 		mask |= 1u << OPTIM_PROP_RPM;
-	if (!(hover_theta(a->n_hover_rps, rpm / S_PER_MIN) < 1.0))
+	*theta = hover_theta(a->n_hover_rps, rpm / S_PER_MIN);
+	if (!(*theta < 1.0))
 		mask |= 1u << OPTIM_CANNOT_HOVER;
 	return mask;
 }
@@ -246,7 +300,9 @@ limit_mask(const struct optim_target *t, int cells, const struct catalog_motor *
 {
 	struct prop_aim a;
 	prop_aim_of(t, m, p, &a);
-	return motor_mask(t, cells, m) | pair_mask(t, cells, m, p, &a);
+	double theta;
+	return motor_mask(t, cells, m)
+	    | pair_mask(t, m, p, &a, full_rpm(t, cells, m->kv_rpm_per_v), &theta);
 }
 
 /* The limits a lock takes out of the search: a locked motor is never pruned
@@ -509,6 +565,14 @@ struct rank_prop {
 	bool lock_ok;                  /* no propeller lock, or this one */
 	bool over;                     /* above the overlap limit */
 	struct prop_aim aim;
+	double j_diameter, j_pitch;    /* its J terms */
+};
+
+/* What one motor on one bus brings to each of its options. */
+struct motor_on_bus {
+	double rpm;                    /* full_rpm() */
+	double j_kv;                   /* its J terms */
+	double j_mass[2];              /* [pitched]: see j_mass_term() */
 };
 
 /* An ESC set that suits the bus being ranked, the motor's burst aside. */
@@ -538,6 +602,7 @@ struct rank_ctx {
 	const struct esc_offer *escs;  /* with no ESC locked: the sets that
 	                                  suit this bus, lightest first */
 	size_t n_escs;
+	double j_cruise;               /* the J term common to every option */
 };
 
 /* The ESC set of one motor on one bus, picked when an option first needs
@@ -589,14 +654,15 @@ option_fails(struct rank_ctx *x, bool eligible, enum optim_reason why)
  * locks leave (and was counted by option_fails): score it, keep it. */
 static void
 rank_option(struct rank_ctx *x, const struct bus_offer *bus,
-            const struct catalog_motor *m, const struct catalog_prop *p,
-            const struct prop_aim *a, bool eligible, struct esc_pick *ep)
+            const struct catalog_motor *m, const struct motor_on_bus *mb,
+            const struct catalog_prop *p, double j_diameter, double j_pitch,
+            double theta, bool eligible, struct esc_pick *ep)
 {
 	const struct optim_target *t = x->t;
-	double theta = hover_theta(a->n_hover_rps,
-	    full_rpm(t, bus->cells, m->kv_rpm_per_v) / S_PER_MIN);
-	double j = j_score_at(t, bus->cells, a->d_in, p != NULL ? p->pitch_in : 0.0,
-	    m->kv_rpm_per_v, m->mass_kg, theta);
+	/* j_score_at()'s sum, from the terms computed once each. */
+	bool pitched = p != NULL && p->pitch_in > 0.0;
+	double j = j_sum(j_diameter, mb->j_kv, j_pitch, j_throttle_term(t, theta),
+	    mb->j_mass[pitched], x->j_cruise);
 	struct res_candidate *rc = x->cand != NULL && x->slot >= 0 ? &x->cand[x->slot] : NULL;
 	if (rc != NULL && j < rc->j_score)
 		rc->j_score = j;
@@ -618,6 +684,11 @@ rank_option(struct rank_ctx *x, const struct bus_offer *bus,
 		return;
 	x->cs->n_feasible++;
 	x->n_found++;
+	/* A J above the last one kept cannot be kept (keep_choice() would
+	 * compare it there and stop). */
+	if (x->n_kept >= x->max_choices
+	    && (x->max_choices <= 0 || j > x->choices[x->max_choices - 1].j_score))
+		return;
 	struct optim_choice c = bus->battery;
 	c.cells = bus->cells;
 	c.motor = m;
@@ -662,6 +733,35 @@ range_cut(const struct catalog_motor *m, const struct rank_prop *const *v,
 	return lo;
 }
 
+/* In v[0..n) sorted by diameter, how many lead within the tip Mach limit
+ * at full rpm (pair_mask()'s test; it fails on a suffix, the tip speed
+ * growing with the diameter). */
+static size_t
+mach_cut(const struct optim_target *t, const struct rank_prop *const *v,
+         size_t n, double rpm)
+{
+	size_t lo = 0, hi = n;
+	while (lo < hi) {
+		size_t mid = lo + (hi - lo) / 2;
+		double mach = v[mid]->aim.tip_m * rpm / S_PER_MIN / t->sound_m_s;
+		if (mach <= AERO_TIP_MACH_MAX)
+			lo = mid + 1;
+		else
+			hi = mid;
+	}
+	return lo;
+}
+
+static void
+motor_on_bus_of(const struct optim_target *t, int cells,
+                const struct catalog_motor *m, struct motor_on_bus *mb)
+{
+	mb->rpm = full_rpm(t, cells, m->kv_rpm_per_v);
+	mb->j_kv = j_kv_term(t, cells, m->kv_rpm_per_v);
+	mb->j_mass[0] = j_mass_term(t, false, m->mass_kg);
+	mb->j_mass[1] = j_mass_term(t, true, m->mass_kg);
+}
+
 /* Every option of one motor on one bus.  An option that is not eligible
  * (another part is locked) is never counted; it only matters when it
  * passes and a candidate records it, so it is skipped when there is none. */
@@ -675,6 +775,8 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 	bool motor_ok = lk->motor == NULL || motor_locked;
 	bool has_cand = x->cand != NULL && x->slot >= 0;
 	unsigned own = motor_mask(t, bus->cells, m);
+	struct motor_on_bus mb;
+	double theta;
 	if (!m->integrated) {
 		if (own != 0 && !motor_locked) {
 			/* A free motor's own limits are never ignored: each of its
@@ -686,6 +788,7 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 			}
 			return;
 		}
+		motor_on_bus_of(t, bus->cells, m, &mb);
 		/* A free propeller above the overlap limit fails there on a
 		 * motor that passes its own limits (the next reason in enum
 		 * order): those options too are counted at once. */
@@ -716,6 +819,35 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 			}
 			v += first;
 			n = end - first;
+			/* The tip Mach number grows with the diameter, so the
+			 * ones above its limit (the next reason) trail. */
+			size_t fast = mach_cut(t, v, n, mb.rpm);
+			if (motor_ok) {
+				int out = (int)(n - fast);
+				x->cs->n_examined += out;
+				x->cs->n_fail[OPTIM_TIP_MACH] += out;
+			}
+			n = fast;
+			if (!motor_ok && !has_cand)
+				return;
+			/* What is left can fail only the propeller's rpm limit or
+			 * hover (pair_mask()'s last two reasons, in its order). */
+			struct esc_pick ep = { false, NULL, 0 };
+			for (size_t j = 0; j < n; j++) {
+				const struct rank_prop *rp = v[j];
+				enum optim_reason why = OPTIM_OK;
+				if (rp->p->max_rpm > 0.0 && mb.rpm > rp->p->max_rpm) {
+					why = OPTIM_PROP_RPM;
+				} else {
+					theta = hover_theta(rp->aim.n_hover_rps, mb.rpm / S_PER_MIN);
+					if (!(theta < 1.0))
+						why = OPTIM_CANNOT_HOVER;
+				}
+				if (!option_fails(x, motor_ok, why))
+					rank_option(x, bus, m, &mb, rp->p, rp->j_diameter,
+					    rp->j_pitch, theta, motor_ok, &ep);
+			}
+			return;
 		}
 		struct esc_pick ep = { false, NULL, 0 };
 		for (size_t j = 0; j < n; j++) {
@@ -724,9 +856,10 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 			if (!eligible && !has_cand)
 				continue;
 			unsigned ignored = eligible ? locked_mask(motor_locked, rp->locked) : 0;
-			unsigned mask = own | pair_mask(t, bus->cells, m, rp->p, &rp->aim);
+			unsigned mask = own | pair_mask(t, m, rp->p, &rp->aim, mb.rpm, &theta);
 			if (!option_fails(x, eligible, first_reason(mask & ~ignored)))
-				rank_option(x, bus, m, rp->p, &rp->aim, eligible, &ep);
+				rank_option(x, bus, m, &mb, rp->p, rp->j_diameter,
+				    rp->j_pitch, theta, eligible, &ep);
 		}
 	} else {
 		/* An integrated system brings its own propeller and ESC: a
@@ -734,12 +867,14 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 		bool eligible = motor_ok && lk->prop == NULL && lk->esc == NULL;
 		if (!eligible && !has_cand)
 			return;
+		motor_on_bus_of(t, bus->cells, m, &mb);
 		struct prop_aim a;
 		prop_aim_of(t, m, NULL, &a);
 		unsigned ignored = eligible ? locked_mask(motor_locked, motor_locked) : 0;
-		unsigned mask = own | pair_mask(t, bus->cells, m, NULL, &a);
+		unsigned mask = own | pair_mask(t, m, NULL, &a, mb.rpm, &theta);
 		if (!option_fails(x, eligible, first_reason(mask & ~ignored)))
-			rank_option(x, bus, m, NULL, &a, eligible, NULL);
+			rank_option(x, bus, m, &mb, NULL, j_diameter_term(t, a.d_in),
+			    0.0, theta, eligible, NULL);
 	}
 }
 
@@ -780,6 +915,7 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 	x.choices = choices;
 	x.max_choices = max_choices;
 	x.cand = cand;
+	x.j_cruise = j_cruise_term(t);
 
 	size_t nm = catalog_n_motors(cat);
 	int *slot = xmalloc((nm > 0 ? nm : 1) * sizeof *slot);
@@ -816,6 +952,8 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 		rp->lock_ok = x.lk->prop == NULL || rp->locked;
 		prop_aim_of(t, NULL, p, &rp->aim);
 		rp->over = over_overlap(t, rp->aim.d_in);
+		rp->j_diameter = j_diameter_term(t, rp->aim.d_in);
+		rp->j_pitch = j_pitch_term(t, p->pitch_in);
 		x.n_lock_ok += rp->lock_ok;
 		all[x.n_props++] = rp;
 		if (!rp->over || rp->locked)
