@@ -1325,6 +1325,7 @@ struct closer {
 	const struct catalog *cat;
 	const struct optim_locks *lk;
 	const struct res_run *custom;
+	bool screened;                   /* OPTIM_SEARCH_SCREENED */
 };
 
 /* Swap two result buffers. */
@@ -1357,34 +1358,25 @@ esc_upsized(const struct closer *k, const struct optim_choice *c,
 	return true;
 }
 
-/* Screen choice c before closing it: its mass fixed point on the real
- * parts without the mission's flights (sizing_params.masses_only, a fifth
- * or less of a closing), into sr with the checks that need none.  *n_bound
- * gets how many failed checks more mass only worsens (res_check.mass_bound).
- * True when one of them is new (a parts check, or one the continuous design
- * passed): then the closing fails, and with n_bound failures at least,
- * however close_choice() upsizes the battery or the ESC, since both only
- * add mass (each picks the lightest set for a need that only grows, and
- * the battery keeps its chemistry family).  False when the screen cannot
- * tell (the loop did not converge, a number is not finite). */
+/* The checks of a masses-only closing in sr (sizing_params.masses_only:
+ * its mass fixed point on the real parts, before the mission's flights),
+ * those that need no flight.  *n_bound gets how many failed checks more
+ * mass only worsens (res_check.mass_bound): the finished closing fails at
+ * least as many.  True when one of them is new (a parts check, or one the
+ * continuous design passed): then the closing fails, with n_bound failures
+ * at least, however close_choice() upsizes the battery or the ESC, since
+ * both only add mass (each picks the lightest set for a need that only
+ * grows, and the battery keeps its chemistry family). */
 static bool
-screen_fails(const struct closer *k, const struct optim_choice *c,
-             struct solve_result *sr, int *n_bound)
+bound_checks(const struct closer *k, const struct sizing_params *p,
+             const struct optim_choice *c, struct solve_result *sr,
+             int *n_bound)
 {
-	struct sizing_params p = *k->p0;
-	apply_parts(&p, k->md, k->t, k->custom, c);
-	p.defer_extras = true;
-	p.masses_only = true;
 	sr->n_violations = 0;
-	enum sizing_status st = sizing_run(&p, &sr->closed);
-	if (k->custom->time_scale > 0.0 && k->custom->time_scale < 1.0)
-		sr->closed.time_scale = k->custom->time_scale;
-	*n_bound = 0;
-	if (st != SIZING_CONVERGED || !closed_finite(&sr->closed))
-		return false;
-	feasibility_checks(&p, st, "closed", &sr->closed, sr);
-	parts_checks(&p, c, k->custom, &sr->closed, sr);
+	feasibility_checks(p, SIZING_CONVERGED, "closed", &sr->closed, sr);
+	parts_checks(p, c, k->custom, &sr->closed, sr);
 	bool fails = false;
+	*n_bound = 0;
 	const struct res_run *o = &sr->closed;
 	for (int i = 0; i < o->n_checks; i++) {
 		if (o->checks[i].pass || !o->checks[i].mass_bound)
@@ -1403,11 +1395,20 @@ screen_fails(const struct closer *k, const struct optim_choice *c,
  * a number came out non-finite; *stp gets the loop status of the attempt
  * kept.  *sparep is a second buffer: an upsized battery is tried in one
  * while the other keeps the attempt before, so that going back to it needs
- * no second solve (the buffers may swap). */
+ * no second solve (the buffers may swap).
+ *
+ * A screened closer (k->screened) reaches each attempt's mass fixed point
+ * first and flies the mission from there (sizing_finish(): the same run).
+ * With skip_at >= 0, the fallback's count of failed checks, a first
+ * attempt whose bound_checks() show that it fails with that many failures
+ * or more is not flown: *skipped is set and NULL returned (it could
+ * neither close nor become the closest).  An upsized attempt bound to fail
+ * at least as many checks as the one before is not flown either: the one
+ * before is kept, as it would be after the flight. */
 static const char *
 close_choice(const struct closer *k, struct optim_choice *c,
              struct solve_result **srp, struct solve_result **sparep,
-             bool *finite, enum sizing_status *stp)
+             int skip_at, bool *skipped, bool *finite, enum sizing_status *stp)
 {
 	double need_ah = at_bus(k->t, k->t->capacity_ah, c->cells);
 	double need_a = at_bus(k->t, k->t->bus_peak_current_a, c->cells);
@@ -1417,22 +1418,47 @@ close_choice(const struct closer *k, struct optim_choice *c,
 	enum sizing_status prev_st = SIZING_CONVERGED;
 	const char *parts_fail = NULL, *prev_parts_fail = NULL;
 	struct solve_result *sr = *srp;
+	*skipped = false;
 	for (int attempt = 0;; attempt++) {
 		struct sizing_params p = *k->p0;
 		apply_parts(&p, k->md, k->t, k->custom, c);
 		/* Only the run kept needs them (optim_select fills them in). */
 		p.defer_extras = true;
-		sr->n_violations = 0;
+		p.masses_only = k->screened;
 		enum sizing_status st = sizing_run(&p, &sr->closed);
-		*stp = st;
-		/* It flew the continuous design's relaxed mission, if any. */
+		p.masses_only = false;
 		if (k->custom->time_scale > 0.0 && k->custom->time_scale < 1.0)
 			sr->closed.time_scale = k->custom->time_scale;
-		*finite = closed_finite(&sr->closed);
-		feasibility_checks(&p, st, "closed", &sr->closed, sr);
-		parts_fail = parts_checks(&p, c, k->custom, &sr->closed, sr);
-		int nf = n_failed(&sr->closed);
-		if (prev_failed >= 0 && nf >= prev_failed) {
+		bool worse = false;
+		if (k->screened && st == SIZING_CONVERGED
+		    && closed_finite(&sr->closed)) {
+			int n_bound;
+			bool bound = attempt == 0 ? skip_at >= 0 : prev_failed >= 0;
+			bool fails = bound && bound_checks(k, &p, c, sr, &n_bound);
+			if (bound && attempt == 0 && fails && n_bound >= skip_at) {
+				*skipped = true;
+				return NULL;
+			}
+			worse = bound && attempt > 0 && n_bound >= prev_failed;
+			if (!worse)
+				st = sizing_finish(&p, &sr->closed);
+		} else if (k->screened) {
+			/* No fixed point to go on from: the whole run. */
+			st = sizing_run(&p, &sr->closed);
+		}
+		int nf = 0;
+		if (!worse) {
+			*stp = st;
+			/* It flew the continuous design's relaxed mission, if any. */
+			if (k->custom->time_scale > 0.0 && k->custom->time_scale < 1.0)
+				sr->closed.time_scale = k->custom->time_scale;
+			*finite = closed_finite(&sr->closed);
+			sr->n_violations = 0;
+			feasibility_checks(&p, st, "closed", &sr->closed, sr);
+			parts_fail = parts_checks(&p, c, k->custom, &sr->closed, sr);
+			nf = n_failed(&sr->closed);
+		}
+		if (worse || (prev_failed >= 0 && nf >= prev_failed)) {
 			/* A larger battery or ESC did not help: go back to the last one,
 			 * whose solve the spare buffer still holds (solving it
 			 * again would give the same). */
@@ -1966,7 +1992,8 @@ optim_select_search(const struct mission_spec *spec,
 	 * the continuous design; re-aim at the real-parts mass when none does;
 	 * else keep the one with the fewest failed checks and report it. */
 	struct optim_target tr = t;
-	struct closer k = { &p, md, &tr, cat, &lk, &r->custom };
+	struct closer k = { &p, md, &tr, cat, &lk, &r->custom,
+		search == OPTIM_SEARCH_SCREENED };
 	/* Trial buffers: each try writes all it reads of its result (see
 	 * close_choice()), and keeps its violations' codes only. */
 	struct solve_result *fb = xmalloc(sizeof *fb);
@@ -1999,18 +2026,17 @@ optim_select_search(const struct mission_spec *spec,
 		bool first_closed = false;
 		for (int i = 0; i < kept; i++) {
 			struct optim_choice c = ch[i];
-			/* A combination the screen shows to fail, with at least as
-			 * many failed checks as the fallback (which a later one
-			 * must beat strictly), changes nothing: it is not closed. */
-			int n_bound;
-			if (search == OPTIM_SEARCH_SCREENED && fb_failed >= 0
-			    && screen_fails(&k, &c, cur, &n_bound) && n_bound >= fb_failed) {
+			/* A combination bound to fail with at least as many failed
+			 * checks as the fallback (which a later one must beat
+			 * strictly) changes nothing: it is not flown. */
+			bool skipped;
+			const char *fail = close_choice(&k, &c, &cur, &spare, fb_failed,
+			    &skipped, &finite, &st);
+			if (skipped) {
 				tried++;
 				r->n_screened_out++;
 				continue;
 			}
-			const char *fail = close_choice(&k, &c, &cur, &spare, &finite,
-			    &st);
 			r->n_closings++;
 			if (fail == NULL && finite) {
 				use = cur;
@@ -2046,7 +2072,8 @@ optim_select_search(const struct mission_spec *spec,
 			/* The next round aims at the best combination's closed
 			 * mass: close it now that it is needed. */
 			struct optim_choice c = ch[0];
-			close_choice(&k, &c, &cur, &spare, &finite, &st);
+			bool skipped;
+			close_choice(&k, &c, &cur, &spare, -1, &skipped, &finite, &st);
 			r->n_closings++;
 			heaviest = cur->closed.mass.total_kg;
 		}

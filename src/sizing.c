@@ -1046,6 +1046,27 @@ marketing_endurance_s(const struct sizing_params *p, const struct eval *e,
 	    BATT_SOC_MIN);
 }
 
+/* What a run that reached its fixed point (m_star, c_star) at ls records:
+ * the final evaluation fin, the fixed point, the Lipschitz constant and
+ * the extras. */
+static void
+record_fixed_point(const struct sizing_params *p, enum sizing_status st,
+                   const struct eval *fin, const struct loop_state *ls,
+                   double m_star, double c_star, struct res_run *out)
+{
+	record_run(p, fin, ls, out);
+	out->fixed = (struct res_fixed_point){ m_star, c_star, ls->arm_width_m,
+	    ls->gamma_time, ls->cells };
+	out->lipschitz = lipschitz(p, ls, m_star, c_star);
+	if (!p->defer_extras)
+		out->hover_endurance_s = hover_endurance_s(p, fin, m_star);
+	if (p->marketing)
+		out->marketing_endurance_s = marketing_endurance_s(p, fin, m_star);
+	if (st == SIZING_MAX_ITERATIONS)
+		snprintf(out->termination, sizeof out->termination,
+		    "no convergence in %d iterations", out->iterations);
+}
+
 /* A trial loop of the relaxations: iterate() recording nothing, with its
  * final state in *ls, *m_star, *c_star (the fixed point when it closed). */
 static enum sizing_status
@@ -1181,24 +1202,35 @@ sizing_run(const struct sizing_params *p_in, struct res_run *out)
 	}
 	/* The final evaluation at the fixed point keeps the full trace (the
 	 * loop's confirming evaluation when it made one: the same). */
-	bool masses_only = p->masses_only && (p->capacity_locked || battery_fixed(p));
-	if (masses_only)
-		/* The evaluation the full run's confirming flight starts with. */
+	if (p->masses_only && (p->capacity_locked || battery_fixed(p))) {
+		/* The evaluation the full run's confirming flight starts with;
+		 * sizing_finish() goes on from here. */
 		evaluate_masses(p, &ls, m_star, c_star, true, out, &fin);
-	else if (!fin_done)
-		evaluate(p, &ls, m_star, c_star, final_steps(p), out, &fin);
-	record_run(p, &fin, &ls, out);
-	out->fixed = (struct res_fixed_point){ m_star, c_star, ls.arm_width_m,
-	    ls.gamma_time, ls.cells };
-	if (masses_only)
+		record_run(p, &fin, &ls, out);
+		out->fixed = (struct res_fixed_point){ m_star, c_star,
+		    ls.arm_width_m, ls.gamma_time, ls.cells };
 		return st;
-	out->lipschitz = lipschitz(p, &ls, m_star, c_star);
-	if (!p->defer_extras)
-		out->hover_endurance_s = hover_endurance_s(p, &fin, m_star);
-	if (p->marketing)
-		out->marketing_endurance_s = marketing_endurance_s(p, &fin, m_star);
-	if (st == SIZING_MAX_ITERATIONS)
-		snprintf(out->termination, sizeof out->termination,
-		    "no convergence in %d iterations", out->iterations);
+	}
+	if (!fin_done)
+		evaluate(p, &ls, m_star, c_star, final_steps(p), out, &fin);
+	record_fixed_point(p, st, &fin, &ls, m_star, c_star, out);
+	return st;
+}
+
+enum sizing_status
+sizing_finish(const struct sizing_params *p, struct res_run *out)
+{
+	struct sizing_params q;
+	struct loop_state ls;
+	at_fixed_point(p, out, &q, &ls);
+	q.masses_only = false;
+	double m_star = out->fixed.mass_kg, c_star = out->fixed.capacity_ah;
+	/* What iterate() does when such a loop converges: the final flight
+	 * alone says whether the mission is flown. */
+	struct eval fin;
+	confirm(&q, &ls, m_star, c_star, out, &fin);
+	enum sizing_status st = fin.dis.end == DIS_COMPLETED ? SIZING_CONVERGED
+	    : SIZING_DISCHARGE_FAIL;
+	record_fixed_point(&q, st, &fin, &ls, m_star, c_star, out);
 	return st;
 }

@@ -198,6 +198,13 @@ struct sizing_params {
  * out->thrust_margin and out->thrust_margin_requested record both. */
 enum sizing_status sizing_run(const struct sizing_params *p, struct res_run *out);
 
+/* The rest of a sizing_run() of p with p->masses_only that returned
+ * SIZING_CONVERGED into run (p->allow_relax false): the final flight at
+ * run->fixed and all that follows it, exactly as sizing_run() without
+ * masses_only records them.  Returns that run's status. */
+enum sizing_status sizing_finish(const struct sizing_params *p,
+                                 struct res_run *run);
+
 /* State of charge left by the 20 % capacity margin (1 - 1/1.2). */
 double sizing_reserve_soc(void);
 
