@@ -404,6 +404,44 @@ sizing_complete_should_give_the_runs_own_extras(void **state)
 	free(o);
 }
 
+/* A locked battery's loop (as every closing on real parts) reaches its
+ * mass fixed point without flying; sizing_finish() flies the mission from
+ * there.  Masses-only run and finish record what the whole run records,
+ * byte for byte, whether the pack flies the mission or falls short. */
+static void
+sizing_finish_should_record_what_the_whole_run_records(void **state)
+{
+	struct fixture *f = *state;
+	const struct model_data *md = &f->env.model;
+	static const double capacity_mah[] = { 16000.0, 2000.0 };
+	static const enum sizing_status want[] = { SIZING_CONVERGED,
+		SIZING_DISCHARGE_FAIL };
+	for (int i = 0; i < 2; i++) {
+		struct mission_spec s;
+		delivery_mission(&s);
+		SET(&s, LOCK_BATTERY, locks.is_battery_locked, true);
+		SET(&s, LOCK_CAPACITY_MAH, locks.locked_capacity_mah, capacity_mah[i]);
+		SET(&s, LOCK_CELL_COUNT, locks.locked_cell_count, 12);
+		struct sizing_params p;
+		engine_resolve(&s, md, NULL);
+		engine_params(&s, md, false, &p);
+		p.allow_relax = false;
+		struct res_run *whole = xcalloc(1, sizeof *whole);
+		struct res_run *split = xcalloc(1, sizeof *split);
+		enum sizing_status st = sizing_run(&p, whole);
+		assert_int_equal(st, want[i]);
+		p.masses_only = true;
+		assert_int_equal(sizing_run(&p, split), SIZING_CONVERGED);
+		assert_int_equal(split->n_trace, 0);
+		assert_true(split->mass.total_kg == whole->mass.total_kg);
+		assert_int_equal(sizing_finish(&p, split), st);
+		assert_true(split->n_trace > 0);
+		assert_memory_equal(split, whole, sizeof *whole);
+		free(split);
+		free(whole);
+	}
+}
+
 int
 main(void)
 {
@@ -423,6 +461,7 @@ main(void)
 		cmocka_unit_test_setup_teardown(sizing_run_should_keep_a_thrust_target_that_closes, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_run_should_not_stop_on_a_pack_the_fine_discharge_cannot_fly, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_complete_should_give_the_runs_own_extras, setup, teardown),
+		cmocka_unit_test_setup_teardown(sizing_finish_should_record_what_the_whole_run_records, setup, teardown),
 		cmocka_unit_test(sizing_shell_should_add_moulded_arm_fairings_to_the_body_box),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
