@@ -8,7 +8,9 @@
  * Parts selection (optim.c) runs on top when a catalogue is given.
  *
  * Engine layer: no JSON, PDF or cairo.  Reentrant: everything it touches is
- * in its arguments, so missions can be solved in parallel.
+ * in its arguments, so missions can be solved in parallel.  A solve runs
+ * the baseline's mass loop on a second thread of its own (POSIX threads;
+ * in line when none can be made): the result is the same either way.
  */
 #ifndef AEROEVAL_ENGINE_H
 #define AEROEVAL_ENGINE_H

@@ -37,7 +37,7 @@
 #include "xalloc.h"
 
 #ifndef SWEEP_N /* -DSWEEP_N=... -DSWEEP_PAIRS=... for a longer run */
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
 #define SWEEP_N 400
 #define SWEEP_PAIRS 15
 #define SWEEP_MAX_SOLVE_S 10.0
