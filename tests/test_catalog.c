@@ -4,6 +4,7 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <unistd.h>
 
 #define SHIPPED_DIR "data/catalog"
@@ -94,7 +95,10 @@ catalog_shipped_should_meet_the_coverage_targets(void **state)
 }
 
 /* Each entry's id, source and confidence, whatever its category. */
-struct meta { const char *id, *source, *confidence; bool usable; };
+struct meta {
+	const char *id, *source, *confidence, *manufacturer, *part_number;
+	bool usable;
+};
 
 static size_t
 collect_meta(const struct catalog *c, struct meta *out, size_t cap)
@@ -103,7 +107,8 @@ collect_meta(const struct catalog *c, struct meta *out, size_t cap)
 #define COLLECT(count, get)                                                   \
 	for (size_t i = 0; i < count(c) && n < cap; i++, n++) {                \
 		out[n] = (struct meta){ get(c, i)->id, get(c, i)->source,      \
-		                        get(c, i)->confidence, get(c, i)->usable }; \
+		    get(c, i)->confidence, get(c, i)->manufacturer,               \
+		    get(c, i)->part_number, get(c, i)->usable };                  \
 	}
 	COLLECT(catalog_n_motors, catalog_motor)
 	COLLECT(catalog_n_props, catalog_prop)
@@ -130,6 +135,25 @@ catalog_shipped_ids_should_be_unique_and_usable_entries_sourced(void **state)
 		assert_true(strcmp(all[i].confidence, "high") == 0 ||
 		            strcmp(all[i].confidence, "medium") == 0 ||
 		            strcmp(all[i].confidence, "low") == 0);
+	}
+	catalog_free(c);
+}
+
+/* The BOM, the dossier and the rationale print a part as "maker part
+ * number": a part number that starts with the maker's name reads
+ * "Tattu Tattu 7000mAh ..." there, and is not how the maker lists it. */
+static void
+catalog_shipped_part_numbers_should_not_repeat_the_maker(void **state)
+{
+	(void)state;
+	struct catalog *c = load_or_print(SHIPPED_DIR);
+	static struct meta all[2048];
+	size_t n = collect_meta(c, all, 2048);
+	for (size_t i = 0; i < n; i++) {
+		size_t k = strlen(all[i].manufacturer);
+		if (k > 0 && strncasecmp(all[i].part_number, all[i].manufacturer, k) == 0)
+			fail_msg("%s: part number \"%s\" repeats the maker \"%s\"",
+			    all[i].id, all[i].part_number, all[i].manufacturer);
 	}
 	catalog_free(c);
 }
@@ -379,6 +403,7 @@ main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(catalog_shipped_should_meet_the_coverage_targets),
 		cmocka_unit_test(catalog_shipped_ids_should_be_unique_and_usable_entries_sourced),
+		cmocka_unit_test(catalog_shipped_part_numbers_should_not_repeat_the_maker),
 		cmocka_unit_test(catalog_shipped_values_should_be_converted_to_si),
 		cmocka_unit_test(catalog_load_should_read_a_minimal_catalogue),
 		cmocka_unit_test(catalog_load_should_accept_a_caller_chemistry_list),
