@@ -1358,6 +1358,19 @@ esc_upsized(const struct closer *k, const struct optim_choice *c,
 	return true;
 }
 
+/* The closed run's checks into sr->closed and its violations into sr, as
+ * they stand for loop status st; returns the first failed parts check's
+ * name, or NULL. */
+static const char *
+check_closing(const struct closer *k, const struct sizing_params *p,
+              enum sizing_status st, const struct optim_choice *c,
+              struct solve_result *sr)
+{
+	sr->n_violations = 0;
+	feasibility_checks(p, st, "closed", &sr->closed, sr);
+	return parts_checks(p, c, k->custom, &sr->closed, sr);
+}
+
 /* The checks of a masses-only closing in sr (sizing_params.masses_only:
  * its mass fixed point on the real parts, before the mission's flights),
  * those that need no flight.  *n_bound gets how many failed checks more
@@ -1372,9 +1385,7 @@ bound_checks(const struct closer *k, const struct sizing_params *p,
              const struct optim_choice *c, struct solve_result *sr,
              int *n_bound)
 {
-	sr->n_violations = 0;
-	feasibility_checks(p, SIZING_CONVERGED, "closed", &sr->closed, sr);
-	parts_checks(p, c, k->custom, &sr->closed, sr);
+	check_closing(k, p, SIZING_CONVERGED, c, sr);
 	bool fails = false;
 	*n_bound = 0;
 	const struct res_run *o = &sr->closed;
@@ -1427,8 +1438,6 @@ close_choice(const struct closer *k, struct optim_choice *c,
 		p.masses_only = k->screened;
 		enum sizing_status st = sizing_run(&p, &sr->closed);
 		p.masses_only = false;
-		if (k->custom->time_scale > 0.0 && k->custom->time_scale < 1.0)
-			sr->closed.time_scale = k->custom->time_scale;
 		bool worse = false;
 		if (k->screened && st == SIZING_CONVERGED
 		    && closed_finite(&sr->closed)) {
@@ -1453,9 +1462,7 @@ close_choice(const struct closer *k, struct optim_choice *c,
 			if (k->custom->time_scale > 0.0 && k->custom->time_scale < 1.0)
 				sr->closed.time_scale = k->custom->time_scale;
 			*finite = closed_finite(&sr->closed);
-			sr->n_violations = 0;
-			feasibility_checks(&p, st, "closed", &sr->closed, sr);
-			parts_fail = parts_checks(&p, c, k->custom, &sr->closed, sr);
+			parts_fail = check_closing(k, &p, st, c, sr);
 			nf = n_failed(&sr->closed);
 		}
 		if (worse || (prev_failed >= 0 && nf >= prev_failed)) {
@@ -1936,7 +1943,6 @@ optim_select_search(const struct mission_spec *spec,
 	r->parts_selected = false;
 	r->n_bom = 0;
 	r->n_candidates = 0;
-	r->n_closings = 0;
 	r->n_screened_out = 0;
 	r->bom_mass_kg = 0.0;
 	r->bom_price_usd = 0.0;
@@ -2037,7 +2043,6 @@ optim_select_search(const struct mission_spec *spec,
 				r->n_screened_out++;
 				continue;
 			}
-			r->n_closings++;
 			if (fail == NULL && finite) {
 				use = cur;
 				use_st = st;
@@ -2074,7 +2079,6 @@ optim_select_search(const struct mission_spec *spec,
 			struct optim_choice c = ch[0];
 			bool skipped;
 			close_choice(&k, &c, &cur, &spare, -1, &skipped, &finite, &st);
-			r->n_closings++;
 			heaviest = cur->closed.mass.total_kg;
 		}
 		/* Real parts heavier than the aim: thrust, current, power and
@@ -2104,9 +2108,7 @@ optim_select_search(const struct mission_spec *spec,
 	struct sizing_params pu = p;
 	apply_parts(&pu, md, &use_t, &r->custom, &use_c);
 	use->terse = false;
-	use->n_violations = 0;
-	feasibility_checks(&pu, use_st, "closed", &use->closed, use);
-	parts_checks(&pu, &use_c, &r->custom, &use->closed, use);
+	check_closing(&k, &pu, use_st, &use_c, use);
 	r->closed = use->closed;
 	sizing_complete(&pu, &r->closed);
 	finite = finite && isfinite(r->closed.hover_endurance_s);

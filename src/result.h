@@ -268,8 +268,8 @@ struct solve_result {
 	double bom_price_usd;
 	int n_candidates;
 	struct res_candidate candidates[RES_MAX_CANDIDATES];
-	int n_closings;                /* combinations closed by the parts search */
-	int n_screened_out;            /* combinations its screen left unclosed */
+	int n_screened_out;            /* combinations the parts search's screen
+	                                * left unflown */
 
 	bool feasible;
 	/* violations keep run, stage and code only, no text: the parts
