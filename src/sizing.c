@@ -169,6 +169,14 @@ battery_fixed(const struct sizing_params *p)
 	return p->parts.active && p->parts.battery_kg > 0.0;
 }
 
+/* A capacity the loop does not choose (locked, or a catalogue battery):
+ * the masses then never depend on the mission's flights. */
+static bool
+capacity_given(const struct sizing_params *p)
+{
+	return p->capacity_locked || battery_fixed(p);
+}
+
 /* The battery that the loop state describes. */
 static void
 pack_of(const struct sizing_params *p, const struct eval *e,
@@ -665,7 +673,7 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 	 * masses do not depend on them, and what reads them (convergence,
 	 * the Aitken test, the record) asks for the ones it needs.  A free
 	 * capacity is re-targeted from every flight. */
-	bool lazy = p->capacity_locked || battery_fixed(p);
+	bool lazy = capacity_given(p);
 	struct loop_ring ring;
 	ring.steps = LOOP_STEPS;
 
@@ -811,7 +819,7 @@ lipschitz(const struct sizing_params *p, const struct loop_state *ls,
 	double ca = c_star, cb = c_star;
 	/* A locked or catalogue capacity ignores the re-targeted one: further
 	 * rounds would repeat the first exactly. */
-	int rounds = p->capacity_locked || battery_fixed(p) ? 1 : 3;
+	int rounds = capacity_given(p) ? 1 : 3;
 	for (int k = 0; k < rounds; k++) {
 		/* The masses come before the discharge in evaluate(): the last
 		 * round, whose capacity target nobody reads, needs no flight. */
@@ -1046,6 +1054,18 @@ marketing_endurance_s(const struct sizing_params *p, const struct eval *e,
 	    BATT_SOC_MIN);
 }
 
+/* The evaluation fin at the fixed point (m_star, c_star, ls) and the fixed
+ * point itself, into out. */
+static void
+record_at(const struct sizing_params *p, const struct eval *fin,
+          const struct loop_state *ls, double m_star, double c_star,
+          struct res_run *out)
+{
+	record_run(p, fin, ls, out);
+	out->fixed = (struct res_fixed_point){ m_star, c_star, ls->arm_width_m,
+	    ls->gamma_time, ls->cells };
+}
+
 /* What a run that reached its fixed point (m_star, c_star) at ls records:
  * the final evaluation fin, the fixed point, the Lipschitz constant and
  * the extras. */
@@ -1054,9 +1074,7 @@ record_fixed_point(const struct sizing_params *p, enum sizing_status st,
                    const struct eval *fin, const struct loop_state *ls,
                    double m_star, double c_star, struct res_run *out)
 {
-	record_run(p, fin, ls, out);
-	out->fixed = (struct res_fixed_point){ m_star, c_star, ls->arm_width_m,
-	    ls->gamma_time, ls->cells };
+	record_at(p, fin, ls, m_star, c_star, out);
 	out->lipschitz = lipschitz(p, ls, m_star, c_star);
 	if (!p->defer_extras)
 		out->hover_endurance_s = hover_endurance_s(p, fin, m_star);
@@ -1202,13 +1220,11 @@ sizing_run(const struct sizing_params *p_in, struct res_run *out)
 	}
 	/* The final evaluation at the fixed point keeps the full trace (the
 	 * loop's confirming evaluation when it made one: the same). */
-	if (p->masses_only && (p->capacity_locked || battery_fixed(p))) {
+	if (p->masses_only && capacity_given(p)) {
 		/* The evaluation the full run's confirming flight starts with;
 		 * sizing_finish() goes on from here. */
 		evaluate_masses(p, &ls, m_star, c_star, true, out, &fin);
-		record_run(p, &fin, &ls, out);
-		out->fixed = (struct res_fixed_point){ m_star, c_star,
-		    ls.arm_width_m, ls.gamma_time, ls.cells };
+		record_at(p, &fin, &ls, m_star, c_star, out);
 		return st;
 	}
 	if (!fin_done)
