@@ -8,7 +8,7 @@
 #include "units.h"
 
 #define MIN_STEPS_PER_PHASE 4
-#define ENDURANCE_STEPS     240   /* steps of an endurance run */
+#define ENDURANCE_STEPS     60    /* steps of an endurance run */
 #define ENDURANCE_MAX_STEPS 4000  /* hard bound, whatever the estimate */
 
 const char *const discharge_end_text[DIS_END_MAX] = {
@@ -50,34 +50,80 @@ step_init(const struct discharge_pack *p, double hac_w_k, double ambient_c,
 	therm_step_init(hac_w_k, p->mass_kg, dt_s, &sc->ts);
 }
 
-/* One step: draw power_w for sc->dt_s.  Returns DIS_COMPLETED when the step
- * was flown, another end code when it was not. */
+/* What one step gives: the mean current over it (the charge and the heat
+ * it draws), and the values at its start and end (the trace, the peak
+ * current and the lowest terminal voltage). */
+struct step_out {
+	double i_a;                  /* mean current over the step */
+	double i0_a, v_oc0_v, v_term0_v; /* at its start */
+	double i1_a, v_oc1_v, v_term1_v; /* at its end */
+};
+
+/* The pack's current, open-circuit and terminal voltage at (soc, temp_c)
+ * with b_eff at c_rate, drawing power_w.  DIS_COMPLETED when the pack can
+ * deliver it, else the end code. */
 static inline enum discharge_end
-step(const struct step_ctx *sc, double power_w, struct cell_state *st,
-     double *current_a, double *v_oc_v, double *v_term_v)
+pack_draw(const struct step_ctx *sc, double power_w, double soc, double temp_c,
+          double c_rate, double *i_a, double *v_oc_v, double *v_term_v,
+          double *r_sys_ohm)
 {
 	const struct discharge_pack *p = sc->p;
-	double dt_s = sc->dt_s;
-	double r_sys = batt_r_sys_at(&sc->rs, st->temp_c);
-	double r_esc = sc->rs.r_esc_ohm;
-	double v_oc = (double)p->cells * batt_ocv_cell(p->chem, st->soc, st->c_rate);
-	double i;
-	enum batt_status bs = batt_current_a(v_oc, r_sys, power_w, &i);
+	double r_sys = batt_r_sys_at(&sc->rs, temp_c);
+	double v_oc = (double)p->cells * batt_ocv_cell(p->chem, soc, c_rate);
+	enum batt_status bs = batt_current_a(v_oc, r_sys, power_w, i_a);
 	if (bs == BATT_OVERFLOW)
 		return DIS_OVERFLOW;
 	if (bs == BATT_COLLAPSE)
 		return DIS_COLLAPSE;
-	double v_term = v_oc - i * r_sys;
-	*current_a = i;
 	*v_oc_v = v_oc;
-	*v_term_v = v_term;
-	if (v_term < (double)p->cells * p->chem->v_cutoff)
+	*v_term_v = v_oc - *i_a * r_sys;
+	*r_sys_ohm = r_sys;
+	if (*v_term_v < (double)p->cells * p->chem->v_cutoff)
 		return DIS_VOLTAGE_FLOOR;
+	return DIS_COMPLETED;
+}
+
+/* One step: draw power_w for sc->dt_s, by Heun's predictor-corrector: the
+ * start's current predicts the end of the step, and the mean of the
+ * currents (and heats) at both ends moves the state.  It is second order:
+ * 30 steps over a mission come within 3e-5 of the converged charge, where
+ * explicit Euler needs thousands.  Returns DIS_COMPLETED when the step was
+ * flown, else the end code (a limit reached at either end: the step is
+ * then not flown). */
+static inline enum discharge_end
+step(const struct step_ctx *sc, double power_w, struct cell_state *st,
+     struct step_out *so)
+{
+	const struct discharge_pack *p = sc->p;
+	double dt_s = sc->dt_s;
+	double r_esc = sc->rs.r_esc_ohm;
+	double r0, r1;
+	enum discharge_end e = pack_draw(sc, power_w, st->soc, st->temp_c,
+	    st->c_rate, &so->i0_a, &so->v_oc0_v, &so->v_term0_v, &r0);
+	if (e != DIS_COMPLETED) {
+		/* The end is the start: nothing was flown. */
+		so->i1_a = so->i0_a;
+		so->v_oc1_v = so->v_oc0_v;
+		so->v_term1_v = so->v_term0_v;
+		return e;
+	}
+	double i0 = so->i0_a;
 	/* Only the cells heat the pack; the MOSFET loss stays in the ESC. */
-	double heat_w = i * i * (r_sys - r_esc);
-	st->temp_c = therm_step_apply(&sc->ts, st->temp_c, sc->ambient_c, heat_w);
-	st->soc -= i * dt_s / (S_PER_H * p->capacity_ah);
-	st->c_rate = i / p->capacity_ah;
+	double heat0_w = i0 * i0 * (r0 - r_esc);
+	double temp_pred_c = therm_step_apply(&sc->ts, st->temp_c, sc->ambient_c,
+	    heat0_w);
+	double soc_pred = st->soc - i0 * dt_s / (S_PER_H * p->capacity_ah);
+	e = pack_draw(sc, power_w, soc_pred, temp_pred_c, i0 / p->capacity_ah,
+	    &so->i1_a, &so->v_oc1_v, &so->v_term1_v, &r1);
+	if (e != DIS_COMPLETED)
+		return e;
+	double i1 = so->i1_a;
+	double heat1_w = i1 * i1 * (r1 - r_esc);
+	so->i_a = 0.5 * (i0 + i1);
+	st->temp_c = therm_step_apply(&sc->ts, st->temp_c, sc->ambient_c,
+	    0.5 * (heat0_w + heat1_w));
+	st->soc -= so->i_a * dt_s / (S_PER_H * p->capacity_ah);
+	st->c_rate = i1 / p->capacity_ah;
 	if (st->temp_c > THERM_RUNAWAY_C)
 		return DIS_THERMAL;
 	if (st->soc <= BATT_SOC_MIN)
@@ -109,10 +155,10 @@ record(struct res_sample *trace, int max_trace, int *n_trace, double t,
  * computed exactly at the mid-step mass of the ends and the middle of each
  * stretch of SPRAY_NODE steps and interpolated by the parabola through
  * them in between (within 1e-7 of the power computed at every step, far
- * below the time step's own error, for a quarter of the rotor solves).  A
+ * below the time step's own error, for half the rotor solves).  A
  * stretch where the tank runs dry is not linear in mass: its steps are
  * computed one by one. */
-#define SPRAY_NODE 8
+#define SPRAY_NODE 4
 
 struct power_track {
 	const struct discharge_mission *mis;
@@ -182,6 +228,25 @@ spray_power_w(struct power_track *pt, int k, double *mass_kg)
 	    + pt->p1_w * (x - x0) * (x - xm) / ((x1 - x0) * (x1 - xm));
 }
 
+/* The electrical power at one mass, remembered for the next call. */
+struct power_memo {
+	double mass_kg;        /* -1: none yet */
+	double power_w;
+};
+
+static double
+memo_power_w(const struct discharge_mission *mis, double v_climb_ms,
+             double v_fwd_ms, struct power_memo *pm, double mass_kg)
+{
+	if (pm->mass_kg != mass_kg) {
+		struct mission_power pw;
+		mission_power(mis->model, mass_kg, v_climb_ms, v_fwd_ms, &pw);
+		pm->mass_kg = mass_kg;
+		pm->power_w = pw.electrical_w;
+	}
+	return pm->power_w;
+}
+
 void
 discharge_run(const struct discharge_pack *pack,
               const struct discharge_mission *mis, int steps,
@@ -220,53 +285,67 @@ discharge_run(const struct discharge_pack *pack,
 		double v_fwd = ph == PHASE_FORWARD ? mis->speed_ms[ph] : 0.0;
 		struct power_track pt = { mis, v_climb, v_fwd, t, dt, n, -1, -1, -1,
 		    false, 0.0, 0.0, 0.0 };
-		struct mission_power pw;
 		double mass = mis->dry_mass_kg + role_payload_at(&mis->shed, t);
-		mission_power(mis->model, mass, v_climb, v_fwd, &pw);
-		double pw_mass = mass; /* the mass pw was computed for */
-		double power_w = pw.electrical_w;
+		struct power_memo pm = { -1.0, 0.0 };
+		double power_w = memo_power_w(mis, v_climb, v_fwd, &pm, mass);
 		double e_wh = 0.0, q_ah = 0.0, p_sum = 0.0;
 		int flown = 0;
 		for (int k = 0; k < n; k++) {
 			if (mis->shed.kind == SHED_DROP) {
-				/* Mid-step mass: the payload shed during the step.  A
-				 * drop leaves the mass constant between steps: the
-				 * power (a pure function of it) is then reused. */
+				/* The power is a pure function of the mass, which a
+				 * drop changes at one instant: a step that holds the
+				 * drop draws each mass's power for its share of the
+				 * step (its energy is then exact), and between drops
+				 * the power is reused. */
+				double m0 = mis->dry_mass_kg + role_payload_at(&mis->shed, t);
+				double m1 = mis->dry_mass_kg
+				    + role_payload_at(&mis->shed, t + dt);
 				mass = mis->dry_mass_kg
 				    + role_payload_at(&mis->shed, t + 0.5 * dt);
-				if (mass != pw_mass) {
-					mission_power(mis->model, mass, v_climb, v_fwd, &pw);
-					pw_mass = mass;
-					power_w = pw.electrical_w;
+				double p0 = memo_power_w(mis, v_climb, v_fwd, &pm, m0);
+				power_w = p0;
+				if (m1 != m0) {
+					double before = (mis->shed.drop_time_s - t) / dt;
+					before = before < 0.0 ? 0.0 : before > 1.0 ? 1.0 : before;
+					double p1 = memo_power_w(mis, v_climb, v_fwd, &pm, m1);
+					power_w = before * p0 + (1.0 - before) * p1;
 				}
 			} else if (mis->shed.kind == SHED_SPRAY) {
 				power_w = spray_power_w(&pt, k, &mass);
 			}
-			double i = 0.0, v_oc = 0.0, v_term = 0.0;
-			enum discharge_end e = step(&sc, power_w, &st, &i, &v_oc,
-			    &v_term);
+			struct step_out so;
+			enum discharge_end e = step(&sc, power_w, &st, &so);
 			if (e == DIS_OVERFLOW || e == DIS_COLLAPSE) {
 				out->end = e;
 				break;
 			}
 			if (first) {
 				record(trace, max_trace, n_trace, 0.0, &(struct cell_state){ 1.0, mis->ambient_c, 0.0 },
-				    v_oc, v_term, i, power_w, mass, ph);
+				    so.v_oc0_v, so.v_term0_v, so.i0_a, power_w, mass, ph);
 				first = false;
+			}
+			/* Both ends of the step count for the extremes: the end
+			 * of the last step is the mission's lowest voltage. */
+			double i_hi = so.i1_a > so.i0_a ? so.i1_a : so.i0_a;
+			double v_lo = so.v_term1_v < so.v_term0_v ? so.v_term1_v : so.v_term0_v;
+			if (i_hi > out->peak_current_a)
+				out->peak_current_a = i_hi;
+			if (v_lo < out->min_v_term_v)
+				out->min_v_term_v = v_lo;
+			if (e == DIS_VOLTAGE_FLOOR) {
+				/* Not flown: the floor came within the step. */
+				out->end = e;
+				break;
 			}
 			t += dt;
 			flown++;
 			e_wh += power_w * dt / S_PER_H;
-			q_ah += i * dt / S_PER_H;
+			q_ah += so.i_a * dt / S_PER_H;
 			p_sum += power_w;
-			if (i > out->peak_current_a)
-				out->peak_current_a = i;
-			if (v_term < out->min_v_term_v)
-				out->min_v_term_v = v_term;
 			if (st.temp_c > out->peak_temp_c)
 				out->peak_temp_c = st.temp_c;
-			record(trace, max_trace, n_trace, t, &st, v_oc, v_term, i,
-			    power_w, mass, ph);
+			record(trace, max_trace, n_trace, t, &st, so.v_oc1_v, so.v_term1_v,
+			    so.i1_a, power_w, mass, ph);
 			if (e != DIS_COMPLETED) {
 				out->end = e;
 				break;
@@ -317,10 +396,9 @@ discharge_hover_endurance_steps_s(const struct discharge_pack *pack,
 	    dt, &sc);
 	double t = 0.0;
 	for (int k = 0; k < ENDURANCE_MAX_STEPS; k++) {
-		double i, v_oc, v_term;
+		struct step_out so;
 		double soc0 = st.soc;
-		enum discharge_end e = step(&sc, pw.electrical_w, &st, &i, &v_oc,
-		    &v_term);
+		enum discharge_end e = step(&sc, pw.electrical_w, &st, &so);
 		if (e == DIS_OVERFLOW || e == DIS_COLLAPSE || e == DIS_VOLTAGE_FLOOR)
 			return t;
 		if (st.soc <= reserve_soc) {

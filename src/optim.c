@@ -468,7 +468,8 @@ pick_battery(const struct optim_target *t, const struct catalog *cat,
 		const struct catalog_battery *best = NULL;
 		int best_np = 0;
 		double best_kg = 0.0;
-		for (size_t i = 0; i < catalog_n_batteries(cat); i++) {
+		size_t nb = catalog_n_batteries(cat);
+		for (size_t i = 0; i < nb; i++) {
 			const struct catalog_battery *b = catalog_battery(cat, i);
 			if (!b->usable || b->chemistry[0] == '\0' || b->cells_series < 1)
 				continue;
@@ -651,19 +652,21 @@ option_fails(struct rank_ctx *x, bool eligible, enum optim_reason why)
 }
 
 /* One motor + propeller option on one bus that passed every limit the
- * locks leave (and was counted by option_fails): score it, keep it. */
-static void
+ * locks leave (and was counted by option_fails): score it, keep it.  rc is
+ * the motor's candidate, NULL when none is recorded.  Inline: it is the
+ * search's inner loop, and most options stop after the score. */
+static inline __attribute__((always_inline)) void
 rank_option(struct rank_ctx *x, const struct bus_offer *bus,
             const struct catalog_motor *m, const struct motor_on_bus *mb,
-            const struct catalog_prop *p, double j_diameter, double j_pitch,
-            double theta, bool eligible, struct esc_pick *ep)
+            struct res_candidate *rc, const struct catalog_prop *p,
+            double j_diameter, double j_pitch, double theta, bool eligible,
+            struct esc_pick *ep)
 {
 	const struct optim_target *t = x->t;
 	/* j_score_at()'s sum, from the terms computed once each. */
 	bool pitched = p != NULL && p->pitch_in > 0.0;
 	double j = j_sum(j_diameter, mb->j_kv, j_pitch, j_throttle_term(t, theta),
 	    mb->j_mass[pitched], x->j_cruise);
-	struct res_candidate *rc = x->cand != NULL && x->slot >= 0 ? &x->cand[x->slot] : NULL;
 	if (rc != NULL && j < rc->j_score)
 		rc->j_score = j;
 	if (!m->integrated && !ep->done)
@@ -774,6 +777,7 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 	bool motor_locked = is_lock(lk->motor, m->id);
 	bool motor_ok = lk->motor == NULL || motor_locked;
 	bool has_cand = x->cand != NULL && x->slot >= 0;
+	struct res_candidate *rc = has_cand ? &x->cand[x->slot] : NULL;
 	unsigned own = motor_mask(t, bus->cells, m);
 	struct motor_on_bus mb;
 	double theta;
@@ -844,8 +848,8 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 						why = OPTIM_CANNOT_HOVER;
 				}
 				if (!option_fails(x, motor_ok, why))
-					rank_option(x, bus, m, &mb, rp->p, rp->j_diameter,
-					    rp->j_pitch, theta, motor_ok, &ep);
+					rank_option(x, bus, m, &mb, rc, rp->p,
+					    rp->j_diameter, rp->j_pitch, theta, motor_ok, &ep);
 			}
 			return;
 		}
@@ -858,7 +862,7 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 			unsigned ignored = eligible ? locked_mask(motor_locked, rp->locked) : 0;
 			unsigned mask = own | pair_mask(t, m, rp->p, &rp->aim, mb.rpm, &theta);
 			if (!option_fails(x, eligible, first_reason(mask & ~ignored)))
-				rank_option(x, bus, m, &mb, rp->p, rp->j_diameter,
+				rank_option(x, bus, m, &mb, rc, rp->p, rp->j_diameter,
 				    rp->j_pitch, theta, eligible, &ep);
 		}
 	} else {
@@ -873,7 +877,7 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 		unsigned ignored = eligible ? locked_mask(motor_locked, motor_locked) : 0;
 		unsigned mask = own | pair_mask(t, m, NULL, &a, mb.rpm, &theta);
 		if (!option_fails(x, eligible, first_reason(mask & ~ignored)))
-			rank_option(x, bus, m, &mb, NULL, j_diameter_term(t, a.d_in),
+			rank_option(x, bus, m, &mb, rc, NULL, j_diameter_term(t, a.d_in),
 			    0.0, theta, eligible, NULL);
 	}
 }

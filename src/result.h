@@ -14,7 +14,7 @@
 #include "spec.h"
 
 #define RES_MAX_HISTORY    256  /* mass-loop iterations kept */
-#define RES_MAX_TRACE      256  /* discharge samples kept */
+#define RES_MAX_TRACE      80   /* discharge samples kept (FINAL_STEPS + 13) */
 #define RES_MAX_SWEEP      64   /* power-vs-speed points (1..30 m/s by 0.5) */
 #define RES_MAX_ENDURANCE  32   /* endurance-explorer points */
 #define RES_MAX_CHECKS     24

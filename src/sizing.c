@@ -14,11 +14,11 @@
 #include "therm.h"
 #include "units.h"
 
-#define LOOP_STEPS        120   /* discharge steps per loop iteration */
+#define LOOP_STEPS        30    /* discharge steps per loop iteration */
 /* Steps of the final, recorded flight: twice the loop's, so a limit the
  * loop's steps hide shows; each phase's count rounds down and is floored
  * at 4, so the trace holds at most FINAL_STEPS + 13 samples. */
-#define FINAL_STEPS       240
+#define FINAL_STEPS       60
 _Static_assert(FINAL_STEPS + 13 <= RES_MAX_TRACE, "trace buffer too small");
 #define BLADE_INCIDENCE_DEG 4.0 /* best-L/D incidence at blade Reynolds numbers */
 #define S_SCALE_LO_KG     0.3   /* S_scale = 0.25 below this M_ref */
@@ -29,7 +29,7 @@ _Static_assert(FINAL_STEPS + 13 <= RES_MAX_TRACE, "trace buffer too small");
 #define GAMMA_BISECT      8     /* bisection steps of the goal relaxation */
 #define ENDURANCE_SCALES  RES_MAX_ENDURANCE
 #define EXPLORER_MAX_ITER 80
-#define EXPLORER_ENDURANCE_STEPS 60 /* a curve, not the design point */
+#define EXPLORER_ENDURANCE_STEPS 30 /* a curve, not the design point */
 
 /* Loop state carried from one iteration to the next. */
 struct loop_state {
