@@ -567,6 +567,7 @@ struct rank_prop {
 	bool over;                     /* above the overlap limit */
 	struct prop_aim aim;
 	double j_diameter, j_pitch;    /* its J terms */
+	double max_rpm;                /* p->max_rpm, 0 unknown */
 };
 
 /* What one motor on one bus brings to each of its options. */
@@ -835,21 +836,29 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 			if (!motor_ok && !has_cand)
 				return;
 			/* What is left can fail only the propeller's rpm limit or
-			 * hover (pair_mask()'s last two reasons, in its order). */
+			 * hover (pair_mask()'s last two reasons, in its order).
+			 * The census counts are kept here and added once. */
 			struct esc_pick ep = { false, NULL, 0 };
+			double n_max_rps = mb.rpm / S_PER_MIN;
+			int n_rpm = 0, n_hover = 0;
 			for (size_t j = 0; j < n; j++) {
 				const struct rank_prop *rp = v[j];
-				enum optim_reason why = OPTIM_OK;
-				if (rp->p->max_rpm > 0.0 && mb.rpm > rp->p->max_rpm) {
-					why = OPTIM_PROP_RPM;
-				} else {
-					theta = hover_theta(rp->aim.n_hover_rps, mb.rpm / S_PER_MIN);
-					if (!(theta < 1.0))
-						why = OPTIM_CANNOT_HOVER;
+				if (rp->max_rpm > 0.0 && mb.rpm > rp->max_rpm) {
+					n_rpm++;
+					continue;
 				}
-				if (!option_fails(x, motor_ok, why))
-					rank_option(x, bus, m, &mb, rc, rp->p,
-					    rp->j_diameter, rp->j_pitch, theta, motor_ok, &ep);
+				theta = hover_theta(rp->aim.n_hover_rps, n_max_rps);
+				if (!(theta < 1.0)) {
+					n_hover++;
+					continue;
+				}
+				rank_option(x, bus, m, &mb, rc, rp->p, rp->j_diameter,
+				    rp->j_pitch, theta, motor_ok, &ep);
+			}
+			if (motor_ok) {
+				x->cs->n_examined += (int)n;
+				x->cs->n_fail[OPTIM_PROP_RPM] += n_rpm;
+				x->cs->n_fail[OPTIM_CANNOT_HOVER] += n_hover;
 			}
 			return;
 		}
@@ -958,6 +967,7 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 		rp->over = over_overlap(t, rp->aim.d_in);
 		rp->j_diameter = j_diameter_term(t, rp->aim.d_in);
 		rp->j_pitch = j_pitch_term(t, p->pitch_in);
+		rp->max_rpm = p->max_rpm;
 		x.n_lock_ok += rp->lock_ok;
 		all[x.n_props++] = rp;
 		if (!rp->over || rp->locked)
