@@ -454,39 +454,68 @@ parallel_needed(const struct catalog_battery *b, double need_ah, double need_a)
 	return n > 1000.0 ? 1000 : (int)n;
 }
 
-/* The lightest battery of catalogue packs that builds `cells` in series and
- * holds need_ah at need_a within the continuous C rating, of chemistry
+/* The packs a pick chooses from: the usable catalogue packs (the locked
+ * one alone when one is locked), each with its chemistry family.  Built
+ * once for a search's many picks. */
+struct pack_list {
+	const struct catalog_battery **b;
+	const char **family;
+	size_t n;
+	bool locked;
+};
+
+static void
+pack_list_init(const struct catalog *cat, const char *lock, struct pack_list *pl)
+{
+	size_t nb = catalog_n_batteries(cat);
+	pl->b = xmalloc((nb > 0 ? nb : 1) * sizeof *pl->b);
+	pl->family = xmalloc((nb > 0 ? nb : 1) * sizeof *pl->family);
+	pl->n = 0;
+	pl->locked = lock != NULL;
+	for (size_t i = 0; i < nb; i++) {
+		const struct catalog_battery *b = catalog_battery(cat, i);
+		if (!b->usable || b->chemistry[0] == '\0' || b->cells_series < 1)
+			continue;
+		if (lock != NULL && strcmp(b->id, lock) != 0)
+			continue;
+		pl->family[pl->n] = chem_family(b->chemistry);
+		pl->b[pl->n++] = b;
+	}
+}
+
+static void
+pack_list_free(struct pack_list *pl)
+{
+	free(pl->b);
+	free(pl->family);
+}
+
+/* The lightest battery of the packs of pl that builds `cells` in series
+ * and holds need_ah at need_a within the continuous C rating, of chemistry
  * family `keep` when given, else the mission's family when one exists.
  * Fills c->battery and the pack counts; false if none. */
 static bool
-pick_battery(const struct optim_target *t, const struct catalog *cat,
-             const char *lock, int cells, double need_ah, double need_a,
-             const char *keep, struct optim_choice *c)
+pick_battery(const struct optim_target *t, const struct pack_list *pl,
+             int cells, double need_ah, double need_a, const char *keep,
+             struct optim_choice *c)
 {
 	const char *fam = keep != NULL ? keep : chem_family(t->chemistry);
 	for (int pass = 0; pass < (keep != NULL ? 1 : 2); pass++) {
 		const struct catalog_battery *best = NULL;
 		int best_np = 0;
 		double best_kg = 0.0;
-		size_t nb = catalog_n_batteries(cat);
-		for (size_t i = 0; i < nb; i++) {
-			const struct catalog_battery *b = catalog_battery(cat, i);
-			if (!b->usable || b->chemistry[0] == '\0' || b->cells_series < 1)
-				continue;
-			if (lock != NULL && strcmp(b->id, lock) != 0)
-				continue;
+		for (size_t i = 0; i < pl->n; i++) {
+			const struct catalog_battery *b = pl->b[i];
 			if (cells % b->cells_series != 0)
 				continue;
 			int ns = cells / b->cells_series;
-			if (ns > OPTIM_MAX_SERIES && lock == NULL)
+			if (ns > OPTIM_MAX_SERIES && !pl->locked)
 				continue;
-			/* The family test last: it is the dearest filter (string
-			 * compares), and only the first pass applies it. */
-			if (pass == 0 && strcmp(chem_family(b->chemistry), fam) != 0)
+			if (pass == 0 && strcmp(pl->family[i], fam) != 0)
 				continue;
 			int np = parallel_needed(b, need_ah, need_a);
 			if (np > OPTIM_MAX_PARALLEL) {
-				if (lock == NULL)
+				if (!pl->locked)
 					continue;
 				np = OPTIM_MAX_PARALLEL; /* honoured; the checks report it */
 			}
@@ -577,6 +606,13 @@ struct motor_on_bus {
 	double j_mass[2];              /* [pitched]: see j_mass_term() */
 };
 
+/* Where a motor's recommended propeller range starts and ends in the
+ * diameter-sorted propellers within the overlap limit. */
+struct range_cut {
+	bool done;
+	size_t first, end;
+};
+
 /* An ESC set that suits the bus being ranked, the motor's burst aside. */
 struct esc_offer {
 	const struct catalog_esc *e;
@@ -604,6 +640,8 @@ struct rank_ctx {
 	const struct esc_offer *escs;  /* with no ESC locked: the sets that
 	                                  suit this bus, lightest first */
 	size_t n_escs;
+	struct range_cut *cuts;        /* per motor, in catalogue order */
+	struct range_cut *cut;         /* the motor being ranked */
 	double j_cruise;               /* the J term common to every option */
 };
 
@@ -813,10 +851,15 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 			 * motor's range (the next reason) lead and trail, and
 			 * are counted at once.  The census, the candidates and
 			 * the kept choices do not depend on the order. */
-			size_t first = range_cut(m, v, n, true);
-			size_t end = range_cut(m, v, n, false);
-			if (end < first)
-				end = first; /* a range with min > max: all fail */
+			struct range_cut *rc_m = x->cut;
+			if (!rc_m->done) {
+				rc_m->first = range_cut(m, v, n, true);
+				rc_m->end = range_cut(m, v, n, false);
+				if (rc_m->end < rc_m->first)
+					rc_m->end = rc_m->first; /* min > max: all fail */
+				rc_m->done = true;
+			}
+			size_t first = rc_m->first, end = rc_m->end;
 			if (motor_ok) {
 				int out = (int)(n - (end - first));
 				x->cs->n_examined += out;
@@ -979,35 +1022,53 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 		qsort(fit, x.n_fit, sizeof *fit, rank_prop_cmp);
 	x.props = all;
 	x.fit = fit;
+	/* The ESC sets in pick_esc's order (lightest, then by id: a set's
+	 * mass does not depend on the bus), filtered for each bus below. */
 	size_t ne = catalog_n_escs(cat);
+	struct esc_offer *all_escs = xmalloc((ne > 0 ? ne : 1) * sizeof *all_escs);
 	struct esc_offer *escs = xmalloc((ne > 0 ? ne : 1) * sizeof *escs);
+	size_t n_all_escs = 0;
+	for (size_t i = 0; i < ne && x.lk->esc == NULL; i++) {
+		const struct catalog_esc *e = catalog_esc(cat, i);
+		if (!e->usable)
+			continue;
+		all_escs[n_all_escs].e = e;
+		all_escs[n_all_escs].kg = (double)esc_boards(t, e) * e->mass_kg;
+		n_all_escs++;
+	}
+	qsort(all_escs, n_all_escs, sizeof *all_escs, esc_offer_cmp);
 	x.escs = escs;
+	/* The packs every bus picks from, filtered once. */
+	struct pack_list packs;
+	pack_list_init(cat, x.lk->battery, &packs);
+	/* Each motor's recommended propeller range, cut once (it does not
+	 * depend on the bus). */
+	x.cuts = xmalloc((nm > 0 ? nm : 1) * sizeof *x.cuts);
+	for (size_t i = 0; i < nm; i++)
+		x.cuts[i].done = false;
 
 	for (int s = t->cells_lo; s <= t->cells_hi; s++) {
 		struct bus_offer bus;
 		memset(&bus, 0, sizeof bus);
 		bus.cells = s;
-		bus.have_battery = pick_battery(t, cat, x.lk->battery, s,
-		    at_bus(t, t->capacity_ah, s), at_bus(t, t->bus_peak_current_a, s),
-		    NULL, &bus.battery);
+		bus.have_battery = pick_battery(t, &packs, s, at_bus(t, t->capacity_ah, s),
+		    at_bus(t, t->bus_peak_current_a, s), NULL, &bus.battery);
 		x.n_escs = 0;
-		for (size_t i = 0; i < ne && x.lk->esc == NULL; i++) {
-			const struct catalog_esc *e = catalog_esc(cat, i);
-			if (!e->usable || !esc_fits_bus(t, s, e))
-				continue;
-			escs[x.n_escs].e = e;
-			escs[x.n_escs].kg = (double)esc_boards(t, e) * e->mass_kg;
-			x.n_escs++;
-		}
-		qsort(escs, x.n_escs, sizeof *escs, esc_offer_cmp);
+		for (size_t i = 0; i < n_all_escs; i++)
+			if (esc_fits_bus(t, s, all_escs[i].e))
+				escs[x.n_escs++] = all_escs[i];
 		for (size_t i = 0; i < nm; i++) {
 			const struct catalog_motor *m = catalog_motor(cat, i);
 			if (!m->usable)
 				continue;
 			x.slot = slot[i];
+			x.cut = &x.cuts[i];
 			rank_motor(&x, &bus, m);
 		}
 	}
+	free(x.cuts);
+	pack_list_free(&packs);
+	free(all_escs);
 	free(escs);
 	free(fit);
 	free(all);
@@ -1340,6 +1401,7 @@ struct closer {
 	const struct optim_locks *lk;
 	const struct res_run *custom;
 	bool screened;                   /* OPTIM_SEARCH_SCREENED */
+	const struct pack_list *packs;   /* what an upsized battery is picked from */
 };
 
 /* Swap two result buffers. */
@@ -1504,8 +1566,8 @@ close_choice(const struct closer *k, struct optim_choice *c,
 			/* The larger pack keeps the chemistry (and so the cell
 			 * profile) of the one it replaces. */
 			struct optim_choice b = *c;
-			if (pick_battery(k->t, k->cat, k->lk->battery, c->cells, need_ah,
-			    need_a, chem_family(c->battery->chemistry), &b)
+			if (pick_battery(k->t, k->packs, c->cells, need_ah, need_a,
+			    chem_family(c->battery->chemistry), &b)
 			    && (b.battery != c->battery
 			    || b.parallel_packs != c->parallel_packs)) {
 				up = b;
@@ -2012,8 +2074,10 @@ optim_select_search(const struct mission_spec *spec,
 	 * the continuous design; re-aim at the real-parts mass when none does;
 	 * else keep the one with the fewest failed checks and report it. */
 	struct optim_target tr = t;
+	struct pack_list packs;
+	pack_list_init(cat, lk.battery, &packs);
 	struct closer k = { &p, md, &tr, cat, &lk, &r->custom,
-		search == OPTIM_SEARCH_SCREENED };
+		search == OPTIM_SEARCH_SCREENED, &packs };
 	/* Trial buffers: each try writes all it reads of its result (see
 	 * close_choice()), and keeps its violations' codes only. */
 	struct solve_result *fb = xmalloc(sizeof *fb);
@@ -2139,6 +2203,7 @@ optim_select_search(const struct mission_spec *spec,
 		    use_c.series_packs * use_c.parallel_packs, use_c.battery->id, failed);
 	}
 	locked_limits(&use_t, &lk, &use_c, r);
+	pack_list_free(&packs);
 	free(fb);
 	free(cur);
 	free(spare);
