@@ -547,13 +547,6 @@ next_cells(const struct sizing_params *p, int cells, double peak_w,
 	return cells;
 }
 
-/* Discharge steps of the final record. */
-static int
-final_steps(const struct sizing_params *p)
-{
-	return p->trace_steps > 0 ? p->trace_steps : FINAL_STEPS;
-}
-
 /* Zero *out but its trace samples: they are most of its size, only the
  * first n_trace are ever read, and each recording writes those. */
 static void
@@ -587,7 +580,7 @@ confirm(const struct sizing_params *p, const struct loop_state *ls,
 {
 	if (rec != NULL)
 		clear_record(rec);
-	evaluate(p, ls, mass_kg, capacity_ah, final_steps(p), rec, fin);
+	evaluate(p, ls, mass_kg, capacity_ah, FINAL_STEPS, rec, fin);
 }
 
 /* The loop's evaluations of the last three iterations, and what is known of
@@ -749,12 +742,12 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 					confirm(p, &ls, m, e->capacity_ah, rec, fin);
 					*fin_done = true;
 					flown = fin->dis.end == DIS_COMPLETED;
-					if (!flown && !lazy && ring.steps != final_steps(p)) {
+					if (!flown && !lazy && ring.steps != FINAL_STEPS) {
 						/* The coarse steps hid a voltage or
 						 * thermal limit at the edge: go on at
 						 * the final resolution, with this
 						 * capacity as failed. */
-						ring.steps = final_steps(p);
+						ring.steps = FINAL_STEPS;
 						c_failed = fmax(c_failed, e->capacity_ah);
 						c = fmax(c, SIZING_RATCHET * c_failed);
 						*fin_done = false;
@@ -1228,7 +1221,7 @@ sizing_run(const struct sizing_params *p_in, struct res_run *out)
 		return st;
 	}
 	if (!fin_done)
-		evaluate(p, &ls, m_star, c_star, final_steps(p), out, &fin);
+		evaluate(p, &ls, m_star, c_star, FINAL_STEPS, out, &fin);
 	record_fixed_point(p, st, &fin, &ls, m_star, c_star, out);
 	return st;
 }

@@ -184,7 +184,6 @@ struct sizing_params {
 	bool masses_only;
 	/* numerics */
 	int max_iter;
-	int trace_steps;             /* discharge steps of the final run */
 };
 
 /* Size one run.  Fills *out completely (history, masses, phases, trace,
