@@ -268,6 +268,14 @@ above_range(const struct catalog_motor *m, double d_in)
 	return m->prop_max_in > 0.0 && d_in > m->prop_max_in + RANGE_TOL_IN;
 }
 
+/* Tip Mach number of propeller a at rpm (pair_mask() and mach_cut() must
+ * agree to the bit). */
+static double
+tip_mach(const struct optim_target *t, const struct prop_aim *a, double rpm)
+{
+	return a->tip_m * rpm / S_PER_MIN / t->sound_m_s;
+}
+
 /* The limits of the motor on its propeller (p NULL: an integrated system),
  * bits OPTIM_PROP_OVERLAP..OPTIM_CANNOT_HOVER; rpm is the motor's
  * full_rpm() on the bus, *theta gets the hover throttle. */
@@ -282,8 +290,7 @@ pair_mask(const struct optim_target *t, const struct catalog_motor *m,
 		mask |= 1u << OPTIM_PROP_OVERLAP;
 	if (below_range(m, d_in) || above_range(m, d_in))
 		mask |= 1u << OPTIM_PROP_RANGE;
-	double mach = a->tip_m * rpm / S_PER_MIN / t->sound_m_s;
-	if (!(mach <= AERO_TIP_MACH_MAX))
+	if (!(tip_mach(t, a, rpm) <= AERO_TIP_MACH_MAX))
 		mask |= 1u << OPTIM_TIP_MACH;
 	if (p != NULL && p->max_rpm > 0.0 && rpm > p->max_rpm)
 		mask |= 1u << OPTIM_PROP_RPM;
@@ -607,8 +614,8 @@ struct motor_on_bus {
 };
 
 /* Where a motor's recommended propeller range starts and ends in the
- * diameter-sorted propellers within the overlap limit. */
-struct range_cut {
+ * diameter-sorted propellers within the overlap limit (range_cut()). */
+struct prop_span {
 	bool done;
 	size_t first, end;
 };
@@ -640,8 +647,8 @@ struct rank_ctx {
 	const struct esc_offer *escs;  /* with no ESC locked: the sets that
 	                                  suit this bus, lightest first */
 	size_t n_escs;
-	struct range_cut *cuts;        /* per motor, in catalogue order */
-	struct range_cut *cut;         /* the motor being ranked */
+	struct prop_span *spans;       /* per motor, in catalogue order */
+	struct prop_span *span;        /* the motor being ranked */
 	double j_cruise;               /* the J term common to every option */
 };
 
@@ -785,8 +792,7 @@ mach_cut(const struct optim_target *t, const struct rank_prop *const *v,
 	size_t lo = 0, hi = n;
 	while (lo < hi) {
 		size_t mid = lo + (hi - lo) / 2;
-		double mach = v[mid]->aim.tip_m * rpm / S_PER_MIN / t->sound_m_s;
-		if (mach <= AERO_TIP_MACH_MAX)
+		if (tip_mach(t, &v[mid]->aim, rpm) <= AERO_TIP_MACH_MAX)
 			lo = mid + 1;
 		else
 			hi = mid;
@@ -851,15 +857,15 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 			 * motor's range (the next reason) lead and trail, and
 			 * are counted at once.  The census, the candidates and
 			 * the kept choices do not depend on the order. */
-			struct range_cut *rc_m = x->cut;
-			if (!rc_m->done) {
-				rc_m->first = range_cut(m, v, n, true);
-				rc_m->end = range_cut(m, v, n, false);
-				if (rc_m->end < rc_m->first)
-					rc_m->end = rc_m->first; /* min > max: all fail */
-				rc_m->done = true;
+			struct prop_span *span = x->span;
+			if (!span->done) {
+				span->first = range_cut(m, v, n, true);
+				span->end = range_cut(m, v, n, false);
+				if (span->end < span->first)
+					span->end = span->first; /* min > max: all fail */
+				span->done = true;
 			}
-			size_t first = rc_m->first, end = rc_m->end;
+			size_t first = span->first, end = span->end;
 			if (motor_ok) {
 				int out = (int)(n - (end - first));
 				x->cs->n_examined += out;
@@ -953,11 +959,14 @@ rank_prop_cmp(const void *a, const void *b)
 	return (da > db) - (da < db);
 }
 
-int
-optim_rank(const struct optim_target *t, const struct catalog *cat,
-           const struct optim_locks *locks, struct optim_choice *choices,
-           int max_choices, struct optim_census *census,
-           struct res_candidate *cand, int *n_cand)
+/* optim_rank() with the packs every bus picks from (those of the locks'
+ * battery lock) given: a search ranks with the one list it also upsizes
+ * batteries from. */
+static int
+rank_catalog(const struct optim_target *t, const struct catalog *cat,
+             const struct optim_locks *locks, const struct pack_list *packs,
+             struct optim_choice *choices, int max_choices,
+             struct optim_census *census, struct res_candidate *cand, int *n_cand)
 {
 	struct optim_census local;
 	struct optim_locks none = { NULL, NULL, NULL, NULL };
@@ -1038,20 +1047,17 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 	}
 	qsort(all_escs, n_all_escs, sizeof *all_escs, esc_offer_cmp);
 	x.escs = escs;
-	/* The packs every bus picks from, filtered once. */
-	struct pack_list packs;
-	pack_list_init(cat, x.lk->battery, &packs);
 	/* Each motor's recommended propeller range, cut once (it does not
 	 * depend on the bus). */
-	x.cuts = xmalloc((nm > 0 ? nm : 1) * sizeof *x.cuts);
+	x.spans = xmalloc((nm > 0 ? nm : 1) * sizeof *x.spans);
 	for (size_t i = 0; i < nm; i++)
-		x.cuts[i].done = false;
+		x.spans[i].done = false;
 
 	for (int s = t->cells_lo; s <= t->cells_hi; s++) {
 		struct bus_offer bus;
 		memset(&bus, 0, sizeof bus);
 		bus.cells = s;
-		bus.have_battery = pick_battery(t, &packs, s, at_bus(t, t->capacity_ah, s),
+		bus.have_battery = pick_battery(t, packs, s, at_bus(t, t->capacity_ah, s),
 		    at_bus(t, t->bus_peak_current_a, s), NULL, &bus.battery);
 		x.n_escs = 0;
 		for (size_t i = 0; i < n_all_escs; i++)
@@ -1062,12 +1068,11 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 			if (!m->usable)
 				continue;
 			x.slot = slot[i];
-			x.cut = &x.cuts[i];
+			x.span = &x.spans[i];
 			rank_motor(&x, &bus, m);
 		}
 	}
-	free(x.cuts);
-	pack_list_free(&packs);
+	free(x.spans);
 	free(all_escs);
 	free(escs);
 	free(fit);
@@ -1075,6 +1080,20 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 	free(props);
 	free(slot);
 	return x.n_found;
+}
+
+int
+optim_rank(const struct optim_target *t, const struct catalog *cat,
+           const struct optim_locks *locks, struct optim_choice *choices,
+           int max_choices, struct optim_census *census,
+           struct res_candidate *cand, int *n_cand)
+{
+	struct pack_list packs;
+	pack_list_init(cat, locks != NULL ? locks->battery : NULL, &packs);
+	int n = rank_catalog(t, cat, locks, &packs, choices, max_choices, census,
+	    cand, n_cand);
+	pack_list_free(&packs);
+	return n;
 }
 
 /* ---- closing the loop on real parts --------------------------------------- */
@@ -2042,7 +2061,10 @@ optim_select_search(const struct mission_spec *spec,
 
 	struct optim_choice ch[OPTIM_MAX_TRIES];
 	struct optim_census cs;
-	int n_found = optim_rank(&t, cat, &lk, ch, OPTIM_MAX_TRIES, &cs,
+	/* The packs every ranking and every upsized battery pick from. */
+	struct pack_list packs;
+	pack_list_init(cat, lk.battery, &packs);
+	int n_found = rank_catalog(&t, cat, &lk, &packs, ch, OPTIM_MAX_TRIES, &cs,
 	    r->candidates, &r->n_candidates);
 	if (n_found == 0 && t.cells_floor < t.cells_lo) {
 		/* Nothing from S* up: try the lower buses the packs give. */
@@ -2050,7 +2072,7 @@ optim_select_search(const struct mission_spec *spec,
 		struct optim_census cs2;
 		low.cells_lo = t.cells_floor;
 		low.cells_hi = t.cells - 1;
-		n_found = optim_rank(&low, cat, &lk, ch, OPTIM_MAX_TRIES, &cs2,
+		n_found = rank_catalog(&low, cat, &lk, &packs, ch, OPTIM_MAX_TRIES, &cs2,
 		    r->candidates, &r->n_candidates);
 		for (int i = 0; i < OPTIM_REASON_MAX; i++)
 			cs.n_fail[i] += cs2.n_fail[i];
@@ -2066,6 +2088,7 @@ optim_select_search(const struct mission_spec *spec,
 		}
 	}
 	if (n_found == 0) {
+		pack_list_free(&packs);
 		report_none(&t, &cs, lk.motor ? catalog_find_motor(cat, lk.motor) : NULL, r);
 		return 0;
 	}
@@ -2074,8 +2097,6 @@ optim_select_search(const struct mission_spec *spec,
 	 * the continuous design; re-aim at the real-parts mass when none does;
 	 * else keep the one with the fewest failed checks and report it. */
 	struct optim_target tr = t;
-	struct pack_list packs;
-	pack_list_init(cat, lk.battery, &packs);
 	struct closer k = { &p, md, &tr, cat, &lk, &r->custom,
 		search == OPTIM_SEARCH_SCREENED, &packs };
 	/* Trial buffers: each try writes all it reads of its result (see
@@ -2101,7 +2122,7 @@ optim_select_search(const struct mission_spec *spec,
 		/* A re-aimed round scores the candidates too: the crosshair
 		 * figure shows those of the round the parts come from. */
 		int n = round == 0 ? n_found
-		    : optim_rank(&tr, cat, &lk, ch, OPTIM_MAX_TRIES, NULL,
+		    : rank_catalog(&tr, cat, &lk, &packs, ch, OPTIM_MAX_TRIES, NULL,
 		        &round_cand[round * RES_MAX_CANDIDATES], &round_n_cand[round]);
 		if (n == 0)
 			break;
