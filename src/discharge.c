@@ -150,6 +150,17 @@ record(struct res_sample *trace, int max_trace, int *n_trace, double t,
 	s->phase = phase;
 }
 
+/* The electrical power the mission draws at mass_kg in a phase flown at
+ * these speeds. */
+static double
+electric_power_w(const struct discharge_mission *mis, double v_climb_ms,
+                 double v_fwd_ms, double mass_kg)
+{
+	struct mission_power pw;
+	mission_power(mis->model, mass_kg, v_climb_ms, v_fwd_ms, &pw);
+	return pw.electrical_w;
+}
+
 /* The power along a phase of a continuous spray.  The mass falls linearly
  * while the tank empties, and the power is a smooth function of it: it is
  * computed exactly at the mid-step mass of the ends and the middle of each
@@ -180,9 +191,7 @@ track_mass_kg(const struct power_track *pt, int k)
 static double
 track_power_w(const struct power_track *pt, double mass_kg)
 {
-	struct mission_power pw;
-	mission_power(pt->mis->model, mass_kg, pt->v_climb_ms, pt->v_fwd_ms, &pw);
-	return pw.electrical_w;
+	return electric_power_w(pt->mis, pt->v_climb_ms, pt->v_fwd_ms, mass_kg);
 }
 
 /* Start the stretch at step k0 whose power is p0_w. */
@@ -239,10 +248,8 @@ memo_power_w(const struct discharge_mission *mis, double v_climb_ms,
              double v_fwd_ms, struct power_memo *pm, double mass_kg)
 {
 	if (pm->mass_kg != mass_kg) {
-		struct mission_power pw;
-		mission_power(mis->model, mass_kg, v_climb_ms, v_fwd_ms, &pw);
 		pm->mass_kg = mass_kg;
-		pm->power_w = pw.electrical_w;
+		pm->power_w = electric_power_w(mis, v_climb_ms, v_fwd_ms, mass_kg);
 	}
 	return pm->power_w;
 }
