@@ -46,6 +46,7 @@ struct eval {
 	double v_fwd_ms;
 	double v_min_power_ms, v_max_ms;
 	struct mission_power ph[PHASE_MAX];
+	bool phases_done;               /* ph and pitch_m set (eval_phases()) */
 	struct mission_power peak;
 	double throttle;                /* hover throttle target */
 	double t_hover_n, t_peak_n;     /* per rotor */
@@ -191,16 +192,33 @@ pack_of(const struct sizing_params *p, const struct eval *e,
 	pk->h_conv_w_m2k = p->h_conv_w_m2k;
 }
 
+/* The three phase powers of an evaluation, and the hover pitch they give
+ * (unless the propeller is locked); once, when first needed. */
+static void
+eval_phases(const struct sizing_params *p, struct eval *e)
+{
+	if (e->phases_done)
+		return;
+	const struct mission_model *m = &e->model;
+	mission_power(m, e->mass_kg, p->v_climb_ms, 0.0, &e->ph[PHASE_CLIMB]);
+	mission_power(m, e->mass_kg, 0.0, e->v_fwd_ms, &e->ph[PHASE_FORWARD]);
+	mission_power(m, e->mass_kg, 0.0, 0.0, &e->ph[PHASE_HOVER]);
+	if (!p->prop_locked)
+		e->pitch_m = sizing_pitch_m(m->rotor.diameter_m,
+		    e->ph[PHASE_HOVER].rotor.induced_ms, e->rps_hover);
+	e->phases_done = true;
+}
+
 /*
  * Evaluate every subsystem at takeoff mass M with capacity C, all but the
  * discharge: the masses of the map f of eq. (implicit), which do not depend
- * on it.  `flight` says whether the mission will be flown (see phases
- * below); the sweep is recorded into rec when given (the final evaluation).
+ * on it.  The speed sweep is recorded into rec when given (the final
+ * evaluation).
  */
 static void
 evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
-                double mass_kg, double capacity_ah, bool flight,
-                struct res_run *rec, struct eval *e)
+                double mass_kg, double capacity_ah, struct res_run *rec,
+                struct eval *e)
 {
 	const struct atmo_state *air = &p->air;
 	int nr = p->n_rotors;
@@ -251,31 +269,24 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 		rec->n_sweep = mission_speed_sweep(m, mass_kg, e->t_peak_n,
 		    rec->sweep_v_ms, rec->sweep_power_w, RES_MAX_SWEEP,
 		    &e->v_min_power_ms, &e->v_max_ms);
-	else if (p->v_auto || rec != NULL)
+	else if (p->v_auto || (rec != NULL && !p->masses_only))
 		/* The loop, and a record that leaves the curve to
-		 * sizing_complete(), need the speeds only. */
+		 * sizing_complete(), need the speeds only (a masses-only
+		 * record none: no mass-bound check reads them). */
 		mission_speed_search(m, mass_kg, e->t_peak_n, &e->v_min_power_ms,
 		    &e->v_max_ms);
 	if (p->v_auto)
 		e->v_fwd_ms = e->v_min_power_ms;
 
-	/* The phase powers size a power-bound battery, seed the capacity and
-	 * fly the mission: a locked capacity evaluated for its masses alone
-	 * (steps <= 0: the endurance explorer, a locked run's Lipschitz
-	 * round) needs none of that, nor the pitch derived from them (they
-	 * stay 0). */
-	bool phases = flight || !p->capacity_locked;
-	if (phases) {
-		mission_power(m, mass_kg, p->v_climb_ms, 0.0, &e->ph[PHASE_CLIMB]);
-		mission_power(m, mass_kg, 0.0, e->v_fwd_ms, &e->ph[PHASE_FORWARD]);
-		mission_power(m, mass_kg, 0.0, 0.0, &e->ph[PHASE_HOVER]);
-	}
+	/* The phase powers size a free battery (the specific-power floor
+	 * below) and go into the record; a given capacity (locked, or a
+	 * catalogue battery) leaves them to the record, which asks for them
+	 * (eval_phases()): most loop evaluations are never recorded. */
 	mission_peak_power(m, e->t_peak_n, &e->peak);
 	if (p->prop_locked)
 		e->pitch_m = p->prop_pitch_m;
-	else if (phases)
-		e->pitch_m = sizing_pitch_m(d, e->ph[PHASE_HOVER].rotor.induced_ms,
-		    e->rps_hover);
+	if (!capacity_given(p))
+		eval_phases(p, e);
 
 	/* Series cells: locked, set by a locked KV, or from the current budget. */
 	if (p->parts.active && p->parts.cells > 0)
@@ -396,9 +407,9 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 
 }
 
-/* Fly the mission of an evaluate_masses() result e (made with flight
- * true) in `steps` steps at goal relaxation gamma_time, trace into rec
- * when given, and set the capacity it needs. */
+/* Fly the mission of an evaluate_masses() result e in `steps` steps at
+ * goal relaxation gamma_time, trace into rec when given, and set the
+ * capacity it needs. */
 static void
 evaluate_flight(const struct sizing_params *p, double gamma_time, int steps,
                 struct res_run *rec, struct eval *e)
@@ -451,7 +462,7 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
          double mass_kg, double capacity_ah, int steps, struct res_run *rec,
          struct eval *e)
 {
-	evaluate_masses(p, ls, mass_kg, capacity_ah, steps > 0, rec, e);
+	evaluate_masses(p, ls, mass_kg, capacity_ah, rec, e);
 	if (steps <= 0) {
 		e->dis.end = DIS_COMPLETED;
 		e->c_target_ah = e->capacity_ah;
@@ -676,7 +687,7 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 	int last_jump = 0, k = 1;
 	for (; k <= max_iter; k++) {
 		struct eval *e = &ring.e[k % LOOP_RING];
-		evaluate_masses(p, &ls, m, c, true, NULL, e);
+		evaluate_masses(p, &ls, m, c, NULL, e);
 		ring.flown[k % LOOP_RING] = -1;
 		double f = e->mass.total_kg;
 		if (out->n_history < RES_MAX_HISTORY)
@@ -827,9 +838,13 @@ lipschitz(const struct sizing_params *p, const struct loop_state *ls,
 
 /* Copy the evaluated design into the run record. */
 static void
-record_run(const struct sizing_params *p, const struct eval *e,
+record_run(const struct sizing_params *p, struct eval *e,
            const struct loop_state *ls, struct res_run *out)
 {
+	/* A masses-only record goes to the mass-bound checks alone, which
+	 * read no phase (sizing_params.masses_only). */
+	if (!p->masses_only)
+		eval_phases(p, e);
 	double d[PHASE_MAX];
 	durations(p, ls->gamma_time, d);
 	out->mass = e->mass;
@@ -1028,7 +1043,7 @@ sizing_complete(const struct sizing_params *p, struct res_run *run)
 	q.defer_extras = false;
 	const struct res_fixed_point *fx = &run->fixed;
 	struct eval e;
-	evaluate_masses(&q, &ls, fx->mass_kg, fx->capacity_ah, true, run, &e);
+	evaluate_masses(&q, &ls, fx->mass_kg, fx->capacity_ah, run, &e);
 	run->hover_endurance_s = hover_endurance_s(&q, &e, fx->mass_kg);
 }
 
@@ -1050,7 +1065,7 @@ marketing_endurance_s(const struct sizing_params *p, const struct eval *e,
 /* The evaluation fin at the fixed point (m_star, c_star, ls) and the fixed
  * point itself, into out. */
 static void
-record_at(const struct sizing_params *p, const struct eval *fin,
+record_at(const struct sizing_params *p, struct eval *fin,
           const struct loop_state *ls, double m_star, double c_star,
           struct res_run *out)
 {
@@ -1064,7 +1079,7 @@ record_at(const struct sizing_params *p, const struct eval *fin,
  * the extras. */
 static void
 record_fixed_point(const struct sizing_params *p, enum sizing_status st,
-                   const struct eval *fin, const struct loop_state *ls,
+                   struct eval *fin, const struct loop_state *ls,
                    double m_star, double c_star, struct res_run *out)
 {
 	record_at(p, fin, ls, m_star, c_star, out);
@@ -1216,7 +1231,7 @@ sizing_run(const struct sizing_params *p_in, struct res_run *out)
 	if (p->masses_only && capacity_given(p)) {
 		/* The evaluation the full run's confirming flight starts with;
 		 * sizing_finish() goes on from here. */
-		evaluate_masses(p, &ls, m_star, c_star, true, out, &fin);
+		evaluate_masses(p, &ls, m_star, c_star, out, &fin);
 		record_at(p, &fin, &ls, m_star, c_star, out);
 		return st;
 	}

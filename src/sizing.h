@@ -178,9 +178,11 @@ struct sizing_params {
 	 * one run of many) */
 	bool defer_extras;
 	/* stop at the mass fixed point: no confirming flight, no Lipschitz
-	 * constant, nothing the discharge gives recorded.  Only for a loop
-	 * whose masses do not depend on its flights (capacity locked or a
-	 * catalogue battery): the parts search screens combinations with it */
+	 * constant, nothing the discharge gives recorded, nor the phase
+	 * powers and speed limits: the record holds what the checks that
+	 * more mass only worsens read (res_check.mass_bound).  Only for a
+	 * loop whose masses do not depend on its flights (capacity locked or
+	 * a catalogue battery): the parts search screens combinations with it */
 	bool masses_only;
 	/* numerics */
 	int max_iter;
