@@ -25,12 +25,19 @@ feasibility_violation(struct solve_result *r, const char *run,
 	if (r->n_violations >= RES_MAX_VIOLATIONS)
 		return;
 	struct res_violation *v = &r->violations[r->n_violations++];
-	memset(v, 0, sizeof *v);
-	str_copy(v->run, sizeof v->run, run);
-	str_copy(v->stage, sizeof v->stage, stage);
-	str_copy(v->code, sizeof v->code, code);
-	if (r->terse)
+	if (r->terse) {
+		/* The codes alone: the texts (most of its size) stay unwritten. */
+		v->run = run;
+		v->stage = stage;
+		v->code = code;
+		v->message[0] = '\0';
+		v->n_fixes = 0;
 		return;
+	}
+	memset(v, 0, sizeof *v);
+	v->run = run;
+	v->stage = stage;
+	v->code = code;
 	va_list ap;
 	va_start(ap, fmt);
 	vsnprintf(v->message, sizeof v->message, fmt, ap);
@@ -140,8 +147,8 @@ add_check(struct res_run *run, const char *name, const char *unit,
 		return NULL;
 	struct res_check *c = &run->checks[run->n_checks++];
 	memset(c, 0, sizeof *c);
-	str_copy(c->name, sizeof c->name, name);
-	str_copy(c->unit, sizeof c->unit, unit);
+	c->name = name;
+	c->unit = unit;
 	c->value = isfinite(value) ? value : 0.0;
 	c->limit = limit;
 	c->upper = upper;

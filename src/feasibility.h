@@ -16,19 +16,22 @@
 #include "result.h"
 #include "sizing.h"
 
-/* Pre-loop gate for one run.  Appends violations (run name `run`) to r and
- * returns true when the run may go on. */
+/* Pre-loop gate for one run.  Appends violations (run name `run`, a
+ * string literal) to r and returns true when the run may go on. */
 bool feasibility_gate(const struct sizing_params *p, const char *run,
                       struct solve_result *r);
 
 /* Fill run->checks from a finished run and append a violation for each
- * failed check and for the loop status.  Sets run->feasible. */
+ * failed check and for the loop status (run: a string literal, as the
+ * violations keep it).  Sets run->feasible. */
 void feasibility_checks(const struct sizing_params *p, enum sizing_status st,
                         const char *run, struct res_run *run_out,
                         struct solve_result *r);
 
 /* Append one violation; fixes is a NULL-terminated list (may be NULL).
- * With r->terse, run, stage and code only (fixes and fmt are not read). */
+ * run, stage and code are string literals (the violation keeps the
+ * pointers, see result.h).  With r->terse, run, stage and code only
+ * (fixes and fmt are not read, message is empty). */
 void feasibility_violation(struct solve_result *r, const char *run,
                            const char *stage, const char *code,
                            const char *const *fixes, const char *fmt, ...)

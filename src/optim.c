@@ -1209,8 +1209,8 @@ parts_check(struct res_run *run, const char *name, const char *unit,
 		return pass;
 	struct res_check *c = &run->checks[run->n_checks++];
 	memset(c, 0, sizeof *c);
-	str_copy(c->name, sizeof c->name, name);
-	str_copy(c->unit, sizeof c->unit, unit);
+	c->name = name;
+	c->unit = unit;
 	c->value = isfinite(value) ? value : 0.0;
 	c->limit = isfinite(limit) ? limit : 0.0;
 	c->upper = upper;
@@ -1219,6 +1219,18 @@ parts_check(struct res_run *run, const char *name, const char *unit,
 	c->mass_bound = mass_bound;
 	return pass;
 }
+
+/* Closing context shared by every try. */
+struct closer {
+	const struct sizing_params *p0;  /* custom-run parameters */
+	const struct model_data *md;
+	const struct optim_target *t;
+	const struct catalog *cat;
+	const struct optim_locks *lk;
+	const struct res_run *custom;
+	bool screened;                   /* OPTIM_SEARCH_SCREENED */
+	const struct pack_list *packs;   /* what an upsized battery is picked from */
+};
 
 /* Full-throttle rotor speed of the real motor on the closed bus, rev/s. */
 static double
@@ -1232,10 +1244,11 @@ closed_full_rps(const struct sizing_params *p, const struct optim_choice *c)
  * and stage "parts" violations.  Returns the name of the first that fails,
  * or NULL. */
 static const char *
-parts_checks(const struct sizing_params *p, const struct optim_choice *c,
-             const struct res_run *custom, struct res_run *o,
+parts_checks(const struct closer *k, const struct sizing_params *p,
+             const struct optim_choice *c, struct res_run *o,
              struct solve_result *r)
 {
+	const struct res_run *custom = k->custom;
 	const struct catalog_motor *m = c->motor;
 	double d_m = p->prop_diameter_m;
 	double n_max = closed_full_rps(p, c);
@@ -1293,9 +1306,16 @@ parts_checks(const struct sizing_params *p, const struct optim_choice *c,
 		}
 	}
 	if (c->esc != NULL) {
-		/* An upsized ESC cures it: not mass-bound. */
+		/* An upsized ESC cures it (close_choice()): mass-bound only when
+		 * none can, being locked or the largest for this current, which
+		 * more mass only raises. */
+		const struct catalog_esc *e_up;
+		int n_up;
+		bool for_good = i_m > c->esc->continuous_current_a
+		    && (k->lk->esc != NULL || !pick_esc_for(k->t, k->cat, NULL,
+		        c->cells, m, i_m, &e_up, &n_up));
 		if (!parts_check(o, "ESC current at full throttle (× 1.1)", "A", i_m,
-		    c->esc->continuous_current_a, true, false, &first)) {
+		    c->esc->continuous_current_a, true, for_good, &first)) {
 			if (text) {
 				snprintf(f1, sizeof f1, "No catalogue ESC carries %.0f A at %dS: add one to data/catalog/escs.json or use --db",
 				    i_m, c->cells);
@@ -1411,18 +1431,6 @@ closed_finite(const struct res_run *o)
 	return true;
 }
 
-/* Closing context shared by every try. */
-struct closer {
-	const struct sizing_params *p0;  /* custom-run parameters */
-	const struct model_data *md;
-	const struct optim_target *t;
-	const struct catalog *cat;
-	const struct optim_locks *lk;
-	const struct res_run *custom;
-	bool screened;                   /* OPTIM_SEARCH_SCREENED */
-	const struct pack_list *packs;   /* what an upsized battery is picked from */
-};
-
 /* Swap two result buffers. */
 static void
 swap_results(struct solve_result **a, struct solve_result **b)
@@ -1463,7 +1471,7 @@ check_closing(const struct closer *k, const struct sizing_params *p,
 {
 	sr->n_violations = 0;
 	feasibility_checks(p, st, "closed", &sr->closed, sr);
-	return parts_checks(p, c, k->custom, &sr->closed, sr);
+	return parts_checks(k, p, c, &sr->closed, sr);
 }
 
 /* The checks of a masses-only closing in sr (sizing_params.masses_only:

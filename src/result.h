@@ -74,9 +74,12 @@ struct res_sample {
 };
 
 /* One constraint of the checks table. */
+/* The text fields of checks and violations point to string literals (the
+ * check tables of feasibility.c and optim.c): static, so results copy
+ * freely, and a trial closing writes no text. */
 struct res_check {
-	char name[64];       /* "Battery peak temperature" */
-	char unit[16];       /* "°C" */
+	const char *name;    /* "Battery peak temperature" */
+	const char *unit;    /* "°C" */
 	double value;        /* achieved */
 	double limit;        /* allowed */
 	bool upper;          /* true: value <= limit passes; false: value >= limit */
@@ -89,9 +92,9 @@ struct res_check {
 };
 
 struct res_violation {
-	char run[16];                       /* "baseline", "custom", "closed" */
-	char stage[32];                     /* "feasibility", "mass_loop", "discharge", "parts" */
-	char code[40];                      /* stable machine code, e.g. "PROP_OVERLAP" */
+	const char *run;                    /* "baseline", "custom", "closed" */
+	const char *stage;                  /* "feasibility", "mass_loop", "discharge", "parts" */
+	const char *code;                   /* stable machine code, e.g. "PROP_OVERLAP" */
 	char message[RES_TEXT];             /* plain sentence with numbers */
 	char fixes[RES_MAX_FIXES][RES_TEXT];/* suggested fixes */
 	int n_fixes;

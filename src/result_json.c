@@ -258,8 +258,20 @@ jw_str(struct jw *w, const char *key, const char *s, size_t max)
 	jw_string(w, s, max);
 }
 
-/* A char-array member: bounded by its size, so a missing NUL cannot overrun. */
-#define JW_STR(w, key, arr) jw_str((w), (key), (arr), sizeof(arr))
+/* A char-array member: bounded by its size, so a missing NUL cannot
+ * overrun.  A pointer member (a string literal) is no array: JW_STR on one
+ * fails to compile, and it goes through jw_lit(). */
+#define JW_IS_ARRAY(a) \
+	(!__builtin_types_compatible_p(__typeof__(a), __typeof__(&(a)[0])))
+#define JW_STR(w, key, arr) \
+	jw_str((w), (key), (arr), sizeof(arr) * sizeof(char[JW_IS_ARRAY(arr) ? 1 : -1]))
+
+/* A string literal's text (NULL: empty). */
+static void
+jw_lit(struct jw *w, const char *key, const char *s)
+{
+	jw_str(w, key, s != NULL ? s : "", s != NULL ? strlen(s) + 1 : 1);
+}
 
 static void
 jw_null(struct jw *w, const char *key)
@@ -533,8 +545,8 @@ put_checks(struct jw *w, const struct res_run *run)
 	for (int i = 0; i < n; i++) {
 		const struct res_check *c = &run->checks[i];
 		jw_obj(w, NULL);
-		JW_STR(w, "name", c->name);
-		JW_STR(w, "unit", c->unit);
+		jw_lit(w, "name", c->name);
+		jw_lit(w, "unit", c->unit);
 		jw_num(w, "value", c->value);
 		jw_num(w, "limit", c->limit);
 		jw_str(w, "kind", c->upper ? "max" : "min", 3);
@@ -760,9 +772,9 @@ put_violations(struct jw *w, const struct solve_result *r)
 	for (int i = 0; i < n; i++) {
 		const struct res_violation *v = &r->violations[i];
 		jw_obj(w, NULL);
-		JW_STR(w, "run", v->run);
-		JW_STR(w, "stage", v->stage);
-		JW_STR(w, "code", v->code);
+		jw_lit(w, "run", v->run);
+		jw_lit(w, "stage", v->stage);
+		jw_lit(w, "code", v->code);
 		JW_STR(w, "message", v->message);
 		int nf = jw_count(w, "suggested_fixes", v->n_fixes, RES_MAX_FIXES);
 		jw_arr(w, "suggested_fixes");

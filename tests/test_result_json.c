@@ -208,10 +208,13 @@ fill_run(struct rng *g, struct res_run *run, const struct fixture_size *sz)
 	}
 	run->endurance_inflection_scale = val(g, 0.5, 3);
 	run->n_checks = sz->checks;
+	/* A check's name is static text (result.h). */
+	static char names[RES_MAX_CHECKS][24];
 	for (int i = 0; i < sz->checks; i++) {
 		struct res_check *c = &run->checks[i];
-		snprintf(c->name, sizeof c->name, "Check %d", i);
-		snprintf(c->unit, sizeof c->unit, "\xc2\xb0" "C");
+		snprintf(names[i], sizeof names[i], "Check %d", i);
+		c->name = names[i];
+		c->unit = "\xc2\xb0" "C";
 		c->value = val(g, 10, 70);
 		c->limit = 60.0;
 		c->upper = i % 2 == 0;
@@ -311,9 +314,9 @@ fixture_new(const struct fixture_size *sz)
 	r->feasible = false;
 	r->n_violations = 1;
 	struct res_violation *v = &r->violations[0];
-	snprintf(v->run, sizeof v->run, "custom");
-	snprintf(v->stage, sizeof v->stage, "discharge");
-	snprintf(v->code, sizeof v->code, "BATTERY_OVERTEMP");
+	v->run = "custom";
+	v->stage = "discharge";
+	v->code = "BATTERY_OVERTEMP";
 	snprintf(v->message, sizeof v->message, "Pack reaches 63.2 \xc2\xb0" "C, above 60 \xc2\xb0" "C");
 	v->n_fixes = 2;
 	snprintf(v->fixes[0], sizeof v->fixes[0], "Add a second pack in parallel");
