@@ -167,10 +167,68 @@ memo_at(struct sweep_memo *s, int i)
 	s->over[i] = sweep_over(&p, s->max_thrust_n);
 }
 
+/* The tests the search bisects on, each monotone in i on the grid: past
+ * the limits (thrust and pitch grow with speed, drag ~ V²), and the power
+ * no longer falling to the next speed (it falls, then rises). */
+static bool
+over_at(struct sweep_memo *s, int i)
+{
+	memo_at(s, i);
+	return s->over[i] != 0;
+}
+
+static bool
+rises_at(struct sweep_memo *s, int i)
+{
+	memo_at(s, i);
+	memo_at(s, i + 1);
+	return !(s->power_w[i + 1] < s->power_w[i]);
+}
+
+/* The first i in [lo, hi) where the monotone test holds, hi if none.  With
+ * a hint in [lo, hi] the bracket grows from it in steps of 1, 2, 4, ...
+ * (the answer a few points off costs a few tests), then bisects; without
+ * one (hint < 0) it bisects [lo, hi].  The same answer either way. */
+static int
+first_true(struct sweep_memo *s, bool (*test)(struct sweep_memo *, int),
+           int lo, int hi, int hint)
+{
+	if (hint >= lo && hint <= hi) {
+		if (hint == hi || test(s, hint)) {
+			/* The answer is at or below the hint. */
+			int top = hint, step = 1;
+			while (top - step >= lo && test(s, top - step)) {
+				top -= step;
+				step *= 2;
+			}
+			hi = top;
+			lo = top - step >= lo ? top - step + 1 : lo;
+		} else {
+			/* Above it. */
+			int bottom = hint, step = 1;
+			while (bottom + step < hi && !test(s, bottom + step)) {
+				bottom += step;
+				step *= 2;
+			}
+			lo = bottom + 1;
+			hi = bottom + step < hi ? bottom + step : hi;
+		}
+	}
+	while (lo < hi) {
+		int mid = lo + (hi - lo) / 2;
+		if (test(s, mid))
+			hi = mid;
+		else
+			lo = mid + 1;
+	}
+	return lo;
+}
+
 void
-mission_speed_search(const struct mission_model *m, double mass_kg,
-                     double max_thrust_per_rotor_n, double *v_min_power_ms,
-                     double *v_max_ms)
+mission_speed_search_hinted(const struct mission_model *m, double mass_kg,
+                            double max_thrust_per_rotor_n,
+                            double *v_min_power_ms, double *v_max_ms,
+                            struct mission_speed_hint *hint)
 {
 	struct sweep_memo s = { m, mass_kg, forward_ref_area_m2(m, mass_kg),
 	    max_thrust_per_rotor_n, { 0.0 }, { 0 } };
@@ -179,39 +237,34 @@ mission_speed_search(const struct mission_model *m, double mass_kg,
 		/* A grid finer than the memo holds: sweep it all. */
 		(void)mission_speed_sweep(m, mass_kg, max_thrust_per_rotor_n, NULL,
 		    NULL, 0, v_min_power_ms, v_max_ms);
+		if (hint != NULL)
+			hint->set = false;
 		return;
 	}
 	for (int i = 0; i <= last; i++)
 		s.over[i] = -1;
-	/* Thrust and pitch grow with speed (drag ~ V²): the speeds within the
-	 * limits are a prefix 0..n_ok-1, found by bisection. */
-	int lo = 0, hi = last + 1; /* over(hi) or hi past the end; !over(lo - 1) */
-	while (lo < hi) {
-		int mid = lo + (hi - lo) / 2;
-		memo_at(&s, mid);
-		if (s.over[mid])
-			hi = mid;
-		else
-			lo = mid + 1;
-	}
-	int n_ok = lo;
+	bool hinted = hint != NULL && hint->set;
+	/* The speeds within the limits are a prefix 0..n_ok-1. */
+	int n_ok = first_true(&s, over_at, 0, last + 1, hinted ? hint->n_ok : -1);
 	*v_max_ms = n_ok <= last ? sweep_speed_ms(n_ok) - MISSION_SWEEP_STEP_MS
 	    : MISSION_SWEEP_V1_MS;
 	*v_min_power_ms = MISSION_SWEEP_V0_MS;
-	if (n_ok == 0)
-		return;
-	/* The power falls, then rises with speed: its first minimum is the
-	 * first i whose successor is not lower (bisection on that test). */
-	lo = 0;
-	hi = n_ok - 1;
-	while (lo < hi) {
-		int mid = lo + (hi - lo) / 2;
-		memo_at(&s, mid);
-		memo_at(&s, mid + 1);
-		if (s.power_w[mid + 1] < s.power_w[mid])
-			lo = mid + 1;
-		else
-			hi = mid;
+	int i_min = 0;
+	if (n_ok > 0) {
+		/* The first minimum: the first i whose successor is not lower. */
+		i_min = first_true(&s, rises_at, 0, n_ok - 1,
+		    hinted ? hint->i_min : -1);
+		*v_min_power_ms = sweep_speed_ms(i_min);
 	}
-	*v_min_power_ms = sweep_speed_ms(lo);
+	if (hint != NULL)
+		*hint = (struct mission_speed_hint){ true, n_ok, i_min };
+}
+
+void
+mission_speed_search(const struct mission_model *m, double mass_kg,
+                     double max_thrust_per_rotor_n, double *v_min_power_ms,
+                     double *v_max_ms)
+{
+	mission_speed_search_hinted(m, mass_kg, max_thrust_per_rotor_n,
+	    v_min_power_ms, v_max_ms, NULL);
 }

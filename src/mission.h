@@ -78,4 +78,23 @@ void mission_speed_search(const struct mission_model *m, double mass_kg,
                           double max_thrust_per_rotor_n,
                           double *v_min_power_ms, double *v_max_ms);
 
+/* Where a speed search ended on the grid: the count of speeds within the
+ * limits (a prefix) and the index of the power's first minimum.  A mass
+ * loop's next search, at a mass close by, ends at the same points. */
+struct mission_speed_hint {
+	bool set;
+	int n_ok;
+	int i_min;
+};
+
+/* mission_speed_search() that first verifies the points *hint names (two
+ * or three operating points each, against the bisection's ~9) and
+ * bisects only where they fail; the result is the bisection's whenever
+ * its tests are monotone on the grid, as mission_speed_search() assumes.
+ * *hint gets this search's points. */
+void mission_speed_search_hinted(const struct mission_model *m, double mass_kg,
+                                 double max_thrust_per_rotor_n,
+                                 double *v_min_power_ms, double *v_max_ms,
+                                 struct mission_speed_hint *hint);
+
 #endif

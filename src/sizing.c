@@ -36,6 +36,9 @@ struct loop_state {
 	int cells;            /* series cells in use */
 	double arm_width_m;   /* arm outer diameter (rotor-arm interference) */
 	double gamma_time;    /* goal relaxation factor */
+	/* the loop's last speed search (iterate() owns it; NULL elsewhere):
+	 * the next iteration's, at a mass close by, starts from it */
+	struct mission_speed_hint *speed_hint;
 };
 
 /* Everything evaluated at one takeoff mass. */
@@ -273,8 +276,8 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 		/* The loop, and a record that leaves the curve to
 		 * sizing_complete(), need the speeds only (a masses-only
 		 * record none: no mass-bound check reads them). */
-		mission_speed_search(m, mass_kg, e->t_peak_n, &e->v_min_power_ms,
-		    &e->v_max_ms);
+		mission_speed_search_hinted(m, mass_kg, e->t_peak_n,
+		    &e->v_min_power_ms, &e->v_max_ms, ls->speed_hint);
 	if (p->v_auto)
 		e->v_fwd_ms = e->v_min_power_ms;
 
@@ -661,11 +664,13 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 	if (p->parts.active && p->parts.cells > 0)
 		cells = p->parts.cells;
 	if (auto_cells) {
-		struct loop_state seed = { p->cells_lo, 0.02 * p->wheelbase_m, gamma_time };
+		struct loop_state seed = { p->cells_lo, 0.02 * p->wheelbase_m, gamma_time,
+		    NULL };
 		cells = seed_cells(p, p->cells_lo, p->cells_hi, m, &seed);
 	}
 	int n_down = 0;
-	struct loop_state ls = { cells, 0.02 * p->wheelbase_m, gamma_time };
+	struct mission_speed_hint hint = { false, 0, 0 };
+	struct loop_state ls = { cells, 0.02 * p->wheelbase_m, gamma_time, &hint };
 	/* A catalogue battery's capacity is the part's whatever c says (see
 	 * evaluate_masses()), so it needs no seed evaluation. */
 	double c = p->capacity_locked ? p->capacity_locked_ah
@@ -809,6 +814,7 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 	*m_star = m;
 	*c_star = last->capacity_ah;
 	*ls_out = ls;
+	ls_out->speed_hint = NULL; /* the hint lives no longer than this loop */
 	return st;
 }
 
@@ -954,7 +960,8 @@ at_fixed_point(const struct sizing_params *p, const struct res_run *run,
 	const struct res_fixed_point *fx = &run->fixed;
 	*q = *p;
 	q->thrust_margin = run->thrust_margin;
-	*ls = (struct loop_state){ fx->cells, fx->arm_width_m, fx->time_scale };
+	*ls = (struct loop_state){ fx->cells, fx->arm_width_m, fx->time_scale,
+	    NULL };
 }
 
 /* Endurance explorer: hover endurance vs capacity scale with the mass loop

@@ -170,7 +170,48 @@ mission_search_should_find_the_sweeps_speeds_on_random_aircraft(void **state)
 		mission_speed_search(&m, mass_kg, t_max_n, &s_min, &s_max);
 		assert_true(s_min == v_min);
 		assert_true(s_max == v_max);
+		/* From any hint, near or far, even off the grid: the same. */
+		struct mission_speed_hint h = { true, (int)draw(&g, -3.0, 65.0),
+		    (int)draw(&g, -3.0, 65.0) };
+		mission_speed_search_hinted(&m, mass_kg, t_max_n, &s_min, &s_max, &h);
+		assert_true(s_min == v_min);
+		assert_true(s_max == v_max);
+		/* ... and the hint it leaves, at a mass 1 % up: the sweep's. */
+		double v_min2, v_max2;
+		(void)mission_speed_sweep(&m, 1.01 * mass_kg, t_max_n, v, pw, 64,
+		    &v_min2, &v_max2);
+		mission_speed_search_hinted(&m, 1.01 * mass_kg, t_max_n, &s_min,
+		    &s_max, &h);
+		assert_true(s_min == v_min2);
+		assert_true(s_max == v_max2);
 	}
+}
+
+/* The hint a search leaves names the grid points of its answers: the
+ * minimum-power speed and the first speed past the limits. */
+static void
+mission_search_hint_should_name_the_grid_points_of_its_answers(void **state)
+{
+	(void)state;
+	struct mission_model m;
+	fixture_hand_model(&m, false);
+	double mass_kg = 4.0;
+	double t_max_n = 2.0 * mass_kg * G0_M_S2 / (double)m.n_rotors;
+	struct mission_speed_hint h = { false, 0, 0 };
+	double s_min, s_max;
+	mission_speed_search_hinted(&m, mass_kg, t_max_n, &s_min, &s_max, &h);
+	assert_true(h.set);
+	assert_true(h.i_min > 0 && h.i_min < h.n_ok - 1);
+	assert_true(s_min == MISSION_SWEEP_V0_MS + MISSION_SWEEP_STEP_MS * h.i_min);
+	assert_true(s_max == MISSION_SWEEP_V0_MS
+	    + MISSION_SWEEP_STEP_MS * (h.n_ok - 1));
+	/* Searched again from it: the same answers and the same hint. */
+	struct mission_speed_hint h2 = h;
+	double s_min2, s_max2;
+	mission_speed_search_hinted(&m, mass_kg, t_max_n, &s_min2, &s_max2, &h2);
+	assert_true(s_min2 == s_min && s_max2 == s_max);
+	assert_int_equal(h2.n_ok, h.n_ok);
+	assert_int_equal(h2.i_min, h.i_min);
 }
 
 int
@@ -184,6 +225,7 @@ main(void)
 		cmocka_unit_test(mission_sweep_should_cover_1_to_30_m_s_in_half_steps),
 		cmocka_unit_test(mission_sweep_should_stop_v_max_at_the_thrust_limit),
 		cmocka_unit_test(mission_search_should_find_the_sweeps_speeds_on_random_aircraft),
+		cmocka_unit_test(mission_search_hint_should_name_the_grid_points_of_its_answers),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }
