@@ -165,11 +165,11 @@ electric_power_w(const struct discharge_mission *mis, double v_climb_ms,
  * while the tank empties, and the power is a smooth function of it: it is
  * computed exactly at the mid-step mass of the ends and the middle of each
  * stretch of SPRAY_NODE steps and interpolated by the parabola through
- * them in between (within 1e-7 of the power computed at every step, far
- * below the time step's own error, for half the rotor solves).  A
- * stretch where the tank runs dry is not linear in mass: its steps are
- * computed one by one. */
-#define SPRAY_NODE 4
+ * them in between (within 1e-6 of the power computed at every step, 30
+ * times below the time step's own error, for a quarter of the rotor
+ * solves).  A stretch where the tank runs dry is not linear in mass: its
+ * steps are computed one by one. */
+#define SPRAY_NODE 8
 
 struct power_track {
 	const struct discharge_mission *mis;

@@ -316,9 +316,10 @@ discharge_drop_should_split_the_step_that_holds_it(void **state)
 
 /* A sprayer's power follows its falling mass: interpolated between exact
  * values every few steps (a parabola through three), each step's power is
- * within 1e-7 of the exact power at that step's mid-step mass, at the 60
- * steps of a final flight, on every phase and across the step where the tank runs dry (the mass
- * stops falling at 700 s). */
+ * within 1e-6 of the exact power at that step's mid-step mass (30 times
+ * below the time step's own 3e-5), at the 60 steps of a final flight, on
+ * every phase and across the step where the tank runs dry (the mass stops
+ * falling at 700 s).  The tank here is a quarter of the takeoff mass. */
 static void
 discharge_spray_power_should_follow_the_mass(void **state)
 {
@@ -350,7 +351,7 @@ discharge_spray_power_should_follow_the_mass(void **state)
 		double v_climb = tr[k].phase == PHASE_CLIMB ? 2.0 : 0.0;
 		double v_fwd = tr[k].phase == PHASE_FORWARD ? 8.0 : 0.0;
 		mission_power(&m, tr[k].mass_kg, v_climb, v_fwd, &pw);
-		assert_rel(tr[k].power_w, pw.electrical_w, 1e-7);
+		assert_rel(tr[k].power_w, pw.electrical_w, 1e-6);
 		exact_after_dry += tr[k].mass_kg == d.dry_mass_kg;
 	}
 	assert_true(exact_after_dry > 10); /* the tank ran dry mid-mission */
