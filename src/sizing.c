@@ -827,6 +827,11 @@ lipschitz(const struct sizing_params *p, const struct loop_state *ls,
 	double h = LIPSCHITZ_STEP * m_star;
 	struct eval a, b;
 	double ca = c_star, cb = c_star;
+	/* Its evaluations lie within 2h of one another: one speed hint. */
+	struct mission_speed_hint hint = { false, 0, 0 };
+	struct loop_state near = *ls;
+	near.speed_hint = &hint;
+	ls = &near;
 	/* A locked or catalogue capacity ignores the re-targeted one: further
 	 * rounds would repeat the first exactly. */
 	int rounds = capacity_given(p) ? 1 : 3;
