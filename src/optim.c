@@ -2,6 +2,7 @@
 #include "optim.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -1431,6 +1432,17 @@ closed_finite(const struct res_run *o)
 	return true;
 }
 
+/* *dst = *src for a masses-only run, which records no trace (n_trace 0):
+ * the samples, half its size, are not copied. */
+static void
+copy_masses_only(struct res_run *dst, const struct res_run *src)
+{
+	memcpy(dst, src, offsetof(struct res_run, trace));
+	const char *tail = (const char *)(src->trace + RES_MAX_TRACE);
+	memcpy(dst->trace + RES_MAX_TRACE, tail,
+	    sizeof *src - (size_t)(tail - (const char *)src));
+}
+
 /* Swap two result buffers. */
 static void
 swap_results(struct solve_result **a, struct solve_result **b)
@@ -1513,16 +1525,20 @@ bound_checks(const struct closer *k, const struct sizing_params *p,
  *
  * A screened closer (k->screened) reaches each attempt's mass fixed point
  * first and flies the mission from there (sizing_finish(): the same run).
- * With skip_at >= 0, the fallback's count of failed checks, a first
- * attempt whose bound_checks() show that it fails with that many failures
- * or more is not flown: *skipped is set and NULL returned (it could
- * neither close nor become the closest).  An upsized attempt bound to fail
- * at least as many checks as the one before is not flown either: the one
- * before is kept, as it would be after the flight. */
+ * With `keep` (a screened closer only), a first attempt whose
+ * bound_checks() show that it cannot close is not flown: *unclosable is
+ * set, *n_bound gets the count of failures it is bound to (the finished
+ * closing fails at least as many), its masses-only run goes to *keep
+ * (allocated if NULL), and NULL is returned.  A first attempt starts from
+ * `from` when given: that run, as such a try left it.  An upsized attempt
+ * bound to fail at least as many checks as the one before is not flown
+ * either: the one before is kept, as it would be after the flight. */
 static const char *
 close_choice(const struct closer *k, struct optim_choice *c,
              struct solve_result **srp, struct solve_result **sparep,
-             int skip_at, bool *skipped, bool *finite, enum sizing_status *stp)
+             const struct res_run *from, struct res_run **keep,
+             bool *unclosable, int *n_bound_out, bool *finite,
+             enum sizing_status *stp)
 {
 	double need_ah = at_bus(k->t, k->t->capacity_ah, c->cells);
 	double need_a = at_bus(k->t, k->t->bus_peak_current_a, c->cells);
@@ -1532,23 +1548,31 @@ close_choice(const struct closer *k, struct optim_choice *c,
 	enum sizing_status prev_st = SIZING_CONVERGED;
 	const char *parts_fail = NULL, *prev_parts_fail = NULL;
 	struct solve_result *sr = *srp;
-	*skipped = false;
+	*unclosable = false;
 	for (int attempt = 0;; attempt++) {
 		struct sizing_params p = *k->p0;
 		apply_parts(&p, k->md, k->t, k->custom, c);
 		/* Only the run kept needs them (optim_select fills them in). */
 		p.defer_extras = true;
 		p.masses_only = k->screened;
-		enum sizing_status st = sizing_run(&p, &sr->closed);
+		enum sizing_status st = SIZING_CONVERGED;
+		if (attempt == 0 && from != NULL && k->screened)
+			copy_masses_only(&sr->closed, from);
+		else
+			st = sizing_run(&p, &sr->closed);
 		p.masses_only = false;
 		bool worse = false;
 		if (k->screened && st == SIZING_CONVERGED
 		    && closed_finite(&sr->closed)) {
 			int n_bound;
-			bool bound = attempt == 0 ? skip_at >= 0 : prev_failed >= 0;
+			bool bound = attempt == 0 ? keep != NULL : prev_failed >= 0;
 			bool fails = bound && bound_checks(k, &p, c, sr, &n_bound);
-			if (bound && attempt == 0 && fails && n_bound >= skip_at) {
-				*skipped = true;
+			if (bound && attempt == 0 && fails) {
+				*unclosable = true;
+				*n_bound_out = n_bound;
+				if (*keep == NULL)
+					*keep = xmalloc(sizeof **keep);
+				copy_masses_only(*keep, &sr->closed);
 				return NULL;
 			}
 			worse = bound && attempt > 0 && n_bound >= prev_failed;
@@ -2031,6 +2055,91 @@ append_violations(struct solve_result *r, const struct solve_result *src)
 		r->violations[r->n_violations++] = src->violations[i];
 }
 
+/* The closest closing so far: the fewest failed checks, and among equals
+ * the first in search order (round, then J rank: key). */
+struct fallback {
+	struct solve_result *r;
+	struct optim_choice c;
+	struct optim_target t;         /* the aim it was found at */
+	int round, key;
+	int failed;                    /* its failed checks; -1: none yet */
+	bool finite;
+	enum sizing_status st;
+	char fail[64];                 /* its first new failure */
+};
+
+/* The closing in *cur (choice c, aim t, search position key) becomes the
+ * fallback if it is closer.  The next try rewrites all it reads of its
+ * result, so the buffers swap instead of copying a whole result. */
+static void
+offer_fallback(struct fallback *fb, struct solve_result **cur,
+               const struct optim_choice *c, const struct optim_target *t,
+               int round, int key, bool finite, enum sizing_status st,
+               const char *fail)
+{
+	int nf = n_failed(&(*cur)->closed);
+	if (fb->failed >= 0 && (nf > fb->failed || (nf == fb->failed && key > fb->key)))
+		return;
+	struct solve_result *tmp = fb->r;
+	fb->r = *cur;
+	*cur = tmp;
+	fb->c = *c;
+	fb->t = *t;
+	fb->round = round;
+	fb->key = key;
+	fb->failed = nf;
+	fb->finite = finite;
+	fb->st = st;
+	str_copy(fb->fail, sizeof fb->fail, fail ? fail : "");
+}
+
+/* A combination shown unable to close, its flight left for later. */
+struct deferred {
+	struct optim_choice c;
+	int round, key;
+	int n_bound;                   /* failures it is bound to */
+	bool flown;
+	struct res_run *fixed;         /* its masses-only run, to go on from */
+};
+
+static int
+deferred_cmp(const void *a, const void *b)
+{
+	const struct deferred *x = a, *y = b;
+	if (x->n_bound != y->n_bound)
+		return x->n_bound < y->n_bound ? -1 : 1;
+	return (x->key > y->key) - (x->key < y->key);
+}
+
+/* Nothing closed: the unclosable combinations fly now, each at its round's
+ * aim, and offer themselves as the fallback; the fewest bound failures go
+ * first, and one bound to fail more checks than the fallback (or as many,
+ * coming after it in search order) is not flown, as it cannot be it. */
+static void
+close_later(struct closer *k, struct deferred *later, int n_later,
+            const struct optim_target *round_t, struct fallback *fb,
+            struct solve_result **cur, struct solve_result **spare)
+{
+	const struct optim_target *aim = k->t;
+	qsort(later, (size_t)n_later, sizeof *later, deferred_cmp);
+	for (int j = 0; j < n_later; j++) {
+		struct deferred *d = &later[j];
+		if (d->flown || (fb->failed >= 0 && (d->n_bound > fb->failed
+		    || (d->n_bound == fb->failed && d->key > fb->key))))
+			continue;
+		k->t = &round_t[d->round];
+		struct optim_choice c = d->c;
+		bool unclosable, finite;
+		int n_bound;
+		enum sizing_status st;
+		const char *fail = close_choice(k, &c, cur, spare, d->fixed, NULL,
+		    &unclosable, &n_bound, &finite, &st);
+		d->flown = true;
+		offer_fallback(fb, cur, &c, k->t, d->round, d->key, finite, st, fail);
+	}
+	k->t = aim;
+}
+
 int
 optim_select(const struct mission_spec *spec, const struct model_data *md,
              const struct catalog *cat, struct solve_result *r)
@@ -2103,27 +2212,32 @@ optim_select_search(const struct mission_spec *spec,
 
 	/* Close the best combinations in J order until one closes as well as
 	 * the continuous design; re-aim at the real-parts mass when none does;
-	 * else keep the one with the fewest failed checks and report it. */
+	 * else keep the one with the fewest failed checks (the first in search
+	 * order among equals) and report it. */
 	struct optim_target tr = t;
 	struct closer k = { &p, md, &tr, cat, &lk, &r->custom,
 		search == OPTIM_SEARCH_SCREENED, &packs };
 	/* Trial buffers: each try writes all it reads of its result (see
 	 * close_choice()), and keeps its violations' codes only. */
-	struct solve_result *fb = xmalloc(sizeof *fb);
 	struct solve_result *cur = xmalloc(sizeof *cur);
 	struct solve_result *spare = xmalloc(sizeof *spare);
-	fb->terse = cur->terse = spare->terse = true;
-	fb->n_violations = 0;
+	struct fallback fb = { xmalloc(sizeof *fb.r), ch[0], t, 0, 0, -1, true,
+		SIZING_CONVERGED, "" };
+	fb.r->terse = cur->terse = spare->terse = true;
+	fb.r->n_violations = 0;
 	struct res_candidate *round_cand = xmalloc((size_t)OPTIM_ROUNDS
 	    * RES_MAX_CANDIDATES * sizeof *round_cand);
 	int round_n_cand[OPTIM_ROUNDS] = { 0 };
-	struct optim_choice fb_c = ch[0], use_c = ch[0];
-	struct optim_target fb_t = t, use_t = t;  /* the aim each was found at */
-	int fb_round = 0, use_round = 0;
-	char fb_fail[64] = "";
-	int fb_failed = -1;
-	bool fb_finite = true, finite = true;
-	enum sizing_status st = SIZING_CONVERGED, fb_st = st, use_st = st;
+	struct optim_target round_t[OPTIM_ROUNDS];  /* the aim of each round */
+	struct deferred later[OPTIM_ROUNDS * OPTIM_MAX_TRIES];
+	int n_later = 0;
+	for (int j = 0; j < OPTIM_ROUNDS * OPTIM_MAX_TRIES; j++)
+		later[j].fixed = NULL;
+	struct optim_choice use_c = ch[0];
+	struct optim_target use_t = t;  /* the aim it was found at */
+	int use_round = 0;
+	bool finite = true;
+	enum sizing_status st = SIZING_CONVERGED, use_st = st;
 	struct solve_result *use = NULL;
 	int tried = 0;
 	for (int round = 0; round < OPTIM_ROUNDS && use == NULL; round++) {
@@ -2134,20 +2248,30 @@ optim_select_search(const struct mission_spec *spec,
 		        &round_cand[round * RES_MAX_CANDIDATES], &round_n_cand[round]);
 		if (n == 0)
 			break;
+		round_t[round] = tr;
 		int kept = n < OPTIM_MAX_TRIES ? n : OPTIM_MAX_TRIES;
 		double heaviest = 0.0;
 		bool first_closed = false;
 		for (int i = 0; i < kept; i++) {
 			struct optim_choice c = ch[i];
-			/* A combination bound to fail with at least as many failed
-			 * checks as the fallback (which a later one must beat
-			 * strictly) changes nothing: it is not flown. */
-			bool skipped;
-			const char *fail = close_choice(&k, &c, &cur, &spare, fb_failed,
-			    &skipped, &finite, &st);
-			if (skipped) {
-				tried++;
-				r->n_screened_out++;
+			int key = round * OPTIM_MAX_TRIES + i;
+			bool unclosable;
+			int n_bound = 0;
+			struct deferred *d = &later[n_later];
+			const char *fail = close_choice(&k, &c, &cur, &spare, NULL,
+			    k.screened ? &d->fixed : NULL, &unclosable, &n_bound,
+			    &finite, &st);
+			tried += fail != NULL || !finite || unclosable;
+			if (unclosable) {
+				/* It cannot close, only become the fallback, which
+				 * is needed only when nothing closes: its flight
+				 * waits for that. */
+				d->c = ch[i];
+				d->round = round;
+				d->key = key;
+				d->n_bound = n_bound;
+				d->flown = false;
+				n_later++;
 				continue;
 			}
 			if (fail == NULL && finite) {
@@ -2158,35 +2282,31 @@ optim_select_search(const struct mission_spec *spec,
 				use_round = round;
 				break;
 			}
-			tried++;
 			if (i == 0) {
 				heaviest = cur->closed.mass.total_kg;
 				first_closed = true;
 			}
-			int nf = n_failed(&cur->closed);
-			if (fb_failed < 0 || nf < fb_failed) {
-				/* The closest so far becomes the fallback.  The next
-				 * try rewrites all it reads of its result, so the two
-				 * buffers swap instead of copying a whole result. */
-				struct solve_result *tmp = fb;
-				fb = cur;
-				cur = tmp;
-				fb_c = c;
-				fb_t = tr;
-				fb_round = round;
-				fb_failed = nf;
-				fb_finite = finite;
-				fb_st = st;
-				str_copy(fb_fail, sizeof fb_fail, fail ? fail : "");
-			}
+			offer_fallback(&fb, &cur, &c, &tr, round, key, finite, st, fail);
 		}
 		if (use == NULL && !first_closed && round + 1 < OPTIM_ROUNDS) {
 			/* The next round aims at the best combination's closed
-			 * mass: close it now that it is needed. */
+			 * mass: close it now that it is needed (it was left for
+			 * later, unclosable). */
 			struct optim_choice c = ch[0];
-			bool skipped;
-			close_choice(&k, &c, &cur, &spare, -1, &skipped, &finite, &st);
+			struct deferred *d = NULL;
+			for (int j = 0; j < n_later; j++)
+				if (later[j].key == round * OPTIM_MAX_TRIES)
+					d = &later[j];
+			bool unclosable;
+			int n_bound;
+			const char *fail = close_choice(&k, &c, &cur, &spare,
+			    d != NULL ? d->fixed : NULL, NULL, &unclosable, &n_bound,
+			    &finite, &st);
 			heaviest = cur->closed.mass.total_kg;
+			if (d != NULL)
+				d->flown = true;
+			offer_fallback(&fb, &cur, &c, &tr, round, round * OPTIM_MAX_TRIES,
+			    finite, st, fail);
 		}
 		/* Real parts heavier than the aim: thrust, current, power and
 		 * energy grow about as M^1.5 on a given rotor. */
@@ -2200,15 +2320,21 @@ optim_select_search(const struct mission_spec *spec,
 		tr.bus_peak_current_a *= g;
 		tr.capacity_ah *= g;
 	}
+	if (use == NULL)
+		close_later(&k, later, n_later, round_t, &fb, &cur, &spare);
+	for (int j = 0; j < n_later; j++)
+		r->n_screened_out += !later[j].flown;
+	for (int j = 0; j < OPTIM_ROUNDS * OPTIM_MAX_TRIES; j++)
+		free(later[j].fixed);
 	char failed[RES_TEXT] = "";
 	if (use == NULL) {
-		use = fb;
-		use_c = fb_c;
-		use_t = fb_t;
-		use_round = fb_round;
-		use_st = fb_st;
-		finite = fb_finite;
-		str_copy(failed, sizeof failed, fb_fail[0] ? fb_fail : "a check");
+		use = fb.r;
+		use_c = fb.c;
+		use_t = fb.t;
+		use_round = fb.round;
+		use_st = fb.st;
+		finite = fb.finite;
+		str_copy(failed, sizeof failed, fb.fail[0] ? fb.fail : "a check");
 	}
 	/* The closing kept gets its checks again, with the violations' text
 	 * (the same checks: the same run and parameters). */
@@ -2233,7 +2359,7 @@ optim_select_search(const struct mission_spec *spec,
 	}
 	locked_limits(&use_t, &lk, &use_c, r);
 	pack_list_free(&packs);
-	free(fb);
+	free(fb.r);
 	free(cur);
 	free(spare);
 	/* The crosshair figure scores every motor against the aim the chosen
