@@ -19,6 +19,7 @@
 #include "engine.h"
 #include "mission_io.h"
 #include "optim.h"
+#include "result_json.h"
 #include "units.h"
 #include "xalloc.h"
 
@@ -439,6 +440,43 @@ optim_select_should_close_every_example_with_a_bom_that_sums(void **state)
 	assert_true(no_parts <= 1);
 }
 
+/* The screen leaves a combination unflown when it is shown unable to
+ * close: when a later one closes, or when its bound shows it cannot be the
+ * fallback.  Neither changes the result: each example gives the same
+ * result.json as the search that closes every ranked combination. */
+static void
+optim_select_screen_should_change_nothing_but_the_flights(void **state)
+{
+	const struct env_state *s = *state;
+	char *files[MAX_EXAMPLES];
+	int n = examples(files, MAX_EXAMPLES);
+	int unflown = 0;
+	for (int i = 0; i < n; i++) {
+		struct mission_spec m;
+		load_mission(s, files[i], &m);
+		struct solve_result *a = xcalloc(1, sizeof *a);
+		struct solve_result *b = xcalloc(1, sizeof *b);
+		engine_solve_search(&m, &s->env.model, s->env.cat,
+		    OPTIM_SEARCH_SCREENED, a);
+		engine_solve_search(&m, &s->env.model, s->env.cat,
+		    OPTIM_SEARCH_EXHAUSTIVE, b);
+		struct result_json_faults fa, fb;
+		char *ja = result_json_render_checked(a, "test", &fa);
+		char *jb = result_json_render_checked(b, "test", &fb);
+		if (strcmp(ja, jb) != 0)
+			print_error("%s: screened and exhaustive results differ\n", files[i]);
+		assert_string_equal(ja, jb);
+		assert_int_equal(b->n_screened_out, 0);
+		unflown += a->n_screened_out;
+		free(ja);
+		free(jb);
+		free(a);
+		free(b);
+		free(files[i]);
+	}
+	assert_true(unflown > 0);
+}
+
 static void
 optim_select_should_be_deterministic(void **state)
 {
@@ -616,6 +654,8 @@ main(void)
 		cmocka_unit_test_setup_teardown(optim_rank_should_score_every_usable_motor_for_the_crosshair,
 		    setup_fixture, teardown_fixture),
 		cmocka_unit_test_setup_teardown(optim_select_should_close_every_example_with_a_bom_that_sums,
+		    setup_env, teardown_env),
+		cmocka_unit_test_setup_teardown(optim_select_screen_should_change_nothing_but_the_flights,
 		    setup_env, teardown_env),
 		cmocka_unit_test_setup_teardown(optim_select_should_be_deterministic,
 		    setup_env, teardown_env),
