@@ -25,19 +25,16 @@ feasibility_violation(struct solve_result *r, const char *run,
 	if (r->n_violations >= RES_MAX_VIOLATIONS)
 		return;
 	struct res_violation *v = &r->violations[r->n_violations++];
-	if (r->terse) {
-		/* The codes alone: the texts (most of its size) stay unwritten. */
-		v->run = run;
-		v->stage = stage;
-		v->code = code;
-		v->message[0] = '\0';
-		v->n_fixes = 0;
-		return;
-	}
-	memset(v, 0, sizeof *v);
+	/* Terse: the codes alone, the texts (most of its size) unwritten. */
+	if (!r->terse)
+		memset(v, 0, sizeof *v);
 	v->run = run;
 	v->stage = stage;
 	v->code = code;
+	v->message[0] = '\0';
+	v->n_fixes = 0;
+	if (r->terse)
+		return;
 	va_list ap;
 	va_start(ap, fmt);
 	vsnprintf(v->message, sizeof v->message, fmt, ap);
