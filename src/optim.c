@@ -2,7 +2,6 @@
 #include "optim.h"
 
 #include <math.h>
-#include <stddef.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -1432,17 +1431,6 @@ closed_finite(const struct res_run *o)
 	return true;
 }
 
-/* *dst = *src for a masses-only run, which records no trace (n_trace 0):
- * the samples, half its size, are not copied. */
-static void
-copy_masses_only(struct res_run *dst, const struct res_run *src)
-{
-	memcpy(dst, src, offsetof(struct res_run, trace));
-	const char *tail = (const char *)(src->trace + RES_MAX_TRACE);
-	memcpy(dst->trace + RES_MAX_TRACE, tail,
-	    sizeof *src - (size_t)(tail - (const char *)src));
-}
-
 /* Swap two result buffers. */
 static void
 swap_results(struct solve_result **a, struct solve_result **b)
@@ -1557,7 +1545,7 @@ close_choice(const struct closer *k, struct optim_choice *c,
 		p.masses_only = k->screened;
 		enum sizing_status st = SIZING_CONVERGED;
 		if (attempt == 0 && from != NULL && k->screened)
-			copy_masses_only(&sr->closed, from);
+			res_run_copy_untraced(&sr->closed, from);
 		else
 			st = sizing_run(&p, &sr->closed);
 		p.masses_only = false;
@@ -1572,7 +1560,7 @@ close_choice(const struct closer *k, struct optim_choice *c,
 				*n_bound_out = n_bound;
 				if (*keep == NULL)
 					*keep = xmalloc(sizeof **keep);
-				copy_masses_only(*keep, &sr->closed);
+				res_run_copy_untraced(*keep, &sr->closed);
 				return NULL;
 			}
 			worse = bound && attempt > 0 && n_bound >= prev_failed;
@@ -2055,27 +2043,33 @@ append_violations(struct solve_result *r, const struct solve_result *src)
 		r->violations[r->n_violations++] = src->violations[i];
 }
 
+/* A combination's place in search order: round × OPTIM_MAX_TRIES + its J
+ * rank in the round.  The round's aim is round_t[search_round(key)]. */
+static int
+search_round(int key)
+{
+	return key / OPTIM_MAX_TRIES;
+}
+
 /* The closest closing so far: the fewest failed checks, and among equals
- * the first in search order (round, then J rank: key). */
+ * the first in search order. */
 struct fallback {
 	struct solve_result *r;
 	struct optim_choice c;
-	struct optim_target t;         /* the aim it was found at */
-	int round, key;
+	int key;
 	int failed;                    /* its failed checks; -1: none yet */
 	bool finite;
 	enum sizing_status st;
 	char fail[64];                 /* its first new failure */
 };
 
-/* The closing in *cur (choice c, aim t, search position key) becomes the
+/* The closing in *cur (choice c, search position key) becomes the
  * fallback if it is closer.  The next try rewrites all it reads of its
  * result, so the buffers swap instead of copying a whole result. */
 static void
 offer_fallback(struct fallback *fb, struct solve_result **cur,
-               const struct optim_choice *c, const struct optim_target *t,
-               int round, int key, bool finite, enum sizing_status st,
-               const char *fail)
+               const struct optim_choice *c, int key, bool finite,
+               enum sizing_status st, const char *fail)
 {
 	int nf = n_failed(&(*cur)->closed);
 	if (fb->failed >= 0 && (nf > fb->failed || (nf == fb->failed && key > fb->key)))
@@ -2084,8 +2078,6 @@ offer_fallback(struct fallback *fb, struct solve_result **cur,
 	fb->r = *cur;
 	*cur = tmp;
 	fb->c = *c;
-	fb->t = *t;
-	fb->round = round;
 	fb->key = key;
 	fb->failed = nf;
 	fb->finite = finite;
@@ -2096,7 +2088,7 @@ offer_fallback(struct fallback *fb, struct solve_result **cur,
 /* A combination shown unable to close, its flight left for later. */
 struct deferred {
 	struct optim_choice c;
-	int round, key;
+	int key;
 	int n_bound;                   /* failures it is bound to */
 	bool flown;
 	struct res_run *fixed;         /* its masses-only run, to go on from */
@@ -2127,7 +2119,7 @@ close_later(struct closer *k, struct deferred *later, int n_later,
 		if (d->flown || (fb->failed >= 0 && (d->n_bound > fb->failed
 		    || (d->n_bound == fb->failed && d->key > fb->key))))
 			continue;
-		k->t = &round_t[d->round];
+		k->t = &round_t[search_round(d->key)];
 		struct optim_choice c = d->c;
 		bool unclosable, finite;
 		int n_bound;
@@ -2135,7 +2127,7 @@ close_later(struct closer *k, struct deferred *later, int n_later,
 		const char *fail = close_choice(k, &c, cur, spare, d->fixed, NULL,
 		    &unclosable, &n_bound, &finite, &st);
 		d->flown = true;
-		offer_fallback(fb, cur, &c, k->t, d->round, d->key, finite, st, fail);
+		offer_fallback(fb, cur, &c, d->key, finite, st, fail);
 	}
 	k->t = aim;
 }
@@ -2221,7 +2213,7 @@ optim_select_search(const struct mission_spec *spec,
 	 * close_choice()), and keeps its violations' codes only. */
 	struct solve_result *cur = xmalloc(sizeof *cur);
 	struct solve_result *spare = xmalloc(sizeof *spare);
-	struct fallback fb = { xmalloc(sizeof *fb.r), ch[0], t, 0, 0, -1, true,
+	struct fallback fb = { xmalloc(sizeof *fb.r), ch[0], 0, -1, true,
 		SIZING_CONVERGED, "" };
 	fb.r->terse = cur->terse = spare->terse = true;
 	fb.r->n_violations = 0;
@@ -2267,7 +2259,6 @@ optim_select_search(const struct mission_spec *spec,
 				 * is needed only when nothing closes: its flight
 				 * waits for that. */
 				d->c = ch[i];
-				d->round = round;
 				d->key = key;
 				d->n_bound = n_bound;
 				d->flown = false;
@@ -2286,7 +2277,7 @@ optim_select_search(const struct mission_spec *spec,
 				heaviest = cur->closed.mass.total_kg;
 				first_closed = true;
 			}
-			offer_fallback(&fb, &cur, &c, &tr, round, key, finite, st, fail);
+			offer_fallback(&fb, &cur, &c, key, finite, st, fail);
 		}
 		if (use == NULL && !first_closed && round + 1 < OPTIM_ROUNDS) {
 			/* The next round aims at the best combination's closed
@@ -2305,8 +2296,8 @@ optim_select_search(const struct mission_spec *spec,
 			heaviest = cur->closed.mass.total_kg;
 			if (d != NULL)
 				d->flown = true;
-			offer_fallback(&fb, &cur, &c, &tr, round, round * OPTIM_MAX_TRIES,
-			    finite, st, fail);
+			offer_fallback(&fb, &cur, &c, round * OPTIM_MAX_TRIES, finite, st,
+			    fail);
 		}
 		/* Real parts heavier than the aim: thrust, current, power and
 		 * energy grow about as M^1.5 on a given rotor. */
@@ -2330,8 +2321,8 @@ optim_select_search(const struct mission_spec *spec,
 	if (use == NULL) {
 		use = fb.r;
 		use_c = fb.c;
-		use_t = fb.t;
-		use_round = fb.round;
+		use_round = search_round(fb.key);
+		use_t = round_t[use_round];
 		use_st = fb.st;
 		finite = fb.finite;
 		str_copy(failed, sizeof failed, fb.fail[0] ? fb.fail : "a check");

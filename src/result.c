@@ -2,6 +2,9 @@
  * result.h). */
 #include "result.h"
 
+#include <stddef.h>
+#include <string.h>
+
 /* Spellings of enum res_phase_id, as written to result.json, bom.csv and the
  * dossier; index = enum value. */
 const char *const res_phase_name[PHASE_MAX] = { "climb", "forward", "hover" };
@@ -22,4 +25,27 @@ res_tightest_check(const struct res_run *run)
 			best = c;
 	}
 	return best;
+}
+
+/* Where a run's samples end. */
+static size_t
+trace_end(void)
+{
+	return offsetof(struct res_run, trace) + sizeof ((struct res_run *)0)->trace;
+}
+
+void
+res_run_clear_untraced(struct res_run *run)
+{
+	char *base = (char *)run;
+	memset(base, 0, offsetof(struct res_run, trace));
+	memset(base + trace_end(), 0, sizeof *run - trace_end());
+}
+
+void
+res_run_copy_untraced(struct res_run *dst, const struct res_run *src)
+{
+	memcpy(dst, src, offsetof(struct res_run, trace));
+	memcpy((char *)dst + trace_end(), (const char *)src + trace_end(),
+	    sizeof *dst - trace_end());
 }

@@ -73,10 +73,10 @@ struct res_sample {
 	int phase;           /* enum res_phase_id */
 };
 
-/* One constraint of the checks table. */
-/* The text fields of checks and violations point to string literals (the
- * check tables of feasibility.c and optim.c): static, so results copy
- * freely, and a trial closing writes no text. */
+/* One constraint of the checks table.  The text fields of checks and
+ * violations point to string literals (the check tables of feasibility.c
+ * and optim.c): static, so results copy freely, and a trial closing writes
+ * no text. */
 struct res_check {
 	const char *name;    /* "Battery peak temperature" */
 	const char *unit;    /* "°C" */
@@ -293,5 +293,12 @@ const struct res_check *res_tightest_check(const struct res_run *run);
  * (the thrust relaxation of sizing.h)?  The rationale, validate and the
  * sensitivity suite all ask. */
 bool res_thrust_relaxed(const struct res_run *run);
+
+/* A run's trace samples are most of its size, and only the first n_trace
+ * are ever read: these zero and copy all of a run but the samples (sizing
+ * clears a run it records, and the parts search keeps a masses-only run,
+ * which has none). */
+void res_run_clear_untraced(struct res_run *run);
+void res_run_copy_untraced(struct res_run *dst, const struct res_run *src);
 
 #endif

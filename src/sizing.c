@@ -2,7 +2,6 @@
 #include "sizing.h"
 
 #include <math.h>
-#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -561,22 +560,12 @@ next_cells(const struct sizing_params *p, int cells, double peak_w,
 	return cells;
 }
 
-/* Zero *out but its trace samples: they are most of its size, only the
- * first n_trace are ever read, and each recording writes those. */
-static void
-clear_run(struct res_run *out)
-{
-	char *base = (char *)out;
-	char *tail = (char *)(out->trace + RES_MAX_TRACE);
-	memset(base, 0, offsetof(struct res_run, trace));
-	memset(tail, 0, sizeof *out - (size_t)(tail - base));
-}
-
 /* Forget what a recording evaluation wrote into rec (the trace and the
  * speed sweep): the next one then starts from the record that sizing_run
  * began with.  A recording writes exactly the first n_trace samples (the
- * only ones read, see clear_run()) and n_sweep points, and each one is
- * cleared before the next, so only those points can be non-zero. */
+ * only ones read, see res_run_clear_untraced()) and n_sweep points, and
+ * each one is cleared before the next, so only those points can be
+ * non-zero. */
 static void
 clear_record(struct res_run *rec)
 {
@@ -1204,7 +1193,7 @@ sizing_run(const struct sizing_params *p_in, struct res_run *out)
 	struct sizing_params q = *p_in;
 	const struct sizing_params *p = &q;
 
-	clear_run(out);
+	res_run_clear_untraced(out);
 	out->ran = true;
 	out->thrust_margin_requested = q.thrust_margin;
 	enum sizing_status st = iterate(p, 1.0, out, out, &last, &fin, &fin_done,
