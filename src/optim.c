@@ -232,20 +232,30 @@ prop_aim_of(const struct optim_target *t, const struct catalog_motor *m,
 	a->n_hover_rps = hover_rps(t, a->d_in);
 }
 
-/* The limits of the motor alone on `cells` (cell range, current, power):
- * bits OPTIM_MOTOR_CELLS..OPTIM_MOTOR_POWER, the first three reasons. */
-static unsigned
-motor_mask(const struct optim_target *t, int cells, const struct catalog_motor *m)
+/* The limits of the motor alone on `cells` (cell range, current, power)
+ * when it must carry current_a (target_current_a() on that bus): bits
+ * OPTIM_MOTOR_CELLS..OPTIM_MOTOR_POWER, the first three reasons.  The
+ * ranking calls it once per motor and bus, with the bus's current
+ * computed once. */
+static inline unsigned
+motor_mask_at(const struct optim_target *t, int cells, double current_a,
+              const struct catalog_motor *m)
 {
 	unsigned mask = 0;
 	if ((m->cells_min > 0 && cells < m->cells_min)
 	    || (m->cells_max > 0 && cells > m->cells_max))
 		mask |= 1u << OPTIM_MOTOR_CELLS;
-	if (m->max_current_a < target_current_a(t, cells))
+	if (m->max_current_a < current_a)
 		mask |= 1u << OPTIM_MOTOR_CURRENT;
 	if (m->max_power_w > 0.0 && m->max_power_w < t->motor_peak_power_w)
 		mask |= 1u << OPTIM_MOTOR_POWER;
 	return mask;
+}
+
+static unsigned
+motor_mask(const struct optim_target *t, int cells, const struct catalog_motor *m)
+{
+	return motor_mask_at(t, cells, target_current_a(t, cells), m);
 }
 
 /* A propeller too large for the wheelbase. */
@@ -518,7 +528,10 @@ pick_battery(const struct optim_target *t, const struct pack_list *pl,
 			int ns = cells / b->cells_series;
 			if (ns > OPTIM_MAX_SERIES && !pl->locked)
 				continue;
-			if (pass == 0 && strcmp(pl->family[i], fam) != 0)
+			/* chem_family() returns one pointer per known family:
+			 * equal pointers need no strcmp. */
+			if (pass == 0 && pl->family[i] != fam
+			    && strcmp(pl->family[i], fam) != 0)
 				continue;
 			int np = parallel_needed(b, need_ah, need_a);
 			if (np > OPTIM_MAX_PARALLEL) {
@@ -810,33 +823,24 @@ motor_on_bus_of(const struct optim_target *t, int cells,
 	mb->j_mass[1] = j_mass_term(t, true, m->mass_kg);
 }
 
-/* Every option of one motor on one bus.  An option that is not eligible
- * (another part is locked) is never counted; it only matters when it
- * passes and a candidate records it, so it is skipped when there is none. */
+/* Every option of one motor on one bus, whose own limits give `own`
+ * (motor_mask()); motor_locked when the mission locks it.  An option that
+ * is not eligible (another part is locked) is never counted; it only
+ * matters when it passes and a candidate records it, so it is skipped when
+ * there is none.  A free, separate motor that breaks one of its own
+ * limits never comes here (rank_catalog() counts its options at once). */
 static void
 rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
-           const struct catalog_motor *m)
+           const struct catalog_motor *m, unsigned own, bool motor_locked)
 {
 	const struct optim_target *t = x->t;
 	const struct optim_locks *lk = x->lk;
-	bool motor_locked = is_lock(lk->motor, m->id);
 	bool motor_ok = lk->motor == NULL || motor_locked;
 	bool has_cand = x->cand != NULL && x->slot >= 0;
 	struct res_candidate *rc = has_cand ? &x->cand[x->slot] : NULL;
-	unsigned own = motor_mask(t, bus->cells, m);
 	struct motor_on_bus mb;
 	double theta;
 	if (!m->integrated) {
-		if (own != 0 && !motor_locked) {
-			/* A free motor's own limits are never ignored: each of its
-			 * options fails on the first of them and touches nothing
-			 * but the census, so they are counted at once. */
-			if (motor_ok) {
-				x->cs->n_examined += x->n_lock_ok;
-				x->cs->n_fail[first_reason(own)] += x->n_lock_ok;
-			}
-			return;
-		}
 		motor_on_bus_of(t, bus->cells, m, &mb);
 		/* A free propeller above the overlap limit fails there on a
 		 * motor that passes its own limits (the next reason in enum
@@ -1052,6 +1056,22 @@ rank_catalog(const struct optim_target *t, const struct catalog *cat,
 	x.spans = xmalloc((nm > 0 ? nm : 1) * sizeof *x.spans);
 	for (size_t i = 0; i < nm; i++)
 		x.spans[i].done = false;
+	/* The usable motors, looked up once for every bus, and which one a
+	 * lock names. */
+	const struct catalog_motor **motors = xmalloc((nm > 0 ? nm : 1)
+	    * sizeof *motors);
+	size_t *motor_at = xmalloc((nm > 0 ? nm : 1) * sizeof *motor_at);
+	size_t n_usable = 0, locked_at = nm;
+	for (size_t i = 0; i < nm; i++) {
+		const struct catalog_motor *m = catalog_motor(cat, i);
+		if (!m->usable)
+			continue;
+		if (is_lock(x.lk->motor, m->id))
+			locked_at = n_usable;
+		motor_at[n_usable] = i;
+		motors[n_usable++] = m;
+	}
+	bool count_free = x.lk->motor == NULL; /* a free motor's options count */
 
 	for (int s = t->cells_lo; s <= t->cells_hi; s++) {
 		struct bus_offer bus;
@@ -1063,15 +1083,30 @@ rank_catalog(const struct optim_target *t, const struct catalog *cat,
 		for (size_t i = 0; i < n_all_escs; i++)
 			if (esc_fits_bus(t, s, all_escs[i].e))
 				escs[x.n_escs++] = all_escs[i];
-		for (size_t i = 0; i < nm; i++) {
-			const struct catalog_motor *m = catalog_motor(cat, i);
-			if (!m->usable)
+		double current_a = target_current_a(t, s);
+		for (size_t u = 0; u < n_usable; u++) {
+			const struct catalog_motor *m = motors[u];
+			unsigned own = motor_mask_at(t, s, current_a, m);
+			bool locked = u == locked_at;
+			if (own != 0 && !m->integrated && !locked) {
+				/* A free motor's own limits are never ignored: each
+				 * of its options fails on the first of them and
+				 * touches nothing but the census, so they are
+				 * counted at once (most motors stop here). */
+				if (count_free) {
+					x.cs->n_examined += x.n_lock_ok;
+					x.cs->n_fail[first_reason(own)] += x.n_lock_ok;
+				}
 				continue;
+			}
+			size_t i = motor_at[u];
 			x.slot = slot[i];
 			x.span = &x.spans[i];
-			rank_motor(&x, &bus, m);
+			rank_motor(&x, &bus, m, own, locked);
 		}
 	}
+	free(motors);
+	free(motor_at);
 	free(x.spans);
 	free(all_escs);
 	free(escs);
