@@ -9,7 +9,15 @@
  * ask for after the solve (engine_explore(), median of 20), and the time
  * to render result.json (median of 20), in microseconds.  Ends with the
  * medians over all missions and the peak resident memory of this process.
+ *
+ * usage: build/bench -c parts|noparts MISSION.json
+ * One solve of the mission (with or without the parts catalogue) inside
+ * counted_solve(), for `valgrind --tool=callgrind
+ * --toggle-collect=counted_solve`: the instructions the calling thread
+ * spends on it, which repeat exactly where wall times drift (bench.sh,
+ * part 5).
  */
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -48,9 +56,48 @@ median(double *v, int n)
 	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+/* The solve callgrind counts (-c); not inlined, so that it has a name. */
+void counted_solve(const struct mission_spec *spec, const struct cli_env *env,
+                   const struct catalog *cat, struct solve_result *r);
+__attribute__((noinline)) void
+counted_solve(const struct mission_spec *spec, const struct cli_env *env,
+              const struct catalog *cat, struct solve_result *r)
+{
+	engine_solve(spec, &env->model, cat, r);
+}
+
+/* -c MODE MISSION: one counted solve; 0 when it ran. */
+static int
+count_one(const char *mode, const char *path)
+{
+	bool parts = strcmp(mode, "parts") == 0;
+	if (!parts && strcmp(mode, "noparts") != 0) {
+		fprintf(stderr, "bench: -c takes parts or noparts\n");
+		return 2;
+	}
+	struct cli_env *env = xcalloc(1, sizeof *env);
+	if (cli_env_load(env, NULL, 1, stderr) != 0)
+		return 2;
+	struct diag *dg = diag_alloc(stderr);
+	struct mission_spec spec;
+	int n_err = mission_io_load(path, env->model.chem_names, dg, &spec);
+	diag_flush(dg);
+	diag_free(dg);
+	if (n_err != 0)
+		return 2;
+	struct solve_result *r = xcalloc(1, sizeof *r);
+	counted_solve(&spec, env, parts ? env->cat : NULL, r);
+	free(r);
+	cli_env_free(env);
+	free(env);
+	return 0;
+}
+
 int
 main(int argc, char **argv)
 {
+	if (argc == 4 && strcmp(argv[1], "-c") == 0)
+		return count_one(argv[2], argv[3]);
 	int n_solves = 200, first = 1;
 	if (argc > 2 && strcmp(argv[1], "-n") == 0) {
 		n_solves = atoi(argv[2]);

@@ -9,6 +9,10 @@
 # 3. a batch of BATCH missions (examples/delivery_quad.json with the payload
 #    varied) compiled by one `aeroeval build -j 2`
 # 4. peak memory (max RSS) of a solve, a build and the batch
+# 5. instructions of one in-process solve per example, with and without the
+#    parts catalogue (valgrind's callgrind, calling thread only: the
+#    baseline's loop runs on a second thread); they repeat exactly, where
+#    the wall times of a shared virtual machine drift by tens of per cent
 # Budgets (issue 9): a solve well under 1 ms in process, a full dossier well
 # under 200 ms, memory under 50 MB.
 build=${1:-build}
@@ -84,3 +88,21 @@ printf '%-40s %10s\n' "solve agri_spray_octo" "$(max_rss_kib "$bin" solve exampl
 printf '%-40s %10s\n' "build delivery_quad" "$(max_rss_kib "$bin" build -o "$work/out" examples/delivery_quad.json)"
 # shellcheck disable=SC2086
 printf '%-40s %10s\n' "build batch of $BATCH ${jobs:-(sequential)}" "$(max_rss_kib "$bin" build $jobs -o "$work/bout2" "$work/batch")"
+echo
+
+echo "== 5. instructions of one in-process solve (callgrind, calling thread; millions)"
+if command -v valgrind >/dev/null 2>&1; then
+	printf '%-32s %10s %10s\n' mission parts_M noparts_M
+	for f in examples/*.json; do
+		row=""
+		for mode in parts noparts; do
+			n=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null \
+			    --toggle-collect=counted_solve "$build/bench" -c "$mode" "$f" 2>&1 \
+			    | awk '/Collected :/ { printf "%.2f", $NF / 1e6 }')
+			row="$row $(printf '%10s' "${n:-n/a}")"
+		done
+		printf '%-32s%s\n' "$(basename "$f")" "$row"
+	done
+else
+	echo "(valgrind is not installed: skipped)"
+fi
