@@ -616,6 +616,7 @@ struct rank_prop {
 	bool over;                     /* above the overlap limit */
 	struct prop_aim aim;
 	double j_diameter, j_pitch;    /* its J terms */
+	bool pitched;                  /* pitch known: j_mass_term()'s index */
 	double max_rpm;                /* p->max_rpm, 0 unknown */
 };
 
@@ -710,6 +711,29 @@ option_fails(struct rank_ctx *x, bool eligible, enum optim_reason why)
 	return true;
 }
 
+/* Keep a complete option of J score j among the best choices, if it ranks
+ * there; ep is its ESC set (NULL: an integrated system). */
+static inline void
+keep_option(struct rank_ctx *x, const struct bus_offer *bus,
+            const struct catalog_motor *m, const struct catalog_prop *p,
+            const struct esc_pick *ep, double j, double theta)
+{
+	/* A J above the last one kept cannot be kept (keep_choice() would
+	 * compare it there and stop). */
+	if (x->n_kept >= x->max_choices
+	    && (x->max_choices <= 0 || j > x->choices[x->max_choices - 1].j_score))
+		return;
+	struct optim_choice c = bus->battery;
+	c.cells = bus->cells;
+	c.motor = m;
+	c.prop = p;
+	c.esc = ep != NULL ? ep->esc : NULL;
+	c.n_esc = ep != NULL ? ep->n_esc : 0;
+	c.j_score = j;
+	c.hover_throttle = theta;
+	keep_choice(x->choices, &x->n_kept, x->max_choices, &c, x->t->cells);
+}
+
 /* One motor + propeller option on one bus that passed every limit the
  * locks leave (and was counted by option_fails): score it, keep it.  rc is
  * the motor's candidate, NULL when none is recorded.  Inline: it is the
@@ -746,20 +770,7 @@ rank_option(struct rank_ctx *x, const struct bus_offer *bus,
 		return;
 	x->cs->n_feasible++;
 	x->n_found++;
-	/* A J above the last one kept cannot be kept (keep_choice() would
-	 * compare it there and stop). */
-	if (x->n_kept >= x->max_choices
-	    && (x->max_choices <= 0 || j > x->choices[x->max_choices - 1].j_score))
-		return;
-	struct optim_choice c = bus->battery;
-	c.cells = bus->cells;
-	c.motor = m;
-	c.prop = p;
-	c.esc = m->integrated ? NULL : ep->esc;
-	c.n_esc = m->integrated ? 0 : ep->n_esc;
-	c.j_score = j;
-	c.hover_throttle = theta;
-	keep_choice(x->choices, &x->n_kept, x->max_choices, &c, t->cells);
+	keep_option(x, bus, m, p, m->integrated ? NULL : ep, j, theta);
 }
 
 static bool
@@ -890,10 +901,16 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 				return;
 			/* What is left can fail only the propeller's rpm limit or
 			 * hover (pair_mask()'s last two reasons, in its order).
-			 * The census counts are kept here and added once. */
+			 * The rest is rank_option() with what does not depend on
+			 * the propeller done once: the ESC set (picked when the
+			 * first option passes: it depends on the motor and the bus
+			 * only), the bus's battery, the candidate's best J and the
+			 * census counts. */
 			struct esc_pick ep = { false, NULL, 0 };
 			double n_max_rps = mb.rpm / S_PER_MIN;
-			int n_rpm = 0, n_hover = 0;
+			double best_j = rc != NULL ? rc->j_score : 0.0;
+			int n_rpm = 0, n_hover = 0, n_pass = 0;
+			bool keeps = false;    /* ESC, battery and no lock elsewhere */
 			for (size_t j = 0; j < n; j++) {
 				const struct rank_prop *rp = v[j];
 				if (rp->max_rpm > 0.0 && mb.rpm > rp->max_rpm) {
@@ -905,13 +922,35 @@ rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
 					n_hover++;
 					continue;
 				}
-				rank_option(x, bus, m, &mb, rc, rp->p, rp->j_diameter,
-				    rp->j_pitch, theta, motor_ok, &ep);
+				/* j_score_at()'s sum, from the terms computed once each. */
+				double jj = j_sum(rp->j_diameter, mb.j_kv, rp->j_pitch,
+				    j_throttle_term(t, theta), mb.j_mass[rp->pitched],
+				    x->j_cruise);
+				if (jj < best_j)
+					best_j = jj;
+				if (n_pass++ == 0) {
+					rank_pick_esc(x, bus->cells, m, &ep);
+					keeps = ep.esc != NULL && bus->have_battery && motor_ok;
+				}
+				if (keeps)
+					keep_option(x, bus, m, rp->p, &ep, jj, theta);
 			}
+			if (rc != NULL)
+				rc->j_score = best_j;
+			enum optim_reason why = ep.esc == NULL ? OPTIM_NO_ESC
+			    : !bus->have_battery ? OPTIM_NO_BATTERY : OPTIM_OK;
+			if (n_pass > 0 && why == OPTIM_OK && rc != NULL)
+				rc->feasible = true;
 			if (motor_ok) {
 				x->cs->n_examined += (int)n;
 				x->cs->n_fail[OPTIM_PROP_RPM] += n_rpm;
 				x->cs->n_fail[OPTIM_CANNOT_HOVER] += n_hover;
+				if (why != OPTIM_OK)
+					x->cs->n_fail[why] += n_pass;
+				else {
+					x->cs->n_feasible += n_pass;
+					x->n_found += n_pass;
+				}
 			}
 			return;
 		}
@@ -1023,6 +1062,7 @@ rank_catalog(const struct optim_target *t, const struct catalog *cat,
 		rp->over = over_overlap(t, rp->aim.d_in);
 		rp->j_diameter = j_diameter_term(t, rp->aim.d_in);
 		rp->j_pitch = j_pitch_term(t, p->pitch_in);
+		rp->pitched = p->pitch_in > 0.0;
 		rp->max_rpm = p->max_rpm;
 		x.n_lock_ok += rp->lock_ok;
 		all[x.n_props++] = rp;

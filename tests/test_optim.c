@@ -10,6 +10,7 @@
 #include "test_util.h"
 
 #include <dirent.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,6 +20,8 @@
 #include "engine.h"
 #include "mission_io.h"
 #include "optim.h"
+#include "aero.h"
+#include "stats.h"
 #include "result_json.h"
 #include "units.h"
 #include "xalloc.h"
@@ -340,6 +343,165 @@ solve(const struct env_state *s, const struct mission_spec *m)
 	return r;
 }
 
+/* ---- the ranking against a plain scan ------------------------------------ */
+
+#define SCAN_TARGETS 120
+
+/* A uniform draw in [lo, hi). */
+static double
+draw(struct stats_rng *g, double lo, double hi)
+{
+	return lo + (hi - lo) * (double)(stats_rng_next(g) >> 11) / 9007199254740992.0;
+}
+
+/* A random but plausible aim point: a multirotor of 0.3-60 kg whose rotor,
+ * KV, currents and powers hang together roughly as a sized design's do, so
+ * that every limit, and every shortcut the ranking takes past them, is
+ * met on some targets and missed on others. */
+static void
+random_target(struct stats_rng *g, struct optim_target *t)
+{
+	static const int rotors[] = { 4, 6, 8 };
+	static const char *const chem[] = { "LiPo", "LiHV", "Li-ion_standard" };
+	memset(t, 0, sizeof *t);
+	t->mass_kg = 0.3 * pow(200.0, draw(g, 0.0, 1.0));
+	t->n_rotors = rotors[stats_rng_below(g, 3)];
+	t->prop_diameter_in = 10.0 * pow(t->mass_kg / 2.0, 0.4) * draw(g, 0.6, 1.5);
+	t->prop_pitch_in = t->prop_diameter_in * draw(g, 0.25, 0.6);
+	t->overlap_limit_in = t->prop_diameter_in * draw(g, 0.95, 1.3);
+	t->wheelbase_m = in_to_m(t->prop_diameter_in) * draw(g, 1.8, 3.0);
+	t->cells = 2 + (int)stats_rng_below(g, 13);
+	t->cells_lo = t->cells_floor = t->cells;
+	t->cells_hi = t->cells + (int)stats_rng_below(g, 5);
+	t->v_cell_nom_v = draw(g, 3.6, 3.85);
+	t->ct = draw(g, 0.08, 0.12);
+	t->rho_kg_m3 = draw(g, 0.8, 1.3);
+	t->sound_m_s = draw(g, 325.0, 345.0);
+	t->hover_throttle = draw(g, 0.45, 0.7);
+	t->forward_pitch_deg = draw(g, 5.0, 25.0);
+	double thrust_n = t->mass_kg * G0_M_S2 / (double)t->n_rotors;
+	double n_hover = aero_rps_for_thrust(thrust_n, t->ct, t->rho_kg_m3,
+	    in_to_m(t->prop_diameter_in));
+	t->motor_kv = n_hover * 60.0 / (t->hover_throttle * (double)t->cells
+	    * t->v_cell_nom_v * OPTIM_LOAD_RPM) * draw(g, 0.7, 1.4);
+	t->motor_peak_power_w = 250.0 * t->mass_kg / (double)t->n_rotors * draw(g, 0.5, 2.0);
+	t->motor_peak_current_a = t->motor_peak_power_w
+	    / ((double)t->cells * t->v_cell_nom_v);
+	t->bus_peak_current_a = t->motor_peak_current_a * (double)t->n_rotors;
+	t->capacity_ah = t->mass_kg * draw(g, 0.5, 3.0) * 4.0 / (double)t->cells;
+	t->motor_mass_kg = 0.03 * t->mass_kg / (double)t->n_rotors * draw(g, 0.6, 1.6);
+	t->drive_mass_kg = 1.5 * t->motor_mass_kg;
+	snprintf(t->chemistry, sizeof t->chemistry, "%s", chem[stats_rng_below(g, 3)]);
+}
+
+/* The ranking takes many shortcuts: a motor that breaks its own limits is
+ * counted for all its propellers at once, the propellers outside its range
+ * or above the tip Mach limit are cut from the diameter-sorted list, and
+ * what does not depend on the propeller is done once per motor and bus.
+ * Scanning every bus × motor × propeller option with optim_limits() and
+ * optim_j_score() must give the same census, the same best J for every
+ * motor (bit for bit), and kept choices that are the best-scoring
+ * complete options in order. */
+static void
+optim_rank_should_agree_with_a_plain_scan_of_every_option(void **state)
+{
+	const struct env_state *s = *state;
+	const struct catalog *cat = s->env.cat;
+	struct stats_rng g;
+	stats_rng_seed(&g, 20261202);
+	size_t nm = catalog_n_motors(cat), np = catalog_n_props(cat);
+	struct res_candidate *cand = xmalloc(RES_MAX_CANDIDATES * sizeof *cand);
+	double *best = xmalloc(nm * sizeof *best);
+	int n_passing_targets = 0, n_feasible_targets = 0;
+	for (int k = 0; k < SCAN_TARGETS; k++) {
+		struct optim_target t;
+		random_target(&g, &t);
+		struct optim_census cs;
+		struct optim_choice ch[8];
+		int n_cand = 0;
+		int n_found = optim_rank(&t, cat, NULL, ch, 8, &cs, cand, &n_cand);
+
+		struct optim_census ref;
+		memset(&ref, 0, sizeof ref);
+		int n_pass = 0;
+		for (size_t i = 0; i < nm; i++)
+			best[i] = OPTIM_PRUNED;
+		for (int cells = t.cells_lo; cells <= t.cells_hi; cells++) {
+			for (size_t i = 0; i < nm; i++) {
+				const struct catalog_motor *m = catalog_motor(cat, i);
+				if (!m->usable)
+					continue;
+				for (size_t j = 0; j < (m->integrated ? 1 : np); j++) {
+					const struct catalog_prop *p = m->integrated ? NULL
+					    : catalog_prop(cat, j);
+					if (p != NULL && !p->usable)
+						continue;
+					ref.n_examined++;
+					enum optim_reason why = optim_limits(&t, cells, m, p);
+					if (why != OPTIM_OK) {
+						ref.n_fail[why]++;
+						continue;
+					}
+					n_pass++;
+					double theta;
+					double jj = optim_j_score(&t, cells,
+					    p != NULL ? p->diameter_in : m->integrated_prop_in,
+					    p != NULL ? p->pitch_in : 0.0, m->kv_rpm_per_v,
+					    m->mass_kg, &theta);
+					if (jj < best[i])
+						best[i] = jj;
+				}
+			}
+		}
+		assert_int_equal(cs.n_examined, ref.n_examined);
+		for (int why = OPTIM_OK + 1; why < OPTIM_REASON_MAX; why++)
+			if (why != OPTIM_NO_ESC && why != OPTIM_NO_BATTERY)
+				assert_int_equal(cs.n_fail[why], ref.n_fail[why]);
+		/* Each option passing the limits lacks an ESC or a battery, or
+		 * is complete. */
+		assert_int_equal(cs.n_fail[OPTIM_NO_ESC] + cs.n_fail[OPTIM_NO_BATTERY]
+		    + cs.n_feasible, n_pass);
+		assert_int_equal(n_found, cs.n_feasible);
+		/* Every usable motor's candidate, in catalogue order. */
+		int c = 0;
+		for (size_t i = 0; i < nm && c < n_cand; i++) {
+			const struct catalog_motor *m = catalog_motor(cat, i);
+			if (!m->usable)
+				continue;
+			assert_string_equal(cand[c].id, m->id);
+			assert_true(cand[c].j_score == best[i]);
+			if (cand[c].feasible)
+				assert_true(best[i] < OPTIM_PRUNED);
+			c++;
+		}
+		/* The kept choices: options within the limits, each with its
+		 * own parts' J, in order.  (A candidate's best J may be an option
+		 * that lacks an ESC or a battery, so it bounds nothing here.) */
+		int kept = n_found < 8 ? n_found : 8;
+		for (int i = 0; i < kept; i++) {
+			double theta;
+			double jj = optim_j_score(&t, ch[i].cells,
+			    ch[i].prop != NULL ? ch[i].prop->diameter_in
+			        : ch[i].motor->integrated_prop_in,
+			    ch[i].prop != NULL ? ch[i].prop->pitch_in : 0.0,
+			    ch[i].motor->kv_rpm_per_v, ch[i].motor->mass_kg, &theta);
+			assert_true(jj == ch[i].j_score);
+			assert_true(theta == ch[i].hover_throttle);
+			assert_int_equal(optim_limits(&t, ch[i].cells, ch[i].motor,
+			    ch[i].prop), OPTIM_OK);
+			if (i > 0)
+				assert_true(ch[i - 1].j_score <= ch[i].j_score);
+		}
+		n_passing_targets += n_pass > 0;
+		n_feasible_targets += n_found > 0;
+	}
+	/* The targets reach the shortcuts' far side, not only their cuts. */
+	assert_true(n_passing_targets >= SCAN_TARGETS / 4);
+	assert_true(n_feasible_targets >= SCAN_TARGETS / 8);
+	free(best);
+	free(cand);
+}
+
 static int
 cmp_str(const void *a, const void *b)
 {
@@ -653,6 +815,8 @@ main(void)
 		    setup_fixture, teardown_fixture),
 		cmocka_unit_test_setup_teardown(optim_rank_should_score_every_usable_motor_for_the_crosshair,
 		    setup_fixture, teardown_fixture),
+		cmocka_unit_test_setup_teardown(optim_rank_should_agree_with_a_plain_scan_of_every_option,
+		    setup_env, teardown_env),
 		cmocka_unit_test_setup_teardown(optim_select_should_close_every_example_with_a_bom_that_sums,
 		    setup_env, teardown_env),
 		cmocka_unit_test_setup_teardown(optim_select_screen_should_change_nothing_but_the_flights,
