@@ -838,8 +838,9 @@ motor_on_bus_of(const struct optim_target *t, int cells,
  * (motor_mask()); motor_locked when the mission locks it.  An option that
  * is not eligible (another part is locked) is never counted; it only
  * matters when it passes and a candidate records it, so it is skipped when
- * there is none.  A free, separate motor that breaks one of its own
- * limits never comes here (rank_catalog() counts its options at once). */
+ * there is none.  A free motor with its own propellers (not an integrated
+ * system) that breaks one of its own limits never comes here:
+ * rank_catalog() counts its options at once. */
 static void
 rank_motor(struct rank_ctx *x, const struct bus_offer *bus,
            const struct catalog_motor *m, unsigned own, bool motor_locked)
