@@ -1,6 +1,7 @@
 /* optim.c — discrete part selection and the BOM-closed design (see optim.h). */
 #include "optim.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -1306,7 +1307,22 @@ struct closer {
 	const struct res_run *custom;
 	bool screened;                   /* OPTIM_SEARCH_SCREENED */
 	const struct pack_list *packs;   /* what an upsized battery is picked from */
+	/* Only when nothing closed (close_later()): the combination being
+	 * closed can then only become the fallback, and an upsized attempt
+	 * bound to rank after `beat` (fallback_rank() of the fallback so far)
+	 * cannot make it one.  LONG_MAX: no such limit. */
+	long beat;
+	int key;                         /* the combination's search key */
 };
+
+/* A closing's place in the fallback order (fewest failed checks, then the
+ * first in search order) as one number: (failed, search key),
+ * lexicographic. */
+static long
+fallback_rank(int failed, int key)
+{
+	return (long)failed * OPTIM_ROUNDS * OPTIM_MAX_TRIES + key;
+}
 
 /* Full-throttle rotor speed of the real motor on the closed bus, rev/s. */
 static double
@@ -1639,7 +1655,10 @@ close_choice(const struct closer *k, struct optim_choice *c,
 				res_run_copy_untraced(*keep, &sr->closed);
 				return NULL;
 			}
-			worse = bound && attempt > 0 && n_bound >= prev_failed;
+			/* More battery or ESC only adds mass, so the bound holds for
+			 * every later attempt too. */
+			worse = bound && attempt > 0 && (n_bound >= prev_failed
+			    || fallback_rank(n_bound, k->key) > k->beat);
 			if (!worse)
 				st = sizing_finish(&p, &sr->closed);
 		} else if (k->screened) {
@@ -2192,8 +2211,9 @@ close_later(struct closer *k, struct deferred *later, int n_later,
 	qsort(later, (size_t)n_later, sizeof *later, deferred_cmp);
 	for (int j = 0; j < n_later; j++) {
 		struct deferred *d = &later[j];
-		if (d->flown || (fb->failed >= 0 && (d->n_bound > fb->failed
-		    || (d->n_bound == fb->failed && d->key > fb->key))))
+		k->beat = fb->failed >= 0 ? fallback_rank(fb->failed, fb->key) : LONG_MAX;
+		k->key = d->key;
+		if (d->flown || fallback_rank(d->n_bound, d->key) > k->beat)
 			continue;
 		k->t = &round_t[search_round(d->key)];
 		struct optim_choice c = d->c;
@@ -2206,6 +2226,7 @@ close_later(struct closer *k, struct deferred *later, int n_later,
 		offer_fallback(fb, cur, &c, d->key, finite, st, fail);
 	}
 	k->t = aim;
+	k->beat = LONG_MAX;
 }
 
 int
@@ -2284,7 +2305,7 @@ optim_select_search(const struct mission_spec *spec,
 	 * order among equals) and report it. */
 	struct optim_target tr = t;
 	struct closer k = { &p, md, &tr, cat, &lk, &r->custom,
-		search == OPTIM_SEARCH_SCREENED, &packs };
+		search == OPTIM_SEARCH_SCREENED, &packs, LONG_MAX, 0 };
 	/* Trial buffers: each try writes all it reads of its result (see
 	 * close_choice()), and keeps its violations' codes only. */
 	struct solve_result *cur = xmalloc(sizeof *cur);
