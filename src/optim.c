@@ -662,7 +662,7 @@ struct rank_ctx {
 	const struct esc_offer *escs;  /* with no ESC locked: the sets that
 	                                  suit this bus, lightest first */
 	size_t n_escs;
-	struct prop_span *spans;       /* per motor, in catalogue order */
+	struct prop_span *spans;       /* per usable motor, in catalogue order */
 	struct prop_span *span;        /* the motor being ranked */
 	double j_cruise;               /* the J term common to every option */
 };
@@ -1027,15 +1027,28 @@ rank_catalog(const struct optim_target *t, const struct catalog *cat,
 	x.cand = cand;
 	x.j_cruise = j_cruise_term(t);
 
+	/* The usable motors, in catalogue order, looked up once for every
+	 * bus; which one a lock names; and each one's candidate slot. */
 	size_t nm = catalog_n_motors(cat);
-	int *slot = xmalloc((nm > 0 ? nm : 1) * sizeof *slot);
-	int n = 0;
+	const struct catalog_motor **motors = xmalloc((nm > 0 ? nm : 1)
+	    * sizeof *motors);
+	size_t n_usable = 0, locked_at = nm;
 	for (size_t i = 0; i < nm; i++) {
 		const struct catalog_motor *m = catalog_motor(cat, i);
-		slot[i] = -1;
-		if (cand == NULL || !m->usable || n >= RES_MAX_CANDIDATES)
+		if (!m->usable)
 			continue;
-		slot[i] = n;
+		if (is_lock(x.lk->motor, m->id))
+			locked_at = n_usable;
+		motors[n_usable++] = m;
+	}
+	int *slot = xmalloc((n_usable > 0 ? n_usable : 1) * sizeof *slot);
+	int n = 0;
+	for (size_t u = 0; u < n_usable; u++) {
+		const struct catalog_motor *m = motors[u];
+		slot[u] = -1;
+		if (cand == NULL || n >= RES_MAX_CANDIDATES)
+			continue;
+		slot[u] = n;
 		struct res_candidate *c = &cand[n++];
 		memset(c, 0, sizeof *c);
 		str_copy(c->id, sizeof c->id, m->id);
@@ -1095,24 +1108,9 @@ rank_catalog(const struct optim_target *t, const struct catalog *cat,
 	x.escs = escs;
 	/* Each motor's recommended propeller range, cut once (it does not
 	 * depend on the bus). */
-	x.spans = xmalloc((nm > 0 ? nm : 1) * sizeof *x.spans);
-	for (size_t i = 0; i < nm; i++)
-		x.spans[i].done = false;
-	/* The usable motors, looked up once for every bus, and which one a
-	 * lock names. */
-	const struct catalog_motor **motors = xmalloc((nm > 0 ? nm : 1)
-	    * sizeof *motors);
-	size_t *motor_at = xmalloc((nm > 0 ? nm : 1) * sizeof *motor_at);
-	size_t n_usable = 0, locked_at = nm;
-	for (size_t i = 0; i < nm; i++) {
-		const struct catalog_motor *m = catalog_motor(cat, i);
-		if (!m->usable)
-			continue;
-		if (is_lock(x.lk->motor, m->id))
-			locked_at = n_usable;
-		motor_at[n_usable] = i;
-		motors[n_usable++] = m;
-	}
+	x.spans = xmalloc((n_usable > 0 ? n_usable : 1) * sizeof *x.spans);
+	for (size_t u = 0; u < n_usable; u++)
+		x.spans[u].done = false;
 	bool count_free = x.lk->motor == NULL; /* a free motor's options count */
 
 	for (int s = t->cells_lo; s <= t->cells_hi; s++) {
@@ -1141,14 +1139,12 @@ rank_catalog(const struct optim_target *t, const struct catalog *cat,
 				}
 				continue;
 			}
-			size_t i = motor_at[u];
-			x.slot = slot[i];
-			x.span = &x.spans[i];
+			x.slot = slot[u];
+			x.span = &x.spans[u];
 			rank_motor(&x, &bus, m, own, locked);
 		}
 	}
 	free(motors);
-	free(motor_at);
 	free(x.spans);
 	free(all_escs);
 	free(escs);
