@@ -2163,7 +2163,8 @@ offer_fallback(struct fallback *fb, struct solve_result **cur,
                enum sizing_status st, const char *fail)
 {
 	int nf = n_failed(&(*cur)->closed);
-	if (fb->failed >= 0 && (nf > fb->failed || (nf == fb->failed && key > fb->key)))
+	if (fb->failed >= 0
+	    && fallback_rank(nf, key) > fallback_rank(fb->failed, fb->key))
 		return;
 	struct solve_result *tmp = fb->r;
 	fb->r = *cur;
@@ -2185,13 +2186,15 @@ struct deferred {
 	struct res_run *fixed;         /* its masses-only run, to go on from */
 };
 
+/* qsort order of deferred combinations: by the fallback rank of their
+ * bound, the closest possible first. */
 static int
 deferred_cmp(const void *a, const void *b)
 {
 	const struct deferred *x = a, *y = b;
-	if (x->n_bound != y->n_bound)
-		return x->n_bound < y->n_bound ? -1 : 1;
-	return (x->key > y->key) - (x->key < y->key);
+	long rx = fallback_rank(x->n_bound, x->key);
+	long ry = fallback_rank(y->n_bound, y->key);
+	return (rx > ry) - (rx < ry);
 }
 
 /* Nothing closed: the unclosable combinations fly now, each at its round's
