@@ -157,6 +157,13 @@ stats_rng_below(struct stats_rng *r, uint64_t bound)
 	}
 }
 
+double
+stats_rng_uniform(struct stats_rng *r, double lo, double hi)
+{
+	/* The top 53 bits: every double of [0, 1) on the 2^-53 grid. */
+	return lo + (hi - lo) * (double)(stats_rng_next(r) >> 11) * 0x1.0p-53;
+}
+
 int
 stats_bootstrap_mape_ci(const double *actual_kg, const double *predicted_kg,
                         size_t n, size_t n_resamples, uint64_t seed,

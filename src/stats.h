@@ -63,6 +63,9 @@ uint64_t stats_rng_next(struct stats_rng *r);
  * bound = 0 returns 0. */
 uint64_t stats_rng_below(struct stats_rng *r, uint64_t bound);
 
+/* A uniform double in [lo, hi). */
+double stats_rng_uniform(struct stats_rng *r, double lo, double hi);
+
 /* Bootstrap 95 % confidence interval of the MAPE, percentile method: draw
  * n_resamples resamples of the n pairs with replacement (generator seeded
  * with `seed`), take the MAPE of each, and report the 2.5 % and 97.5 %

@@ -132,12 +132,6 @@ mission_sweep_should_stop_v_max_at_the_thrust_limit(void **state)
 	assert_true(v_min <= v_max);
 }
 
-static double
-draw(struct stats_rng *g, double lo, double hi)
-{
-	return lo + (hi - lo) * (double)(stats_rng_next(g) >> 11) * 0x1.0p-53;
-}
-
 /* The bisection search lands on the sweep's speeds: 5000 random aircraft
  * from a 5-inch racer to a 30 kg sprayer, sea level to 5000 m, some of
  * them clipped by the thrust limit at every speed. */
@@ -149,21 +143,22 @@ mission_search_should_find_the_sweeps_speeds_on_random_aircraft(void **state)
 	stats_rng_seed(&g, 20261201);
 	for (int k = 0; k < 5000; k++) {
 		struct mission_model m;
-		fixture_hand_model(&m, draw(&g, 0.0, 1.0) < 0.2);
-		atmo_at(draw(&g, 0.0, 5000.0), c_to_k(draw(&g, -20.0, 45.0)), &m.air);
-		m.rotor.diameter_m = draw(&g, 0.12, 1.0);
-		m.rotor.ct = draw(&g, 0.08, 0.16);
-		m.rotor.fom = draw(&g, 0.45, 0.75);
-		m.rotor.n_blades = draw(&g, 0.0, 1.0) < 0.7 ? 2 : 3;
-		m.n_rotors = (int)draw(&g, 3.0, 8.99);
-		m.f_scale = draw(&g, 0.005, 0.03);
-		m.added_drag_m2 = draw(&g, 0.0, 0.1);
-		m.fwd_drag_mult = draw(&g, 1.0, 2.0);
-		m.cd_h = draw(&g, 0.6, 1.4);
-		m.aux_w = draw(&g, 0.0, 300.0);
-		double mass_kg = draw(&g, 0.3, 40.0);
+		fixture_hand_model(&m, stats_rng_uniform(&g, 0.0, 1.0) < 0.2);
+		atmo_at(stats_rng_uniform(&g, 0.0, 5000.0),
+		    c_to_k(stats_rng_uniform(&g, -20.0, 45.0)), &m.air);
+		m.rotor.diameter_m = stats_rng_uniform(&g, 0.12, 1.0);
+		m.rotor.ct = stats_rng_uniform(&g, 0.08, 0.16);
+		m.rotor.fom = stats_rng_uniform(&g, 0.45, 0.75);
+		m.rotor.n_blades = stats_rng_uniform(&g, 0.0, 1.0) < 0.7 ? 2 : 3;
+		m.n_rotors = (int)stats_rng_uniform(&g, 3.0, 8.99);
+		m.f_scale = stats_rng_uniform(&g, 0.005, 0.03);
+		m.added_drag_m2 = stats_rng_uniform(&g, 0.0, 0.1);
+		m.fwd_drag_mult = stats_rng_uniform(&g, 1.0, 2.0);
+		m.cd_h = stats_rng_uniform(&g, 0.6, 1.4);
+		m.aux_w = stats_rng_uniform(&g, 0.0, 300.0);
+		double mass_kg = stats_rng_uniform(&g, 0.3, 40.0);
 		double hover_n = mass_kg * G0_M_S2 / (double)m.n_rotors;
-		double t_max_n = hover_n * draw(&g, 0.9, 4.0);
+		double t_max_n = hover_n * stats_rng_uniform(&g, 0.9, 4.0);
 		double v[64], pw[64], v_min, v_max, s_min, s_max;
 		(void)mission_speed_sweep(&m, mass_kg, t_max_n, v, pw, 64, &v_min,
 		    &v_max);
@@ -171,8 +166,8 @@ mission_search_should_find_the_sweeps_speeds_on_random_aircraft(void **state)
 		assert_true(s_min == v_min);
 		assert_true(s_max == v_max);
 		/* From any hint, near or far, even off the grid: the same. */
-		struct mission_speed_hint h = { true, (int)draw(&g, -3.0, 65.0),
-		    (int)draw(&g, -3.0, 65.0) };
+		struct mission_speed_hint h = { true, (int)stats_rng_uniform(&g, -3.0, 65.0),
+		    (int)stats_rng_uniform(&g, -3.0, 65.0) };
 		mission_speed_search_hinted(&m, mass_kg, t_max_n, &s_min, &s_max, &h);
 		assert_true(s_min == v_min);
 		assert_true(s_max == v_max);

@@ -347,13 +347,6 @@ solve(const struct env_state *s, const struct mission_spec *m)
 
 #define SCAN_TARGETS 120
 
-/* A uniform draw in [lo, hi). */
-static double
-draw(struct stats_rng *g, double lo, double hi)
-{
-	return lo + (hi - lo) * (double)(stats_rng_next(g) >> 11) / 9007199254740992.0;
-}
-
 /* A random but plausible aim point: a multirotor of 0.3-60 kg whose rotor,
  * KV, currents and powers hang together roughly as a sized design's do, so
  * that every limit, and every shortcut the ranking takes past them, is
@@ -364,32 +357,36 @@ random_target(struct stats_rng *g, struct optim_target *t)
 	static const int rotors[] = { 4, 6, 8 };
 	static const char *const chem[] = { "LiPo", "LiHV", "Li-ion_standard" };
 	memset(t, 0, sizeof *t);
-	t->mass_kg = 0.3 * pow(200.0, draw(g, 0.0, 1.0));
+	t->mass_kg = 0.3 * pow(200.0, stats_rng_uniform(g, 0.0, 1.0));
 	t->n_rotors = rotors[stats_rng_below(g, 3)];
-	t->prop_diameter_in = 10.0 * pow(t->mass_kg / 2.0, 0.4) * draw(g, 0.6, 1.5);
-	t->prop_pitch_in = t->prop_diameter_in * draw(g, 0.25, 0.6);
-	t->overlap_limit_in = t->prop_diameter_in * draw(g, 0.95, 1.3);
-	t->wheelbase_m = in_to_m(t->prop_diameter_in) * draw(g, 1.8, 3.0);
+	t->prop_diameter_in = 10.0 * pow(t->mass_kg / 2.0, 0.4)
+	    * stats_rng_uniform(g, 0.6, 1.5);
+	t->prop_pitch_in = t->prop_diameter_in * stats_rng_uniform(g, 0.25, 0.6);
+	t->overlap_limit_in = t->prop_diameter_in * stats_rng_uniform(g, 0.95, 1.3);
+	t->wheelbase_m = in_to_m(t->prop_diameter_in) * stats_rng_uniform(g, 1.8, 3.0);
 	t->cells = 2 + (int)stats_rng_below(g, 13);
 	t->cells_lo = t->cells_floor = t->cells;
 	t->cells_hi = t->cells + (int)stats_rng_below(g, 5);
-	t->v_cell_nom_v = draw(g, 3.6, 3.85);
-	t->ct = draw(g, 0.08, 0.12);
-	t->rho_kg_m3 = draw(g, 0.8, 1.3);
-	t->sound_m_s = draw(g, 325.0, 345.0);
-	t->hover_throttle = draw(g, 0.45, 0.7);
-	t->forward_pitch_deg = draw(g, 5.0, 25.0);
+	t->v_cell_nom_v = stats_rng_uniform(g, 3.6, 3.85);
+	t->ct = stats_rng_uniform(g, 0.08, 0.12);
+	t->rho_kg_m3 = stats_rng_uniform(g, 0.8, 1.3);
+	t->sound_m_s = stats_rng_uniform(g, 325.0, 345.0);
+	t->hover_throttle = stats_rng_uniform(g, 0.45, 0.7);
+	t->forward_pitch_deg = stats_rng_uniform(g, 5.0, 25.0);
 	double thrust_n = t->mass_kg * G0_M_S2 / (double)t->n_rotors;
 	double n_hover = aero_rps_for_thrust(thrust_n, t->ct, t->rho_kg_m3,
 	    in_to_m(t->prop_diameter_in));
 	t->motor_kv = n_hover * 60.0 / (t->hover_throttle * (double)t->cells
-	    * t->v_cell_nom_v * OPTIM_LOAD_RPM) * draw(g, 0.7, 1.4);
-	t->motor_peak_power_w = 250.0 * t->mass_kg / (double)t->n_rotors * draw(g, 0.5, 2.0);
+	    * t->v_cell_nom_v * OPTIM_LOAD_RPM) * stats_rng_uniform(g, 0.7, 1.4);
+	t->motor_peak_power_w = 250.0 * t->mass_kg / (double)t->n_rotors
+	    * stats_rng_uniform(g, 0.5, 2.0);
 	t->motor_peak_current_a = t->motor_peak_power_w
 	    / ((double)t->cells * t->v_cell_nom_v);
 	t->bus_peak_current_a = t->motor_peak_current_a * (double)t->n_rotors;
-	t->capacity_ah = t->mass_kg * draw(g, 0.5, 3.0) * 4.0 / (double)t->cells;
-	t->motor_mass_kg = 0.03 * t->mass_kg / (double)t->n_rotors * draw(g, 0.6, 1.6);
+	t->capacity_ah = t->mass_kg * stats_rng_uniform(g, 0.5, 3.0) * 4.0
+	    / (double)t->cells;
+	t->motor_mass_kg = 0.03 * t->mass_kg / (double)t->n_rotors
+	    * stats_rng_uniform(g, 0.6, 1.6);
 	t->drive_mass_kg = 1.5 * t->motor_mass_kg;
 	snprintf(t->chemistry, sizeof t->chemistry, "%s", chem[stats_rng_below(g, 3)]);
 }

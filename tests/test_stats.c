@@ -194,6 +194,29 @@ stats_rng_below_should_be_bounded_and_roughly_uniform(void **state)
 	assert_true(stats_rng_below(&r, 1) == 0);
 }
 
+/* The top 53 bits over 2^53: a draw whose bits are known maps to its
+ * value exactly, and draws fill [lo, hi) evenly. */
+static void
+stats_rng_uniform_should_scale_the_top_53_bits_into_the_range(void **state)
+{
+	(void)state;
+	struct stats_rng r, copy;
+	stats_rng_seed(&r, 20261202);
+	copy = r;
+	uint64_t bits = stats_rng_next(&copy) >> 11;
+	assert_true(stats_rng_uniform(&r, -2.0, 6.0)
+	    == -2.0 + 8.0 * ((double)bits / 9007199254740992.0));
+	size_t hist[8] = { 0 };
+	for (int i = 0; i < 80000; i++) {
+		double v = stats_rng_uniform(&r, -2.0, 6.0);
+		assert_true(v >= -2.0 && v < 6.0);
+		hist[(int)(v + 2.0)]++;
+	}
+	/* Expected 10000 each, sd about 94: 500 is more than 5 sd. */
+	for (int i = 0; i < 8; i++)
+		assert_true(hist[i] > 9500 && hist[i] < 10500);
+}
+
 static void
 stats_bootstrap_should_bracket_the_mape_and_repeat_from_its_seed(void **state)
 {
@@ -256,6 +279,7 @@ main(void)
 		cmocka_unit_test(stats_quantile_should_interpolate_between_order_statistics),
 		cmocka_unit_test(stats_rng_should_follow_the_published_xoshiro_sequence),
 		cmocka_unit_test(stats_rng_below_should_be_bounded_and_roughly_uniform),
+		cmocka_unit_test(stats_rng_uniform_should_scale_the_top_53_bits_into_the_range),
 		cmocka_unit_test(stats_bootstrap_should_bracket_the_mape_and_repeat_from_its_seed),
 		cmocka_unit_test(stats_bootstrap_should_collapse_for_tiny_inputs),
 	};

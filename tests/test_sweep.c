@@ -74,16 +74,10 @@ struct sweep_mission {
 static struct cli_env *env;
 static struct solve_result *res;
 
-static double
-uniform(struct stats_rng *g, double lo, double hi)
-{
-	return lo + (hi - lo) * (double)(stats_rng_next(g) >> 11) * 0x1.0p-53;
-}
-
 static bool
 chance(struct stats_rng *g, double p)
 {
-	return uniform(g, 0, 1) < p;
+	return stats_rng_uniform(g, 0, 1) < p;
 }
 
 static void
@@ -94,44 +88,47 @@ draw(struct stats_rng *g, struct sweep_mission *m)
 	switch (m->role) {
 	case ROLE_RACING:
 		m->cls = AF_MICRO_AIO;
-		m->payload_kg = uniform(g, 0, 0.5);
+		m->payload_kg = stats_rng_uniform(g, 0, 0.5);
 		break;
 	case ROLE_AGRICULTURE:
 		m->cls = AF_AGRICULTURAL;
-		m->payload_kg = uniform(g, 2, 30);
+		m->payload_kg = stats_rng_uniform(g, 2, 30);
 		break;
 	default:
 		m->cls = (int)stats_rng_below(g, AF_CLASS_MAX);
-		m->payload_kg = m->cls == AF_MICRO_AIO ? uniform(g, 0, 0.8)
-		    : m->cls == AF_CONSUMER_FOLDING ? uniform(g, 0, 3) : uniform(g, 0, 30);
+		m->payload_kg = m->cls == AF_MICRO_AIO ? stats_rng_uniform(g, 0, 0.8)
+		    : m->cls == AF_CONSUMER_FOLDING ? stats_rng_uniform(g, 0, 3)
+		    : stats_rng_uniform(g, 0, 30);
 		break;
 	}
 	/* Wheelbase roughly as built: ~0.5 m at 1 kg, ~1.8 m at 20 kg. */
-	m->wheelbase_m = (0.2 + 0.35 * sqrt(m->payload_kg)) * uniform(g, 0.8, 1.4);
+	m->wheelbase_m = (0.2 + 0.35 * sqrt(m->payload_kg))
+	    * stats_rng_uniform(g, 0.8, 1.4);
 	if (m->cls == AF_MICRO_AIO && m->wheelbase_m > 0.45)
-		m->wheelbase_m = uniform(g, 0.15, 0.45);
+		m->wheelbase_m = stats_rng_uniform(g, 0.15, 0.45);
 	m->rotors = 3 + (int)stats_rng_below(g, 14);
 	m->coaxial = m->rotors % 2 == 0 && m->rotors >= 6 && chance(g, 0.3);
 	m->chem = (int)stats_rng_below(g, (uint64_t)env->model.n_chem);
-	m->altitude_m = chance(g, 0.3) ? 0 : uniform(g, 0, 5000);
+	m->altitude_m = chance(g, 0.3) ? 0 : stats_rng_uniform(g, 0, 5000);
 	m->has_ambient = chance(g, 0.8);
-	m->ambient_c = uniform(g, -20, 45);
-	m->t_hover_s = uniform(g, 60, 1500);
-	m->t_climb_s = uniform(g, 0, 120);
-	m->t_forward_s = chance(g, 0.5) ? 0 : uniform(g, 60, 1500);
-	m->v_forward_ms = chance(g, 0.3) ? 0 : uniform(g, 4, 20);
+	m->ambient_c = stats_rng_uniform(g, -20, 45);
+	m->t_hover_s = stats_rng_uniform(g, 60, 1500);
+	m->t_climb_s = stats_rng_uniform(g, 0, 120);
+	m->t_forward_s = chance(g, 0.5) ? 0 : stats_rng_uniform(g, 60, 1500);
+	m->v_forward_ms = chance(g, 0.3) ? 0 : stats_rng_uniform(g, 4, 20);
 	m->lock_voltage = chance(g, 0.15);
 	m->lock_battery = chance(g, 0.1);
 	m->lock_prop = chance(g, 0.1);
 	m->lock_kv = chance(g, 0.1);
 	m->lock_cells = 2 + (int)stats_rng_below(g, 13);
-	m->lock_capacity_mah = uniform(g, 500, 4000) * (1 + m->payload_kg);
+	m->lock_capacity_mah = stats_rng_uniform(g, 500, 4000) * (1 + m->payload_kg);
 	/* a propeller that fits the wheelbase more often than not */
-	m->lock_diameter_in = uniform(g, 0.3, 0.9) * m->wheelbase_m / 0.0254
+	m->lock_diameter_in = stats_rng_uniform(g, 0.3, 0.9) * m->wheelbase_m / 0.0254
 	    * sin(M_PI / (m->coaxial ? m->rotors / 2 : m->rotors));
 	m->lock_diameter_in = fmin(fmax(m->lock_diameter_in, 2), 60);
-	m->lock_pitch_in = m->lock_diameter_in * uniform(g, 0.3, 0.6);
-	m->lock_kv_value = uniform(g, 100, m->cls == AF_MICRO_AIO ? 3000 : 1200);
+	m->lock_pitch_in = m->lock_diameter_in * stats_rng_uniform(g, 0.3, 0.6);
+	m->lock_kv_value = stats_rng_uniform(g, 100,
+	    m->cls == AF_MICRO_AIO ? 3000 : 1200);
 }
 
 /* The mission as a mission file would say it. */
