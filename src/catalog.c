@@ -168,6 +168,7 @@ _Static_assert(N_OF(motor_fields) <= MAX_FIELDS && N_OF(prop_fields) <= MAX_FIEL
 struct catalog {
 	void *items[CAT_N];          /* arrays of the entry structs */
 	size_t n[CAT_N];
+	size_t *prop_order;          /* propeller indices by diameter */
 };
 
 /* ---- diagnostics --------------------------------------------------------- */
@@ -697,6 +698,24 @@ next:;
 	}
 }
 
+/* The propellers by diameter, ties in file order (insertion sort: a
+ * catalogue holds some dozens), once for every search that ranks them. */
+static void
+sort_props(struct catalog *c)
+{
+	size_t n = c->n[CAT_PROP];
+	c->prop_order = xmalloc((n > 0 ? n : 1) * sizeof *c->prop_order);
+	const struct catalog_prop *v = c->items[CAT_PROP];
+	for (size_t i = 0; i < n; i++) {
+		size_t j = i;
+		while (j > 0 && v[c->prop_order[j - 1]].diameter_in > v[i].diameter_in) {
+			c->prop_order[j] = c->prop_order[j - 1];
+			j--;
+		}
+		c->prop_order[j] = i;
+	}
+}
+
 /* ---- public --------------------------------------------------------------- */
 
 struct catalog *
@@ -715,6 +734,7 @@ catalog_load(const char *dir, const char *const *known_chemistries, FILE *err, i
 		catalog_free(c);
 		return NULL;
 	}
+	sort_props(c);
 	return c;
 }
 
@@ -725,6 +745,7 @@ catalog_free(struct catalog *c)
 		return;
 	for (int k = 0; k < CAT_N; k++)
 		free(c->items[k]);
+	free(c->prop_order);
 	free(c);
 }
 
@@ -760,6 +781,9 @@ const struct catalog_battery *
 catalog_battery(const struct catalog *c, size_t i) { return item_at(c, CAT_BATTERY, i); }
 const struct catalog_esc *
 catalog_esc(const struct catalog *c, size_t i) { return item_at(c, CAT_ESC, i); }
+
+const size_t *
+catalog_props_by_diameter(const struct catalog *c) { return c->prop_order; }
 
 const struct catalog_motor *
 catalog_find_motor(const struct catalog *c, const char *id) { return item_by_id(c, CAT_MOTOR, id); }

@@ -131,6 +131,10 @@ const struct catalog_prop *catalog_prop(const struct catalog *c, size_t i);
 const struct catalog_battery *catalog_battery(const struct catalog *c, size_t i);
 const struct catalog_esc *catalog_esc(const struct catalog *c, size_t i);
 
+/* The catalogue's propeller indices (catalog_prop()), catalog_n_props()
+ * of them, by diameter; equal diameters in file order. */
+const size_t *catalog_props_by_diameter(const struct catalog *c);
+
 const struct catalog_motor *catalog_find_motor(const struct catalog *c, const char *id);
 const struct catalog_prop *catalog_find_prop(const struct catalog *c, const char *id);
 const struct catalog_battery *catalog_find_battery(const struct catalog *c, const char *id);

@@ -995,22 +995,45 @@ esc_offer_cmp(const void *a, const void *b)
 	return strcmp(x->e->id, y->e->id);
 }
 
-/* qsort order of rank_prop pointers: by diameter. */
-static int
-rank_prop_cmp(const void *a, const void *b)
+/* The usable ESC sets in pick_esc's order (lightest, then by id; a set's
+ * mass depends on the rotor count alone, not on the bus or the aim), built
+ * once for a search's rankings; empty when an ESC is locked. */
+struct esc_list {
+	struct esc_offer *v;
+	size_t n;
+};
+
+static void
+esc_list_init(const struct optim_target *t, const struct catalog *cat,
+              const char *lock, struct esc_list *el)
 {
-	double da = (*(const struct rank_prop *const *)a)->aim.d_in;
-	double db = (*(const struct rank_prop *const *)b)->aim.d_in;
-	return (da > db) - (da < db);
+	size_t ne = catalog_n_escs(cat);
+	el->v = xmalloc((ne > 0 ? ne : 1) * sizeof *el->v);
+	el->n = 0;
+	for (size_t i = 0; i < ne && lock == NULL; i++) {
+		const struct catalog_esc *e = catalog_esc(cat, i);
+		if (!e->usable)
+			continue;
+		el->v[el->n].e = e;
+		el->v[el->n].kg = (double)esc_boards(t, e) * e->mass_kg;
+		el->n++;
+	}
+	qsort(el->v, el->n, sizeof *el->v, esc_offer_cmp);
+}
+
+static void
+esc_list_free(struct esc_list *el)
+{
+	free(el->v);
 }
 
 /* optim_rank() with the packs every bus picks from (those of the locks'
- * battery lock) given: a search ranks with the one list it also upsizes
- * batteries from. */
+ * battery lock) and the ESC sets given: a search ranks with the one list
+ * it also upsizes batteries from. */
 static int
 rank_catalog(const struct optim_target *t, const struct catalog *cat,
              const struct optim_locks *locks, const struct pack_list *packs,
-             struct optim_choice *choices, int max_choices,
+             const struct esc_list *el, struct optim_choice *choices, int max_choices,
              struct optim_census *census, struct res_candidate *cand, int *n_cand)
 {
 	struct optim_census local;
@@ -1069,7 +1092,7 @@ rank_catalog(const struct optim_target *t, const struct catalog *cat,
 		const struct catalog_prop *p = catalog_prop(cat, j);
 		if (!p->usable)
 			continue;
-		struct rank_prop *rp = &props[x.n_props];
+		struct rank_prop *rp = &props[j];
 		rp->p = p;
 		rp->locked = is_lock(x.lk->prop, p->id);
 		rp->lock_ok = x.lk->prop == NULL || rp->locked;
@@ -1081,30 +1104,27 @@ rank_catalog(const struct optim_target *t, const struct catalog *cat,
 		rp->max_rpm = p->max_rpm;
 		x.n_lock_ok += rp->lock_ok;
 		all[x.n_props++] = rp;
-		if (!rp->over || rp->locked)
+		if (x.lk->prop != NULL && (!rp->over || rp->locked))
 			fit[x.n_fit++] = rp;
-		else if (rp->lock_ok)
+		else if (rp->over && rp->lock_ok)
 			x.n_over++;
 	}
-	if (x.lk->prop == NULL)
-		qsort(fit, x.n_fit, sizeof *fit, rank_prop_cmp);
+	if (x.lk->prop == NULL) {
+		/* Free propellers: those within the limit by diameter. */
+		const size_t *by_d = catalog_props_by_diameter(cat);
+		for (size_t k = 0; k < np; k++) {
+			const struct rank_prop *rp = &props[by_d[k]];
+			if (catalog_prop(cat, by_d[k])->usable && !rp->over)
+				fit[x.n_fit++] = rp;
+		}
+	}
 	x.props = all;
 	x.fit = fit;
-	/* The ESC sets in pick_esc's order (lightest, then by id: a set's
-	 * mass does not depend on the bus), filtered for each bus below. */
-	size_t ne = catalog_n_escs(cat);
-	struct esc_offer *all_escs = xmalloc((ne > 0 ? ne : 1) * sizeof *all_escs);
-	struct esc_offer *escs = xmalloc((ne > 0 ? ne : 1) * sizeof *escs);
-	size_t n_all_escs = 0;
-	for (size_t i = 0; i < ne && x.lk->esc == NULL; i++) {
-		const struct catalog_esc *e = catalog_esc(cat, i);
-		if (!e->usable)
-			continue;
-		all_escs[n_all_escs].e = e;
-		all_escs[n_all_escs].kg = (double)esc_boards(t, e) * e->mass_kg;
-		n_all_escs++;
-	}
-	qsort(all_escs, n_all_escs, sizeof *all_escs, esc_offer_cmp);
+	/* The search's ESC sets, filtered for each bus below. */
+	const struct esc_offer *all_escs = el->v;
+	size_t n_all_escs = el->n;
+	struct esc_offer *escs = xmalloc((n_all_escs > 0 ? n_all_escs : 1)
+	    * sizeof *escs);
 	x.escs = escs;
 	/* Each motor's recommended propeller range, cut once (it does not
 	 * depend on the bus). */
@@ -1146,7 +1166,6 @@ rank_catalog(const struct optim_target *t, const struct catalog *cat,
 	}
 	free(motors);
 	free(x.spans);
-	free(all_escs);
 	free(escs);
 	free(fit);
 	free(all);
@@ -1163,8 +1182,11 @@ optim_rank(const struct optim_target *t, const struct catalog *cat,
 {
 	struct pack_list packs;
 	pack_list_init(cat, locks != NULL ? locks->battery : NULL, &packs);
-	int n = rank_catalog(t, cat, locks, &packs, choices, max_choices, census,
-	    cand, n_cand);
+	struct esc_list escs;
+	esc_list_init(t, cat, locks != NULL ? locks->esc : NULL, &escs);
+	int n = rank_catalog(t, cat, locks, &packs, &escs, choices, max_choices,
+	    census, cand, n_cand);
+	esc_list_free(&escs);
 	pack_list_free(&packs);
 	return n;
 }
@@ -2269,7 +2291,10 @@ optim_select_search(const struct mission_spec *spec,
 	/* The packs every ranking and every upsized battery pick from. */
 	struct pack_list packs;
 	pack_list_init(cat, lk.battery, &packs);
-	int n_found = rank_catalog(&t, cat, &lk, &packs, ch, OPTIM_MAX_TRIES, &cs,
+	/* And the ESC sets every ranking picks from, in pick order. */
+	struct esc_list escs;
+	esc_list_init(&t, cat, lk.esc, &escs);
+	int n_found = rank_catalog(&t, cat, &lk, &packs, &escs, ch, OPTIM_MAX_TRIES, &cs,
 	    r->candidates, &r->n_candidates);
 	if (n_found == 0 && t.cells_floor < t.cells_lo) {
 		/* Nothing from S* up: try the lower buses the packs give. */
@@ -2277,7 +2302,7 @@ optim_select_search(const struct mission_spec *spec,
 		struct optim_census cs2;
 		low.cells_lo = t.cells_floor;
 		low.cells_hi = t.cells - 1;
-		n_found = rank_catalog(&low, cat, &lk, &packs, ch, OPTIM_MAX_TRIES, &cs2,
+		n_found = rank_catalog(&low, cat, &lk, &packs, &escs, ch, OPTIM_MAX_TRIES, &cs2,
 		    r->candidates, &r->n_candidates);
 		for (int i = 0; i < OPTIM_REASON_MAX; i++)
 			cs.n_fail[i] += cs2.n_fail[i];
@@ -2293,6 +2318,7 @@ optim_select_search(const struct mission_spec *spec,
 		}
 	}
 	if (n_found == 0) {
+		esc_list_free(&escs);
 		pack_list_free(&packs);
 		report_none(&t, &cs, lk.motor ? catalog_find_motor(cat, lk.motor) : NULL, r);
 		return 0;
@@ -2332,7 +2358,7 @@ optim_select_search(const struct mission_spec *spec,
 		/* A re-aimed round scores the candidates too: the crosshair
 		 * figure shows those of the round the parts come from. */
 		int n = round == 0 ? n_found
-		    : rank_catalog(&tr, cat, &lk, &packs, ch, OPTIM_MAX_TRIES, NULL,
+		    : rank_catalog(&tr, cat, &lk, &packs, &escs, ch, OPTIM_MAX_TRIES, NULL,
 		        &round_cand[round * RES_MAX_CANDIDATES], &round_n_cand[round]);
 		if (n == 0)
 			break;
@@ -2445,6 +2471,7 @@ optim_select_search(const struct mission_spec *spec,
 		    use_c.series_packs * use_c.parallel_packs, use_c.battery->id, failed);
 	}
 	locked_limits(&use_t, &lk, &use_c, r);
+	esc_list_free(&escs);
 	pack_list_free(&packs);
 	free(fb.r);
 	free(cur);
