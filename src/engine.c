@@ -11,6 +11,7 @@
 #include "aero.h"
 #include "feasibility.h"
 #include "optim.h"
+#include "strbuf.h"
 #include "structure.h"
 #include "units.h"
 #include "xalloc.h"
@@ -36,7 +37,7 @@ engine_rationale(struct solve_result *r, const char *fmt, ...)
 		return;
 	va_list ap;
 	va_start(ap, fmt);
-	vsnprintf(r->rationale[r->n_rationale++], RES_TEXT, fmt, ap);
+	str_vformat(r->rationale[r->n_rationale++], RES_TEXT, fmt, ap);
 	va_end(ap);
 }
 

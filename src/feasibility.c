@@ -37,12 +37,26 @@ feasibility_violation(struct solve_result *r, const char *run,
 		return;
 	va_list ap;
 	va_start(ap, fmt);
-	vsnprintf(v->message, sizeof v->message, fmt, ap);
+	str_vformat(v->message, sizeof v->message, fmt, ap);
 	va_end(ap);
 	for (int i = 0; fixes != NULL && fixes[i] != NULL && i < RES_MAX_FIXES; i++) {
 		str_copy(v->fixes[i], sizeof v->fixes[i], fixes[i]);
 		v->n_fixes++;
 	}
+}
+
+/* A violation's fix text into f, unless r keeps its violations' codes
+ * only (a trial closing's, solve_result.terse): none of its violations
+ * reads the text then. */
+static void __attribute__((format(printf, 3, 4)))
+fix_text(const struct solve_result *r, char f[FIX_LEN], const char *fmt, ...)
+{
+	if (r->terse)
+		return;
+	va_list ap;
+	va_start(ap, fmt);
+	str_vformat(f, FIX_LEN, fmt, ap);
+	va_end(ap);
 }
 
 static double
@@ -63,8 +77,8 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 	const char *fx[4] = { f1, f2, f3, NULL };
 
 	if (p->coaxial && (p->n_rotors % 2 != 0 || p->n_rotors < 6)) {
-		snprintf(f1, sizeof f1, "Use an even rotor count of 6 or more (coaxial X8: num_rotors 8)");
-		snprintf(f2, sizeof f2, "Set coaxial_layout to false");
+		fix_text(r, f1, "Use an even rotor count of 6 or more (coaxial X8: num_rotors 8)");
+		fix_text(r, f2, "Set coaxial_layout to false");
 		fx[2] = NULL;
 		feasibility_violation(r, run, "feasibility", "COAXIAL_LAYOUT", fx,
 		    "A coaxial layout stacks rotors in pairs on at least 3 arms; "
@@ -77,9 +91,9 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 	if (p->prop_locked && p->prop_diameter_m > limit) {
 		double w_need = p->prop_diameter_m / ((1.0 - AERO_TIP_CLEARANCE)
 		    * sin(M_PI / (double)arms));
-		snprintf(f1, sizeof f1, "Increase max_diameter_m to at least %.3f m", w_need);
-		snprintf(f2, sizeof f2, "Lock a propeller of at most %.1f in", m_to_in(limit));
-		snprintf(f3, sizeof f3, "Use fewer rotors or a coaxial layout");
+		fix_text(r, f1, "Increase max_diameter_m to at least %.3f m", w_need);
+		fix_text(r, f2, "Lock a propeller of at most %.1f in", m_to_in(limit));
+		fix_text(r, f3, "Use fewer rotors or a coaxial layout");
 		fx[2] = f3;
 		feasibility_violation(r, run, "feasibility", "PROP_OVERLAP", fx,
 		    "The locked %.1f in propeller overlaps its neighbour: a %.0f mm "
@@ -90,8 +104,8 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 	}
 	double d_y = 0.5 * p->wheelbase_m * cos(M_PI / (double)arms);
 	if (p->cg_shift_m >= d_y) {
-		snprintf(f1, sizeof f1, "Mount the payload within %.3f m of the centre", d_y);
-		snprintf(f2, sizeof f2, "Increase max_diameter_m above %.3f m",
+		fix_text(r, f1, "Mount the payload within %.3f m of the centre", d_y);
+		fix_text(r, f2, "Increase max_diameter_m above %.3f m",
 		    2.0 * p->cg_shift_m / cos(M_PI / (double)arms));
 		fx[2] = NULL;
 		feasibility_violation(r, run, "feasibility", "CG_OFFSET", fx,
@@ -113,10 +127,10 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 		double p_ideal_w = w * sqrt(w / (2.0 * p->air.rho_kg_m3 * area));
 		double e_min_wh = p_ideal_w * mission_time_s(p) / 3600.0;
 		if (e_min_wh > e_avail_wh) {
-			snprintf(f1, sizeof f1, "Increase locks.locked_capacity_mah above %.0f mAh",
+			fix_text(r, f1, "Increase locks.locked_capacity_mah above %.0f mAh",
 			    1000.0 * e_min_wh / v_nom);
-			snprintf(f2, sizeof f2, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
-			snprintf(f3, sizeof f3, "Shorten the mission");
+			fix_text(r, f2, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
+			fix_text(r, f3, "Shorten the mission");
 			fx[2] = f3;
 			feasibility_violation(r, run, "feasibility", "LOCKED_BATTERY_ENERGY", fx,
 			    "The locked %.0f Wh battery cannot fly this mission even with "
@@ -127,7 +141,7 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 		}
 	}
 	if (!(mission_time_s(p) > 0.0)) {
-		snprintf(f1, sizeof f1, "Give t_hover_s, t_climb_s or t_forward_s");
+		fix_text(r, f1, "Give t_hover_s, t_climb_s or t_forward_s");
 		fx[1] = NULL;
 		feasibility_violation(r, run, "feasibility", "NO_MISSION", fx,
 		    "The mission has no flight time: every phase duration is 0.");
@@ -178,16 +192,16 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	if (c)
 		c->sized = true;
 	if (st == SIZING_RUNAWAY) {
-		snprintf(f1, sizeof f1, "Reduce payload_kg or the mission times");
-		snprintf(f2, sizeof f2, "Choose a higher specific-energy battery_chemistry");
-		snprintf(f3, sizeof f3, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
+		fix_text(r, f1, "Reduce payload_kg or the mission times");
+		fix_text(r, f2, "Choose a higher specific-energy battery_chemistry");
+		fix_text(r, f3, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
 		feasibility_violation(r, run, "mass_loop", "MASS_RUNAWAY", fx,
 		    "The takeoff mass ran away above %.0f kg: each added kilogram "
 		    "needs more than a kilogram of battery, structure and motors "
 		    "(Lipschitz constant >= 1).", SIZING_RUNAWAY_KG);
 	} else if (st == SIZING_MAX_ITERATIONS) {
-		snprintf(f1, sizeof f1, "Shorten the mission or lighten the payload");
-		snprintf(f2, sizeof f2, "Fix the cell count (nominal_cell_count) to stop cell-count cycling");
+		fix_text(r, f1, "Shorten the mission or lighten the payload");
+		fix_text(r, f2, "Fix the cell count (nominal_cell_count) to stop cell-count cycling");
 		fx[2] = NULL;
 		feasibility_violation(r, run, "mass_loop", "NOT_CONVERGED", fx,
 		    "The mass loop did not converge to 1 g in %d iterations.",
@@ -207,14 +221,14 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 		c->sized = !p->capacity_locked;
 	if (c && !c->pass && st != SIZING_RUNAWAY) {
 		if (p->capacity_locked) {
-			snprintf(f1, sizeof f1, "Increase locks.locked_capacity_mah above %.0f mAh",
+			fix_text(r, f1, "Increase locks.locked_capacity_mah above %.0f mAh",
 			    p->capacity_locked_ah * 1000.0 * (need > 0.0 && flown > 0.0 ? need / flown : 2.0) * SIZING_CAP_MARGIN);
-			snprintf(f2, sizeof f2, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
-			snprintf(f3, sizeof f3, "Unlock the battery so the solver can size it");
+			fix_text(r, f2, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
+			fix_text(r, f3, "Unlock the battery so the solver can size it");
 		} else {
-			snprintf(f1, sizeof f1, "Add series cells (nominal_cell_count) to lower the current");
-			snprintf(f2, sizeof f2, "Shorten the mission or lighten the payload");
-			snprintf(f3, sizeof f3, "Choose a lower-resistance battery_chemistry");
+			fix_text(r, f1, "Add series cells (nominal_cell_count) to lower the current");
+			fix_text(r, f2, "Shorten the mission or lighten the payload");
+			fix_text(r, f3, "Choose a lower-resistance battery_chemistry");
 		}
 		feasibility_violation(r, run, "discharge", "MISSION_NOT_FLOWN", fx,
 		    "The discharge simulation stopped at %.0f s of %.0f s: %s.",
@@ -233,9 +247,9 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	if (c)
 		c->mass_bound = true; /* rpm for the peak thrust, which is ∝ M */
 	if (c && !c->pass) {
-		snprintf(f1, sizeof f1, "Use a larger propeller (lower rpm for the same thrust)");
-		snprintf(f2, sizeof f2, "Reduce the thrust margin (payload_role.thrust_margin_override)");
-		snprintf(f3, sizeof f3, "Lower the operating altitude or raise the ambient temperature limit");
+		fix_text(r, f1, "Use a larger propeller (lower rpm for the same thrust)");
+		fix_text(r, f2, "Reduce the thrust margin (payload_role.thrust_margin_override)");
+		fix_text(r, f3, "Lower the operating altitude or raise the ambient temperature limit");
 		feasibility_violation(r, run, "propulsion", "TIP_MACH", fx,
 		    "The rotor tip reaches Mach %.2f at full throttle (limit %.2f): "
 		    "noise, compressibility losses and blade loads rise sharply.",
@@ -246,9 +260,9 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	c = add_check(o, "Battery peak temperature", "°C", o->max_battery_temp_c,
 	    THERM_RUNAWAY_C, true);
 	if (c && !c->pass) {
-		snprintf(f1, sizeof f1, "Add capacity or parallel packs to lower the C-rate");
-		snprintf(f2, sizeof f2, "Choose a lower-resistance battery_chemistry (LiPo, LiHV)");
-		snprintf(f3, sizeof f3, "Lower the ambient temperature limit of the mission");
+		fix_text(r, f1, "Add capacity or parallel packs to lower the C-rate");
+		fix_text(r, f2, "Choose a lower-resistance battery_chemistry (LiPo, LiHV)");
+		fix_text(r, f3, "Lower the ambient temperature limit of the mission");
 		feasibility_violation(r, run, "discharge", "THERMAL_RUNAWAY", fx,
 		    "The pack reaches %.1f °C, above the %.0f °C thermal-runaway limit.",
 		    o->max_battery_temp_c, THERM_RUNAWAY_C);
@@ -256,8 +270,8 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	c = add_check(o, "Minimum terminal voltage", "V", o->min_terminal_voltage_v,
 	    o->voltage_floor_v, false);
 	if (c && !c->pass) {
-		snprintf(f1, sizeof f1, "Add series cells (nominal_cell_count)");
-		snprintf(f2, sizeof f2, "Add capacity to reduce the voltage sag");
+		fix_text(r, f1, "Add series cells (nominal_cell_count)");
+		fix_text(r, f2, "Add capacity to reduce the voltage sag");
 		fx[2] = NULL;
 		feasibility_violation(r, run, "discharge", "VOLTAGE_FLOOR", fx,
 		    "The terminal voltage falls to %.2f V, below the %.2f V cut-off.",
@@ -271,9 +285,9 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	if (c)
 		c->sized = o->battery_power_binds;
 	if (c && !c->pass) {
-		snprintf(f1, sizeof f1, "Unlock or enlarge the battery");
-		snprintf(f2, sizeof f2, "Choose a higher-power chemistry such as LiPo or LiHV");
-		snprintf(f3, sizeof f3, "Reduce the thrust margin");
+		fix_text(r, f1, "Unlock or enlarge the battery");
+		fix_text(r, f2, "Choose a higher-power chemistry such as LiPo or LiHV");
+		fix_text(r, f3, "Reduce the thrust margin");
 		feasibility_violation(r, run, "discharge", "BATTERY_POWER", fx,
 		    "Full throttle draws %.0f W, but %.2f kg of %s cells deliver at "
 		    "most %.0f W in a 10 s burst (%.0f × their continuous specific "
@@ -289,11 +303,11 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	c = add_check(o, "Arm mode clear of the blade-pass band", "",
 	    o->resonance_margin, 0.0, false);
 	if (c && !c->pass) {
-		snprintf(f1, sizeof f1, "Stiffen the arm above %.0f Hz (larger tube diameter)",
+		fix_text(r, f1, "Stiffen the arm above %.0f Hz (larger tube diameter)",
 		    STRUCT_RESONANCE_MARGIN * o->blade_pass_frequency_hz);
-		snprintf(f2, sizeof f2, "Or soften it below %.0f Hz (soft-mounted arms)",
+		fix_text(r, f2, "Or soften it below %.0f Hz (soft-mounted arms)",
 		    o->blade_pass_low_hz / STRUCT_RESONANCE_MARGIN);
-		snprintf(f3, sizeof f3, "Change the blade count (structural_overrides.num_blades) to move the band");
+		fix_text(r, f3, "Change the blade count (structural_overrides.num_blades) to move the band");
 		feasibility_violation(r, run, "structure", "ARM_RESONANCE", fx,
 		    "The arm's first bending mode (%.0f Hz) lies inside the "
 		    "in-flight blade-pass band (%.0f–%.0f Hz) without the 1.5 margin.",
@@ -311,9 +325,9 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 		if (c)
 			c->mass_bound = true; /* ∝ sqrt(thrust / disk area) */
 		if (c && !c->pass) {
-			snprintf(f1, sizeof f1, "Increase max_diameter_m: larger rotors lower the downwash");
-			snprintf(f2, sizeof f2, "Use more rotors (num_rotors)");
-			snprintf(f3, sizeof f3, "Raise payload_role.ag_max_downwash_ms if the crop allows");
+			fix_text(r, f1, "Increase max_diameter_m: larger rotors lower the downwash");
+			fix_text(r, f2, "Use more rotors (num_rotors)");
+			fix_text(r, f3, "Raise payload_role.ag_max_downwash_ms if the crop allows");
 			feasibility_violation(r, run, "feasibility", "DOWNWASH", fx,
 			    "The downwash of %.1f m/s exceeds the %.1f m/s cap against "
 			    "crop damage and spray drift.", o->downwash_ms, p->downwash_cap_ms);
@@ -325,9 +339,9 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 		c = add_check(o, "Forward speed within thrust margin", "m/s",
 		    o->optimal_speed_ms, o->v_max_ms, true);
 		if (c && !c->pass) {
-			snprintf(f1, sizeof f1, "Reduce v_forward_ms to %.1f m/s or less", o->v_max_ms);
-			snprintf(f2, sizeof f2, "Use \"auto\" for the minimum-power speed");
-			snprintf(f3, sizeof f3, "Reduce the drag area (payload_role.added_drag_m2)");
+			fix_text(r, f1, "Reduce v_forward_ms to %.1f m/s or less", o->v_max_ms);
+			fix_text(r, f2, "Use \"auto\" for the minimum-power speed");
+			fix_text(r, f3, "Reduce the drag area (payload_role.added_drag_m2)");
 			feasibility_violation(r, run, "mission", "FORWARD_SPEED", fx,
 			    "At %.1f m/s the drag needs more thrust or pitch than the "
 			    "design has; the model diverges beyond %.1f m/s.",

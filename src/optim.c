@@ -53,7 +53,7 @@ append(char *dst, size_t n, const char *fmt, ...)
 		return;
 	va_list ap;
 	va_start(ap, fmt);
-	vsnprintf(dst + len, n - len, fmt, ap);
+	str_vformat(dst + len, n - len, fmt, ap);
 	va_end(ap);
 }
 
