@@ -144,9 +144,9 @@ struct fmt_out {
 static void
 out_bytes(struct fmt_out *o, const char *s, size_t k)
 {
-	for (size_t i = 0; i < k; i++, o->len++)
-		if (o->len + 1 < o->n)
-			o->dst[o->len] = s[i];
+	size_t room = o->n > o->len + 1 ? o->n - o->len - 1 : 0;
+	memcpy(o->dst + o->len, s, k < room ? k : room);
+	o->len += k;
 }
 
 /* x with `decimals` (0..3) digits after the point, as printf("%.*f") of
