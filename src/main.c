@@ -10,6 +10,7 @@
 #include "cli_solve.h"
 #include "cli_validate.h"
 #include "doc.h"
+#include "xalloc.h"
 
 /* The commands this program runs; cli_help.c documents them. */
 struct command {
@@ -36,6 +37,7 @@ is_help(const char *a)
 int
 main(int argc, char **argv)
 {
+	xalloc_keep_freed();
 	atexit(doc_global_cleanup); /* fontconfig/cairo caches: valgrind-clean exit */
 	if (argc < 2) {
 		cli_help_overview(stderr);

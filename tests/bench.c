@@ -96,6 +96,7 @@ count_one(const char *mode, const char *path)
 int
 main(int argc, char **argv)
 {
+	xalloc_keep_freed(); /* as aeroeval's main() does */
 	if (argc == 4 && strcmp(argv[1], "-c") == 0)
 		return count_one(argv[2], argv[3]);
 	int n_solves = 200, first = 1;
