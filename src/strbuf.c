@@ -145,7 +145,8 @@ static void
 out_bytes(struct fmt_out *o, const char *s, size_t k)
 {
 	size_t room = o->n > o->len + 1 ? o->n - o->len - 1 : 0;
-	memcpy(o->dst + o->len, s, k < room ? k : room);
+	if (room > 0 && k > 0)
+		memcpy(o->dst + o->len, s, k < room ? k : room);
 	o->len += k;
 }
 
