@@ -36,6 +36,17 @@ int engine_solve_search(const struct mission_spec *spec,
                         const struct model_data *md, const struct catalog *cat,
                         enum optim_search search, struct solve_result *r);
 
+/* engine_solve() with the parts search kept to the calling thread: the
+ * baseline's loop still runs on a second thread, which then does not help
+ * the search (optim.h), and the solve sleeps (does not spin) when it has
+ * to wait for that loop.  The same result; `make bench` counts the calling
+ * thread's instructions of it, a count that repeats exactly, where the
+ * helper's share of the flights and a spin's length depend on the two
+ * threads' timing. */
+int engine_solve_unhelped(const struct mission_spec *spec,
+                          const struct model_data *md,
+                          const struct catalog *cat, struct solve_result *r);
+
 /* The endurance explorer of r's custom run (sizing_explore()), for the
  * outputs that show it: result.json and the dossier.  Kept out of
  * engine_solve() because nothing the design is decided on reads it, and

@@ -4,14 +4,17 @@
 #include <limits.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "aero.h"
 #include "engine.h"
 #include "feasibility.h"
 #include "sizing.h"
+#include "spin.h"
 #include "strbuf.h"
 #include "therm.h"
 #include "units.h"
@@ -1331,6 +1334,9 @@ struct closer {
 	 * cannot make it one.  LONG_MAX: no such limit. */
 	long beat;
 	int key;                         /* the combination's search key */
+	/* A helper's flight (optim_helper_serve()): when set, the search is
+	 * over, and close_choice() stops before its next attempt. */
+	const atomic_bool *stop;
 };
 
 /* A closing's place in the fallback order (fewest failed checks, then the
@@ -1648,6 +1654,9 @@ close_choice(const struct closer *k, struct optim_choice *c,
 	struct solve_result *sr = *srp;
 	*unclosable = false;
 	for (int attempt = 0;; attempt++) {
+		if (attempt > 0 && k->stop != NULL
+		    && atomic_load_explicit(k->stop, memory_order_relaxed))
+			break; /* nobody reads this closing any more */
 		struct sizing_params p = *k->p0;
 		apply_parts(&p, k->md, k->t, k->custom, c);
 		/* Only the run kept needs them (optim_select fills them in). */
@@ -2164,6 +2173,26 @@ search_round(int key)
 	return key / OPTIM_MAX_TRIES;
 }
 
+/* What a closing gave, as the fallback order and the report read it. */
+struct closing_sum {
+	struct optim_choice c;         /* as closed (upsized) */
+	int failed;
+	bool finite;
+	enum sizing_status st;
+	char fail[64];                 /* its first new failure, "" none */
+};
+
+static void
+sum_set(struct closing_sum *u, const struct optim_choice *c, int failed,
+        bool finite, enum sizing_status st, const char *fail)
+{
+	u->c = *c;
+	u->failed = failed;
+	u->finite = finite;
+	u->st = st;
+	str_copy(u->fail, sizeof u->fail, fail ? fail : "");
+}
+
 /* The closest closing so far: the fewest failed checks, and among equals
  * the first in search order. */
 struct fallback {
@@ -2174,7 +2203,28 @@ struct fallback {
 	bool finite;
 	enum sizing_status st;
 	char fail[64];                 /* its first new failure */
+	bool away;                     /* flown by the helper: r is not its result */
 };
+
+/* Closing u, at search position key, becomes the fallback if it is
+ * closer; `away`: its result is not in fb->r (the helper's).  True if it
+ * did. */
+static bool
+fallback_take(struct fallback *fb, const struct closing_sum *u, int key,
+              bool away)
+{
+	if (fb->failed >= 0
+	    && fallback_rank(u->failed, key) > fallback_rank(fb->failed, fb->key))
+		return false;
+	fb->c = u->c;
+	fb->key = key;
+	fb->failed = u->failed;
+	fb->finite = u->finite;
+	fb->st = u->st;
+	str_copy(fb->fail, sizeof fb->fail, u->fail);
+	fb->away = away;
+	return true;
+}
 
 /* The closing in *cur (choice c, search position key) becomes the
  * fallback if it is closer.  The next try rewrites all it reads of its
@@ -2184,70 +2234,387 @@ offer_fallback(struct fallback *fb, struct solve_result **cur,
                const struct optim_choice *c, int key, bool finite,
                enum sizing_status st, const char *fail)
 {
-	int nf = n_failed(&(*cur)->closed);
-	if (fb->failed >= 0
-	    && fallback_rank(nf, key) > fallback_rank(fb->failed, fb->key))
+	struct closing_sum u;
+	sum_set(&u, c, n_failed(&(*cur)->closed), finite, st, fail);
+	if (!fallback_take(fb, &u, key, false))
 		return;
 	struct solve_result *tmp = fb->r;
 	fb->r = *cur;
 	*cur = tmp;
-	fb->c = *c;
-	fb->key = key;
-	fb->failed = nf;
-	fb->finite = finite;
-	fb->st = st;
-	str_copy(fb->fail, sizeof fb->fail, fail ? fail : "");
 }
+
+/* Who may fly a deferred combination (struct optim_helper). */
+enum later_state {
+	LATER_MAIN,                    /* the search's own; the helper keeps off */
+	LATER_OPEN,                    /* the helper may take it */
+	LATER_FLYING,                  /* the helper is flying it */
+	LATER_DONE                     /* the helper flew it: see `sum` */
+};
 
 /* A combination shown unable to close, its flight left for later. */
 struct deferred {
 	struct optim_choice c;
 	int key;
 	int n_bound;                   /* failures it is bound to */
-	bool flown;
+	bool flown;                    /* in the search's order (counts it) */
 	struct res_run *fixed;         /* its masses-only run, to go on from */
+	bool opened;                   /* handed to the helper (the search's) */
+	enum later_state state;        /* under the helper's lock */
+	struct closing_sum sum;        /* LATER_DONE: the helper's closing */
 };
 
-/* qsort order of deferred combinations: by the fallback rank of their
- * bound, the closest possible first. */
+/* qsort order of pointers to deferred combinations: by the fallback rank
+ * of their bound, the closest possible first. */
 static int
 deferred_cmp(const void *a, const void *b)
 {
-	const struct deferred *x = a, *y = b;
+	const struct deferred *x = *(const struct deferred *const *)a;
+	const struct deferred *y = *(const struct deferred *const *)b;
 	long rx = fallback_rank(x->n_bound, x->key);
 	long ry = fallback_rank(y->n_bound, y->key);
 	return (rx > ry) - (rx < ry);
+}
+
+/* ---- the helper ------------------------------------------------------------
+ *
+ * The baseline's thread, once its mass loop is done, flies deferred
+ * combinations while the search goes on: those of each round that closed
+ * nothing, from the end of that round (a round's first combination once
+ * its re-aim no longer needs it), the lowest bound rank first.  When
+ * nothing closes, close_later() then finds most of its flights made.  It
+ * takes the same decisions in the same order as without a helper (which
+ * to fly, which becomes the fallback); a flight already made is only not
+ * made twice.  Only a round without a closing hands anything over: where
+ * the search closes early, the helper would fly for nothing, and the
+ * calling thread would wait for the flight it is on.
+ *
+ * Why the result is the same to the bit.  The helper flies a combination
+ * with close_choice(), from the same masses-only run and at the same aim as
+ * close_later() would, with `beat` the search's fallback rank when it takes
+ * it (not lower than the one close_later() flies it with: the fallback
+ * only improves).  Two such closings differ only where one flies an
+ * upsized attempt that the other leaves out as bound to rank after its
+ * beat; that attempt then ranks after both beats, so either both go back to
+ * the attempt before, or both closings rank after the fallback of the
+ * moment and neither is kept.  The fallback's own closing is therefore the
+ * same, and so is every choice the order makes.  The fallback's result
+ * buffer is the helper's best (the lowest rank it flew), or, should it not
+ * be, flown again in line. */
+
+/* The helper waits for work by spinning this long, then looks every 20 us:
+ * a sleeping thread on this kind of virtual machine takes 35-100 us to
+ * wake, longer than many of the flights it is there to take.  The loop
+ * reads, without `pause`, which the hypervisor may take for a lock holder
+ * waiting and deschedule. */
+#define HELPER_SPIN_NS 5000000L
+
+/* The search being served: its deferred combinations and what the helper
+ * needs to fly them, all on the search's stack. */
+struct help_share {
+	struct closer base;            /* the search's closer, as at its start */
+	struct deferred *later;        /* its deferred combinations ... */
+	int n_slots;                   /* ... slots, those never opened LATER_MAIN */
+	const struct optim_target *round_t; /* each round's aim */
+	long fb_rank;                  /* fallback_rank() of the fallback so far */
+	bool open;                     /* the helper may take combinations */
+	bool busy;                     /* the helper is flying one */
+	long best_rank;                /* the lowest-ranked closing it flew */
+	int best_key;
+};
+
+/* The helper and the search share it under a spin lock: every critical
+ * section is a few stores, and neither side ever sleeps while the other
+ * waits for it (a sleeping thread here takes 35-100 us to wake). */
+struct optim_helper {
+	atomic_flag lock;
+	atomic_uint gen;               /* bumped by every change of interest */
+	atomic_bool stop;              /* the search is over */
+	bool closed;                   /* no more searches: serve() returns */
+	struct help_share *s;          /* the search served, or NULL */
+	struct solve_result *buf[3];   /* cur, spare, best; allocated by the search */
+};
+
+static void
+hlock(struct optim_helper *h)
+{
+	while (atomic_flag_test_and_set_explicit(&h->lock, memory_order_acquire))
+		spin_pause();
+}
+
+static void
+hunlock(struct optim_helper *h)
+{
+	atomic_flag_clear_explicit(&h->lock, memory_order_release);
+}
+
+struct optim_helper *
+optim_helper_new(void)
+{
+	struct optim_helper *h = xmalloc(sizeof *h);
+	memset(h, 0, sizeof *h);
+	atomic_flag_clear(&h->lock);
+	atomic_init(&h->gen, 0u);
+	atomic_init(&h->stop, false);
+	return h;
+}
+
+void
+optim_helper_free(struct optim_helper *h)
+{
+	if (h == NULL)
+		return;
+	for (int i = 0; i < 3; i++)
+		free(h->buf[i]);
+	free(h);
+}
+
+/* Tell the helper something changed (the lock is held). */
+static void
+helper_poke(struct optim_helper *h)
+{
+	atomic_fetch_add_explicit(&h->gen, 1u, memory_order_release);
+}
+
+void
+optim_helper_close(struct optim_helper *h)
+{
+	hlock(h);
+	h->closed = true;
+	helper_poke(h);
+	hunlock(h);
+}
+
+/* The open combination the helper should fly next, or NULL: the lowest
+ * bound rank first, and only one that could still become the fallback
+ * (close_later() never flies any other). */
+static struct deferred *
+helper_take(struct help_share *s)
+{
+	struct deferred *best = NULL;
+	long best_rank = s->fb_rank;
+	for (int j = 0; j < s->n_slots; j++) {
+		struct deferred *d = &s->later[j];
+		if (d->state != LATER_OPEN)
+			continue;
+		long rank = fallback_rank(d->n_bound, d->key);
+		if (rank < best_rank) {
+			best = d;
+			best_rank = rank;
+		}
+	}
+	return best;
+}
+
+static long
+elapsed_ns(const struct timespec *t0)
+{
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return (t.tv_sec - t0->tv_sec) * 1000000000L + (t.tv_nsec - t0->tv_nsec);
+}
+
+/* Fly d for search s (called and returning with the lock held). */
+static void
+helper_fly(struct optim_helper *h, struct help_share *s, struct deferred *d)
+{
+	struct closer k = s->base;
+	k.t = &s->round_t[search_round(d->key)];
+	k.key = d->key;
+	k.beat = s->fb_rank;
+	k.stop = &h->stop;
+	struct optim_choice c = d->c;
+	const struct res_run *from = d->fixed;
+	d->state = LATER_FLYING;
+	s->busy = true;
+	hunlock(h);
+
+	bool unclosable, finite;
+	int n_bound;
+	enum sizing_status st;
+	const char *fail = close_choice(&k, &c, &h->buf[0], &h->buf[1], from,
+	    NULL, &unclosable, &n_bound, &finite, &st);
+	int nf = n_failed(&h->buf[0]->closed);
+
+	hlock(h);
+	s->busy = false;
+	if (!atomic_load_explicit(&h->stop, memory_order_relaxed)) {
+		sum_set(&d->sum, &c, nf, finite, st, fail);
+		d->state = LATER_DONE;
+		long rank = fallback_rank(nf, d->key);
+		if (rank < s->best_rank) {
+			swap_results(&h->buf[0], &h->buf[2]);
+			s->best_rank = rank;
+			s->best_key = d->key;
+		}
+	}
+}
+
+void
+optim_helper_serve(struct optim_helper *h)
+{
+	hlock(h);
+	while (!h->closed) {
+		struct help_share *s = h->s;
+		struct deferred *d = s != NULL && s->open ? helper_take(s) : NULL;
+		if (d != NULL) {
+			helper_fly(h, s, d);
+			continue;
+		}
+		/* Nothing to do yet: spin a while (waking from sleep is slow),
+		 * then look again every 20 us. */
+		unsigned g = atomic_load_explicit(&h->gen, memory_order_acquire);
+		hunlock(h);
+		struct timespec t0;
+		clock_gettime(CLOCK_MONOTONIC, &t0);
+		while (atomic_load_explicit(&h->gen, memory_order_acquire) == g) {
+			if (elapsed_ns(&t0) < HELPER_SPIN_NS) {
+				for (int q = 0; q < 256; q++)
+					if (atomic_load_explicit(&h->gen, memory_order_relaxed) != g)
+						break;
+			} else {
+				struct timespec nap = { 0, 20000 };
+				nanosleep(&nap, NULL);
+			}
+		}
+		hlock(h);
+	}
+	hunlock(h);
+}
+
+/* Start serving search s: its result buffers for the helper, allocated
+ * here, on the search's thread. */
+static void
+helper_attach(struct optim_helper *h, struct help_share *s)
+{
+	for (int i = 0; i < 3; i++)
+		if (h->buf[i] == NULL) {
+			h->buf[i] = xmalloc(sizeof *h->buf[i]);
+			h->buf[i]->terse = true;
+			h->buf[i]->n_violations = 0;
+		}
+	hlock(h);
+	h->s = s;
+	helper_poke(h);
+	hunlock(h);
+}
+
+/* Hand combination d to the helper (h NULL: none). */
+static void
+helper_open(struct optim_helper *h, struct deferred *d)
+{
+	if (h == NULL)
+		return;
+	d->opened = true;
+	hlock(h);
+	d->state = LATER_OPEN;
+	helper_poke(h);
+	hunlock(h);
+}
+
+/* The search's fallback changed to fb. */
+static void
+helper_fallback(struct optim_helper *h, struct help_share *s,
+                const struct fallback *fb)
+{
+	if (h == NULL || fb->failed < 0)
+		return;
+	hlock(h);
+	s->fb_rank = fallback_rank(fb->failed, fb->key);
+	helper_poke(h);
+	hunlock(h);
+}
+
+/* Combination d, about to be flown in close_later()'s order: true with
+ * *sum filled if the helper flew it (waiting for it if it is flying it);
+ * false if the search flies it itself (the helper is kept off it). */
+static bool
+helper_claim(struct optim_helper *h, struct deferred *d, struct closing_sum *sum)
+{
+	if (h == NULL)
+		return false;
+	hlock(h);
+	while (d->state == LATER_FLYING) {
+		/* It is flying it: wait, spinning (it is awake). */
+		hunlock(h);
+		spin_pause();
+		hlock(h);
+	}
+	bool flown = d->state == LATER_DONE;
+	if (flown)
+		*sum = d->sum;
+	else
+		d->state = LATER_MAIN;
+	hunlock(h);
+	return flown;
+}
+
+/* The search is over: the helper takes nothing more and leaves the
+ * flight it is on (at its next attempt); returns once it has. */
+static void
+helper_detach(struct optim_helper *h, struct help_share *s)
+{
+	if (h == NULL)
+		return;
+	hlock(h);
+	s->open = false;
+	atomic_store_explicit(&h->stop, true, memory_order_relaxed);
+	while (s->busy) {
+		hunlock(h);
+		spin_pause();
+		hlock(h);
+	}
+	h->s = NULL;
+	helper_poke(h);
+	hunlock(h);
 }
 
 /* Nothing closed: the unclosable combinations fly now, each at its round's
  * aim, and offer themselves as the fallback; the fewest bound failures go
  * first, and one bound to fail more checks than the fallback (or as many,
  * coming after it in search order) is not flown, as it cannot be it. */
-static void
+static int
 close_later(struct closer *k, struct deferred *later, int n_later,
             const struct optim_target *round_t, struct fallback *fb,
-            struct solve_result **cur, struct solve_result **spare)
+            struct solve_result **cur, struct solve_result **spare,
+            struct optim_helper *h, struct help_share *hs)
 {
+	int helped = 0;
 	const struct optim_target *aim = k->t;
-	qsort(later, (size_t)n_later, sizeof *later, deferred_cmp);
+	struct deferred *order[OPTIM_ROUNDS * OPTIM_MAX_TRIES];
 	for (int j = 0; j < n_later; j++) {
-		struct deferred *d = &later[j];
+		order[j] = &later[j];
+		/* The rounds' first combinations, kept from the helper for the
+		 * re-aims, are open to it now. */
+		if (!later[j].flown && !later[j].opened)
+			helper_open(h, &later[j]);
+	}
+	qsort(order, (size_t)n_later, sizeof *order, deferred_cmp);
+	for (int j = 0; j < n_later; j++) {
+		struct deferred *d = order[j];
 		k->beat = fb->failed >= 0 ? fallback_rank(fb->failed, fb->key) : LONG_MAX;
 		k->key = d->key;
 		if (d->flown || fallback_rank(d->n_bound, d->key) > k->beat)
 			continue;
-		k->t = &round_t[search_round(d->key)];
-		struct optim_choice c = d->c;
-		bool unclosable, finite;
-		int n_bound;
-		enum sizing_status st;
-		const char *fail = close_choice(k, &c, cur, spare, d->fixed, NULL,
-		    &unclosable, &n_bound, &finite, &st);
 		d->flown = true;
-		offer_fallback(fb, cur, &c, d->key, finite, st, fail);
+		struct closing_sum sum;
+		if (helper_claim(h, d, &sum)) {
+			fallback_take(fb, &sum, d->key, true);
+			helped++;
+		} else {
+			k->t = &round_t[search_round(d->key)];
+			struct optim_choice c = d->c;
+			bool unclosable, finite;
+			int n_bound;
+			enum sizing_status st;
+			const char *fail = close_choice(k, &c, cur, spare, d->fixed, NULL,
+			    &unclosable, &n_bound, &finite, &st);
+			offer_fallback(fb, cur, &c, d->key, finite, st, fail);
+		}
+		helper_fallback(h, hs, fb);
 	}
 	k->t = aim;
 	k->beat = LONG_MAX;
+	return helped;
 }
 
 int
@@ -2262,10 +2629,20 @@ optim_select_search(const struct mission_spec *spec,
                     const struct model_data *md, const struct catalog *cat,
                     enum optim_search search, struct solve_result *r)
 {
+	return optim_select_helped(spec, md, cat, search, NULL, r);
+}
+
+int
+optim_select_helped(const struct mission_spec *spec,
+                    const struct model_data *md, const struct catalog *cat,
+                    enum optim_search search, struct optim_helper *h,
+                    struct solve_result *r)
+{
 	r->parts_selected = false;
 	r->n_bom = 0;
 	r->n_candidates = 0;
 	r->n_screened_out = 0;
+	r->n_helped = 0;
 	r->bom_mass_kg = 0.0;
 	r->bom_price_usd = 0.0;
 	memset(&r->motor, 0, sizeof r->motor);
@@ -2330,13 +2707,13 @@ optim_select_search(const struct mission_spec *spec,
 	 * order among equals) and report it. */
 	struct optim_target tr = t;
 	struct closer k = { &p, md, &tr, cat, &lk, &r->custom,
-		search == OPTIM_SEARCH_SCREENED, &packs, LONG_MAX, 0 };
+		search == OPTIM_SEARCH_SCREENED, &packs, LONG_MAX, 0, NULL };
 	/* Trial buffers: each try writes all it reads of its result (see
 	 * close_choice()), and keeps its violations' codes only. */
 	struct solve_result *cur = xmalloc(sizeof *cur);
 	struct solve_result *spare = xmalloc(sizeof *spare);
 	struct fallback fb = { xmalloc(sizeof *fb.r), ch[0], 0, -1, true,
-		SIZING_CONVERGED, "" };
+		SIZING_CONVERGED, "", false };
 	fb.r->terse = cur->terse = spare->terse = true;
 	fb.r->n_violations = 0;
 	struct res_candidate *round_cand = xmalloc((size_t)OPTIM_ROUNDS
@@ -2345,8 +2722,14 @@ optim_select_search(const struct mission_spec *spec,
 	struct optim_target round_t[OPTIM_ROUNDS];  /* the aim of each round */
 	struct deferred later[OPTIM_ROUNDS * OPTIM_MAX_TRIES];
 	int n_later = 0;
-	for (int j = 0; j < OPTIM_ROUNDS * OPTIM_MAX_TRIES; j++)
+	for (int j = 0; j < OPTIM_ROUNDS * OPTIM_MAX_TRIES; j++) {
 		later[j].fixed = NULL;
+		later[j].opened = false;
+		later[j].state = LATER_MAIN;
+	}
+	/* The helper, once the first combination is left for later. */
+	struct help_share hs;
+	struct optim_helper *hh = NULL;
 	struct optim_choice use_c = ch[0];
 	struct optim_target use_t = t;  /* the aim it was found at */
 	int use_round = 0;
@@ -2388,6 +2771,8 @@ optim_select_search(const struct mission_spec *spec,
 				continue;
 			}
 			if (fail == NULL && finite) {
+				if (h != NULL && hh == NULL)
+					optim_helper_close(h); /* nothing was left for later */
 				use = cur;
 				use_st = st;
 				use_c = c;
@@ -2400,6 +2785,26 @@ optim_select_search(const struct mission_spec *spec,
 				first_closed = true;
 			}
 			offer_fallback(&fb, &cur, &c, key, finite, st, fail);
+			helper_fallback(hh, &hs, &fb);
+		}
+		if (use == NULL && h != NULL && n_later > 0) {
+			/* Nothing closed this round: its combinations left for
+			 * later will likely fly, so the helper may fly them now.
+			 * A round's first one may be closed for the re-aim below:
+			 * the helper is kept off it till then. */
+			if (hh == NULL) {
+				hs = (struct help_share){ k, later,
+					OPTIM_ROUNDS * OPTIM_MAX_TRIES, round_t, LONG_MAX,
+					true, false, LONG_MAX, -1 };
+				helper_attach(h, &hs);
+				helper_fallback(h, &hs, &fb);
+				hh = h;
+			}
+			for (int j = 0; j < n_later; j++)
+				if (!later[j].opened && search_round(later[j].key) == round
+				    && (later[j].key != round * OPTIM_MAX_TRIES
+				    || round + 1 == OPTIM_ROUNDS))
+					helper_open(hh, &later[j]);
 		}
 		if (use == NULL && !first_closed && round + 1 < OPTIM_ROUNDS) {
 			/* The next round aims at the best combination's closed
@@ -2420,6 +2825,7 @@ optim_select_search(const struct mission_spec *spec,
 				d->flown = true;
 			offer_fallback(&fb, &cur, &c, round * OPTIM_MAX_TRIES, finite, st,
 			    fail);
+			helper_fallback(hh, &hs, &fb);
 		}
 		/* Real parts heavier than the aim: thrust, current, power and
 		 * energy grow about as M^1.5 on a given rotor. */
@@ -2434,7 +2840,32 @@ optim_select_search(const struct mission_spec *spec,
 		tr.capacity_ah *= g;
 	}
 	if (use == NULL)
-		close_later(&k, later, n_later, round_t, &fb, &cur, &spare);
+		r->n_helped = close_later(&k, later, n_later, round_t, &fb, &cur,
+		    &spare, hh, &hs);
+	helper_detach(hh, &hs);
+	/* Nothing more to help with: let the helper go now. */
+	if (h != NULL)
+		optim_helper_close(h);
+	if (use == NULL && fb.away) {
+		/* The fallback is a closing the helper flew: its best. */
+		if (hs.best_key == fb.key) {
+			swap_results(&fb.r, &h->buf[2]);
+		} else {
+			/* Not expected (see "the helper" above): fly it again. */
+			for (int j = 0; j < n_later; j++)
+				if (later[j].key == fb.key) {
+					struct optim_choice c = later[j].c;
+					bool unclosable;
+					int n_bound;
+					k.t = &round_t[search_round(fb.key)];
+					k.key = fb.key;
+					close_choice(&k, &c, &cur, &spare, later[j].fixed, NULL,
+					    &unclosable, &n_bound, &finite, &st);
+					k.t = &tr;
+					swap_results(&fb.r, &cur);
+				}
+		}
+	}
 	for (int j = 0; j < n_later; j++)
 		r->n_screened_out += !later[j].flown;
 	for (int j = 0; j < OPTIM_ROUNDS * OPTIM_MAX_TRIES; j++)

@@ -273,6 +273,8 @@ struct solve_result {
 	struct res_candidate candidates[RES_MAX_CANDIDATES];
 	int n_screened_out;            /* combinations the parts search's screen
 	                                * left unflown */
+	int n_helped;                  /* of those flown, the flights the second
+	                                * thread made (optim.h's helper) */
 
 	bool feasible;
 	/* violations keep run, stage and code only, no text: the parts

@@ -11,8 +11,10 @@
 # 4. peak memory (max RSS) of a solve, a build and the batch
 # 5. instructions of one in-process solve per example, with and without the
 #    parts catalogue (valgrind's callgrind, calling thread only: the
-#    baseline's loop runs on a second thread); they repeat exactly, where
-#    the wall times of a shared virtual machine drift by tens of per cent
+#    baseline's loop runs on a second thread, and the parts search is kept
+#    to the calling thread, engine_solve_unhelped()); they repeat exactly,
+#    where the wall times of a shared virtual machine drift by tens of per
+#    cent and the helper's share of the search depends on timing
 # Budgets (issue 9): a solve well under 1 ms in process, a full dossier well
 # under 200 ms, memory under 50 MB.
 build=${1:-build}
@@ -90,7 +92,7 @@ printf '%-40s %10s\n' "build delivery_quad" "$(max_rss_kib "$bin" build -o "$wor
 printf '%-40s %10s\n' "build batch of $BATCH ${jobs:-(sequential)}" "$(max_rss_kib "$bin" build $jobs -o "$work/bout2" "$work/batch")"
 echo
 
-echo "== 5. instructions of one in-process solve (callgrind, calling thread; millions)"
+echo "== 5. instructions of one in-process solve (callgrind, calling thread, no helper; millions)"
 if command -v valgrind >/dev/null 2>&1; then
 	printf '%-32s %10s %10s\n' mission parts_M noparts_M
 	for f in examples/*.json; do
