@@ -2312,8 +2312,9 @@ deferred_cmp(const void *a, const void *b)
  * needs to fly them, all on the search's stack. */
 struct help_share {
 	struct closer base;            /* the search's closer, as at its start */
-	struct deferred *later;        /* its deferred combinations ... */
-	int n_slots;                   /* ... slots, those never opened LATER_MAIN */
+	struct deferred *later;        /* its OPTIM_ROUNDS * OPTIM_MAX_TRIES slots
+	                                  for deferred combinations (LATER_MAIN
+	                                  until opened) */
 	const struct optim_target *round_t; /* each round's aim */
 	long fb_rank;                  /* fallback_rank() of the fallback so far */
 	bool open;                     /* the helper may take combinations */
@@ -2392,7 +2393,7 @@ helper_take(struct help_share *s)
 {
 	struct deferred *best = NULL;
 	long best_rank = s->fb_rank;
-	for (int j = 0; j < s->n_slots; j++) {
+	for (int j = 0; j < OPTIM_ROUNDS * OPTIM_MAX_TRIES; j++) {
 		struct deferred *d = &s->later[j];
 		if (d->state != LATER_OPEN)
 			continue;
@@ -2793,8 +2794,7 @@ optim_select_helped(const struct mission_spec *spec,
 			 * A round's first one may be closed for the re-aim below:
 			 * the helper is kept off it till then. */
 			if (hh == NULL) {
-				hs = (struct help_share){ k, later,
-					OPTIM_ROUNDS * OPTIM_MAX_TRIES, round_t, LONG_MAX,
+				hs = (struct help_share){ k, later, round_t, LONG_MAX,
 					true, false, LONG_MAX, -1 };
 				helper_attach(h, &hs);
 				helper_fallback(h, &hs, &fb);

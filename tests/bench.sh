@@ -12,7 +12,7 @@
 # 5. instructions of one in-process solve per example, with and without the
 #    parts catalogue (valgrind's callgrind, calling thread only: the
 #    baseline's loop runs on a second thread, and the parts search is kept
-#    to the calling thread, engine_solve_unhelped()); they repeat exactly,
+#    to the calling thread, engine_solve_unhelped()); they repeat to 0.2 %,
 #    where the wall times of a shared virtual machine drift by tens of per
 #    cent and the helper's share of the search depends on timing
 # Budgets (issue 9): a solve well under 1 ms in process, a full dossier well
