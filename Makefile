@@ -52,7 +52,7 @@ BIN      := $(BUILD)/aeroeval
 TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps test unit example paper install clean check-layers asan tsan fuzz bench
+.PHONY: all deps test unit example paper install clean check-layers asan tsan fuzz bench golden
 
 all: $(BIN) aeroeval
 
@@ -151,6 +151,12 @@ $(BUILD)/bench: tests/bench.c $(LIB)
 example: deps
 	$(MAKE) all
 	./$(BIN) build -o out examples/ || [ $$? -eq 1 ]
+
+# ---- golden outputs ---------------------------------------------------------
+# Rewrites tests/golden/ from the examples (result.json, bom.csv, dossier
+# text); `make test` compares against it.  Commit the diff with the reason.
+golden: all
+	AEROEVAL=$(BIN) sh tests/cli_golden.sh update
 
 # ---- the paper's studies ----------------------------------------------------
 # Case studies, shedding and the 14-parameter sensitivity, ours beside the paper's.
