@@ -23,7 +23,7 @@ DEB_PKGS := gcc make pkg-config libcjson-dev libhpdf-dev libcairo2-dev \
 # Recursively expanded on purpose: pkg-config runs when a recipe needs the
 # flags, i.e. after `deps` has installed it on a fresh machine.
 PKG_CFLAGS = $(shell pkg-config --cflags cairo libcjson fontconfig 2>/dev/null)
-PKG_LIBS   = $(shell pkg-config --libs cairo libcjson fontconfig 2>/dev/null) -lhpdf -lm -lpthread
+PKG_LIBS   = $(shell pkg-config --libs cairo libcjson fontconfig 2>/dev/null) -lhpdf -lm
 
 WARN := -Wall
 WARN += -Wextra
@@ -52,7 +52,7 @@ BIN      := $(BUILD)/aeroeval
 TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps test unit example paper install clean check-layers asan tsan fuzz bench golden
+.PHONY: all deps test unit example paper install clean check-layers asan fuzz bench golden
 
 all: $(BIN) aeroeval
 
@@ -95,7 +95,6 @@ $(BUILD)/obj $(BUILD)/tests:
 test: deps
 	$(MAKE) all $(TEST_BINS)
 	sh tests/run_all.sh $(BUILD)
-	@$(MAKE) --no-print-directory tsan
 	@$(MAKE) --no-print-directory asan
 
 unit: $(TEST_BINS)
@@ -110,19 +109,6 @@ SAN_OPT := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer \
 asan:
 	@echo "== the unit suite again, under ASan+UBSan (build-asan/)"
 	@$(MAKE) --no-print-directory BUILD=build-asan OPT='$(SAN_OPT)' unit
-
-# `tsan` rebuilds in build-tsan/ under ThreadSanitizer and runs the tests
-# whose solves go through engine_solve(), which runs the baseline's mass
-# loop on a second thread: a data race fails them.  `make test` runs it.
-TSAN_TESTS := test_engine test_sweep test_optim
-tsan:
-	@echo "== the engine's tests under ThreadSanitizer (build-tsan/)"
-	@$(MAKE) --no-print-directory BUILD=build-tsan OPT='-O1 -g -fsanitize=thread' \
-	  $(TSAN_TESTS:%=build-tsan/tests/%)
-	@for t in $(TSAN_TESTS); do \
-	  TSAN_OPTIONS=halt_on_error=1 ./build-tsan/tests/$$t > build-tsan/$$t.log 2>&1 \
-	    || { cat build-tsan/$$t.log; echo "tsan: $$t failed"; exit 1; }; \
-	  echo "tsan: $$t passed"; done
 
 # `fuzz` (not part of `make test`) builds the libFuzzer harnesses
 # tests/fuzz/fuzz_*.c with clang and runs each for FUZZ_SECONDS from the seed

@@ -161,82 +161,6 @@ electric_power_w(const struct discharge_mission *mis, double v_climb_ms,
 	return pw.electrical_w;
 }
 
-/* The power along a phase of a continuous spray.  The mass falls linearly
- * while the tank empties, and the power is a smooth function of it: it is
- * computed exactly at the mid-step mass of the ends and the middle of each
- * stretch of SPRAY_NODE steps and interpolated by the parabola through
- * them in between (within 1e-6 of the power computed at every step, 30
- * times below the time step's own error, for a quarter of the rotor
- * solves).  A stretch where the tank runs dry is not linear in mass: its
- * steps are computed one by one. */
-#define SPRAY_NODE 8
-
-struct power_track {
-	const struct discharge_mission *mis;
-	double v_climb_ms, v_fwd_ms;
-	double t0_s, dt_s;     /* the phase's start and step */
-	int n;                 /* its steps */
-	int k0, km, k1;        /* the stretch [k0, k1] in use and its middle; -1: none */
-	bool smooth;           /* the mass is linear over it: interpolate */
-	double p0_w, pm_w, p1_w; /* the power at k0, km, k1 (pm, p1 when smooth) */
-};
-
-static double
-track_mass_kg(const struct power_track *pt, int k)
-{
-	return pt->mis->dry_mass_kg + role_payload_at(&pt->mis->shed,
-	    pt->t0_s + ((double)k + 0.5) * pt->dt_s);
-}
-
-static double
-track_power_w(const struct power_track *pt, double mass_kg)
-{
-	return electric_power_w(pt->mis, pt->v_climb_ms, pt->v_fwd_ms, mass_kg);
-}
-
-/* Start the stretch at step k0 whose power is p0_w. */
-static void
-track_stretch(struct power_track *pt, int k0, double p0_w)
-{
-	int k1 = k0 + SPRAY_NODE < pt->n - 1 ? k0 + SPRAY_NODE : pt->n - 1;
-	int km = (k0 + k1) / 2;
-	double m0 = track_mass_kg(pt, k0), mm = track_mass_kg(pt, km);
-	double m1 = track_mass_kg(pt, k1);
-	pt->k0 = k0;
-	pt->km = km;
-	pt->k1 = k1;
-	pt->p0_w = p0_w;
-	pt->smooth = km > k0 && k1 > km && fabs(mm - (m0 + (m1 - m0)
-	    * (double)(km - k0) / (double)(k1 - k0))) <= 1e-12 * m1;
-	if (pt->smooth) {
-		pt->pm_w = track_power_w(pt, mm);
-		pt->p1_w = track_power_w(pt, m1);
-	}
-}
-
-/* Step k's power (steps come in order); its mid-step mass into *mass_kg. */
-static double
-spray_power_w(struct power_track *pt, int k, double *mass_kg)
-{
-	*mass_kg = track_mass_kg(pt, k);
-	if (pt->k1 < 0 || k > pt->k1) {
-		/* The next stretch starts at the end of a smooth one, whose
-		 * power is known, else at this step. */
-		if (pt->k1 == k - 1 && pt->smooth)
-			track_stretch(pt, pt->k1, pt->p1_w);
-		else
-			track_stretch(pt, k, track_power_w(pt, *mass_kg));
-	}
-	if (!pt->smooth)
-		return k == pt->k0 ? pt->p0_w : track_power_w(pt, *mass_kg);
-	/* Lagrange's parabola through the three nodes. */
-	double x = (double)k, x0 = (double)pt->k0, xm = (double)pt->km;
-	double x1 = (double)pt->k1;
-	return pt->p0_w * (x - xm) * (x - x1) / ((x0 - xm) * (x0 - x1))
-	    + pt->pm_w * (x - x0) * (x - x1) / ((xm - x0) * (xm - x1))
-	    + pt->p1_w * (x - x0) * (x - xm) / ((x1 - x0) * (x1 - xm));
-}
-
 /* The electrical power at one mass, remembered for the next call. */
 struct power_memo {
 	double mass_kg;        /* -1: none yet */
@@ -290,8 +214,6 @@ discharge_run(const struct discharge_pack *pack,
 		step_init(pack, hac, mis->ambient_c, dt, &sc);
 		double v_climb = ph == PHASE_CLIMB ? mis->speed_ms[ph] : 0.0;
 		double v_fwd = ph == PHASE_FORWARD ? mis->speed_ms[ph] : 0.0;
-		struct power_track pt = { mis, v_climb, v_fwd, t, dt, n, -1, -1, -1,
-		    false, 0.0, 0.0, 0.0 };
 		double mass = mis->dry_mass_kg + role_payload_at(&mis->shed, t);
 		struct power_memo pm = { -1.0, 0.0 };
 		double power_w = memo_power_w(mis, v_climb, v_fwd, &pm, mass);
@@ -318,7 +240,10 @@ discharge_run(const struct discharge_pack *pack,
 					power_w = before * p0 + (1.0 - before) * p1;
 				}
 			} else if (mis->shed.kind == SHED_SPRAY) {
-				power_w = spray_power_w(&pt, k, &mass);
+				/* The tank empties along the step: its mid-step mass. */
+				mass = mis->dry_mass_kg
+				    + role_payload_at(&mis->shed, t + 0.5 * dt);
+				power_w = memo_power_w(mis, v_climb, v_fwd, &pm, mass);
 			}
 			struct step_out so;
 			enum discharge_end e = step(&sc, power_w, &st, &so);

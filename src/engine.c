@@ -2,8 +2,6 @@
 #include "engine.h"
 
 #include <math.h>
-#include <pthread.h>
-#include <stdatomic.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,7 +10,6 @@
 #include "aero.h"
 #include "feasibility.h"
 #include "optim.h"
-#include "spin.h"
 #include "strbuf.h"
 #include "structure.h"
 #include "units.h"
@@ -39,7 +36,7 @@ engine_rationale(struct solve_result *r, const char *fmt, ...)
 		return;
 	va_list ap;
 	va_start(ap, fmt);
-	str_vformat(r->rationale[r->n_rationale++], RES_TEXT, fmt, ap);
+	vsnprintf(r->rationale[r->n_rationale++], RES_TEXT, fmt, ap);
 	va_end(ap);
 }
 
@@ -477,126 +474,10 @@ run_finish(const struct sizing_params *p, const char *name, bool baseline,
 		explain(p, o, s, r);
 }
 
-/* The baseline's mass loop, run on a second thread while the custom run and
- * the parts search go on (neither reads anything of it); the thread then
- * helps the search (optim.h).  It is detached: the solve waits for the
- * loop (`done`) and the helper to leave the search, never for the thread's
- * exit, which on this kind of virtual machine costs 30-70 us (the exiting
- * thread's stack goes back to the kernel). */
-struct baseline_job {
-	struct sizing_params p;
-	struct res_run *o;
-	enum sizing_status st;
-	struct optim_helper *helper;   /* served after the loop; NULL: none */
-	pthread_mutex_t mu;
-	pthread_cond_t cv;
-	atomic_bool done;              /* o and st are final */
-	bool spin;                     /* the solve spins while it waits for it */
-	atomic_int refs;               /* the solve's and the thread's */
-};
-
-/* Whoever lets go of the job last frees it. */
+/* The role overhead and its rationale line. */
 static void
-job_release(struct baseline_job *j)
+role_overhead(struct solve_result *r)
 {
-	if (atomic_fetch_sub_explicit(&j->refs, 1, memory_order_acq_rel) != 1)
-		return;
-	optim_helper_free(j->helper);
-	pthread_cond_destroy(&j->cv);
-	pthread_mutex_destroy(&j->mu);
-	free(j);
-}
-
-static void *
-baseline_main(void *arg)
-{
-	struct baseline_job *j = arg;
-	j->st = sizing_run(&j->p, j->o);
-	pthread_mutex_lock(&j->mu);
-	atomic_store_explicit(&j->done, true, memory_order_release);
-	pthread_cond_broadcast(&j->cv);
-	pthread_mutex_unlock(&j->mu);
-	if (j->helper != NULL)
-		optim_helper_serve(j->helper);
-	job_release(j);
-	return NULL;
-}
-
-/* Wait for the baseline's loop: spin a little (a sleeping thread is slow to
- * wake here), then sleep. */
-static void
-job_wait(struct baseline_job *j)
-{
-	for (int k = 0; j->spin && k < 20000; k++) {
-		if (atomic_load_explicit(&j->done, memory_order_acquire))
-			return;
-		spin_pause();
-	}
-	pthread_mutex_lock(&j->mu);
-	while (!atomic_load_explicit(&j->done, memory_order_acquire))
-		pthread_cond_wait(&j->cv, &j->mu);
-	pthread_mutex_unlock(&j->mu);
-}
-
-static bool
-job_start(struct baseline_job *j)
-{
-	pthread_attr_t at;
-	if (pthread_attr_init(&at) != 0)
-		return false;
-	pthread_t tid;
-	atomic_store(&j->refs, 2);
-	bool ok = pthread_attr_setdetachstate(&at, PTHREAD_CREATE_DETACHED) == 0
-	    && pthread_create(&tid, &at, baseline_main, j) == 0;
-	pthread_attr_destroy(&at);
-	if (!ok)
-		atomic_store(&j->refs, 1);
-	return ok;
-}
-
-/* Run f(r, arg) with r's violations from v_at and rationale lines from
- * r_at set aside, then put them back after what f added: entries come out
- * in the order a sequential solve writes them (lists that fill up keep
- * their first entries, as they do when written in order). */
-static void
-insert_at(struct solve_result *r, int v_at, int r_at,
-          void (*f)(struct solve_result *r, void *arg), void *arg)
-{
-	int nv = r->n_violations - v_at, nr = r->n_rationale - r_at;
-	struct res_violation *v = xmalloc((size_t)(nv > 0 ? nv : 1) * sizeof *v);
-	char (*t)[RES_TEXT] = xmalloc((size_t)(nr > 0 ? nr : 1) * sizeof *t);
-	memcpy(v, &r->violations[v_at], (size_t)nv * sizeof *v);
-	memcpy(t, &r->rationale[r_at], (size_t)nr * sizeof *t);
-	r->n_violations = v_at;
-	r->n_rationale = r_at;
-	f(r, arg);
-	for (int i = 0; i < nv && r->n_violations < RES_MAX_VIOLATIONS; i++)
-		r->violations[r->n_violations++] = v[i];
-	for (int i = 0; i < nr && r->n_rationale < RES_MAX_RATIONALE; i++)
-		memcpy(r->rationale[r->n_rationale++], t[i], sizeof t[i]);
-	free(v);
-	free(t);
-}
-
-/* The baseline's checks and violations (insert_at()'s f). */
-struct baseline_finish {
-	const struct baseline_job *job;
-	int *rc;
-};
-
-static void
-finish_baseline(struct solve_result *r, void *arg)
-{
-	const struct baseline_finish *bf = arg;
-	run_finish(&bf->job->p, "baseline", true, bf->job->st, &r->mission,
-	    &r->baseline, r, bf->rc);
-}
-
-/* The role overhead and its rationale line (insert_at()'s f). */
-static void
-role_overhead(struct solve_result *r, void *arg)
-{
-	(void)arg;
 	if (!r->baseline.ran || !r->custom.ran)
 		return;
 	mass_diff(&r->custom.mass, &r->baseline.mass, &r->role_overhead);
@@ -611,82 +492,28 @@ int
 engine_solve(const struct mission_spec *spec, const struct model_data *md,
              const struct catalog *cat, struct solve_result *r)
 {
-	return engine_solve_search(spec, md, cat, OPTIM_SEARCH_SCREENED, r);
-}
-
-static int
-solve_with(const struct mission_spec *spec, const struct model_data *md,
-           const struct catalog *cat, enum optim_search search, bool helped,
-           struct solve_result *r)
-{
 	int rc = 0;
 	r->mission = *spec;
 	engine_resolve(&r->mission, md, r);
 
-	/* The baseline and the custom run are independent: the baseline's
-	 * loop runs on a second thread (in line if none can be had), its
-	 * checks after it, in their place among the violations. */
-	struct baseline_job *job = xmalloc(sizeof *job);
-	engine_params(&r->mission, md, true, &job->p);
-	job->o = &r->baseline;
-	job->st = SIZING_CONVERGED;
-	pthread_mutex_init(&job->mu, NULL);
-	pthread_cond_init(&job->cv, NULL);
-	atomic_init(&job->done, false);
-	atomic_init(&job->refs, 1);
-	job->spin = helped;
-	/* Then the thread helps a screened parts search (optim.h). */
-	job->helper = helped && cat != NULL && search == OPTIM_SEARCH_SCREENED
-	    ? optim_helper_new() : NULL;
-	bool base_ran = run_gate(&job->p, "baseline", &r->baseline, r);
-	bool threaded = base_ran && job_start(job);
-	if (!threaded) {
-		optim_helper_free(job->helper);
-		job->helper = NULL;
-	}
-	if (base_ran && !threaded)
-		job->st = sizing_run(&job->p, job->o);
-	int v_base = r->n_violations;
-
 	struct sizing_params p;
+	engine_params(&r->mission, md, true, &p);
+	if (run_gate(&p, "baseline", &r->baseline, r))
+		run_finish(&p, "baseline", true, sizing_run(&p, &r->baseline),
+		    &r->mission, &r->baseline, r, &rc);
+
 	engine_params(&r->mission, md, false, &p);
 	if (run_gate(&p, "custom", &r->custom, r))
 		run_finish(&p, "custom", false, sizing_run(&p, &r->custom),
 		    &r->mission, &r->custom, r, &rc);
-	int r_role = r->n_rationale;
+	role_overhead(r);
+
 	/* Real parts on top of a converged custom run (optim.h). */
 	if (cat != NULL && r->custom.ran && r->custom.converged
-	    && optim_select_helped(&r->mission, md, cat, search, job->helper, r) != 0)
+	    && optim_select(&r->mission, md, cat, r) != 0)
 		rc = 3;
-
-	if (job->helper != NULL)
-		optim_helper_close(job->helper);
-	if (threaded)
-		job_wait(job);
-	if (base_ran) {
-		struct baseline_finish bf = { job, &rc };
-		insert_at(r, v_base, r->n_rationale, finish_baseline, &bf);
-	}
-	job_release(job);
-	insert_at(r, r->n_violations, r_role, role_overhead, NULL);
 	r->feasible = r->n_violations == 0 && r->custom.ran && r->custom.feasible;
 	return rc;
-}
-
-int
-engine_solve_search(const struct mission_spec *spec,
-                    const struct model_data *md, const struct catalog *cat,
-                    enum optim_search search, struct solve_result *r)
-{
-	return solve_with(spec, md, cat, search, true, r);
-}
-
-int
-engine_solve_unhelped(const struct mission_spec *spec,
-                      const struct model_data *md, const struct catalog *cat,
-                      struct solve_result *r)
-{
-	return solve_with(spec, md, cat, OPTIM_SEARCH_SCREENED, false, r);
 }
 
 void

@@ -8,9 +8,7 @@
  * Parts selection (optim.c) runs on top when a catalogue is given.
  *
  * Engine layer: no JSON, PDF or cairo.  Reentrant: everything it touches is
- * in its arguments, so missions can be solved in parallel.  A solve runs
- * the baseline's mass loop on a second thread of its own (POSIX threads;
- * in line when none can be made): the result is the same either way.
+ * in its arguments, so missions can be solved in parallel.
  */
 #ifndef AEROEVAL_ENGINE_H
 #define AEROEVAL_ENGINE_H
@@ -29,23 +27,6 @@ struct catalog;
  * value caught before it could reach an output). */
 int engine_solve(const struct mission_spec *spec, const struct model_data *md,
                  const struct catalog *cat, struct solve_result *r);
-
-/* engine_solve() with the parts search given (optim.h): the tests compare
- * the screened search with the exhaustive one. */
-int engine_solve_search(const struct mission_spec *spec,
-                        const struct model_data *md, const struct catalog *cat,
-                        enum optim_search search, struct solve_result *r);
-
-/* engine_solve() with the parts search kept to the calling thread: the
- * baseline's loop still runs on a second thread, which then does not help
- * the search (optim.h), and the solve sleeps (does not spin) when it has
- * to wait for that loop.  The same result; `make bench` counts the calling
- * thread's instructions of it, a count that repeats exactly, where the
- * helper's share of the flights and a spin's length depend on the two
- * threads' timing. */
-int engine_solve_unhelped(const struct mission_spec *spec,
-                          const struct model_data *md,
-                          const struct catalog *cat, struct solve_result *r);
 
 /* The endurance explorer of r's custom run (sizing_explore()), for the
  * outputs that show it: result.json and the dossier.  Kept out of

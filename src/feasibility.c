@@ -37,7 +37,7 @@ feasibility_violation(struct solve_result *r, const char *run,
 		return;
 	va_list ap;
 	va_start(ap, fmt);
-	str_vformat(v->message, sizeof v->message, fmt, ap);
+	vsnprintf(v->message, sizeof v->message, fmt, ap);
 	va_end(ap);
 	for (int i = 0; fixes != NULL && fixes[i] != NULL && i < RES_MAX_FIXES; i++) {
 		str_copy(v->fixes[i], sizeof v->fixes[i], fixes[i]);
@@ -55,7 +55,7 @@ fix_text(const struct solve_result *r, char f[FIX_LEN], const char *fmt, ...)
 		return;
 	va_list ap;
 	va_start(ap, fmt);
-	str_vformat(f, FIX_LEN, fmt, ap);
+	vsnprintf(f, FIX_LEN, fmt, ap);
 	va_end(ap);
 }
 

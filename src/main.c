@@ -37,7 +37,6 @@ is_help(const char *a)
 int
 main(int argc, char **argv)
 {
-	xalloc_keep_freed();
 	atexit(doc_global_cleanup); /* fontconfig/cairo caches: valgrind-clean exit */
 	if (argc < 2) {
 		cli_help_overview(stderr);

@@ -1,20 +1,16 @@
 /* optim.c — discrete part selection and the BOM-closed design (see optim.h). */
 #include "optim.h"
 
-#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
-#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "aero.h"
 #include "engine.h"
 #include "feasibility.h"
 #include "sizing.h"
-#include "spin.h"
 #include "strbuf.h"
 #include "therm.h"
 #include "units.h"
@@ -56,7 +52,7 @@ append(char *dst, size_t n, const char *fmt, ...)
 		return;
 	va_list ap;
 	va_start(ap, fmt);
-	str_vformat(dst + len, n - len, fmt, ap);
+	vsnprintf(dst + len, n - len, fmt, ap);
 	va_end(ap);
 }
 
@@ -1326,27 +1322,8 @@ struct closer {
 	const struct catalog *cat;
 	const struct optim_locks *lk;
 	const struct res_run *custom;
-	bool screened;                   /* OPTIM_SEARCH_SCREENED */
 	const struct pack_list *packs;   /* what an upsized battery is picked from */
-	/* Only when nothing closed (close_later()): the combination being
-	 * closed can then only become the fallback, and an upsized attempt
-	 * bound to rank after `beat` (fallback_rank() of the fallback so far)
-	 * cannot make it one.  LONG_MAX: no such limit. */
-	long beat;
-	int key;                         /* the combination's search key */
-	/* A helper's flight (optim_helper_serve()): when set, the search is
-	 * over, and close_choice() stops before its next attempt. */
-	const atomic_bool *stop;
 };
-
-/* A closing's place in the fallback order (fewest failed checks, then the
- * first in search order) as one number: (failed, search key),
- * lexicographic. */
-static long
-fallback_rank(int failed, int key)
-{
-	return (long)failed * OPTIM_ROUNDS * OPTIM_MAX_TRIES + key;
-}
 
 /* Full-throttle rotor speed of the real motor on the closed bus, rev/s. */
 static double
@@ -1590,33 +1567,6 @@ check_closing(const struct closer *k, const struct sizing_params *p,
 	return parts_checks(k, p, c, &sr->closed, sr);
 }
 
-/* The checks of a masses-only closing in sr (sizing_params.masses_only:
- * its mass fixed point on the real parts, before the mission's flights),
- * those that need no flight.  *n_bound gets how many failed checks more
- * mass only worsens (res_check.mass_bound): the finished closing fails at
- * least as many.  True when one of them is new (a parts check, or one the
- * continuous design passed): then the closing fails, with n_bound failures
- * at least, however close_choice() upsizes the battery or the ESC, since
- * both only add mass (each picks the lightest set for a need that only
- * grows, and the battery keeps its chemistry family). */
-static bool
-bound_checks(const struct closer *k, const struct sizing_params *p,
-             const struct optim_choice *c, struct solve_result *sr,
-             int *n_bound)
-{
-	check_closing(k, p, SIZING_CONVERGED, c, sr);
-	bool fails = false;
-	*n_bound = 0;
-	const struct res_run *o = &sr->closed;
-	for (int i = 0; i < o->n_checks; i++) {
-		if (o->checks[i].pass || !o->checks[i].mass_bound)
-			continue;
-		(*n_bound)++;
-		fails = fails || !custom_failed(k->custom, o->checks[i].name);
-	}
-	return fails;
-}
-
 /* Re-solve the custom mission on choice c into (*srp)->closed (violations
  * into *srp), upsizing the battery while it runs short and the ESC while
  * it carries less than the closed design's current.  Returns the name
@@ -1625,24 +1575,11 @@ bound_checks(const struct closer *k, const struct sizing_params *p,
  * a number came out non-finite; *stp gets the loop status of the attempt
  * kept.  *sparep is a second buffer: an upsized battery is tried in one
  * while the other keeps the attempt before, so that going back to it needs
- * no second solve (the buffers may swap).
- *
- * A screened closer (k->screened) reaches each attempt's mass fixed point
- * first and flies the mission from there (sizing_finish(): the same run).
- * With `keep` (a screened closer only), a first attempt whose
- * bound_checks() show that it cannot close is not flown: *unclosable is
- * set, *n_bound gets the count of failures it is bound to (the finished
- * closing fails at least as many), its masses-only run goes to *keep
- * (allocated if NULL), and NULL is returned.  A first attempt starts from
- * `from` when given: that run, as such a try left it.  An upsized attempt
- * bound to fail at least as many checks as the one before is not flown
- * either: the one before is kept, as it would be after the flight. */
+ * no second solve (the buffers may swap). */
 static const char *
 close_choice(const struct closer *k, struct optim_choice *c,
              struct solve_result **srp, struct solve_result **sparep,
-             const struct res_run *from, struct res_run **keep,
-             bool *unclosable, int *n_bound_out, bool *finite,
-             enum sizing_status *stp)
+             bool *finite, enum sizing_status *stp)
 {
 	double need_ah = at_bus(k->t, k->t->capacity_ah, c->cells);
 	double need_a = at_bus(k->t, k->t->bus_peak_current_a, c->cells);
@@ -1652,57 +1589,18 @@ close_choice(const struct closer *k, struct optim_choice *c,
 	enum sizing_status prev_st = SIZING_CONVERGED;
 	const char *parts_fail = NULL, *prev_parts_fail = NULL;
 	struct solve_result *sr = *srp;
-	*unclosable = false;
 	for (int attempt = 0;; attempt++) {
-		if (attempt > 0 && k->stop != NULL
-		    && atomic_load_explicit(k->stop, memory_order_relaxed))
-			break; /* nobody reads this closing any more */
 		struct sizing_params p = *k->p0;
 		apply_parts(&p, k->md, k->t, k->custom, c);
-		/* Only the run kept needs them (optim_select fills them in). */
-		p.defer_extras = true;
-		p.masses_only = k->screened;
-		enum sizing_status st = SIZING_CONVERGED;
-		if (attempt == 0 && from != NULL && k->screened)
-			res_run_copy_untraced(&sr->closed, from);
-		else
-			st = sizing_run(&p, &sr->closed);
-		p.masses_only = false;
-		bool worse = false;
-		if (k->screened && st == SIZING_CONVERGED
-		    && closed_finite(&sr->closed)) {
-			int n_bound;
-			bool bound = attempt == 0 ? keep != NULL : prev_failed >= 0;
-			bool fails = bound && bound_checks(k, &p, c, sr, &n_bound);
-			if (bound && attempt == 0 && fails) {
-				*unclosable = true;
-				*n_bound_out = n_bound;
-				if (*keep == NULL)
-					*keep = xmalloc(sizeof **keep);
-				res_run_copy_untraced(*keep, &sr->closed);
-				return NULL;
-			}
-			/* More battery or ESC only adds mass, so the bound holds for
-			 * every later attempt too. */
-			worse = bound && attempt > 0 && (n_bound >= prev_failed
-			    || fallback_rank(n_bound, k->key) > k->beat);
-			if (!worse)
-				st = sizing_finish(&p, &sr->closed);
-		} else if (k->screened) {
-			/* No fixed point to go on from: the whole run. */
-			st = sizing_run(&p, &sr->closed);
-		}
-		int nf = 0;
-		if (!worse) {
-			*stp = st;
-			/* It flew the continuous design's relaxed mission, if any. */
-			if (k->custom->time_scale > 0.0 && k->custom->time_scale < 1.0)
-				sr->closed.time_scale = k->custom->time_scale;
-			*finite = closed_finite(&sr->closed);
-			parts_fail = check_closing(k, &p, st, c, sr);
-			nf = n_failed(&sr->closed);
-		}
-		if (worse || (prev_failed >= 0 && nf >= prev_failed)) {
+		enum sizing_status st = sizing_run(&p, &sr->closed);
+		*stp = st;
+		/* It flew the continuous design's relaxed mission, if any. */
+		if (k->custom->time_scale > 0.0 && k->custom->time_scale < 1.0)
+			sr->closed.time_scale = k->custom->time_scale;
+		*finite = closed_finite(&sr->closed);
+		parts_fail = check_closing(k, &p, st, c, sr);
+		int nf = n_failed(&sr->closed);
+		if (prev_failed >= 0 && nf >= prev_failed) {
 			/* A larger battery or ESC did not help: go back to the last one,
 			 * whose solve the spare buffer still holds (solving it
 			 * again would give the same). */
@@ -2165,485 +2063,47 @@ append_violations(struct solve_result *r, const struct solve_result *src)
 		r->violations[r->n_violations++] = src->violations[i];
 }
 
-/* A combination's place in search order: round × OPTIM_MAX_TRIES + its J
- * rank in the round.  The round's aim is round_t[search_round(key)]. */
-static int
-search_round(int key)
-{
-	return key / OPTIM_MAX_TRIES;
-}
-
-/* What a closing gave, as the fallback order and the report read it. */
-struct closing_sum {
-	struct optim_choice c;         /* as closed (upsized) */
-	int failed;
-	bool finite;
-	enum sizing_status st;
-	char fail[64];                 /* its first new failure, "" none */
-};
-
-static void
-sum_set(struct closing_sum *u, const struct optim_choice *c, int failed,
-        bool finite, enum sizing_status st, const char *fail)
-{
-	u->c = *c;
-	u->failed = failed;
-	u->finite = finite;
-	u->st = st;
-	str_copy(u->fail, sizeof u->fail, fail ? fail : "");
-}
-
 /* The closest closing so far: the fewest failed checks, and among equals
  * the first in search order. */
 struct fallback {
 	struct solve_result *r;
 	struct optim_choice c;
-	int key;
+	int round;                     /* the search round it was found in */
 	int failed;                    /* its failed checks; -1: none yet */
 	bool finite;
 	enum sizing_status st;
-	char fail[64];                 /* its first new failure */
-	bool away;                     /* flown by the helper: r is not its result */
+	const char *fail;              /* its first new failure, or NULL */
 };
 
-/* Closing u, at search position key, becomes the fallback if it is
- * closer; `away`: its result is not in fb->r (the helper's).  True if it
- * did. */
-static bool
-fallback_take(struct fallback *fb, const struct closing_sum *u, int key,
-              bool away)
-{
-	if (fb->failed >= 0
-	    && fallback_rank(u->failed, key) > fallback_rank(fb->failed, fb->key))
-		return false;
-	fb->c = u->c;
-	fb->key = key;
-	fb->failed = u->failed;
-	fb->finite = u->finite;
-	fb->st = u->st;
-	str_copy(fb->fail, sizeof fb->fail, u->fail);
-	fb->away = away;
-	return true;
-}
-
-/* The closing in *cur (choice c, search position key) becomes the
- * fallback if it is closer.  The next try rewrites all it reads of its
- * result, so the buffers swap instead of copying a whole result. */
+/* The closing in *cur (choice c, search round `round`) becomes the
+ * fallback if it fails fewer checks.  The next try rewrites all it reads
+ * of its result, so the buffers swap instead of copying a whole result. */
 static void
 offer_fallback(struct fallback *fb, struct solve_result **cur,
-               const struct optim_choice *c, int key, bool finite,
+               const struct optim_choice *c, int round, bool finite,
                enum sizing_status st, const char *fail)
 {
-	struct closing_sum u;
-	sum_set(&u, c, n_failed(&(*cur)->closed), finite, st, fail);
-	if (!fallback_take(fb, &u, key, false))
+	int failed = n_failed(&(*cur)->closed);
+	if (fb->failed >= 0 && failed >= fb->failed)
 		return;
+	fb->c = *c;
+	fb->round = round;
+	fb->failed = failed;
+	fb->finite = finite;
+	fb->st = st;
+	fb->fail = fail;
 	struct solve_result *tmp = fb->r;
 	fb->r = *cur;
 	*cur = tmp;
-}
-
-/* Who may fly a deferred combination (struct optim_helper). */
-enum later_state {
-	LATER_MAIN,                    /* the search's own; the helper keeps off */
-	LATER_OPEN,                    /* the helper may take it */
-	LATER_FLYING,                  /* the helper is flying it */
-	LATER_DONE                     /* the helper flew it: see `sum` */
-};
-
-/* A combination shown unable to close, its flight left for later. */
-struct deferred {
-	struct optim_choice c;
-	int key;
-	int n_bound;                   /* failures it is bound to */
-	bool flown;                    /* in the search's order (counts it) */
-	struct res_run *fixed;         /* its masses-only run, to go on from */
-	bool opened;                   /* handed to the helper (the search's) */
-	enum later_state state;        /* under the helper's lock */
-	struct closing_sum sum;        /* LATER_DONE: the helper's closing */
-};
-
-/* qsort order of pointers to deferred combinations: by the fallback rank
- * of their bound, the closest possible first. */
-static int
-deferred_cmp(const void *a, const void *b)
-{
-	const struct deferred *x = *(const struct deferred *const *)a;
-	const struct deferred *y = *(const struct deferred *const *)b;
-	long rx = fallback_rank(x->n_bound, x->key);
-	long ry = fallback_rank(y->n_bound, y->key);
-	return (rx > ry) - (rx < ry);
-}
-
-/* ---- the helper ------------------------------------------------------------
- *
- * The baseline's thread, once its mass loop is done, flies deferred
- * combinations while the search goes on: those of each round that closed
- * nothing, from the end of that round (a round's first combination once
- * its re-aim no longer needs it), the lowest bound rank first.  When
- * nothing closes, close_later() then finds most of its flights made.  It
- * takes the same decisions in the same order as without a helper (which
- * to fly, which becomes the fallback); a flight already made is only not
- * made twice.  Only a round without a closing hands anything over: where
- * the search closes early, the helper would fly for nothing, and the
- * calling thread would wait for the flight it is on.
- *
- * Why the result is the same to the bit.  The helper flies a combination
- * with close_choice(), from the same masses-only run and at the same aim as
- * close_later() would, with `beat` the search's fallback rank when it takes
- * it (not lower than the one close_later() flies it with: the fallback
- * only improves).  Two such closings differ only where one flies an
- * upsized attempt that the other leaves out as bound to rank after its
- * beat; that attempt then ranks after both beats, so either both go back to
- * the attempt before, or both closings rank after the fallback of the
- * moment and neither is kept.  The fallback's own closing is therefore the
- * same, and so is every choice the order makes.  The fallback's result
- * buffer is the helper's best (the lowest rank it flew), or, should it not
- * be, flown again in line. */
-
-/* The helper waits for work by spinning this long, then looks every 20 us:
- * a sleeping thread on this kind of virtual machine takes 35-100 us to
- * wake, longer than many of the flights it is there to take.  The loop
- * reads, without `pause`, which the hypervisor may take for a lock holder
- * waiting and deschedule. */
-#define HELPER_SPIN_NS 5000000L
-
-/* The search being served: its deferred combinations and what the helper
- * needs to fly them, all on the search's stack. */
-struct help_share {
-	struct closer base;            /* the search's closer, as at its start */
-	struct deferred *later;        /* its OPTIM_ROUNDS * OPTIM_MAX_TRIES slots
-	                                  for deferred combinations (LATER_MAIN
-	                                  until opened) */
-	const struct optim_target *round_t; /* each round's aim */
-	long fb_rank;                  /* fallback_rank() of the fallback so far */
-	bool open;                     /* the helper may take combinations */
-	bool busy;                     /* the helper is flying one */
-	long best_rank;                /* the lowest-ranked closing it flew */
-	int best_key;
-};
-
-/* The helper and the search share it under a spin lock: every critical
- * section is a few stores, and neither side ever sleeps while the other
- * waits for it (a sleeping thread here takes 35-100 us to wake). */
-struct optim_helper {
-	atomic_flag lock;
-	atomic_uint gen;               /* bumped by every change of interest */
-	atomic_bool stop;              /* the search is over */
-	bool closed;                   /* no more searches: serve() returns */
-	struct help_share *s;          /* the search served, or NULL */
-	struct solve_result *buf[3];   /* cur, spare, best; allocated by the search */
-};
-
-static void
-hlock(struct optim_helper *h)
-{
-	while (atomic_flag_test_and_set_explicit(&h->lock, memory_order_acquire))
-		spin_pause();
-}
-
-static void
-hunlock(struct optim_helper *h)
-{
-	atomic_flag_clear_explicit(&h->lock, memory_order_release);
-}
-
-struct optim_helper *
-optim_helper_new(void)
-{
-	struct optim_helper *h = xmalloc(sizeof *h);
-	memset(h, 0, sizeof *h);
-	atomic_flag_clear(&h->lock);
-	atomic_init(&h->gen, 0u);
-	atomic_init(&h->stop, false);
-	return h;
-}
-
-void
-optim_helper_free(struct optim_helper *h)
-{
-	if (h == NULL)
-		return;
-	for (int i = 0; i < 3; i++)
-		free(h->buf[i]);
-	free(h);
-}
-
-/* Tell the helper something changed (the lock is held). */
-static void
-helper_poke(struct optim_helper *h)
-{
-	atomic_fetch_add_explicit(&h->gen, 1u, memory_order_release);
-}
-
-void
-optim_helper_close(struct optim_helper *h)
-{
-	hlock(h);
-	h->closed = true;
-	helper_poke(h);
-	hunlock(h);
-}
-
-/* The open combination the helper should fly next, or NULL: the lowest
- * bound rank first, and only one that could still become the fallback
- * (close_later() never flies any other). */
-static struct deferred *
-helper_take(struct help_share *s)
-{
-	struct deferred *best = NULL;
-	long best_rank = s->fb_rank;
-	for (int j = 0; j < OPTIM_ROUNDS * OPTIM_MAX_TRIES; j++) {
-		struct deferred *d = &s->later[j];
-		if (d->state != LATER_OPEN)
-			continue;
-		long rank = fallback_rank(d->n_bound, d->key);
-		if (rank < best_rank) {
-			best = d;
-			best_rank = rank;
-		}
-	}
-	return best;
-}
-
-static long
-elapsed_ns(const struct timespec *t0)
-{
-	struct timespec t;
-	clock_gettime(CLOCK_MONOTONIC, &t);
-	return (t.tv_sec - t0->tv_sec) * 1000000000L + (t.tv_nsec - t0->tv_nsec);
-}
-
-/* Fly d for search s (called and returning with the lock held). */
-static void
-helper_fly(struct optim_helper *h, struct help_share *s, struct deferred *d)
-{
-	struct closer k = s->base;
-	k.t = &s->round_t[search_round(d->key)];
-	k.key = d->key;
-	k.beat = s->fb_rank;
-	k.stop = &h->stop;
-	struct optim_choice c = d->c;
-	const struct res_run *from = d->fixed;
-	d->state = LATER_FLYING;
-	s->busy = true;
-	hunlock(h);
-
-	bool unclosable, finite;
-	int n_bound;
-	enum sizing_status st;
-	const char *fail = close_choice(&k, &c, &h->buf[0], &h->buf[1], from,
-	    NULL, &unclosable, &n_bound, &finite, &st);
-	int nf = n_failed(&h->buf[0]->closed);
-
-	hlock(h);
-	s->busy = false;
-	if (!atomic_load_explicit(&h->stop, memory_order_relaxed)) {
-		sum_set(&d->sum, &c, nf, finite, st, fail);
-		d->state = LATER_DONE;
-		long rank = fallback_rank(nf, d->key);
-		if (rank < s->best_rank) {
-			swap_results(&h->buf[0], &h->buf[2]);
-			s->best_rank = rank;
-			s->best_key = d->key;
-		}
-	}
-}
-
-void
-optim_helper_serve(struct optim_helper *h)
-{
-	hlock(h);
-	while (!h->closed) {
-		struct help_share *s = h->s;
-		struct deferred *d = s != NULL && s->open ? helper_take(s) : NULL;
-		if (d != NULL) {
-			helper_fly(h, s, d);
-			continue;
-		}
-		/* Nothing to do yet: spin a while (waking from sleep is slow),
-		 * then look again every 20 us. */
-		unsigned g = atomic_load_explicit(&h->gen, memory_order_acquire);
-		hunlock(h);
-		struct timespec t0;
-		clock_gettime(CLOCK_MONOTONIC, &t0);
-		while (atomic_load_explicit(&h->gen, memory_order_acquire) == g) {
-			if (elapsed_ns(&t0) < HELPER_SPIN_NS) {
-				for (int q = 0; q < 256; q++)
-					if (atomic_load_explicit(&h->gen, memory_order_relaxed) != g)
-						break;
-			} else {
-				struct timespec nap = { 0, 20000 };
-				nanosleep(&nap, NULL);
-			}
-		}
-		hlock(h);
-	}
-	hunlock(h);
-}
-
-/* Start serving search s: its result buffers for the helper, allocated
- * here, on the search's thread. */
-static void
-helper_attach(struct optim_helper *h, struct help_share *s)
-{
-	for (int i = 0; i < 3; i++)
-		if (h->buf[i] == NULL) {
-			h->buf[i] = xmalloc(sizeof *h->buf[i]);
-			h->buf[i]->terse = true;
-			h->buf[i]->n_violations = 0;
-		}
-	hlock(h);
-	h->s = s;
-	helper_poke(h);
-	hunlock(h);
-}
-
-/* Hand combination d to the helper (h NULL: none). */
-static void
-helper_open(struct optim_helper *h, struct deferred *d)
-{
-	if (h == NULL)
-		return;
-	d->opened = true;
-	hlock(h);
-	d->state = LATER_OPEN;
-	helper_poke(h);
-	hunlock(h);
-}
-
-/* The search's fallback changed to fb. */
-static void
-helper_fallback(struct optim_helper *h, struct help_share *s,
-                const struct fallback *fb)
-{
-	if (h == NULL || fb->failed < 0)
-		return;
-	hlock(h);
-	s->fb_rank = fallback_rank(fb->failed, fb->key);
-	helper_poke(h);
-	hunlock(h);
-}
-
-/* Combination d, about to be flown in close_later()'s order: true with
- * *sum filled if the helper flew it (waiting for it if it is flying it);
- * false if the search flies it itself (the helper is kept off it). */
-static bool
-helper_claim(struct optim_helper *h, struct deferred *d, struct closing_sum *sum)
-{
-	if (h == NULL)
-		return false;
-	hlock(h);
-	while (d->state == LATER_FLYING) {
-		/* It is flying it: wait, spinning (it is awake). */
-		hunlock(h);
-		spin_pause();
-		hlock(h);
-	}
-	bool flown = d->state == LATER_DONE;
-	if (flown)
-		*sum = d->sum;
-	else
-		d->state = LATER_MAIN;
-	hunlock(h);
-	return flown;
-}
-
-/* The search is over: the helper takes nothing more and leaves the
- * flight it is on (at its next attempt); returns once it has. */
-static void
-helper_detach(struct optim_helper *h, struct help_share *s)
-{
-	if (h == NULL)
-		return;
-	hlock(h);
-	s->open = false;
-	atomic_store_explicit(&h->stop, true, memory_order_relaxed);
-	while (s->busy) {
-		hunlock(h);
-		spin_pause();
-		hlock(h);
-	}
-	h->s = NULL;
-	helper_poke(h);
-	hunlock(h);
-}
-
-/* Nothing closed: the unclosable combinations fly now, each at its round's
- * aim, and offer themselves as the fallback; the fewest bound failures go
- * first, and one bound to fail more checks than the fallback (or as many,
- * coming after it in search order) is not flown, as it cannot be it. */
-static int
-close_later(struct closer *k, struct deferred *later, int n_later,
-            const struct optim_target *round_t, struct fallback *fb,
-            struct solve_result **cur, struct solve_result **spare,
-            struct optim_helper *h, struct help_share *hs)
-{
-	int helped = 0;
-	const struct optim_target *aim = k->t;
-	struct deferred *order[OPTIM_ROUNDS * OPTIM_MAX_TRIES];
-	for (int j = 0; j < n_later; j++) {
-		order[j] = &later[j];
-		/* The rounds' first combinations, kept from the helper for the
-		 * re-aims, are open to it now. */
-		if (!later[j].flown && !later[j].opened)
-			helper_open(h, &later[j]);
-	}
-	qsort(order, (size_t)n_later, sizeof *order, deferred_cmp);
-	for (int j = 0; j < n_later; j++) {
-		struct deferred *d = order[j];
-		k->beat = fb->failed >= 0 ? fallback_rank(fb->failed, fb->key) : LONG_MAX;
-		k->key = d->key;
-		if (d->flown || fallback_rank(d->n_bound, d->key) > k->beat)
-			continue;
-		d->flown = true;
-		struct closing_sum sum;
-		if (helper_claim(h, d, &sum)) {
-			fallback_take(fb, &sum, d->key, true);
-			helped++;
-		} else {
-			k->t = &round_t[search_round(d->key)];
-			struct optim_choice c = d->c;
-			bool unclosable, finite;
-			int n_bound;
-			enum sizing_status st;
-			const char *fail = close_choice(k, &c, cur, spare, d->fixed, NULL,
-			    &unclosable, &n_bound, &finite, &st);
-			offer_fallback(fb, cur, &c, d->key, finite, st, fail);
-		}
-		helper_fallback(h, hs, fb);
-	}
-	k->t = aim;
-	k->beat = LONG_MAX;
-	return helped;
 }
 
 int
 optim_select(const struct mission_spec *spec, const struct model_data *md,
              const struct catalog *cat, struct solve_result *r)
 {
-	return optim_select_search(spec, md, cat, OPTIM_SEARCH_SCREENED, r);
-}
-
-int
-optim_select_search(const struct mission_spec *spec,
-                    const struct model_data *md, const struct catalog *cat,
-                    enum optim_search search, struct solve_result *r)
-{
-	return optim_select_helped(spec, md, cat, search, NULL, r);
-}
-
-int
-optim_select_helped(const struct mission_spec *spec,
-                    const struct model_data *md, const struct catalog *cat,
-                    enum optim_search search, struct optim_helper *h,
-                    struct solve_result *r)
-{
 	r->parts_selected = false;
 	r->n_bom = 0;
 	r->n_candidates = 0;
-	r->n_screened_out = 0;
-	r->n_helped = 0;
 	r->bom_mass_kg = 0.0;
 	r->bom_price_usd = 0.0;
 	memset(&r->motor, 0, sizeof r->motor);
@@ -2707,30 +2167,19 @@ optim_select_helped(const struct mission_spec *spec,
 	 * else keep the one with the fewest failed checks (the first in search
 	 * order among equals) and report it. */
 	struct optim_target tr = t;
-	struct closer k = { &p, md, &tr, cat, &lk, &r->custom,
-		search == OPTIM_SEARCH_SCREENED, &packs, LONG_MAX, 0, NULL };
+	struct closer k = { &p, md, &tr, cat, &lk, &r->custom, &packs };
 	/* Trial buffers: each try writes all it reads of its result (see
 	 * close_choice()), and keeps its violations' codes only. */
 	struct solve_result *cur = xmalloc(sizeof *cur);
 	struct solve_result *spare = xmalloc(sizeof *spare);
 	struct fallback fb = { xmalloc(sizeof *fb.r), ch[0], 0, -1, true,
-		SIZING_CONVERGED, "", false };
+		SIZING_CONVERGED, NULL };
 	fb.r->terse = cur->terse = spare->terse = true;
 	fb.r->n_violations = 0;
 	struct res_candidate *round_cand = xmalloc((size_t)OPTIM_ROUNDS
 	    * RES_MAX_CANDIDATES * sizeof *round_cand);
 	int round_n_cand[OPTIM_ROUNDS] = { 0 };
 	struct optim_target round_t[OPTIM_ROUNDS];  /* the aim of each round */
-	struct deferred later[OPTIM_ROUNDS * OPTIM_MAX_TRIES];
-	int n_later = 0;
-	for (int j = 0; j < OPTIM_ROUNDS * OPTIM_MAX_TRIES; j++) {
-		later[j].fixed = NULL;
-		later[j].opened = false;
-		later[j].state = LATER_MAIN;
-	}
-	/* The helper, once the first combination is left for later. */
-	struct help_share hs;
-	struct optim_helper *hh = NULL;
 	struct optim_choice use_c = ch[0];
 	struct optim_target use_t = t;  /* the aim it was found at */
 	int use_round = 0;
@@ -2749,31 +2198,11 @@ optim_select_helped(const struct mission_spec *spec,
 		round_t[round] = tr;
 		int kept = n < OPTIM_MAX_TRIES ? n : OPTIM_MAX_TRIES;
 		double heaviest = 0.0;
-		bool first_closed = false;
 		for (int i = 0; i < kept; i++) {
 			struct optim_choice c = ch[i];
-			int key = round * OPTIM_MAX_TRIES + i;
-			bool unclosable;
-			int n_bound = 0;
-			struct deferred *d = &later[n_later];
-			const char *fail = close_choice(&k, &c, &cur, &spare, NULL,
-			    k.screened ? &d->fixed : NULL, &unclosable, &n_bound,
-			    &finite, &st);
-			tried += fail != NULL || !finite || unclosable;
-			if (unclosable) {
-				/* It cannot close, only become the fallback, which
-				 * is needed only when nothing closes: its flight
-				 * waits for that. */
-				d->c = ch[i];
-				d->key = key;
-				d->n_bound = n_bound;
-				d->flown = false;
-				n_later++;
-				continue;
-			}
+			const char *fail = close_choice(&k, &c, &cur, &spare, &finite, &st);
+			tried += fail != NULL || !finite;
 			if (fail == NULL && finite) {
-				if (h != NULL && hh == NULL)
-					optim_helper_close(h); /* nothing was left for later */
 				use = cur;
 				use_st = st;
 				use_c = c;
@@ -2781,51 +2210,9 @@ optim_select_helped(const struct mission_spec *spec,
 				use_round = round;
 				break;
 			}
-			if (i == 0) {
+			if (i == 0)
 				heaviest = cur->closed.mass.total_kg;
-				first_closed = true;
-			}
-			offer_fallback(&fb, &cur, &c, key, finite, st, fail);
-			helper_fallback(hh, &hs, &fb);
-		}
-		if (use == NULL && h != NULL && n_later > 0) {
-			/* Nothing closed this round: its combinations left for
-			 * later will likely fly, so the helper may fly them now.
-			 * A round's first one may be closed for the re-aim below:
-			 * the helper is kept off it till then. */
-			if (hh == NULL) {
-				hs = (struct help_share){ k, later, round_t, LONG_MAX,
-					true, false, LONG_MAX, -1 };
-				helper_attach(h, &hs);
-				helper_fallback(h, &hs, &fb);
-				hh = h;
-			}
-			for (int j = 0; j < n_later; j++)
-				if (!later[j].opened && search_round(later[j].key) == round
-				    && (later[j].key != round * OPTIM_MAX_TRIES
-				    || round + 1 == OPTIM_ROUNDS))
-					helper_open(hh, &later[j]);
-		}
-		if (use == NULL && !first_closed && round + 1 < OPTIM_ROUNDS) {
-			/* The next round aims at the best combination's closed
-			 * mass: close it now that it is needed (it was left for
-			 * later, unclosable). */
-			struct optim_choice c = ch[0];
-			struct deferred *d = NULL;
-			for (int j = 0; j < n_later; j++)
-				if (later[j].key == round * OPTIM_MAX_TRIES)
-					d = &later[j];
-			bool unclosable;
-			int n_bound;
-			const char *fail = close_choice(&k, &c, &cur, &spare,
-			    d != NULL ? d->fixed : NULL, NULL, &unclosable, &n_bound,
-			    &finite, &st);
-			heaviest = cur->closed.mass.total_kg;
-			if (d != NULL)
-				d->flown = true;
-			offer_fallback(&fb, &cur, &c, round * OPTIM_MAX_TRIES, finite, st,
-			    fail);
-			helper_fallback(hh, &hs, &fb);
+			offer_fallback(&fb, &cur, &c, round, finite, st, fail);
 		}
 		/* Real parts heavier than the aim: thrust, current, power and
 		 * energy grow about as M^1.5 on a given rotor. */
@@ -2839,46 +2226,15 @@ optim_select_helped(const struct mission_spec *spec,
 		tr.bus_peak_current_a *= g;
 		tr.capacity_ah *= g;
 	}
-	if (use == NULL)
-		r->n_helped = close_later(&k, later, n_later, round_t, &fb, &cur,
-		    &spare, hh, &hs);
-	helper_detach(hh, &hs);
-	/* Nothing more to help with: let the helper go now. */
-	if (h != NULL)
-		optim_helper_close(h);
-	if (use == NULL && fb.away) {
-		/* The fallback is a closing the helper flew: its best. */
-		if (hs.best_key == fb.key) {
-			swap_results(&fb.r, &h->buf[2]);
-		} else {
-			/* Not expected (see "the helper" above): fly it again. */
-			for (int j = 0; j < n_later; j++)
-				if (later[j].key == fb.key) {
-					struct optim_choice c = later[j].c;
-					bool unclosable;
-					int n_bound;
-					k.t = &round_t[search_round(fb.key)];
-					k.key = fb.key;
-					close_choice(&k, &c, &cur, &spare, later[j].fixed, NULL,
-					    &unclosable, &n_bound, &finite, &st);
-					k.t = &tr;
-					swap_results(&fb.r, &cur);
-				}
-		}
-	}
-	for (int j = 0; j < n_later; j++)
-		r->n_screened_out += !later[j].flown;
-	for (int j = 0; j < OPTIM_ROUNDS * OPTIM_MAX_TRIES; j++)
-		free(later[j].fixed);
 	char failed[RES_TEXT] = "";
 	if (use == NULL) {
 		use = fb.r;
 		use_c = fb.c;
-		use_round = search_round(fb.key);
+		use_round = fb.round;
 		use_t = round_t[use_round];
 		use_st = fb.st;
 		finite = fb.finite;
-		str_copy(failed, sizeof failed, fb.fail[0] ? fb.fail : "a check");
+		str_copy(failed, sizeof failed, fb.fail != NULL ? fb.fail : "a check");
 	}
 	/* The closing kept gets its checks again, with the violations' text
 	 * (the same checks: the same run and parameters). */
@@ -2887,7 +2243,6 @@ optim_select_helped(const struct mission_spec *spec,
 	use->terse = false;
 	check_closing(&k, &pu, use_st, &use_c, use);
 	r->closed = use->closed;
-	sizing_complete(&pu, &r->closed);
 	finite = finite && isfinite(r->closed.hover_endurance_s);
 	append_violations(r, use);
 	if (failed[0]) {

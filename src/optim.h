@@ -179,41 +179,4 @@ int optim_rank(const struct optim_target *t, const struct catalog *cat,
 int optim_select(const struct mission_spec *spec, const struct model_data *md,
                  const struct catalog *cat, struct solve_result *r);
 
-/* How optim_select() closes the ranked combinations.  SCREENED skips the
- * closing of a combination whose mass fixed point alone shows that it fails
- * and cannot be the closest; EXHAUSTIVE closes every one, and is there to
- * show (tests/test_optim.c) that both choose the same parts. */
-enum optim_search { OPTIM_SEARCH_SCREENED, OPTIM_SEARCH_EXHAUSTIVE };
-
-/* optim_select() with the search given. */
-int optim_select_search(const struct mission_spec *spec,
-                        const struct model_data *md, const struct catalog *cat,
-                        enum optim_search search, struct solve_result *r);
-
-/* A second thread's share of a screened search.  When a search round ends
- * with nothing closed, the combinations the screen left for later will
- * most likely fly; the helper, a second thread, flies them while the
- * calling thread ranks and screens the next round, so that their flights
- * are mostly made by the time they are needed.  The search takes the same
- * decisions with or without it and gives the same result to the bit
- * (optim.c, "the helper"); the helper only saves the calling thread
- * flights.  One helper serves one solve: optim_helper_new(), then
- * optim_helper_serve() on the second thread and optim_select_helped() on
- * the calling one; optim_helper_close() (also called by the search once it
- * needs no more help) makes serve() return; optim_helper_free() once
- * neither thread uses it. */
-struct optim_helper;
-struct optim_helper *optim_helper_new(void);
-/* On the second thread: fly what the search hands over; returns once
- * optim_helper_close() is called. */
-void optim_helper_serve(struct optim_helper *h);
-void optim_helper_close(struct optim_helper *h);
-void optim_helper_free(struct optim_helper *h);
-
-/* optim_select_search() with helper h (NULL: none). */
-int optim_select_helped(const struct mission_spec *spec,
-                        const struct model_data *md, const struct catalog *cat,
-                        enum optim_search search, struct optim_helper *h,
-                        struct solve_result *r);
-
 #endif

@@ -267,14 +267,12 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 
 	/* Forward speed: the minimum-power speed when "auto". */
 	e->v_fwd_ms = p->v_forward_ms;
-	if (rec != NULL && !p->defer_extras)
+	if (rec != NULL)
 		rec->n_sweep = mission_speed_sweep(m, mass_kg, e->t_peak_n,
 		    rec->sweep_v_ms, rec->sweep_power_w, RES_MAX_SWEEP,
 		    &e->v_min_power_ms, &e->v_max_ms);
-	else if (p->v_auto || (rec != NULL && !p->masses_only))
-		/* The loop, and a record that leaves the curve to
-		 * sizing_complete(), need the speeds only (a masses-only
-		 * record none: no mass-bound check reads them). */
+	else if (p->v_auto)
+		/* The loop needs the speeds only. */
 		mission_speed_search_hinted(m, mass_kg, e->t_peak_n,
 		    &e->v_min_power_ms, &e->v_max_ms, ls->speed_hint);
 	if (p->v_auto)
@@ -723,12 +721,6 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 		    || fabs(c - c_used) <= 1e-4 * c_used;
 		if (fabs(f - m) < SIZING_TOL_KG && cap_steady && cells_steady) {
 			m = f;
-			if (p->masses_only && lazy) {
-				/* The masses are those of the full loop: its
-				 * flights come after this point. */
-				st = SIZING_CONVERGED;
-				break;
-			}
 			/* Confirm with the discharge resolution of the final
 			 * record, so that a mission the coarse loop flew is not
 			 * lost to discretisation in the dossier's trace.  When
@@ -841,10 +833,7 @@ static void
 record_run(const struct sizing_params *p, struct eval *e,
            const struct loop_state *ls, struct res_run *out)
 {
-	/* A masses-only record goes to the mass-bound checks alone, which
-	 * read no phase (sizing_params.masses_only). */
-	if (!p->masses_only)
-		eval_phases(p, e);
+	eval_phases(p, e);
 	double d[PHASE_MAX];
 	durations(p, ls->gamma_time, d);
 	out->mass = e->mass;
@@ -1035,19 +1024,6 @@ hover_endurance_s(const struct sizing_params *p, const struct eval *e,
 	    sizing_reserve_soc());
 }
 
-void
-sizing_complete(const struct sizing_params *p, struct res_run *run)
-{
-	struct sizing_params q;
-	struct loop_state ls;
-	at_fixed_point(p, run, &q, &ls);
-	q.defer_extras = false;
-	const struct res_fixed_point *fx = &run->fixed;
-	struct eval e;
-	evaluate_masses(&q, &ls, fx->mass_kg, fx->capacity_ah, run, &e);
-	run->hover_endurance_s = hover_endurance_s(&q, &e, fx->mass_kg);
-}
-
 /* Marketing mode: the manufacturer's best case — hover without payload or
  * auxiliary load, ISA sea level at 25 °C, down to an empty pack. */
 static double
@@ -1085,8 +1061,7 @@ record_fixed_point(const struct sizing_params *p, enum sizing_status st,
 {
 	record_at(p, fin, ls, m_star, c_star, out);
 	out->lipschitz = lipschitz(p, ls, m_star, c_star);
-	if (!p->defer_extras)
-		out->hover_endurance_s = hover_endurance_s(p, fin, m_star);
+	out->hover_endurance_s = hover_endurance_s(p, fin, m_star);
 	if (p->marketing)
 		out->marketing_endurance_s = marketing_endurance_s(p, fin, m_star);
 	if (st == SIZING_MAX_ITERATIONS)
@@ -1229,33 +1204,8 @@ sizing_run(const struct sizing_params *p_in, struct res_run *out)
 	}
 	/* The final evaluation at the fixed point keeps the full trace (the
 	 * loop's confirming evaluation when it made one: the same). */
-	if (p->masses_only && capacity_given(p)) {
-		/* The evaluation the full run's confirming flight starts with;
-		 * sizing_finish() goes on from here. */
-		evaluate_masses(p, &ls, m_star, c_star, out, &fin);
-		record_at(p, &fin, &ls, m_star, c_star, out);
-		return st;
-	}
 	if (!fin_done)
 		evaluate(p, &ls, m_star, c_star, FINAL_STEPS, out, &fin);
 	record_fixed_point(p, st, &fin, &ls, m_star, c_star, out);
-	return st;
-}
-
-enum sizing_status
-sizing_finish(const struct sizing_params *p, struct res_run *out)
-{
-	struct sizing_params q;
-	struct loop_state ls;
-	at_fixed_point(p, out, &q, &ls);
-	q.masses_only = false;
-	double m_star = out->fixed.mass_kg, c_star = out->fixed.capacity_ah;
-	/* What iterate() does when such a loop converges: the final flight
-	 * alone says whether the mission is flown. */
-	struct eval fin;
-	confirm(&q, &ls, m_star, c_star, out, &fin);
-	enum sizing_status st = fin.dis.end == DIS_COMPLETED ? SIZING_CONVERGED
-	    : SIZING_DISCHARGE_FAIL;
-	record_fixed_point(&q, st, &fin, &ls, m_star, c_star, out);
 	return st;
 }

@@ -173,17 +173,6 @@ struct sizing_params {
 	struct sizing_parts parts;
 	/* extras of the final evaluation */
 	bool marketing;              /* evaluate_marketing_limits */
-	/* leave hover_endurance_s at 0 and the speed sweep unrecorded for
-	 * sizing_complete() to fill in later (the parts search, which keeps
-	 * one run of many) */
-	bool defer_extras;
-	/* stop at the mass fixed point: no confirming flight, no Lipschitz
-	 * constant, nothing the discharge gives recorded, nor the phase
-	 * powers and speed limits: the record holds what the checks that
-	 * more mass only worsens read (res_check.mass_bound).  Only for a
-	 * loop whose masses do not depend on its flights (capacity locked or
-	 * a catalogue battery): the parts search screens combinations with it */
-	bool masses_only;
 	/* numerics */
 	int max_iter;
 };
@@ -199,13 +188,6 @@ struct sizing_params {
  * out->thrust_margin and out->thrust_margin_requested record both. */
 enum sizing_status sizing_run(const struct sizing_params *p, struct res_run *out);
 
-/* The rest of a sizing_run() of p with p->masses_only that returned
- * SIZING_CONVERGED into run (p->allow_relax false): the final flight at
- * run->fixed and all that follows it, exactly as sizing_run() without
- * masses_only records them.  Returns that run's status. */
-enum sizing_status sizing_finish(const struct sizing_params *p,
-                                 struct res_run *run);
-
 /* State of charge left by the 20 % capacity margin (1 - 1/1.2). */
 double sizing_reserve_soc(void);
 
@@ -215,12 +197,6 @@ double sizing_reserve_soc(void);
  * at each locked capacity, into run->endurance_*.  An analysis of the
  * design, not part of it: the outputs that show it ask for it. */
 void sizing_explore(const struct sizing_params *p, struct res_run *run);
-
-/* What a sizing_run() of p with p->defer_extras left out of run: the
- * hover endurance to the reserve and the power-vs-speed sweep, as
- * sizing_run() would have recorded them (the design re-evaluated at
- * run->fixed). */
-void sizing_complete(const struct sizing_params *p, struct res_run *run);
 
 /* The altitude-corrected seed of eq. (altcorrect), kg. */
 double sizing_seed_kg(double payload_kg, double rho_kg_m3);

@@ -40,19 +40,6 @@ void strbuf_append_str(struct strbuf *sb, const char *s);
  * as snprintf(dst, n, "%s", src) would, without parsing a format. */
 void str_copy(char *dst, size_t n, const char *src);
 
-/* vsnprintf(dst, n, fmt, ap), byte for byte, return value included, for
- * the messages a solve writes (rationale lines, violations): it formats
- * %s, %d, %% and %.0f to %.3f (also %+.1f) itself, ten times faster than
- * the C library's float conversion, and hands any other format, a value it
- * cannot round for sure (within an ulp of a tie) or a NULL string to
- * vsnprintf. */
-int str_vformat(char *dst, size_t n, const char *fmt, va_list ap)
-	__attribute__((format(printf, 3, 0)));
-
-/* Same as str_vformat with the arguments given. */
-int str_format(char *dst, size_t n, const char *fmt, ...)
-	__attribute__((format(printf, 3, 4)));
-
 /* Appends one byte. */
 void strbuf_append_char(struct strbuf *sb, char c);
 

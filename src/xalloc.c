@@ -4,9 +4,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
 
 /* Countdown for the AEROEVAL_FAIL_ALLOC test hook; read once.  This is the
  * one process-wide variable in the program: it only ever counts down and is
@@ -70,13 +67,3 @@ xstrdup(const char *s)
 	return d;
 }
 
-void
-xalloc_keep_freed(void)
-{
-#ifdef __GLIBC__
-	/* Blocks up to 64 MiB come from the heap, not from mmap (which unmaps
-	 * them on free), and up to 256 MiB free at the top of the heap stay. */
-	mallopt(M_MMAP_THRESHOLD, 64 * 1024 * 1024);
-	mallopt(M_TRIM_THRESHOLD, 256 * 1024 * 1024);
-#endif
-}

@@ -16,13 +16,4 @@ void *xcalloc(size_t n, size_t size);
 void *xrealloc(void *p, size_t n);
 char *xstrdup(const char *s);
 
-/* Keep freed memory in the process instead of handing it back to the
- * kernel (glibc: mallopt).  A solve allocates and frees about a megabyte
- * of result buffers, and a dossier several more; by default glibc trims
- * the heap after each, and the next solve of a batch (or of a program
- * that solves in a loop) takes a page fault for every page it reuses:
- * about a tenth of a solve's time.  The peak memory is unchanged.  Called
- * once, at the start of main(). */
-void xalloc_keep_freed(void);
-
 #endif

@@ -64,7 +64,7 @@ __attribute__((noinline)) void
 counted_solve(const struct mission_spec *spec, const struct cli_env *env,
               const struct catalog *cat, struct solve_result *r)
 {
-	engine_solve_unhelped(spec, &env->model, cat, r);
+	engine_solve(spec, &env->model, cat, r);
 }
 
 /* -c MODE MISSION: one counted solve; 0 when it ran. */
@@ -97,7 +97,6 @@ count_one(const char *mode, const char *path)
 int
 main(int argc, char **argv)
 {
-	xalloc_keep_freed(); /* as aeroeval's main() does */
 	if (argc == 4 && strcmp(argv[1], "-c") == 0)
 		return count_one(argv[2], argv[3]);
 	int n_solves = 200, first = 1;

@@ -600,74 +600,6 @@ optim_select_should_close_every_example_with_a_bom_that_sums(void **state)
 	assert_true(no_parts <= 1);
 }
 
-/* The screen leaves a combination unflown when it is shown unable to
- * close: when a later one closes, or when its bound shows it cannot be the
- * fallback.  Neither changes the result: each example gives the same
- * result.json as the search that closes every ranked combination. */
-static void
-optim_select_screen_should_change_nothing_but_the_flights(void **state)
-{
-	const struct env_state *s = *state;
-	char *files[MAX_EXAMPLES];
-	int n = examples(files, MAX_EXAMPLES);
-	int unflown = 0;
-	for (int i = 0; i < n; i++) {
-		struct mission_spec m;
-		load_mission(s, files[i], &m);
-		struct solve_result *a = xcalloc(1, sizeof *a);
-		struct solve_result *b = xcalloc(1, sizeof *b);
-		engine_solve_search(&m, &s->env.model, s->env.cat,
-		    OPTIM_SEARCH_SCREENED, a);
-		engine_solve_search(&m, &s->env.model, s->env.cat,
-		    OPTIM_SEARCH_EXHAUSTIVE, b);
-		struct result_json_faults fa, fb;
-		char *ja = result_json_render_checked(a, "test", &fa);
-		char *jb = result_json_render_checked(b, "test", &fb);
-		if (strcmp(ja, jb) != 0)
-			print_error("%s: screened and exhaustive results differ\n", files[i]);
-		assert_string_equal(ja, jb);
-		assert_int_equal(b->n_screened_out, 0);
-		unflown += a->n_screened_out;
-		free(ja);
-		free(jb);
-		free(a);
-		free(b);
-		free(files[i]);
-	}
-	assert_true(unflown > 0);
-}
-
-/* The helper's share of the agricultural quads' deferred flights depends
- * on the two threads' timing; the result must not, to the byte: each
- * helped solve gives what the search gives alone. */
-static void
-optim_select_should_not_depend_on_the_helpers_timing(void **state)
-{
-	const struct env_state *s = *state;
-	struct mission_spec m;
-	load_mission(s, EXAMPLE_DIR "/agri_dynamic_20kg.json", &m);
-	struct solve_result *a = xcalloc(1, sizeof *a);
-	assert_int_equal(engine_solve_unhelped(&m, &s->env.model, s->env.cat, a), 0);
-	assert_int_equal(a->n_helped, 0);
-	struct result_json_faults fa;
-	char *ja = result_json_render_checked(a, "test", &fa);
-	int helped = 0;
-	for (int i = 0; i < 12; i++) {
-		struct solve_result *b = solve(s, &m);
-		struct result_json_faults fb;
-		char *jb = result_json_render_checked(b, "test", &fb);
-		assert_string_equal(ja, jb);
-		assert_int_equal(b->n_screened_out, a->n_screened_out);
-		helped += b->n_helped;
-		free(jb);
-		free(b);
-	}
-	if (sysconf(_SC_NPROCESSORS_ONLN) > 1)
-		assert_true(helped > 0);
-	free(ja);
-	free(a);
-}
-
 static void
 optim_select_should_be_deterministic(void **state)
 {
@@ -847,10 +779,6 @@ main(void)
 		cmocka_unit_test_setup_teardown(optim_rank_should_agree_with_a_plain_scan_of_every_option,
 		    setup_env, teardown_env),
 		cmocka_unit_test_setup_teardown(optim_select_should_close_every_example_with_a_bom_that_sums,
-		    setup_env, teardown_env),
-		cmocka_unit_test_setup_teardown(optim_select_screen_should_change_nothing_but_the_flights,
-		    setup_env, teardown_env),
-		cmocka_unit_test_setup_teardown(optim_select_should_not_depend_on_the_helpers_timing,
 		    setup_env, teardown_env),
 		cmocka_unit_test_setup_teardown(optim_select_should_be_deterministic,
 		    setup_env, teardown_env),

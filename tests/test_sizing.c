@@ -357,91 +357,6 @@ sizing_run_should_not_stop_on_a_pack_the_fine_discharge_cannot_fly(void **state)
 	free(o);
 }
 
-/* The parts search defers the hover endurance and the speed sweep to the
- * one run it keeps: re-evaluated at the run's fixed point they are the
- * same numbers, bit for bit, for a dropped parcel, a relaxed thrust target
- * and an automatic (minimum-power) forward speed. */
-static void
-sizing_complete_should_give_the_runs_own_extras(void **state)
-{
-	struct fixture *f = *state;
-	const struct model_data *md = &f->env.model;
-	struct mission_spec s[3];
-	delivery_mission(&s[0]);
-	racing_mission(&s[1]);
-	delivery_mission(&s[2]);
-	SET(&s[2], V_FORWARD_MS, v_forward_auto, true);
-	struct res_run *o = xcalloc(1, sizeof *o);
-	struct res_run *d = xcalloc(1, sizeof *d);
-	for (int i = 0; i < 3; i++) {
-		struct sizing_params p;
-		engine_resolve(&s[i], md, NULL);
-		engine_params(&s[i], md, false, &p);
-		assert_int_equal(sizing_run(&p, o), SIZING_CONVERGED);
-		assert_true(o->hover_endurance_s > 0.0);
-		p.defer_extras = true;
-		assert_int_equal(sizing_run(&p, d), SIZING_CONVERGED);
-		assert_true(d->hover_endurance_s == 0.0);
-		assert_int_equal(d->n_sweep, 0);
-		sizing_complete(&p, d);
-		assert_true(d->hover_endurance_s == o->hover_endurance_s);
-		assert_int_equal(d->n_sweep, o->n_sweep);
-		assert_true(d->n_sweep > 0);
-		assert_memory_equal(d->sweep_v_ms, o->sweep_v_ms,
-		    (size_t)o->n_sweep * sizeof o->sweep_v_ms[0]);
-		assert_memory_equal(d->sweep_power_w, o->sweep_power_w,
-		    (size_t)o->n_sweep * sizeof o->sweep_power_w[0]);
-		/* and the rest of the record is the run's own */
-		assert_true(d->optimal_speed_ms == o->optimal_speed_ms);
-		assert_true(d->v_min_power_ms == o->v_min_power_ms);
-		assert_true(d->v_max_ms == o->v_max_ms);
-		assert_true(d->mass.total_kg == o->mass.total_kg);
-		assert_true(d->max_battery_temp_c == o->max_battery_temp_c);
-		if (i == 1) /* the racer flies a relaxed target */
-			assert_true(o->thrust_margin < o->thrust_margin_requested);
-	}
-	free(d);
-	free(o);
-}
-
-/* A locked battery's loop (as every closing on real parts) reaches its
- * mass fixed point without flying; sizing_finish() flies the mission from
- * there.  Masses-only run and finish record what the whole run records,
- * byte for byte, whether the pack flies the mission or falls short. */
-static void
-sizing_finish_should_record_what_the_whole_run_records(void **state)
-{
-	struct fixture *f = *state;
-	const struct model_data *md = &f->env.model;
-	static const double capacity_mah[] = { 16000.0, 2000.0 };
-	static const enum sizing_status want[] = { SIZING_CONVERGED,
-		SIZING_DISCHARGE_FAIL };
-	for (int i = 0; i < 2; i++) {
-		struct mission_spec s;
-		delivery_mission(&s);
-		SET(&s, LOCK_BATTERY, locks.is_battery_locked, true);
-		SET(&s, LOCK_CAPACITY_MAH, locks.locked_capacity_mah, capacity_mah[i]);
-		SET(&s, LOCK_CELL_COUNT, locks.locked_cell_count, 12);
-		struct sizing_params p;
-		engine_resolve(&s, md, NULL);
-		engine_params(&s, md, false, &p);
-		p.allow_relax = false;
-		struct res_run *whole = xcalloc(1, sizeof *whole);
-		struct res_run *split = xcalloc(1, sizeof *split);
-		enum sizing_status st = sizing_run(&p, whole);
-		assert_int_equal(st, want[i]);
-		p.masses_only = true;
-		assert_int_equal(sizing_run(&p, split), SIZING_CONVERGED);
-		assert_int_equal(split->n_trace, 0);
-		assert_true(split->mass.total_kg == whole->mass.total_kg);
-		assert_int_equal(sizing_finish(&p, split), st);
-		assert_true(split->n_trace > 0);
-		assert_memory_equal(split, whole, sizeof *whole);
-		free(split);
-		free(whole);
-	}
-}
-
 int
 main(void)
 {
@@ -460,8 +375,6 @@ main(void)
 		cmocka_unit_test_setup_teardown(sizing_run_should_not_relax_a_thrust_margin_the_mission_asked_for, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_run_should_keep_a_thrust_target_that_closes, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_run_should_not_stop_on_a_pack_the_fine_discharge_cannot_fly, setup, teardown),
-		cmocka_unit_test_setup_teardown(sizing_complete_should_give_the_runs_own_extras, setup, teardown),
-		cmocka_unit_test_setup_teardown(sizing_finish_should_record_what_the_whole_run_records, setup, teardown),
 		cmocka_unit_test(sizing_shell_should_add_moulded_arm_fairings_to_the_body_box),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);

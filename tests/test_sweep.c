@@ -248,70 +248,30 @@ run_rank(const char *run)
 	return strcmp(run, "baseline") == 0 ? 0 : strcmp(run, "custom") == 0 ? 1 : 2;
 }
 
-/* The screened parts search (optim.h) chooses what closing every ranked
- * combination chooses: the same result.json on every random mission, with
- * combinations left unclosed on some.  Each result also lists its
- * violations run by run (the baseline's loop runs on a second thread and
- * its violations are put in their place). */
+/* Each result lists its violations run by run: baseline, custom, closed. */
 static void
-sweep_screened_parts_search_should_match_closing_every_combination(void **state)
+sweep_violations_should_come_run_by_run(void **state)
 {
 	(void)state;
 	struct stats_rng g;
 	stats_rng_seed(&g, SWEEP_SEED + 1);
-	struct solve_result *full = xmalloc(sizeof *full);
-	int n_parts = 0, n_screened = 0, n_out = 0, n_both = 0, n_helped = 0;
+	int n_parts = 0, n_both = 0;
 	for (int i = 0; i < SWEEP_N; i++) {
 		struct sweep_mission m;
 		draw(&g, &m);
-		char text[2048];
-		mission_text(&m, text, sizeof text);
-		struct diag *dg = diag_alloc(stderr);
-		struct mission_spec spec;
-		int n_err = mission_io_parse("sweep.json", text, strlen(text),
-		    env->model.chem_names, dg, &spec);
-		diag_free(dg);
-		assert_int_equal(n_err, 0);
-		memset(res, 0, sizeof *res);
-		memset(full, 0, sizeof *full);
-		int rc = engine_solve_search(&spec, &env->model, env->cat,
-		    OPTIM_SEARCH_SCREENED, res);
-		int rc_full = engine_solve_search(&spec, &env->model, env->cat,
-		    OPTIM_SEARCH_EXHAUSTIVE, full);
-		struct result_json_faults fa, fb;
-		char *a = result_json_render_checked(res, "sweep", &fa);
-		char *b = result_json_render_checked(full, "sweep", &fb);
-		if (rc != rc_full || strcmp(a, b) != 0) {
-			print_error("the searches differ (rc %d and %d)\nmission: %s\n",
-			    rc, rc_full, text);
-			fail();
-		}
-		free(a);
-		free(b);
+		const struct solve_result *r = solve(&m);
 		bool seen[3] = { false, false, false };
-		for (int k = 0; k < res->n_violations; k++) {
-			int at = run_rank(res->violations[k].run);
+		for (int k = 0; k < r->n_violations; k++) {
+			int at = run_rank(r->violations[k].run);
 			for (int later = at + 1; later < 3; later++)
 				assert_false(seen[later]);
 			seen[at] = true;
 		}
 		n_both += seen[0] && seen[1];
-		n_parts += res->parts_selected;
-		n_screened += res->n_screened_out > 0;
-		n_out += res->n_screened_out;
-		n_helped += res->n_helped;
-		assert_int_equal(full->n_helped, 0);
+		n_parts += r->parts_selected;
 	}
-	free(full);
-	printf("screen: %d missions, %d with parts, %d screened (%d combinations "
-	    "not closed, %d flights made by the helper), %d with baseline and "
-	    "custom violations\n", SWEEP_N, n_parts, n_screened, n_out, n_helped,
-	    n_both);
-	assert_true(n_screened > SWEEP_N / 100);
-	/* With a second core the helper takes part (its timing varies, its
-	 * results must not: the comparison above). */
-	if (sysconf(_SC_NPROCESSORS_ONLN) > 1)
-		assert_true(n_helped > 0);
+	printf("sweep: %d missions, %d with parts, %d with baseline and custom "
+	    "violations\n", SWEEP_N, n_parts, n_both);
 	assert_true(n_both > SWEEP_N / 100);
 }
 
@@ -461,7 +421,7 @@ main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(sweep_random_missions_should_give_finite_consistent_results),
-		cmocka_unit_test(sweep_screened_parts_search_should_match_closing_every_combination),
+		cmocka_unit_test(sweep_violations_should_come_run_by_run),
 		cmocka_unit_test(sweep_more_payload_should_raise_mtow),
 		cmocka_unit_test(sweep_high_altitude_should_not_lower_mtow),
 		cmocka_unit_test(sweep_warmer_day_should_raise_peak_battery_temperature),
