@@ -238,14 +238,10 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	/* Propulsion geometry. */
 	c = add_check(o, "Propeller diameter (overlap limit)", "in",
 	    o->opt.prop_diameter_in, o->overlap_limit_in + 1e-9, true);
-	if (c) {
+	if (c)
 		c->sized = !p->prop_locked;
-		c->mass_bound = true; /* the same propeller whatever the mass */
-	}
 	c = add_check(o, "Tip Mach number at full throttle", "", o->tip_mach_peak,
 	    AERO_TIP_MACH_MAX, true);
-	if (c)
-		c->mass_bound = true; /* rpm for the peak thrust, which is ∝ M */
 	if (c && !c->pass) {
 		fix_text(r, f1, "Use a larger propeller (lower rpm for the same thrust)");
 		fix_text(r, f2, "Reduce the thrust margin (payload_role.thrust_margin_override)");
@@ -322,8 +318,6 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	if (p->downwash_cap_ms > 0.0) {
 		c = add_check(o, "Downwash (crop and drift limit)", "m/s",
 		    o->downwash_ms, p->downwash_cap_ms, true);
-		if (c)
-			c->mass_bound = true; /* ∝ sqrt(thrust / disk area) */
 		if (c && !c->pass) {
 			fix_text(r, f1, "Increase max_diameter_m: larger rotors lower the downwash");
 			fix_text(r, f2, "Use more rotors (num_rotors)");

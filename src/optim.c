@@ -1287,7 +1287,7 @@ apply_parts(struct sizing_params *p, const struct model_data *md,
  * goes to *first unless one is there already. */
 static bool
 parts_check(struct res_run *run, const char *name, const char *unit,
-            double value, double limit, bool upper, bool mass_bound,
+            double value, double limit, bool upper,
             const char **first)
 {
 	double scale = fabs(limit) > 1e-12 ? fabs(limit) : 1.0;
@@ -1310,7 +1310,6 @@ parts_check(struct res_run *run, const char *name, const char *unit,
 	c->upper = upper;
 	c->margin = upper ? (c->limit - c->value) / scale : (c->value - c->limit) / scale;
 	c->pass = pass;
-	c->mass_bound = mass_bound;
 	return pass;
 }
 
@@ -1353,7 +1352,7 @@ parts_checks(const struct closer *k, const struct sizing_params *p,
 	const char *first = NULL;
 	bool text = !r->terse; /* a trial closing keeps the codes only */
 	if (!parts_check(o, "Thrust-to-weight of the real motor and propeller", "",
-	    tw, custom->thrust_to_weight, false, true, &first)) {
+	    tw, custom->thrust_to_weight, false, &first)) {
 		/* Thrust goes with rpm², rpm with KV: the KV that would do. */
 		if (text) {
 			snprintf(f1, sizeof f1, "Add a motor of about %.0f KV for %dS to the catalogue (or use --db)",
@@ -1369,7 +1368,7 @@ parts_checks(const struct closer *k, const struct sizing_params *p,
 	}
 	double i_m = closed_current_a(o);
 	if (!parts_check(o, "Motor current at full throttle (× 1.1)", "A", i_m,
-	    m->max_current_a, true, true, &first)) {
+	    m->max_current_a, true, &first)) {
 		if (text) {
 			snprintf(f1, sizeof f1, "No catalogue motor carries %.0f A at %dS: add one to data/catalog/motors.json or use --db",
 			    i_m, c->cells);
@@ -1384,7 +1383,7 @@ parts_checks(const struct closer *k, const struct sizing_params *p,
 	}
 	if (m->max_power_w > 0.0) {
 		if (!parts_check(o, "Motor power at full throttle", "W",
-		    o->opt.motor_peak_power_w, m->max_power_w, true, true, &first)) {
+		    o->opt.motor_peak_power_w, m->max_power_w, true, &first)) {
 			if (text) {
 				snprintf(f1, sizeof f1, "No catalogue motor is rated for %.0f W: add one to data/catalog/motors.json or use --db",
 				    o->opt.motor_peak_power_w);
@@ -1399,16 +1398,8 @@ parts_checks(const struct closer *k, const struct sizing_params *p,
 		}
 	}
 	if (c->esc != NULL) {
-		/* An upsized ESC cures it (close_choice()): mass-bound only when
-		 * none can, being locked or the largest for this current, which
-		 * more mass only raises. */
-		const struct catalog_esc *e_up;
-		int n_up;
-		bool for_good = i_m > c->esc->continuous_current_a
-		    && (k->lk->esc != NULL || !pick_esc_for(k->t, k->cat, NULL,
-		        c->cells, m, i_m, &e_up, &n_up));
 		if (!parts_check(o, "ESC current at full throttle (× 1.1)", "A", i_m,
-		    c->esc->continuous_current_a, true, for_good, &first)) {
+		    c->esc->continuous_current_a, true, &first)) {
 			if (text) {
 				snprintf(f1, sizeof f1, "No catalogue ESC carries %.0f A at %dS: add one to data/catalog/escs.json or use --db",
 				    i_m, c->cells);
@@ -1425,7 +1416,7 @@ parts_checks(const struct closer *k, const struct sizing_params *p,
 	const struct catalog_battery *b = c->battery;
 	double i_max = (double)c->parallel_packs * b->capacity_ah * b->continuous_c;
 	if (!parts_check(o, "Battery current within the continuous C rating", "A",
-	    o->peak_current_a, i_max, true, false, &first)) {
+	    o->peak_current_a, i_max, true, &first)) {
 		if (text) {
 			snprintf(f1, sizeof f1, "Add packs in parallel or a higher-C pack to data/catalog/batteries.json");
 			snprintf(f2, sizeof f2, "Remove locks.battery_part to let the optimizer choose");
@@ -1439,7 +1430,7 @@ parts_checks(const struct closer *k, const struct sizing_params *p,
 	}
 	double mach = M_PI * d_m * n_max / p->air.sound_m_s;
 	if (!parts_check(o, "Tip Mach at the real motor's full rpm", "", mach,
-	    AERO_TIP_MACH_MAX, true, true, &first)) {
+	    AERO_TIP_MACH_MAX, true, &first)) {
 		if (text) {
 			snprintf(f1, sizeof f1, "Use a lower-KV motor or a smaller propeller");
 			snprintf(f2, sizeof f2, "Remove the motor or propeller lock");

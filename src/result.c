@@ -41,11 +41,3 @@ res_run_clear_untraced(struct res_run *run)
 	memset(base, 0, offsetof(struct res_run, trace));
 	memset(base + trace_end(), 0, sizeof *run - trace_end());
 }
-
-void
-res_run_copy_untraced(struct res_run *dst, const struct res_run *src)
-{
-	memcpy(dst, src, offsetof(struct res_run, trace));
-	memcpy((char *)dst + trace_end(), (const char *)src + trace_end(),
-	    sizeof *dst - trace_end());
-}

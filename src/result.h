@@ -86,9 +86,6 @@ struct res_check {
 	double margin;       /* (limit - value)/limit or (value - limit)/limit */
 	bool pass;
 	bool sized;          /* the design is sized to this limit by construction */
-	bool mass_bound;     /* with motor, propeller and bus fixed, more takeoff
-	                      * mass only takes it further from passing (the parts
-	                      * search's screen relies on it) */
 };
 
 struct res_violation {
@@ -271,10 +268,6 @@ struct solve_result {
 	double bom_price_usd;
 	int n_candidates;
 	struct res_candidate candidates[RES_MAX_CANDIDATES];
-	int n_screened_out;            /* combinations the parts search's screen
-	                                * left unflown */
-	int n_helped;                  /* of those flown, the flights the second
-	                                * thread made (optim.h's helper) */
 
 	bool feasible;
 	/* violations keep run, stage and code only, no text: the parts
@@ -296,11 +289,8 @@ const struct res_check *res_tightest_check(const struct res_run *run);
  * sensitivity suite all ask. */
 bool res_thrust_relaxed(const struct res_run *run);
 
-/* A run's trace samples are most of its size, and only the first n_trace
- * are ever read: these zero and copy all of a run but the samples (sizing
- * clears a run it records, and the parts search keeps a masses-only run,
- * which has none). */
+/* Zero all of a run but its trace samples, which are most of its size
+ * and of which only the first n_trace are ever read. */
 void res_run_clear_untraced(struct res_run *run);
-void res_run_copy_untraced(struct res_run *dst, const struct res_run *src);
 
 #endif
