@@ -25,13 +25,13 @@
 #include <sys/resource.h>
 #include <time.h>
 
-#include "cli.h"
-#include "diag.h"
-#include "engine.h"
-#include "fsout.h"
-#include "mission_io.h"
-#include "result_json.h"
-#include "xalloc.h"
+#include "cli/cli.h"
+#include "core/diag.h"
+#include "engine/engine.h"
+#include "output/fsout.h"
+#include "input/mission_io.h"
+#include "output/result_json.h"
+#include "util/xalloc.h"
 
 #define RENDERS 20 /* result.json renders timed per mission */
 

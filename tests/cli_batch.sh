@@ -187,7 +187,7 @@ grep -q "man aeroeval" "$T/help.txt" || ok=1
 check $? "build_help_lists_its_options"
 "$AE" help nonsense 2>/dev/null; [ $? -eq 2 ]; check $? "help_for_unknown_command_exits_2"
 if command -v man >/dev/null 2>&1; then
-	MANWIDTH=80 man -l src/aeroeval.1 2>"$T/man.err" >"$T/man.txt"
+	MANWIDTH=80 man -l src/cli/aeroeval.1 2>"$T/man.err" >"$T/man.txt"
 	ok=0
 	for s in NAME SYNOPSIS DESCRIPTION OPTIONS "EXIT STATUS" FILES EXAMPLES "SEE ALSO"; do
 		grep -q "^$s" "$T/man.txt" || ok=1

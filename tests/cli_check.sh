@@ -95,13 +95,13 @@ fi
 run check --frobnicate good.json
 if [ "$rc" -eq 2 ]; then ok check_unknown_option; else notok check_unknown_option "exit $rc"; fi
 
-# `schema` names every field of the table in src/spec.h.
+# `schema` names every field of the table in src/core/spec.h.
 run schema
 missing=""
-for path in $(sed -n 's/^X([A-Z_0-9]*, "\([^"]*\)".*/\1/p' "$root/src/spec.h"); do
+for path in $(sed -n 's/^X([A-Z_0-9]*, "\([^"]*\)".*/\1/p' "$root/src/core/spec.h"); do
 	grep -q "^  $path  (" out.txt || missing="$missing $path"
 done
-n=$(sed -n 's/^X([A-Z_0-9]*, "\([^"]*\)".*/\1/p' "$root/src/spec.h" | wc -l)
+n=$(sed -n 's/^X([A-Z_0-9]*, "\([^"]*\)".*/\1/p' "$root/src/core/spec.h" | wc -l)
 if [ "$rc" -eq 0 ] && [ -z "$missing" ] && [ "$n" -gt 50 ]; then
 	ok schema_lists_every_field
 else

@@ -29,7 +29,7 @@ for t in "$build"/tests/test_*; do
 done
 
 if [ "$only" != unit ]; then
-	for s in tests/cli_*.sh; do
+	for s in tests/check_*.sh tests/cli_*.sh; do
 		[ -f "$s" ] || continue
 		AEROEVAL="$build/aeroeval" sh "$s" >"$log" 2>&1
 		rc=$?

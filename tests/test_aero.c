@@ -9,9 +9,9 @@
  * and v_h = sqrt(69.48473563) = 8.335750454 m/s.
  */
 #include "test_util.h"
-#include "aero.h"
-#include "atmo.h"
-#include "units.h"
+#include "physics/aero.h"
+#include "physics/atmo.h"
+#include "util/units.h"
 
 #define D_HAND   0.2385
 #define A_HAND   0.04467521468

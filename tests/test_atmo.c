@@ -6,8 +6,8 @@
  * Standard day: the ambient temperature is the ISA temperature.
  */
 #include "test_util.h"
-#include "atmo.h"
-#include "units.h"
+#include "physics/atmo.h"
+#include "util/units.h"
 
 static void
 standard_day(double h_m, struct atmo_state *a)

@@ -9,7 +9,7 @@
  */
 #include "test_util.h"
 #include "test_fixtures.h"
-#include "batt.h"
+#include "physics/batt.h"
 
 #include <string.h>
 
@@ -202,7 +202,7 @@ static void
 batt_current_should_be_p_over_v_for_an_ideal_source(void **state)
 {
 	(void)state;
-	/* BUG: batt_current_a() (src/batt.c) divides (V - sqrt(disc)) by 2R,
+	/* BUG: batt_current_a() (src/physics/batt.c) divides (V - sqrt(disc)) by 2R,
 	 * which is 0/0 = NaN for R = 0, and returns BATT_OK with that NaN
 	 * (the "no NaN may reach an output" rule).  It also cancels
 	 * catastrophically for tiny R P / V²: at R = 1e-9 Ω it returns

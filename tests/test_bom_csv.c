@@ -4,8 +4,8 @@
  * intended format change (then review the diff).
  */
 #include "test_util.h"
-#include "bom_csv.h"
-#include "xalloc.h"
+#include "output/bom_csv.h"
+#include "util/xalloc.h"
 
 #include <stdlib.h>
 #include <string.h>

@@ -1,14 +1,14 @@
 /* test_calibrate.c — the coefficient fit of `aeroeval calibrate`. */
 #include "test_util.h"
-#include "calibrate.h"
+#include "study/calibrate.h"
 
 #include <stdlib.h>
 #include <string.h>
 
-#include "lsq.h"
-#include "cohort.h"
-#include "model_io.h"
-#include "validate.h"
+#include "util/lsq.h"
+#include "input/cohort.h"
+#include "input/model_io.h"
+#include "study/validate.h"
 
 static struct model_data md;
 

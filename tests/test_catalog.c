@@ -1,6 +1,6 @@
 /* test_catalog.c — the parts catalogue: shipped coverage, loader, diagnostics. */
 #include "test_util.h"
-#include "catalog.h"
+#include "core/catalog.h"
 
 #include <stdlib.h>
 #include <string.h>

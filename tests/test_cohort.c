@@ -1,6 +1,6 @@
 /* test_cohort.c — the cohort CSV reader (shared/cohorts/README.md). */
 #include "test_util.h"
-#include "cohort.h"
+#include "input/cohort.h"
 
 #include <string.h>
 

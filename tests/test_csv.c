@@ -1,6 +1,6 @@
 /* test_csv.c — the RFC 4180 reader: quoting, line ends, recovery. */
 #include "test_util.h"
-#include "csv.h"
+#include "util/csv.h"
 
 #include <string.h>
 

@@ -12,7 +12,7 @@
  */
 #include "test_util.h"
 #include "test_fixtures.h"
-#include "discharge.h"
+#include "physics/discharge.h"
 
 #include <math.h>
 #include <string.h>

@@ -8,9 +8,9 @@
 
 #include <cairo.h>
 
-#include "doc.h"
-#include "plot.h"
-#include "template.h"
+#include "output/doc.h"
+#include "output/plot.h"
+#include "core/template.h"
 
 #define DEMO_PAGES 8   /* pages of the demo document, checked by eye */
 

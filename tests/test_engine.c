@@ -7,12 +7,12 @@
  */
 #include "test_util.h"
 #include "test_missions.h"
-#include "cli.h"
-#include "diag.h"
-#include "engine.h"
-#include "mission_io.h"
-#include "units.h"
-#include "xalloc.h"
+#include "cli/cli.h"
+#include "core/diag.h"
+#include "engine/engine.h"
+#include "input/mission_io.h"
+#include "util/units.h"
+#include "util/xalloc.h"
 
 #include <dirent.h>
 #include <pthread.h>
@@ -167,8 +167,8 @@ engine_coaxial_cg_limit_should_use_the_four_arm_polygon(void **state)
 {
 	struct fixture *f = *state;
 	struct mission_spec s;
-	/* BUG: the CG gate (src/feasibility.c, d_y = ½ W cos(π/N_r)) and the CG
-	 * thrust (src/sizing.c evaluate(): structure_cg_thrust_n(mass, nr, ...))
+	/* BUG: the CG gate (src/sizing/feasibility.c, d_y = ½ W cos(π/N_r)) and the CG
+	 * thrust (src/sizing/sizing.c evaluate(): structure_cg_thrust_n(mass, nr, ...))
 	 * use N_r = 8 for a coaxial X8, whose motors sit on only 4 arms: its
 	 * rotor polygon is the quad's square.  On W = 0.6 m (L_arm = 0.3 m):
 	 * hand d_y = 0.3 cos(π/4) = 0.212132 m, the code's d_y = 0.3 cos(π/8)
@@ -318,7 +318,7 @@ engine_coaxial_downwash_should_count_one_disk_per_stacked_pair(void **state)
 {
 	struct fixture *f = *state;
 	struct mission_spec s;
-	/* BUG (physics, coaxial): res_run.downwash_ms (src/sizing.c
+	/* BUG (physics, coaxial): res_run.downwash_ms (src/sizing/sizing.c
 	 * record_run(): aero_downwash_ms(M, ρ, p->n_rotors, A)) and
 	 * disk_loading_n_m2 count 8 disks for a coaxial X8, but a stacked pair
 	 * pushes its whole thrust through ONE disk area: the wake carries

@@ -7,9 +7,9 @@
 #include <stdbool.h>
 #include <string.h>
 
-#include "atmo.h"
-#include "batt.h"
-#include "mission.h"
+#include "physics/atmo.h"
+#include "physics/batt.h"
+#include "physics/mission.h"
 
 /* The paper's LiPo profile (Table chem) with the issue's V_exp, specific
  * power and a 3.3 V loaded cut-off. */

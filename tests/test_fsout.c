@@ -1,7 +1,8 @@
 /* test_fsout.c — atomic output, mkdir -p, whole-file reads, dossier dates
  * and output names. */
+#include "util/file.h"
 #include "test_util.h"
-#include "fsout.h"
+#include "output/fsout.h"
 
 #include <dirent.h>
 #include <pthread.h>
@@ -69,7 +70,7 @@ assert_file_is(const char *path, const char *want)
 	unsigned char *buf;
 	size_t n;
 	char err[256];
-	assert_int_equal(fsout_read_file(path, 1 << 20, &buf, &n, err, sizeof err), 0);
+	assert_int_equal(file_read(path, 1 << 20, &buf, &n, err, sizeof err), 0);
 	assert_int_equal(n, strlen(want));
 	assert_memory_equal(buf, want, n);
 	free(buf);
@@ -242,7 +243,7 @@ fsout_concurrent_writers_should_never_mix_or_leave_temps(void **state)
 	unsigned char *buf;
 	size_t n;
 	char err[256];
-	assert_int_equal(fsout_read_file(p, 1 << 20, &buf, &n, err, sizeof err), 0);
+	assert_int_equal(file_read(p, 1 << 20, &buf, &n, err, sizeof err), 0);
 	assert_int_equal(n, 4096);
 	assert_true(buf[0] >= 'A' && buf[0] <= 'F');
 	for (size_t i = 1; i < n; i++)
@@ -281,21 +282,21 @@ fsout_read_file_should_add_a_nul_and_respect_the_cap(void **state)
 	path_in(fx, "mission.json", p, sizeof p);
 	const char *text = "{\"payload_kg\": 0.365}";
 	assert_int_equal(fsout_write_atomic(p, text, 21, err, sizeof err), 0);
-	assert_int_equal(fsout_read_file(p, 21, &buf, &n, err, sizeof err), 0);
+	assert_int_equal(file_read(p, 21, &buf, &n, err, sizeof err), 0);
 	assert_int_equal(n, 21);
 	assert_int_equal(buf[21], '\0');
 	assert_string_equal((char *)buf, text);
 	free(buf);
 
-	assert_int_equal(fsout_read_file(p, 20, &buf, &n, err, sizeof err), -1);
+	assert_int_equal(file_read(p, 20, &buf, &n, err, sizeof err), -1);
 	assert_null(buf);
 	assert_int_equal(n, 0);
 	assert_non_null(strstr(err, "too large"));
 
 	path_in(fx, "missing.json", p, sizeof p);
-	assert_int_equal(fsout_read_file(p, 100, &buf, &n, err, sizeof err), -1);
+	assert_int_equal(file_read(p, 100, &buf, &n, err, sizeof err), -1);
 	assert_non_null(strstr(err, "cannot open"));
-	assert_int_equal(fsout_read_file(fx->dir, 100, &buf, &n, err, sizeof err), -1);
+	assert_int_equal(file_read(fx->dir, 100, &buf, &n, err, sizeof err), -1);
 	assert_non_null(strstr(err, "not a regular file"));
 }
 

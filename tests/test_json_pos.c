@@ -1,6 +1,7 @@
 /* test_json_pos.c — the path -> line:col index and offset conversion. */
 #include "test_util.h"
-#include "json_pos.h"
+#include "input/json_pos.h"
+#include "util/text.h"
 
 #include <string.h>
 
@@ -79,7 +80,7 @@ json_pos_should_count_characters_not_bytes(void **state)
 	assert_int_equal(find(jp, "x", 0)->key_col, 14);
 	assert_int_equal(find(jp, "x", 0)->val_col, 19);
 	int line, col;
-	json_pos_line_col(t, strlen(t), (size_t)(strstr(t, "1}") - t), &line, &col);
+	text_line_col(t, strlen(t), (size_t)(strstr(t, "1}") - t), &line, &col);
 	assert_int_equal(line, 1);
 	assert_int_equal(col, 19);
 	json_pos_free(jp);
@@ -121,7 +122,7 @@ json_pos_should_skip_a_byte_order_mark(void **state)
 	assert_int_equal(find(jp, "", 0)->val_col, 1);
 	assert_int_equal(find(jp, "a", 0)->key_col, 2);
 	int line, col;
-	json_pos_line_col(t, strlen(t), 4, &line, &col);
+	text_line_col(t, strlen(t), 4, &line, &col);
 	assert_int_equal(col, 2);
 	json_pos_free(jp);
 }
@@ -145,42 +146,42 @@ json_pos_should_stop_quietly_on_malformed_text(void **state)
 }
 
 static void
-json_pos_line_col_should_follow_newlines_and_clamp(void **state)
+text_line_col_should_follow_newlines_and_clamp(void **state)
 {
 	(void)state;
 	const char *t = "ab\ncd\n\nxyz";
 	int line, col;
-	json_pos_line_col(t, strlen(t), 0, &line, &col);
+	text_line_col(t, strlen(t), 0, &line, &col);
 	assert_int_equal(line, 1);
 	assert_int_equal(col, 1);
-	json_pos_line_col(t, strlen(t), 4, &line, &col);
+	text_line_col(t, strlen(t), 4, &line, &col);
 	assert_int_equal(line, 2);
 	assert_int_equal(col, 2);
-	json_pos_line_col(t, strlen(t), 9, &line, &col);
+	text_line_col(t, strlen(t), 9, &line, &col);
 	assert_int_equal(line, 4);
 	assert_int_equal(col, 3);
-	json_pos_line_col(t, strlen(t), 999, &line, &col);
+	text_line_col(t, strlen(t), 999, &line, &col);
 	assert_int_equal(line, 4);
 	assert_int_equal(col, 4);
 }
 
 static void
-json_pos_utf8_seq_should_reject_invalid_sequences(void **state)
+text_utf8_seq_should_reject_invalid_sequences(void **state)
 {
 	(void)state;
-	assert_int_equal(json_pos_utf8_seq("a", 1), 1);
-	assert_int_equal(json_pos_utf8_seq("\xc3\xa9", 2), 2);
-	assert_int_equal(json_pos_utf8_seq("\xe2\x82\xac", 3), 3);
-	assert_int_equal(json_pos_utf8_seq("\xf0\x9f\x98\x80", 4), 4);
-	assert_int_equal(json_pos_utf8_seq("\xc3\xa9", 1), 0);       /* cut short */
-	assert_int_equal(json_pos_utf8_seq("\x80", 1), 0);           /* lone continuation */
-	assert_int_equal(json_pos_utf8_seq("\xc0\xaf", 2), 0);       /* overlong '/' */
-	assert_int_equal(json_pos_utf8_seq("\xe0\x80\xaf", 3), 0);   /* overlong */
-	assert_int_equal(json_pos_utf8_seq("\xed\xa0\x80", 3), 0);   /* surrogate */
-	assert_int_equal(json_pos_utf8_seq("\xf4\x90\x80\x80", 4), 0); /* > U+10FFFF */
-	assert_int_equal(json_pos_utf8_seq("\xff", 1), 0);
-	assert_int_equal(json_pos_utf8_seq("\xc3(", 2), 0);
-	assert_int_equal(json_pos_utf8_seq("", 0), 0);
+	assert_int_equal(text_utf8_seq("a", 1), 1);
+	assert_int_equal(text_utf8_seq("\xc3\xa9", 2), 2);
+	assert_int_equal(text_utf8_seq("\xe2\x82\xac", 3), 3);
+	assert_int_equal(text_utf8_seq("\xf0\x9f\x98\x80", 4), 4);
+	assert_int_equal(text_utf8_seq("\xc3\xa9", 1), 0);       /* cut short */
+	assert_int_equal(text_utf8_seq("\x80", 1), 0);           /* lone continuation */
+	assert_int_equal(text_utf8_seq("\xc0\xaf", 2), 0);       /* overlong '/' */
+	assert_int_equal(text_utf8_seq("\xe0\x80\xaf", 3), 0);   /* overlong */
+	assert_int_equal(text_utf8_seq("\xed\xa0\x80", 3), 0);   /* surrogate */
+	assert_int_equal(text_utf8_seq("\xf4\x90\x80\x80", 4), 0); /* > U+10FFFF */
+	assert_int_equal(text_utf8_seq("\xff", 1), 0);
+	assert_int_equal(text_utf8_seq("\xc3(", 2), 0);
+	assert_int_equal(text_utf8_seq("", 0), 0);
 }
 
 int
@@ -194,8 +195,8 @@ main(void)
 		cmocka_unit_test(json_pos_should_decode_escaped_keys_like_cjson),
 		cmocka_unit_test(json_pos_should_skip_a_byte_order_mark),
 		cmocka_unit_test(json_pos_should_stop_quietly_on_malformed_text),
-		cmocka_unit_test(json_pos_line_col_should_follow_newlines_and_clamp),
-		cmocka_unit_test(json_pos_utf8_seq_should_reject_invalid_sequences),
+		cmocka_unit_test(text_line_col_should_follow_newlines_and_clamp),
+		cmocka_unit_test(text_utf8_seq_should_reject_invalid_sequences),
 	};
 	return cmocka_run_group_tests_name("json_pos", tests, NULL, NULL);
 }

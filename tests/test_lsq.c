@@ -1,6 +1,6 @@
 /* test_lsq.c — the Levenberg-Marquardt minimiser on a known model. */
 #include "test_util.h"
-#include "lsq.h"
+#include "util/lsq.h"
 
 #include <string.h>
 

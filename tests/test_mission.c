@@ -11,9 +11,9 @@
  */
 #include "test_util.h"
 #include "test_fixtures.h"
-#include "mission.h"
-#include "stats.h"
-#include "units.h"
+#include "physics/mission.h"
+#include "util/stats.h"
+#include "util/units.h"
 
 
 static void

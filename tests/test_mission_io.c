@@ -1,7 +1,7 @@
 /* test_mission_io.c — the strict mission parser, its diagnostics and the
  * printers. */
 #include "test_util.h"
-#include "mission_io.h"
+#include "input/mission_io.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -200,8 +200,8 @@ mission_io_should_parse_every_field_of_the_table(void **state)
 			break;
 		}
 		char got[160], want[160];
-		mission_io_format_value(&s, f, got, sizeof got);
-		mission_io_format_value(&d, f, want, sizeof want);
+		spec_format_value(&s, f, got, sizeof got);
+		spec_format_value(&d, f, want, sizeof want);
 		if (strcmp(got, want) == 0)
 			fail_msg("%s: parsed value equals the default %s", f->path, got);
 	}
@@ -679,30 +679,30 @@ mission_io_to_json_should_nest_groups_and_print_auto(void **state)
 }
 
 static void
-mission_io_format_value_should_give_text_with_unit(void **state)
+spec_format_value_should_give_text_with_unit(void **state)
 {
 	(void)state;
 	struct mission_spec s;
 	char buf[64];
 	parse_ok("{\"payload_kg\": 2.385, \"v_forward_ms\": \"auto\"}", &s);
-	mission_io_format_value(&s, spec_field_by_path("payload_kg"), buf, sizeof buf);
+	spec_format_value(&s, spec_field_by_path("payload_kg"), buf, sizeof buf);
 	assert_string_equal(buf, "2.385 kg");
-	mission_io_format_value(&s, spec_field_by_path("v_forward_ms"), buf, sizeof buf);
+	spec_format_value(&s, spec_field_by_path("v_forward_ms"), buf, sizeof buf);
 	assert_string_equal(buf, "auto");
-	mission_io_format_value(&s, spec_field_by_path("nominal_cell_count"), buf, sizeof buf);
+	spec_format_value(&s, spec_field_by_path("nominal_cell_count"), buf, sizeof buf);
 	assert_string_equal(buf, "0 cells");
-	mission_io_format_value(&s, spec_field_by_path("structural_overrides.wall_thickness_ratio"),
+	spec_format_value(&s, spec_field_by_path("structural_overrides.wall_thickness_ratio"),
 	                        buf, sizeof buf);
 	assert_string_equal(buf, "0.9");
-	mission_io_format_value(&s, spec_field_by_path("coaxial_layout"), buf, sizeof buf);
+	spec_format_value(&s, spec_field_by_path("coaxial_layout"), buf, sizeof buf);
 	assert_string_equal(buf, "false");
-	mission_io_format_value(&s, spec_field_by_path("airframe_class"), buf, sizeof buf);
+	spec_format_value(&s, spec_field_by_path("airframe_class"), buf, sizeof buf);
 	assert_string_equal(buf, "EnterpriseRugged");
-	mission_io_format_value(&s, spec_field_by_path("report.title"), buf, sizeof buf);
+	spec_format_value(&s, spec_field_by_path("report.title"), buf, sizeof buf);
 	assert_string_equal(buf, "(none)");
-	mission_io_format_value(&s, spec_field_by_path("battery_chemistry"), buf, sizeof buf);
+	spec_format_value(&s, spec_field_by_path("battery_chemistry"), buf, sizeof buf);
 	assert_string_equal(buf, "LiPo");
-	mission_io_format_value(&s, spec_field_by_path("ambient_temp_c"), buf, 4);
+	spec_format_value(&s, spec_field_by_path("ambient_temp_c"), buf, 4);
 	assert_string_equal(buf, "15 ");
 }
 
@@ -740,7 +740,7 @@ main(void)
 		cmocka_unit_test(mission_io_load_should_read_a_file),
 		cmocka_unit_test(mission_io_to_json_should_round_trip),
 		cmocka_unit_test(mission_io_to_json_should_nest_groups_and_print_auto),
-		cmocka_unit_test(mission_io_format_value_should_give_text_with_unit),
+		cmocka_unit_test(spec_format_value_should_give_text_with_unit),
 	};
 	return cmocka_run_group_tests_name("mission_io", tests, NULL, NULL);
 }

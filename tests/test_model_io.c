@@ -8,8 +8,8 @@
  * from the repository root.
  */
 #include "test_util.h"
-#include "model_io.h"
-#include "xalloc.h"
+#include "input/model_io.h"
+#include "util/xalloc.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -254,7 +254,7 @@ static void
 model_io_missing_file_message_should_not_print_an_empty_field(void **state)
 {
 	(void)state;
-	/* BUG: rd_error() (src/model_io.c) prints "%s: error: %s%s%s: " even when
+	/* BUG: rd_error() (src/input/model_io.c) prints "%s: error: %s%s%s: " even when
 	 * both the entry and the field are empty, so a whole-file error reads
 	 * "DIR/calibration.json: error: : cannot open (No such file or
 	 * directory)" with a stray ": ".  The same happens for "top level must

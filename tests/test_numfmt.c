@@ -1,6 +1,6 @@
 /* test_numfmt.c — shortest round-trip and fixed-point number text. */
 #include "test_util.h"
-#include "numfmt.h"
+#include "util/numfmt.h"
 
 #include <math.h>
 #include <stdint.h>

@@ -15,17 +15,17 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "catalog.h"
-#include "cli.h"
-#include "diag.h"
-#include "engine.h"
-#include "mission_io.h"
-#include "optim.h"
-#include "aero.h"
-#include "stats.h"
-#include "result_json.h"
-#include "units.h"
-#include "xalloc.h"
+#include "core/catalog.h"
+#include "cli/cli.h"
+#include "core/diag.h"
+#include "engine/engine.h"
+#include "input/mission_io.h"
+#include "parts/optim.h"
+#include "physics/aero.h"
+#include "util/stats.h"
+#include "output/result_json.h"
+#include "util/units.h"
+#include "util/xalloc.h"
 
 #define FIXTURE_DIR "tests/fixtures/optim/basic"
 #define EXAMPLE_DIR "examples"

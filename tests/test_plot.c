@@ -4,9 +4,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "doc.h"
-#include "plot.h"
-#include "template.h"
+#include "output/doc.h"
+#include "output/plot.h"
+#include "core/template.h"
 
 static void
 check_ticks_cover(const struct plot_ticks *t, double lo, double hi)

@@ -10,14 +10,15 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "catalog.h"
-#include "cli.h"
-#include "cohort.h"
-#include "diag.h"
-#include "fsout.h"
-#include "mission_io.h"
+#include "core/catalog.h"
+#include "cli/cli.h"
+#include "input/cohort.h"
+#include "core/diag.h"
+#include "output/fsout.h"
+#include "input/mission_io.h"
 #include "solve_check.h"
-#include "xalloc.h"
+#include "util/file.h"
+#include "util/xalloc.h"
 
 #define REGRESS_DIR "tests/regress"
 
@@ -38,7 +39,7 @@ each_input(const char *prefix,
 		snprintf(path, sizeof path, "%s/%s", REGRESS_DIR, e->d_name);
 		unsigned char *b = NULL;
 		size_t n = 0;
-		if (fsout_read_file(path, 16u << 20, &b, &n, msg, sizeof msg) != 0) {
+		if (file_read(path, 16u << 20, &b, &n, msg, sizeof msg) != 0) {
 			print_error("%s\n", msg);
 			fail();
 		}
@@ -90,7 +91,7 @@ copy_file(const char *from, const char *to)
 	unsigned char *b = NULL;
 	size_t n = 0;
 	char msg[512];
-	assert_int_equal(fsout_read_file(from, 16u << 20, &b, &n, msg, sizeof msg), 0);
+	assert_int_equal(file_read(from, 16u << 20, &b, &n, msg, sizeof msg), 0);
 	FILE *f = fopen(to, "wb");
 	assert_non_null(f);
 	assert_int_equal(fwrite(b, 1, n, f), n);

@@ -10,16 +10,16 @@
 #include <sys/stat.h>
 #include <time.h>
 
-#include "catalog.h"
-#include "cli.h"
-#include "diag.h"
-#include "doc.h"
-#include "engine.h"
-#include "mission_io.h"
-#include "report.h"
-#include "sha256.h"
-#include "template.h"
-#include "xalloc.h"
+#include "core/catalog.h"
+#include "cli/cli.h"
+#include "core/diag.h"
+#include "output/doc.h"
+#include "engine/engine.h"
+#include "input/mission_io.h"
+#include "output/report.h"
+#include "util/sha256.h"
+#include "core/template.h"
+#include "util/xalloc.h"
 
 /* A full dossier: cover, 11 sections of one to three pages, the appendix. */
 #define MIN_PAGES 14

@@ -7,8 +7,8 @@
  * intended format change (then review the diff).
  */
 #include "test_util.h"
-#include "result_json.h"
-#include "xalloc.h"
+#include "output/result_json.h"
+#include "util/xalloc.h"
 
 #include <cjson/cJSON.h>
 #include <fcntl.h>

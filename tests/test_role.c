@@ -4,7 +4,7 @@
  * Hand values in the comments.
  */
 #include "test_util.h"
-#include "role.h"
+#include "physics/role.h"
 
 #include <string.h>
 

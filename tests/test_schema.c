@@ -1,8 +1,8 @@
 /* test_schema.c — suggestions, `aeroeval schema` text and the JSON Schema,
  * all checked against the field table. */
 #include "test_util.h"
-#include "schema.h"
-#include "mission_io.h"
+#include "input/schema.h"
+#include "input/mission_io.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -11,7 +11,7 @@ static void
 expect_suggestion(const char *path, const char *want)
 {
 	char got[128];
-	bool found = schema_suggest(path, got, sizeof got);
+	bool found = spec_suggest(path, got, sizeof got);
 	if (want == NULL) {
 		if (found)
 			fail_msg("%s: unexpected suggestion %s", path, got);
@@ -24,7 +24,7 @@ expect_suggestion(const char *path, const char *want)
 }
 
 static void
-schema_suggest_should_find_the_closest_valid_path(void **state)
+spec_suggest_should_find_the_closest_valid_path(void **state)
 {
 	(void)state;
 	expect_suggestion("payload_kgs", "payload_kg");
@@ -43,28 +43,28 @@ schema_suggest_should_find_the_closest_valid_path(void **state)
 }
 
 static void
-schema_is_group_should_know_the_group_objects(void **state)
+spec_is_group_should_know_the_group_objects(void **state)
 {
 	(void)state;
 	const char *groups[] = { "report", "locks", "payload_role", "structural_overrides",
 	                         "aerodynamic_overrides", "requirements" };
 	for (size_t i = 0; i < sizeof groups / sizeof groups[0]; i++)
-		assert_true(schema_is_group(groups[i]));
-	assert_false(schema_is_group("payload_kg"));
-	assert_false(schema_is_group("lock"));
-	assert_false(schema_is_group(""));
+		assert_true(spec_is_group(groups[i]));
+	assert_false(spec_is_group("payload_kg"));
+	assert_false(spec_is_group("lock"));
+	assert_false(spec_is_group(""));
 }
 
 static void
-schema_range_text_should_mark_an_exclusive_minimum(void **state)
+spec_range_text_should_mark_an_exclusive_minimum(void **state)
 {
 	(void)state;
 	char buf[96];
-	schema_range_text(spec_field_by_path("payload_kg"), buf, sizeof buf);
+	spec_range_text(spec_field_by_path("payload_kg"), buf, sizeof buf);
 	assert_string_equal(buf, "0 to 500 kg");
-	schema_range_text(spec_field_by_path("max_diameter_m"), buf, sizeof buf);
+	spec_range_text(spec_field_by_path("max_diameter_m"), buf, sizeof buf);
 	assert_string_equal(buf, "above 0.05 up to 5 m");
-	schema_range_text(spec_field_by_path("num_rotors"), buf, sizeof buf);
+	spec_range_text(spec_field_by_path("num_rotors"), buf, sizeof buf);
 	assert_string_equal(buf, "3 to 16");
 }
 
@@ -164,7 +164,7 @@ schema_json_should_list_exactly_the_table_fields(void **state)
 	for (const cJSON *c = props->child; c != NULL; c = c->next) {
 		if (strcmp(c->string, "$schema") == 0)
 			continue;
-		if (!schema_is_group(c->string)) {
+		if (!spec_is_group(c->string)) {
 			n++;
 			continue;
 		}
@@ -252,9 +252,9 @@ int
 main(void)
 {
 	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(schema_suggest_should_find_the_closest_valid_path),
-		cmocka_unit_test(schema_is_group_should_know_the_group_objects),
-		cmocka_unit_test(schema_range_text_should_mark_an_exclusive_minimum),
+		cmocka_unit_test(spec_suggest_should_find_the_closest_valid_path),
+		cmocka_unit_test(spec_is_group_should_know_the_group_objects),
+		cmocka_unit_test(spec_range_text_should_mark_an_exclusive_minimum),
 		cmocka_unit_test(schema_json_should_list_exactly_the_table_fields),
 		cmocka_unit_test(schema_committed_file_should_equal_the_generated_schema),
 		cmocka_unit_test(schema_text_should_list_every_field_with_its_range),

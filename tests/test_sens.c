@@ -6,16 +6,16 @@
 
 #include <cjson/cJSON.h>
 
-#include "cli.h"
-#include "diag.h"
-#include "doc.h"
-#include "engine.h"
-#include "mission_io.h"
-#include "sens.h"
-#include "sens_report.h"
-#include "template.h"
-#include "units.h"
-#include "xalloc.h"
+#include "cli/cli.h"
+#include "core/diag.h"
+#include "output/doc.h"
+#include "engine/engine.h"
+#include "input/mission_io.h"
+#include "study/sens.h"
+#include "study/sens_report.h"
+#include "core/template.h"
+#include "util/units.h"
+#include "util/xalloc.h"
 
 /* The reference tables, loaded once for the whole program (tests run from
  * the repository root, where data/ is). */

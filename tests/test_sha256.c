@@ -1,6 +1,6 @@
 /* test_sha256.c — SHA-256 against the FIPS 180-4 / NIST example vectors. */
 #include "test_util.h"
-#include "sha256.h"
+#include "util/sha256.h"
 
 #include <stdlib.h>
 #include <string.h>

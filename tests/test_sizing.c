@@ -7,11 +7,11 @@
  */
 #include "test_util.h"
 #include "test_missions.h"
-#include "cli.h"
-#include "engine.h"
-#include "sizing.h"
-#include "units.h"
-#include "xalloc.h"
+#include "cli/cli.h"
+#include "engine/engine.h"
+#include "sizing/sizing.h"
+#include "util/units.h"
+#include "util/xalloc.h"
 
 #include <stdlib.h>
 #include <string.h>

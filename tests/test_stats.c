@@ -1,6 +1,6 @@
 /* test_stats.c — accuracy statistics, worked by hand on a 4-row cohort. */
 #include "test_util.h"
-#include "stats.h"
+#include "util/stats.h"
 
 #include <stdlib.h>
 #include <string.h>

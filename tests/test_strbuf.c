@@ -1,7 +1,7 @@
 /* test_strbuf.c — the growable byte buffer. */
 #include "test_util.h"
-#include "strbuf.h"
-#include "stats.h"
+#include "util/strbuf.h"
+#include "util/stats.h"
 
 #include <float.h>
 #include <limits.h>

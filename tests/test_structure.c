@@ -5,8 +5,8 @@
  * values in the comments.
  */
 #include "test_util.h"
-#include "structure.h"
-#include "units.h"
+#include "physics/structure.h"
+#include "util/units.h"
 
 static void
 structure_sigma_allow_should_be_192_mpa(void **state)

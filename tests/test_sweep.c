@@ -32,10 +32,10 @@
 #include <unistd.h>
 #include <time.h>
 
-#include "cli.h"
+#include "cli/cli.h"
 #include "solve_check.h"
-#include "stats.h"
-#include "xalloc.h"
+#include "util/stats.h"
+#include "util/xalloc.h"
 
 #ifndef SWEEP_N /* -DSWEEP_N=... -DSWEEP_PAIRS=... for a longer run */
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)

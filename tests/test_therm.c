@@ -3,7 +3,7 @@
  * the comments.
  */
 #include "test_util.h"
-#include "therm.h"
+#include "physics/therm.h"
 
 static void
 therm_hac_should_be_h_times_6_times_mass_ratio_to_two_thirds(void **state)

@@ -1,7 +1,7 @@
 /* test_validate.c — the cohort row -> mission rule, the per-row solve and
  * the statistics of `aeroeval validate`. */
 #include "test_util.h"
-#include "validate.h"
+#include "study/validate.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -9,9 +9,9 @@
 
 #include <cjson/cJSON.h>
 
-#include "mission_io.h"
-#include "model_io.h"
-#include "xalloc.h"
+#include "input/mission_io.h"
+#include "input/model_io.h"
+#include "util/xalloc.h"
 
 #define FIX "tests/fixtures/validate/"
 

@@ -15,8 +15,8 @@
 
 #include <cjson/cJSON.h>
 
-#include "catalog.h"
-#include "fsout.h"
+#include "core/catalog.h"
+#include "output/fsout.h"
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);

@@ -6,7 +6,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
-#include "cohort.h"
+#include "input/cohort.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

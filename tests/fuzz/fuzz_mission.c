@@ -9,9 +9,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "catalog.h"
-#include "diag.h"
-#include "mission_io.h"
+#include "core/catalog.h"
+#include "core/diag.h"
+#include "input/mission_io.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

@@ -1,0 +1,115 @@
+/* cli.c — shared command set-up (see cli.h). */
+#include "cli/cli.h"
+
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "core/catalog.h"
+#include "output/fsout.h"
+#include "input/model_io.h"
+#include "util/sha256.h"
+#include "util/file.h"
+#include "util/xalloc.h"
+
+static int
+is_dir_with(const char *dir, const char *file)
+{
+	char path[4200];
+	struct stat st;
+	snprintf(path, sizeof path, "%s/%s", dir, file);
+	return stat(path, &st) == 0;
+}
+
+void
+cli_data_dir(char *out, size_t n)
+{
+	const char *env = getenv("AEROEVAL_DATA");
+	if (env != NULL && *env != '\0') {
+		snprintf(out, n, "%s", env);
+		return;
+	}
+	char exe[PATH_MAX];
+	ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
+	if (len > 0) {
+		exe[len] = '\0';
+		char *slash = strrchr(exe, '/');
+		if (slash != NULL) {
+			*slash = '\0';
+			/* build/aeroeval -> ../data; bin/aeroeval -> ../share/aeroeval/data */
+			static const char *const rel[] = { "/../data",
+				"/../share/aeroeval/data", "/data", NULL };
+			for (int i = 0; rel[i] != NULL; i++) {
+				char cand[PATH_MAX + 32];
+				snprintf(cand, sizeof cand, "%s%s", exe, rel[i]);
+				if (is_dir_with(cand, "chemistries.json")) {
+					char real[PATH_MAX];
+					snprintf(out, n, "%s", realpath(cand, real) ? real : cand);
+					return;
+				}
+			}
+		}
+	}
+	snprintf(out, n, "data");
+}
+
+/* SHA-256 over the catalogue files (name, NUL, length, bytes each), so a
+ * dossier names exactly the catalogue it was built from. */
+static void
+catalogue_hash(const char *db_dir, char out[65])
+{
+	static const char *const files[] = { "motors.json", "propellers.json",
+		"batteries.json", "escs.json", NULL };
+	struct sha256_ctx c;
+	unsigned char digest[SHA256_DIGEST_LEN];
+	sha256_init(&c);
+	for (int i = 0; files[i] != NULL; i++) {
+		char path[4400], err[256];
+		unsigned char *buf = NULL;
+		size_t n = 0;
+		snprintf(path, sizeof path, "%s/%s", db_dir, files[i]);
+		if (file_read(path, 64u << 20, &buf, &n, err, sizeof err) != 0)
+			n = 0;
+		sha256_update(&c, files[i], strlen(files[i]) + 1);
+		unsigned char len8[8];
+		for (int k = 0; k < 8; k++)
+			len8[k] = (unsigned char)((unsigned long long)n >> (8 * k));
+		sha256_update(&c, len8, sizeof len8);
+		sha256_update(&c, buf, n);
+		free(buf);
+	}
+	sha256_final(&c, digest);
+	for (int i = 0; i < SHA256_DIGEST_LEN; i++)
+		snprintf(out + 2 * i, 3, "%02x", digest[i]);
+}
+
+int
+cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
+             FILE *err)
+{
+	memset(env, 0, sizeof *env);
+	cli_data_dir(env->data_dir, sizeof env->data_dir);
+	if (db_dir != NULL)
+		snprintf(env->db_dir, sizeof env->db_dir, "%s", db_dir);
+	else
+		snprintf(env->db_dir, sizeof env->db_dir, "%s/catalog", env->data_dir);
+	if (model_io_load(env->data_dir, &env->model, err) != 0)
+		return 2;
+	if (want_catalog) {
+		int n_err = 0;
+		env->cat = catalog_load(env->db_dir, env->model.chem_names, err, &n_err);
+		if (env->cat == NULL)
+			return 2;
+		catalogue_hash(env->db_dir, env->catalogue_sha256);
+	}
+	return 0;
+}
+
+void
+cli_env_free(struct cli_env *env)
+{
+	catalog_free(env->cat);
+	env->cat = NULL;
+}

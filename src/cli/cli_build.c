@@ -1,0 +1,687 @@
+/* cli_build.c — `aeroeval build`: many missions, in parallel, incrementally.
+ *
+ * The parent loads the reference tables, the catalogue and the template
+ * once, decides which missions are up to date, and hands the others to a
+ * pool of forked workers (batch.h), each of which runs pipeline_build() for
+ * one mission.  Outputs are written atomically by the pipeline; a stamp file
+ * written last marks a complete, current output folder.
+ */
+#include "cli/cli_build.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <signal.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli/batch.h"
+#include "cli/cli.h"
+#include "cli/cli_help.h"
+#include "output/fsout.h"
+#include "cli/pipeline.h"
+#include "util/sha256.h"
+#include "util/strbuf.h"
+#include "core/template.h"
+#include "util/file.h"
+#include "util/xalloc.h"
+
+#define BUILD_USAGE "usage: aeroeval build [-o DIR] [-j N] [-q] [--force] " \
+	"[--template FILE] [--db DIR] MISSION.json|DIR...\n"
+
+/* A mission cannot hang (the solver is bounded); this only guards against a
+ * bug.  AEROEVAL_BUILD_TIMEOUT_S overrides it (tests use a short one). */
+#define BUILD_TIMEOUT_S 60.0
+#define BUILD_TICK_S 0.1          /* progress line redraw interval */
+#define BUILD_MAX_JOBS 1024       /* -j above this is a typo */
+
+/* Files pipeline_build() writes into DIR/<name>/: a mission is up to date
+ * only when every one exists.  Add "dossier.pdf" when the pipeline writes it. */
+static const char *const build_outputs[] = { "result.json", "bom.csv", "dossier.pdf", NULL };
+
+/* The fingerprint file, written last (atomically) after a good compile. */
+#define BUILD_STAMP ".aeroeval-stamp"
+#define BUILD_STAMP_MAGIC "aeroeval-stamp 1\n"
+
+/* A growable list of mission paths. */
+struct path_list {
+	char **v;
+	size_t n, cap;
+};
+
+/* Everything the run shares; workers see it copy-on-write. */
+struct build {
+	const char *out_dir;       /* -o */
+	int quiet;                 /* -q */
+	int force;                 /* --force */
+	int tty;                   /* stderr is a terminal: live progress line */
+	struct path_list missions;
+	char (*names)[256];        /* output folder of each mission, "" if unsafe */
+	char (*fp)[SHA256_HEX_LEN]; /* fingerprint of each mission, "" if unknown */
+	char base_fp[SHA256_HEX_LEN]; /* of every input but the mission file */
+	struct cli_env *env;
+	struct template *tpl;
+	struct pipeline_opts popts;
+	size_t n_ok, n_inf, n_rej, n_int, n_utd, n_utd_inf, n_stopped;
+	int line_shown;            /* the progress line is on screen */
+};
+
+static void
+list_add(struct path_list *l, const char *s)
+{
+	if (l->n == l->cap) {
+		l->cap = l->cap ? 2 * l->cap : 16;
+		l->v = xrealloc(l->v, l->cap * sizeof *l->v);
+	}
+	l->v[l->n++] = xstrdup(s);
+}
+
+static void
+list_free(struct path_list *l)
+{
+	for (size_t i = 0; i < l->n; i++)
+		free(l->v[i]);
+	free(l->v);
+}
+
+static int
+cmp_str(const void *a, const void *b)
+{
+	return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+static int
+ends_with_json(const char *s)
+{
+	size_t n = strlen(s);
+	return n > 5 && strcmp(s + n - 5, ".json") == 0;
+}
+
+/* The *.json files of dir (no hidden ones), sorted for a stable order. */
+static int
+list_json(const char *dir, struct path_list *l)
+{
+	DIR *d = opendir(dir);
+	if (d == NULL)
+		return -1;
+	size_t first = l->n, len = strlen(dir);
+	const char *sep = len > 0 && dir[len - 1] == '/' ? "" : "/";
+	struct dirent *e;
+	while ((e = readdir(d)) != NULL) {
+		if (e->d_name[0] == '.' || !ends_with_json(e->d_name))
+			continue;
+		char p[4400];
+		snprintf(p, sizeof p, "%s%s%s", dir, sep, e->d_name);
+		list_add(l, p);
+	}
+	closedir(d);
+	qsort(l->v + first, l->n - first, sizeof *l->v, cmp_str);
+	return 0;
+}
+
+/* A directory contributes its *.json files; a file is taken as given. */
+static int
+expand(const char *arg, struct path_list *l)
+{
+	struct stat st;
+	if (stat(arg, &st) != 0) {
+		fprintf(stderr, "%s: error: %s\n", arg, strerror(errno));
+		return -1;
+	}
+	if (S_ISDIR(st.st_mode) && list_json(arg, l) != 0) {
+		fprintf(stderr, "%s: error: cannot read the directory: %s\n", arg,
+		    strerror(errno));
+		return -1;
+	}
+	if (!S_ISDIR(st.st_mode))
+		list_add(l, arg);
+	return 0;
+}
+
+/* ---- fingerprints -------------------------------------------------------- */
+
+/* One length-prefixed field, so that no two input sets hash alike by
+ * shifting bytes from one field into the next. */
+static void
+hash_field(struct sha256_ctx *c, const void *p, size_t n)
+{
+	unsigned char len8[8];
+	for (int k = 0; k < 8; k++)
+		len8[k] = (unsigned char)((uint64_t)n >> (8 * k));
+	sha256_update(c, len8, sizeof len8);
+	sha256_update(c, p, n);
+}
+
+static void
+hash_str(struct sha256_ctx *c, const char *s)
+{
+	hash_field(c, s, strlen(s));
+}
+
+/* The file's name and bytes; a missing file hashes as "missing". */
+static void
+hash_file(struct sha256_ctx *c, const char *path)
+{
+	unsigned char *buf = NULL;
+	size_t n = 0;
+	char msg[256];
+	hash_str(c, path);
+	if (file_read(path, 256u << 20, &buf, &n, msg, sizeof msg) != 0) {
+		hash_str(c, "missing");
+		return;
+	}
+	hash_field(c, buf, n);
+	free(buf);
+}
+
+/* A large file that only an install replaces (the program, the fonts), by
+ * its name, size and modification time: hashing their megabytes took
+ * longer than compiling a mission.  Replacing one changes its mtime. */
+static void
+hash_file_identity(struct sha256_ctx *c, const char *path)
+{
+	struct stat st;
+	char id[96];
+	hash_str(c, path);
+	if (stat(path, &st) != 0) {
+		hash_str(c, "missing");
+		return;
+	}
+	snprintf(id, sizeof id, "%lld %lld.%09ld", (long long)st.st_size,
+	    (long long)st.st_mtim.tv_sec, (long)st.st_mtim.tv_nsec);
+	hash_str(c, id);
+}
+
+static void
+hex_final(struct sha256_ctx *c, char out[SHA256_HEX_LEN])
+{
+	unsigned char d[SHA256_DIGEST_LEN];
+	sha256_final(c, d);
+	for (int i = 0; i < SHA256_DIGEST_LEN; i++)
+		snprintf(out + 2 * i, 3, "%02x", d[i]);
+}
+
+/* Everything a mission's outputs depend on besides the mission file: the
+ * engine (its version and the program file's identity, so a rebuilt
+ * compiler recompiles), the catalogue, the reference tables, the template
+ * with its fonts and logo, and SOURCE_DATE_EPOCH (it can set the dossier
+ * date).  The data and the template are hashed by content (a checkout
+ * that only touches them stays up to date), the program and the fonts by
+ * identity (hash_file_identity()). */
+static void
+base_fingerprint(struct build *b, const char *tpl_path)
+{
+	struct sha256_ctx c;
+	sha256_init(&c);
+	hash_str(&c, BUILD_STAMP_MAGIC);
+	hash_str(&c, AEROEVAL_VERSION);
+	char exe[4096];
+	ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+	if (n > 0) {
+		exe[n] = '\0';
+		hash_file_identity(&c, exe);
+	} else {
+		hash_str(&c, "no program file");
+	}
+	hash_str(&c, b->env->catalogue_sha256);
+	struct path_list data = { 0 };
+	list_json(b->env->data_dir, &data);
+	for (size_t i = 0; i < data.n; i++) {
+		/* The name relative to data/, so a moved installation is the same. */
+		const char *slash = strrchr(data.v[i], '/');
+		hash_str(&c, slash ? slash + 1 : data.v[i]);
+		hash_file(&c, data.v[i]);
+	}
+	list_free(&data);
+	if (tpl_path != NULL)
+		hash_file(&c, tpl_path);
+	else
+		hash_str(&c, "default");
+	hash_file_identity(&c, b->tpl->font_regular);
+	hash_file_identity(&c, b->tpl->font_bold);
+	hash_file_identity(&c, b->tpl->font_mono);
+	if (b->tpl->logo[0] != '\0')
+		hash_file(&c, b->tpl->logo);
+	const char *epoch = getenv("SOURCE_DATE_EPOCH");
+	hash_str(&c, epoch ? epoch : "");
+	hex_final(&c, b->base_fp);
+}
+
+/* The mission's fingerprint: the base, its bytes and, unless
+ * SOURCE_DATE_EPOCH is set, its mtime (the dossier date falls back to it;
+ * with SOURCE_DATE_EPOCH set it never does, so a copy or a checkout that
+ * changes only the mtime stays up to date).  Returns -1 when unreadable. */
+static int
+mission_fingerprint(const struct build *b, size_t i, char out[SHA256_HEX_LEN])
+{
+	const char *path = b->missions.v[i];
+	unsigned char *buf = NULL;
+	size_t n = 0;
+	char msg[256];
+	struct stat st;
+	if (stat(path, &st) != 0
+	    || file_read(path, 64u << 20, &buf, &n, msg, sizeof msg) != 0)
+		return -1;
+	struct sha256_ctx c;
+	char mtime[64];
+	const char *epoch = getenv("SOURCE_DATE_EPOCH");
+	if (epoch != NULL && *epoch != '\0')
+		snprintf(mtime, sizeof mtime, "-");
+	else
+		snprintf(mtime, sizeof mtime, "%lld.%09ld", (long long)st.st_mtim.tv_sec,
+		    (long)st.st_mtim.tv_nsec);
+	sha256_init(&c);
+	hash_str(&c, b->base_fp);
+	hash_field(&c, buf, n);
+	hash_str(&c, mtime);
+	free(buf);
+	hex_final(&c, out);
+	return 0;
+}
+
+static void
+out_path(const struct build *b, size_t i, const char *file, char *p, size_t n)
+{
+	snprintf(p, n, "%s/%s/%s", b->out_dir, b->names[i], file);
+}
+
+/* 0 feasible, 1 infeasible when the stamp matches fp and every output
+ * exists; -1 otherwise. */
+static int
+stamp_status(const struct build *b, size_t i, const char *fp)
+{
+	char p[4800], msg[256];
+	unsigned char *buf = NULL;
+	size_t n = 0;
+	struct stat st;
+	for (int k = 0; build_outputs[k] != NULL; k++) {
+		out_path(b, i, build_outputs[k], p, sizeof p);
+		if (stat(p, &st) != 0 || !S_ISREG(st.st_mode))
+			return -1;
+	}
+	out_path(b, i, BUILD_STAMP, p, sizeof p);
+	if (file_read(p, 4096, &buf, &n, msg, sizeof msg) != 0)
+		return -1;
+	char want[256];
+	int rc = -1;
+	for (int s = 0; s < 2 && rc < 0; s++) {
+		snprintf(want, sizeof want, "%sfingerprint %s\nstatus %s\n",
+		    BUILD_STAMP_MAGIC, fp, s ? "infeasible" : "feasible");
+		if (n == strlen(want) && memcmp(buf, want, n) == 0)
+			rc = s;
+	}
+	free(buf);
+	return rc;
+}
+
+/* ---- output ---------------------------------------------------------------- */
+
+/* Prints text in one write, first wiping the progress line if it is up. */
+static void
+emit(struct build *b, const struct strbuf *text)
+{
+	if (text->len == 0)
+		return;
+	if (b->line_shown) {
+		fputs("\r\033[K", stderr);
+		b->line_shown = 0;
+	}
+	fwrite(text->data, 1, text->len, stderr);
+	fflush(stderr);
+}
+
+/* Removes the temporary files a killed worker left in DIR/<name>/: they are
+ * named ".FILE.tmp.PID.SEQ" (fsout_write_atomic), PID the worker's. */
+static void
+clean_temps(const struct build *b, size_t i, long pid)
+{
+	char dir[4600], mark[48];
+	if (b->names[i][0] == '\0' || pid <= 0)
+		return;
+	snprintf(dir, sizeof dir, "%s/%s", b->out_dir, b->names[i]);
+	snprintf(mark, sizeof mark, ".tmp.%ld.", pid);
+	DIR *d = opendir(dir);
+	if (d == NULL)
+		return;
+	struct dirent *e;
+	while ((e = readdir(d)) != NULL) {
+		const char *m = e->d_name[0] == '.' ? strstr(e->d_name, mark) : NULL;
+		if (m == NULL)
+			continue;
+		m += strlen(mark);
+		if (*m == '\0' || strspn(m, "0123456789") != strlen(m))
+			continue;
+		char p[4900];
+		snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
+		unlink(p);
+	}
+	closedir(d);
+}
+
+/* ---- the three callbacks of the worker pool -------------------------------- */
+
+static int
+build_skip(void *ctx, size_t i)
+{
+	struct build *b = ctx;
+	b->fp[i][0] = '\0';
+	if (b->names[i][0] == '\0' || mission_fingerprint(b, i, b->fp[i]) != 0) {
+		b->fp[i][0] = '\0';
+		return 0;  /* the worker reports why */
+	}
+	int st = b->force ? -1 : stamp_status(b, i, b->fp[i]);
+	if (st < 0)
+		return 0;
+	b->n_utd++;
+	b->n_utd_inf += st == 1;
+	if (!b->quiet && !b->tty) {
+		struct strbuf line = STRBUF_INIT;
+		strbuf_printf(&line, "%s: up to date%s\n", b->missions.v[i],
+		    st == 1 ? " (infeasible)" : "");
+		emit(b, &line);
+		strbuf_free(&line);
+	}
+	return 1;
+}
+
+/* Test hook: AEROEVAL_TEST_WORKER=abort:NAME or hang:NAME makes the worker
+ * of mission NAME crash or hang, so tests can prove the run survives it. */
+static void
+test_hook(const char *name)
+{
+	const char *h = getenv("AEROEVAL_TEST_WORKER");
+	if (h == NULL)
+		return;
+	if (strncmp(h, "abort:", 6) == 0 && strcmp(h + 6, name) == 0)
+		abort();
+	if (strncmp(h, "hang:", 5) == 0 && strcmp(h + 5, name) == 0)
+		for (;;)
+			pause();
+}
+
+/* Writes the stamp through a temporary file and rename, like the outputs,
+ * but without fsync: a stamp lost in a power cut only costs a recompile,
+ * and skipping two fsyncs per mission makes large batches a third faster.
+ * The temporary name follows fsout_write_atomic's, so clean_temps() finds
+ * it after a kill. */
+static int
+write_stamp(const char *path, const char *text, char *msg, size_t n_msg)
+{
+	char tmp[4900];
+	const char *slash = strrchr(path, '/');
+	int dir_len = slash ? (int)(slash - path + 1) : 0;
+	snprintf(tmp, sizeof tmp, "%.*s.%s.tmp.%ld.0", dir_len, path,
+	    slash ? slash + 1 : path, (long)getpid());
+	FILE *f = fopen(tmp, "w");
+	if (f == NULL) {
+		snprintf(msg, n_msg, "%.400s: cannot create: %s", tmp, strerror(errno));
+		return -1;
+	}
+	int bad = fputs(text, f) < 0;
+	bad |= fclose(f) != 0;
+	if (bad || rename(tmp, path) != 0) {
+		snprintf(msg, n_msg, "%.400s: cannot write: %s", tmp, strerror(errno));
+		unlink(tmp);
+		return -1;
+	}
+	return 0;
+}
+
+/* Worker process: compile mission i, then write its stamp. */
+static int
+build_run(void *ctx, size_t i, FILE *err)
+{
+	struct build *b = ctx;
+	const char *path = b->missions.v[i];
+	char stamp[4800] = "", msg[512];
+	if (b->names[i][0] != '\0') {
+		test_hook(b->names[i]);
+		/* Outputs are about to change: until the stamp is rewritten the
+		 * folder is not "up to date", even if this worker is killed. */
+		out_path(b, i, BUILD_STAMP, stamp, sizeof stamp);
+		if (unlink(stamp) != 0 && errno != ENOENT) {
+			fprintf(err, "%s: error: cannot remove: %s\n", stamp, strerror(errno));
+			return PIPE_INTERNAL;
+		}
+	}
+	enum pipeline_status st = pipeline_build(b->env, &b->popts, path, err);
+	if ((st != PIPE_FEASIBLE && st != PIPE_INFEASIBLE) || b->fp[i][0] == '\0')
+		return st;
+	char text[256];
+	snprintf(text, sizeof text, "%sfingerprint %s\nstatus %s\n", BUILD_STAMP_MAGIC,
+	    b->fp[i], st == PIPE_FEASIBLE ? "feasible" : "infeasible");
+	if (write_stamp(stamp, text, msg, sizeof msg) != 0) {
+		fprintf(err, "%s: error: %s\n", stamp, msg);
+		return PIPE_INTERNAL;
+	}
+	return st;
+}
+
+static void
+build_done(void *ctx, size_t i, const struct batch_outcome *o)
+{
+	struct build *b = ctx;
+	const char *path = b->missions.v[i];
+	struct strbuf out = STRBUF_INIT;
+	int bad = 1;  /* an error: printed even with -q */
+	if (o->end != BATCH_EXITED && o->end != BATCH_FAILED)
+		clean_temps(b, i, o->pid);
+	strbuf_append(&out, o->text, o->n_text);
+	if (o->n_text > 0 && o->text[o->n_text - 1] != '\n')
+		strbuf_append_char(&out, '\n');
+	switch (o->end) {
+	case BATCH_EXITED:
+		if (o->code == PIPE_FEASIBLE || o->code == PIPE_INFEASIBLE) {
+			bad = 0;
+			if (o->code == PIPE_FEASIBLE)
+				b->n_ok++;
+			else
+				b->n_inf++;
+			strbuf_printf(&out, "%s: compiled (%s%.2f s)\n", path,
+			    o->code == PIPE_INFEASIBLE ? "infeasible, " : "", o->seconds);
+		} else if (o->code == PIPE_REJECTED) {
+			b->n_rej++;
+			strbuf_printf(&out, "%s: rejected\n", path);
+		} else {
+			b->n_int++;
+			strbuf_printf(&out, "%s: internal error\n", path);
+		}
+		break;
+	case BATCH_SIGNALLED:
+		b->n_int++;
+		strbuf_printf(&out, "%s: internal error: the worker died of signal %d (%s)\n",
+		    path, o->code, strsignal(o->code));
+		break;
+	case BATCH_TIMED_OUT:
+		b->n_int++;
+		strbuf_printf(&out, "%s: internal error: no result after %.1f s; the worker was stopped\n",
+		    path, o->seconds);
+		break;
+	case BATCH_STOPPED:
+		b->n_stopped++;
+		bad = 0;
+		strbuf_printf(&out, "%s: interrupted\n", path);
+		break;
+	case BATCH_FAILED:
+		b->n_int++;
+		strbuf_printf(&out, "%s: internal error: cannot start a worker: %s\n",
+		    path, strerror(o->code));
+		break;
+	}
+	/* On a terminal the progress line stands for the missions that went
+	 * well; -q keeps only the errors. */
+	if (bad || (!b->quiet && (!b->tty || o->n_text > 0 || o->end == BATCH_STOPPED
+	    || o->code == PIPE_INFEASIBLE)))
+		emit(b, &out);
+	strbuf_free(&out);
+}
+
+static void
+build_tick(void *ctx, const struct batch_state *s)
+{
+	struct build *b = ctx;
+	if (!b->tty || b->quiet || s->oldest < 0)
+		return;
+	const char *path = b->missions.v[s->oldest];
+	const char *base = strrchr(path, '/');
+	fprintf(stderr, "\r[%zu/%zu] compiling %.48s  %.1f s\033[K", s->n_done + 1,
+	    s->n_jobs, base ? base + 1 : path, s->oldest_s);
+	fflush(stderr);
+	b->line_shown = 1;
+}
+
+/* ---- the command ------------------------------------------------------------- */
+
+static int
+parse_jobs(const char *s, int *out)
+{
+	char *end;
+	errno = 0;
+	long v = strtol(s, &end, 10);
+	if (errno != 0 || end == s || *end != '\0' || v < 1 || v > BUILD_MAX_JOBS)
+		return -1;
+	*out = (int)v;
+	return 0;
+}
+
+static double
+timeout_s(void)
+{
+	const char *s = getenv("AEROEVAL_BUILD_TIMEOUT_S");
+	char *end;
+	double v = s ? strtod(s, &end) : 0.0;
+	return s && end != s && *end == '\0' && v > 0.0 && v < 1e6 ? v : BUILD_TIMEOUT_S;
+}
+
+/* Name clashes are an error before anything is written. */
+static int
+check_names(struct build *b)
+{
+	int rc = 0;
+	for (size_t i = 0; i < b->missions.n; i++) {
+		if (pipeline_name(b->missions.v[i], b->names[i], sizeof b->names[i]) != 0) {
+			b->names[i][0] = '\0';  /* the worker reports it as rejected */
+			continue;
+		}
+		for (size_t j = 0; j < i; j++)
+			if (strcmp(b->names[i], b->names[j]) == 0) {
+				fprintf(stderr, "%s: error: output name \"%s\" clashes with %s\n",
+				    b->missions.v[i], b->names[i], b->missions.v[j]);
+				rc = 2;
+				break;
+			}
+	}
+	return rc;
+}
+
+static void
+summary(const struct build *b, int sig, size_t n_started, double seconds)
+{
+	struct strbuf s = STRBUF_INIT;
+	strbuf_append_str(&s, "build: ");
+	if (sig != 0)
+		strbuf_printf(&s, "interrupted (%s): ", sig == SIGINT ? "SIGINT" : "SIGTERM");
+	strbuf_printf(&s, "%zu compiled (%zu infeasible), %zu up to date (%zu infeasible), "
+	    "%zu rejected, %zu internal errors", b->n_ok + b->n_inf, b->n_inf,
+	    b->n_utd, b->n_utd_inf, b->n_rej, b->n_int);
+	if (sig != 0)
+		strbuf_printf(&s, ", %zu stopped, %zu not started", b->n_stopped,
+		    b->missions.n - n_started);
+	strbuf_printf(&s, "; %zu missions in %.1f s\n", b->missions.n, seconds);
+	fwrite(s.data, 1, s.len, stderr);
+	strbuf_free(&s);
+}
+
+int
+cli_build(int argc, char **argv)
+{
+	double t0 = batch_now_s();
+	struct build b = { 0 };
+	const char *db = NULL, *tpl_path = NULL;
+	long n_cpu = sysconf(_SC_NPROCESSORS_ONLN);
+	int n_workers = n_cpu >= 1 && n_cpu <= BUILD_MAX_JOBS ? (int)n_cpu : 1;
+	int rc = 0, opts_done = 0;
+	b.out_dir = "out";
+	for (int i = 1; i < argc; i++) {
+		const char *a = argv[i];
+		int has_val = i + 1 < argc;
+		if (opts_done || a[0] != '-' || a[1] == '\0') {
+			if (expand(a, &b.missions) != 0)
+				rc = 2;
+		} else if (strcmp(a, "--") == 0) {
+			opts_done = 1;
+		} else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+			cli_help_command("build", stdout);
+			list_free(&b.missions);
+			return 0;
+		} else if (strcmp(a, "-q") == 0) {
+			b.quiet = 1;
+		} else if (strcmp(a, "--force") == 0) {
+			b.force = 1;
+		} else if (strcmp(a, "-o") == 0 && has_val) {
+			b.out_dir = argv[++i];
+		} else if (strcmp(a, "--db") == 0 && has_val) {
+			db = argv[++i];
+		} else if (strcmp(a, "--template") == 0 && has_val) {
+			tpl_path = argv[++i];
+		} else if (strncmp(a, "-j", 2) == 0 && (a[2] != '\0' || has_val)) {
+			const char *v = a[2] != '\0' ? a + 2 : argv[++i];
+			if (parse_jobs(v, &n_workers) != 0) {
+				fprintf(stderr, "aeroeval build: -j wants a whole number "
+				    "from 1 to %d (got \"%s\")\n", BUILD_MAX_JOBS, v);
+				rc = 2;
+			}
+		} else {
+			fprintf(stderr, "aeroeval build: unknown option or missing value: %s\n%s",
+			    a, BUILD_USAGE);
+			list_free(&b.missions);
+			return 2;
+		}
+	}
+	if (b.missions.n == 0 && rc == 0) {
+		fprintf(stderr, "aeroeval build: no mission given\n%s", BUILD_USAGE);
+		rc = 2;
+	}
+	b.names = xcalloc(b.missions.n + 1, sizeof *b.names);
+	b.fp = xcalloc(b.missions.n + 1, sizeof *b.fp);
+	b.env = xcalloc(1, sizeof *b.env);
+	if (rc == 0)
+		rc = check_names(&b);
+	if (rc == 0 && cli_env_load(b.env, db, 1, stderr) != 0)
+		rc = 2;
+	if (rc == 0) {
+		b.tpl = tpl_path ? template_load(tpl_path, stderr) : template_default();
+		if (b.tpl == NULL)
+			rc = 2;
+	}
+	if (rc == 0) {
+		base_fingerprint(&b, tpl_path);
+		b.popts.out_dir = b.out_dir;
+		b.popts.tpl = b.tpl;
+		b.tty = isatty(STDERR_FILENO);
+		if ((size_t)n_workers > b.missions.n)
+			n_workers = (int)b.missions.n;
+		struct batch_ops ops = { &b, build_skip, build_run, build_done, build_tick };
+		struct batch_opts bo = { n_workers, timeout_s(), BUILD_TICK_S };
+		size_t n_started = 0;
+		int sig = batch_run(b.missions.n, &ops, &bo, &n_started);
+		if (b.line_shown)
+			fputs("\r\033[K", stderr);
+		if (!b.quiet || sig != 0)
+			summary(&b, sig, n_started, batch_now_s() - t0);
+		if (sig != 0)
+			rc = 128 + sig;
+		else
+			rc = b.n_int ? 3 : b.n_rej ? 2 : b.n_inf + b.n_utd_inf ? 1 : 0;
+	}
+	template_free(b.tpl);
+	cli_env_free(b.env);
+	free(b.env);
+	free(b.names);
+	free(b.fp);
+	list_free(&b.missions);
+	return rc;
+}

@@ -1,0 +1,107 @@
+/* cli_help.c — help and version text (see cli_help.h). */
+#include "cli/cli_help.h"
+
+#include <ctype.h>
+#include <string.h>
+
+/* One command: how it is called, what it does, and its options. */
+struct help_cmd {
+	const char *name;
+	const char *synopsis;  /* after "aeroeval " */
+	const char *summary;   /* one line */
+	const char *details;   /* options and notes, each line ending in \n */
+};
+
+static const struct help_cmd help_cmds[] = {
+	{ "build",
+	  "build [-o DIR] [-j N] [-q] [--force] [--template FILE] [--db DIR] MISSION.json|DIR...",
+	  "compile missions into DIR/<name>/{dossier.pdf,result.json,bom.csv}",
+	  "A directory stands for its *.json files, in name order.  Missions\n"
+	  "compile in parallel worker processes; one failing mission does not\n"
+	  "stop the others, and each is reported in one piece.\n"
+	  "\n"
+	  "  -o DIR           output folder (default: out)\n"
+	  "  -j N             compile N missions at once (default: online cores)\n"
+	  "  -q               print errors only\n"
+	  "  --force          recompile missions that are up to date\n"
+	  "  --template FILE  dossier template (default: the built-in A4 one)\n"
+	  "  --db DIR         parts catalogue folder (default: data/catalog)\n"
+	  "\n"
+	  "A mission whose file, catalogue, reference data, template and compiler\n"
+	  "are unchanged since its last good compile is skipped (\"up to date\").\n"
+	  "^C stops the run: finished outputs stay, no partial file is left.\n"
+	  "Exit status: 0 all feasible, 1 some design infeasible, 2 bad usage or\n"
+	  "input, 3 internal error, 130/143 interrupted.\n" },
+	{ "solve",
+	  "solve [--db DIR] [--summary] MISSION.json",
+	  "solve one mission and print result.json on stdout (no files written)",
+	  "  --db DIR    parts catalogue folder (default: data/catalog)\n"
+	  "  --summary   a short human-readable summary instead of the JSON\n" },
+	{ "check",
+	  "check MISSION.json...",
+	  "validate missions only: diagnostics, no output files",
+	  "Every problem of a file is reported in one pass, as\n"
+	  "FILE:LINE:COL: error: FIELD: MESSAGE.\n" },
+	{ "schema",
+	  "schema [--json]",
+	  "list every mission field: type, unit, default, range, meaning",
+	  "  --json   print a JSON Schema instead of the table\n" },
+	{ "validate",
+	  "validate [--report FILE.pdf] COHORT.csv",
+	  "measure the accuracy against a cohort of real aircraft",
+	  "  --report FILE.pdf   also write a validation dossier\n" },
+	{ "calibrate",
+	  "calibrate COHORT.csv",
+	  "fit the calibration coefficients to a cohort of real aircraft",
+	  "" },
+	{ "sensitivity",
+	  "sensitivity [-o DIR] MISSION.json",
+	  "the 14-parameter sensitivity table of one mission",
+	  "  -o DIR   output folder (default: out)\n" },
+};
+
+#define HELP_N_CMDS (sizeof help_cmds / sizeof help_cmds[0])
+
+void
+cli_help_overview(FILE *out)
+{
+	fputs("usage: aeroeval COMMAND [OPTIONS] [FILES]\n"
+	      "       aeroeval --help | --version | help COMMAND\n"
+	      "\n"
+	      "aeroeval sizes multirotor UAVs: a mission file in, a design dossier,\n"
+	      "result.json and bill of materials out.\n"
+	      "\n"
+	      "commands:\n", out);
+	for (size_t i = 0; i < HELP_N_CMDS; i++)
+		fprintf(out, "  %-12s %s\n", help_cmds[i].name, help_cmds[i].summary);
+	fputs("\n"
+	      "Run 'aeroeval help COMMAND' (or 'aeroeval COMMAND --help') for a\n"
+	      "command's options, and 'man aeroeval' for the full manual.\n", out);
+}
+
+int
+cli_help_command(const char *cmd, FILE *out)
+{
+	for (size_t i = 0; i < HELP_N_CMDS; i++) {
+		const struct help_cmd *c = &help_cmds[i];
+		if (strcmp(cmd, c->name) != 0)
+			continue;
+		if (out == NULL)
+			return 0;
+		/* The summary is a sentence here: capital first letter, full stop. */
+		fprintf(out, "usage: aeroeval %s\n\n%c%s.\n", c->synopsis,
+		        toupper((unsigned char)c->summary[0]), c->summary + 1);
+		if (c->details[0] != '\0')
+			fprintf(out, "\n%s", c->details);
+		return 0;
+	}
+	return -1;
+}
+
+void
+cli_help_version(FILE *out)
+{
+	fprintf(out, "aeroeval %s\n"
+	        "multirotor UAV sizing compiler (C11; cJSON, libharu, cairo)\n",
+	        AEROEVAL_VERSION);
+}

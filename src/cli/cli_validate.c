@@ -1,0 +1,425 @@
+/* cli_validate.c — `aeroeval validate` and `aeroeval calibrate` (see
+ * cli_validate.h). */
+#include "cli/cli_validate.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cjson/cJSON.h>
+
+#include "study/calibrate.h"
+#include "cli/cli.h"
+#include "input/cohort.h"
+#include "output/doc.h"
+#include "output/fsout.h"
+#include "input/mission_io.h"
+#include "input/model_io.h"
+#include "study/validate.h"
+#include "study/valreport.h"
+#include "util/xalloc.h"
+
+#define VALIDATE_USAGE "usage: aeroeval validate [--report FILE.pdf] [--json] [--missions DIR] COHORT.csv\n"
+#define CALIBRATE_USAGE "usage: aeroeval calibrate [--write FILE] COHORT.csv\n"
+
+/* Loads the tables and the cohort; prints every cohort problem.  Returns
+ * 0, or the exit status to give up with. */
+static int
+load_inputs(const char *path, struct cli_env *env, struct cohort *c)
+{
+	int rc = cli_env_load(env, NULL, 0, stderr);
+	if (rc != 0)
+		return rc;
+	cohort_load(path, c);
+	for (size_t i = 0; i < c->n_errors; i++)
+		fprintf(stderr, "%s\n", c->errors[i]);
+	if (c->n_rows == 0) {
+		fprintf(stderr, "%s: error: no usable row\n", path);
+		return 2;
+	}
+	return 0;
+}
+
+/* The notes of a row as "a; b; c" into buf. */
+static void
+notes_line(unsigned notes, char *buf, size_t n)
+{
+	buf[0] = '\0';
+	size_t used = 0;
+	for (int i = 0; i < VALIDATE_NOTE_COUNT; i++) {
+		if (!(notes & (1u << i)))
+			continue;
+		int w = snprintf(buf + used, n - used, "%s%s", used ? "; " : "",
+		    validate_note_text(1u << i));
+		if (w < 0 || (size_t)w >= n - used)
+			return;
+		used += (size_t)w;
+	}
+}
+
+static void
+print_table(FILE *out, const struct cohort *c, const struct validate_report *v)
+{
+	fprintf(out, "%-28s %-16s %9s %9s %8s %6s %9s  %s\n", "platform", "class",
+	    "actual", "predicted", "error", "k", "battery", "status");
+	for (size_t i = 0; i < v->n_rows; i++) {
+		const struct validate_row *vr = &v->rows[i];
+		const struct cohort_row *row = &c->rows[i];
+		if (vr->status != VALIDATE_ROW_OK)
+			continue;
+		char batt[16] = "-";
+		if (vr->has_battery)
+			snprintf(batt, sizeof batt, "%+.1f %%", vr->battery_err_pct);
+		fprintf(out, "%-28.28s %-16s %7.3f kg %7.3f kg %+7.1f%% %6.2f %9s  %s\n",
+		    row->name, validate_class_key(row), vr->actual_kg, vr->predicted_kg,
+		    vr->err_pct, vr->k, batt, vr->feasible ? "ok" : "ok (infeasible)");
+	}
+	fprintf(out, "\nMTOW over %zu of %zu rows: MAPE %.1f %% (95 %% CI %.1f-%.1f %%, "
+	    "bootstrap %d resamples, seed %u), median APE %.1f %%, RMSE %.3f kg, "
+	    "k %.2f +- %.2f\n", v->n_ok, v->n_rows, v->mtow.mape_pct, v->ci_lo_pct,
+	    v->ci_hi_pct, VALIDATE_BOOT_RESAMPLES, VALIDATE_BOOT_SEED,
+	    v->mtow.median_ape_pct, v->mtow.rmse_kg, v->mtow.k_mean, v->mtow.k_sd);
+	for (size_t g = 0; g < v->n_classes; g++)
+		fprintf(out, "  %-16s n=%-3zu MAPE %.1f %%\n", v->by_class[g].key,
+		    v->by_class[g].n, v->by_class[g].mape_pct);
+	if (v->battery.n > 0)
+		fprintf(out, "Battery mass over %zu rows: MAPE %.1f %%\n", v->battery.n,
+		    v->battery.mape_pct);
+	int header = 0;
+	for (size_t i = 0; i < v->n_rows; i++) {
+		const struct validate_row *vr = &v->rows[i];
+		if (vr->status == VALIDATE_ROW_OK)
+			continue;
+		if (!header++)
+			fprintf(out, "\nNot in the statistics:\n");
+		if (vr->status == VALIDATE_ROW_SKIPPED)
+			fprintf(out, "  %-28.28s skipped: %s\n", c->rows[i].name,
+			    validate_skip_text(vr->skip));
+		else if (vr->status == VALIDATE_ROW_NOT_CONVERGED)
+			fprintf(out, "  %-28.28s not converged (last mass %.3f kg)\n",
+			    c->rows[i].name, vr->predicted_kg);
+		else
+			fprintf(out, "  %-28.28s not run (rejected by the feasibility gate)\n",
+			    c->rows[i].name);
+	}
+	header = 0;
+	for (size_t i = 0; i < v->n_rows; i++) {
+		const struct validate_row *vr = &v->rows[i];
+		if (vr->status == VALIDATE_ROW_SKIPPED || vr->notes == 0)
+			continue;
+		if (!header++)
+			fprintf(out, "\nStand-ins the rule used:\n");
+		char buf[512];
+		notes_line(vr->notes, buf, sizeof buf);
+		fprintf(out, "  %-28.28s %s\n", c->rows[i].name, buf);
+	}
+	header = 0;
+	for (size_t i = 0; i < v->n_rows; i++) {
+		const struct validate_row *vr = &v->rows[i];
+		if (vr->status != VALIDATE_ROW_OK || !vr->thrust_relaxed)
+			continue;
+		if (!header++)
+			fprintf(out, "\nRole thrust targets relaxed (the role's default "
+			    "did not close; README \"Thrust relaxation\"):\n");
+		fprintf(out, "  %-28.28s T/W %.1f\n", c->rows[i].name,
+		    vr->thrust_to_weight);
+	}
+}
+
+static cJSON *
+summary_json(const struct stats_summary *s)
+{
+	cJSON *o = cJSON_CreateObject();
+	cJSON_AddNumberToObject(o, "n", (double)s->n);
+	cJSON_AddNumberToObject(o, "mape_pct", s->mape_pct);
+	cJSON_AddNumberToObject(o, "median_ape_pct", s->median_ape_pct);
+	cJSON_AddNumberToObject(o, "rmse_kg", s->rmse_kg);
+	cJSON_AddNumberToObject(o, "k_mean", s->k_mean);
+	cJSON_AddNumberToObject(o, "k_sd", s->k_sd);
+	return o;
+}
+
+static char *
+report_json(const char *path, const struct cohort *c, const struct validate_report *v)
+{
+	cJSON *root = cJSON_CreateObject();
+	cJSON_AddStringToObject(root, "cohort", path);
+	cJSON_AddNumberToObject(root, "rows", (double)v->n_rows);
+	cJSON *mt = summary_json(&v->mtow);
+	cJSON_AddNumberToObject(mt, "ci95_lo_pct", v->ci_lo_pct);
+	cJSON_AddNumberToObject(mt, "ci95_hi_pct", v->ci_hi_pct);
+	cJSON_AddNumberToObject(mt, "bootstrap_resamples", VALIDATE_BOOT_RESAMPLES);
+	cJSON_AddNumberToObject(mt, "bootstrap_seed", VALIDATE_BOOT_SEED);
+	cJSON_AddItemToObject(root, "mtow", mt);
+	cJSON_AddItemToObject(root, "battery_mass", summary_json(&v->battery));
+	cJSON *cl = cJSON_AddArrayToObject(root, "by_class");
+	for (size_t g = 0; g < v->n_classes; g++) {
+		cJSON *o = cJSON_CreateObject();
+		cJSON_AddStringToObject(o, "class", v->by_class[g].key);
+		cJSON_AddNumberToObject(o, "n", (double)v->by_class[g].n);
+		cJSON_AddNumberToObject(o, "mape_pct", v->by_class[g].mape_pct);
+		cJSON_AddItemToArray(cl, o);
+	}
+	cJSON *rows = cJSON_AddArrayToObject(root, "rows");
+	for (size_t i = 0; i < v->n_rows; i++) {
+		const struct validate_row *vr = &v->rows[i];
+		const struct cohort_row *row = &c->rows[i];
+		cJSON *o = cJSON_CreateObject();
+		cJSON_AddStringToObject(o, "name", row->name);
+		cJSON_AddNumberToObject(o, "line", (double)row->line);
+		cJSON_AddStringToObject(o, "class", validate_class_key(row));
+		cJSON_AddStringToObject(o, "status", validate_status_text(vr->status));
+		if (vr->status == VALIDATE_ROW_SKIPPED)
+			cJSON_AddStringToObject(o, "skip_reason", validate_skip_text(vr->skip));
+		cJSON_AddNumberToObject(o, "actual_kg", vr->actual_kg);
+		if (vr->status == VALIDATE_ROW_OK || vr->status == VALIDATE_ROW_NOT_CONVERGED)
+			cJSON_AddNumberToObject(o, "predicted_kg", vr->predicted_kg);
+		if (vr->status == VALIDATE_ROW_OK) {
+			cJSON_AddNumberToObject(o, "error_pct", vr->err_pct);
+			cJSON_AddNumberToObject(o, "k", vr->k);
+			cJSON_AddBoolToObject(o, "feasible", vr->feasible);
+			cJSON_AddNumberToObject(o, "cells", vr->cells);
+			cJSON_AddNumberToObject(o, "capacity_mah", vr->capacity_mah);
+			cJSON_AddNumberToObject(o, "thrust_to_weight", vr->thrust_to_weight);
+			cJSON_AddBoolToObject(o, "thrust_relaxed", vr->thrust_relaxed);
+		}
+		if (vr->has_battery) {
+			cJSON_AddNumberToObject(o, "battery_actual_kg", vr->battery_actual_kg);
+			cJSON_AddNumberToObject(o, "battery_predicted_kg", vr->battery_pred_kg);
+			cJSON_AddNumberToObject(o, "battery_error_pct", vr->battery_err_pct);
+		}
+		cJSON *nt = cJSON_AddArrayToObject(o, "rule_notes");
+		for (int b = 0; b < VALIDATE_NOTE_COUNT; b++)
+			if (vr->notes & (1u << b))
+				cJSON_AddItemToArray(nt, cJSON_CreateString(validate_note_text(1u << b)));
+		cJSON_AddItemToArray(rows, o);
+	}
+	char *txt = cJSON_Print(root);
+	cJSON_Delete(root);
+	return txt;
+}
+
+/* "07-DJI-FlameWheel-F550": row number, then the name with every byte
+ * outside [A-Za-z0-9._-] turned into '-', so names never leave DIR. */
+static void
+mission_file_name(size_t i, const char *name, char *out, size_t n)
+{
+	int w = snprintf(out, n, "%02zu-", i + 1);
+	size_t k = w > 0 ? (size_t)w : 0;
+	for (const char *p = name; *p && k + 6 < n; p++) {
+		char ch = *p;
+		int ok = (ch >= 'A' && ch <= 'Z') || (ch >= 'a' && ch <= 'z') ||
+		    (ch >= '0' && ch <= '9') || ch == '.' || ch == '_' || ch == '-';
+		if (!ok)
+			ch = '-';
+		if (ch == '-' && k > 0 && out[k - 1] == '-')
+			continue;
+		out[k++] = ch;
+	}
+	while (k > 0 && out[k - 1] == '-')
+		k--;
+	snprintf(out + k, n - k, ".json");
+}
+
+/* mission_io_to_json writes every field, defaults included; a reader would
+ * take them all as given and skip the role and class defaults the engine
+ * derives for fields the rule left open.  Keep only what the rule set, so
+ * the written file solves exactly like the rule's mission. */
+static void
+prune_to_given(cJSON *root, const struct mission_spec *s)
+{
+	for (int i = 0; i < SPEC_N_FIELDS; i++) {
+		if (s->given[i])
+			continue;
+		char path[128];
+		snprintf(path, sizeof path, "%s", spec_fields[i].path);
+		cJSON *obj = root;
+		char *key = path, *dot;
+		while (obj != NULL && (dot = strchr(key, '.')) != NULL) {
+			*dot = '\0';
+			obj = cJSON_GetObjectItemCaseSensitive(obj, key);
+			key = dot + 1;
+		}
+		if (obj != NULL)
+			cJSON_DeleteItemFromObjectCaseSensitive(obj, key);
+	}
+	/* Drop the groups left empty. */
+	cJSON *it = root->child;
+	while (it != NULL) {
+		cJSON *next = it->next;
+		if (cJSON_IsObject(it) && it->child == NULL)
+			cJSON_Delete(cJSON_DetachItemViaPointer(root, it));
+		it = next;
+	}
+}
+
+static int
+write_missions(const char *dir, const struct cohort *c, const struct validate_report *v)
+{
+	char err[512];
+	if (fsout_mkdirs(dir, err, sizeof err) != 0) {
+		fprintf(stderr, "error: %s\n", err);
+		return -1;
+	}
+	for (size_t i = 0; i < v->n_rows; i++) {
+		if (v->rows[i].status == VALIDATE_ROW_SKIPPED)
+			continue;
+		char file[160], path[4400];
+		mission_file_name(i, c->rows[i].name, file, sizeof file);
+		snprintf(path, sizeof path, "%s/%s", dir, file);
+		cJSON *j = mission_io_to_json(&v->rows[i].spec);
+		prune_to_given(j, &v->rows[i].spec);
+		char *txt = cJSON_Print(j);
+		cJSON_Delete(j);
+		int rc = fsout_write_atomic(path, txt, strlen(txt), err, sizeof err);
+		free(txt);
+		if (rc != 0) {
+			fprintf(stderr, "error: %s\n", err);
+			return -1;
+		}
+	}
+	return 0;
+}
+
+static int
+write_report(const char *pdf_path, const char *cohort_path, const struct cohort *c,
+             const struct validate_report *v, const struct model_calibration *cal)
+{
+	char date[11], err[512];
+	if (fsout_resolve_date("", cohort_path, date, err, sizeof err) < 0) {
+		fprintf(stderr, "error: %s\n", err);
+		return -1;
+	}
+	unsigned char *pdf = NULL;
+	size_t n = 0;
+	if (valreport_render(c, v, cal, cohort_path, date, &pdf, &n, err, sizeof err) != 0) {
+		fprintf(stderr, "error: %s: %s\n", pdf_path, err);
+		return -1;
+	}
+	int rc = fsout_write_atomic(pdf_path, pdf, n, err, sizeof err);
+	free(pdf);
+	doc_global_cleanup();
+	if (rc != 0) {
+		fprintf(stderr, "error: %s\n", err);
+		return -1;
+	}
+	return 0;
+}
+
+int
+cli_validate(int argc, char **argv)
+{
+	const char *report = NULL, *missions = NULL, *path = NULL;
+	int json = 0;
+	for (int i = 1; i < argc; i++) {
+		if (strcmp(argv[i], "--report") == 0 && i + 1 < argc)
+			report = argv[++i];
+		else if (strcmp(argv[i], "--missions") == 0 && i + 1 < argc)
+			missions = argv[++i];
+		else if (strcmp(argv[i], "--json") == 0)
+			json = 1;
+		else if (argv[i][0] == '-' || path != NULL) {
+			fputs(VALIDATE_USAGE, stderr);
+			return 2;
+		} else
+			path = argv[i];
+	}
+	if (path == NULL) {
+		fputs(VALIDATE_USAGE, stderr);
+		return 2;
+	}
+	struct cli_env *env = xcalloc(1, sizeof *env);
+	struct cohort c;
+	memset(&c, 0, sizeof c);
+	int rc = load_inputs(path, env, &c);
+	struct validate_report v;
+	memset(&v, 0, sizeof v);
+	if (rc == 0 && validate_cohort(&c, &env->model, &v) != 0) {
+		fprintf(stderr, "%s: internal error: statistics refused the predictions\n", path);
+		rc = 3;
+	}
+	if (rc == 0) {
+		if (json) {
+			char *txt = report_json(path, &c, &v);
+			printf("%s\n", txt);
+			free(txt);
+		} else {
+			print_table(stdout, &c, &v);
+		}
+		if (missions != NULL && write_missions(missions, &c, &v) != 0)
+			rc = 2;
+		if (report != NULL && write_report(report, path, &c, &v, &env->model.cal) != 0)
+			rc = 2;
+	}
+	validate_report_free(&v);
+	cohort_free(&c);
+	cli_env_free(env);
+	free(env);
+	return rc;
+}
+
+int
+cli_calibrate(int argc, char **argv)
+{
+	const char *write = NULL, *path = NULL;
+	for (int i = 1; i < argc; i++) {
+		if (strcmp(argv[i], "--write") == 0 && i + 1 < argc)
+			write = argv[++i];
+		else if (argv[i][0] == '-' || path != NULL) {
+			fputs(CALIBRATE_USAGE, stderr);
+			return 2;
+		} else
+			path = argv[i];
+	}
+	if (path == NULL) {
+		fputs(CALIBRATE_USAGE, stderr);
+		return 2;
+	}
+	struct cli_env *env = xcalloc(1, sizeof *env);
+	struct cohort c;
+	memset(&c, 0, sizeof c);
+	int rc = load_inputs(path, env, &c);
+	struct calibrate_result cr;
+	if (rc == 0) {
+		int st = calibrate_fit(&c, &env->model, &cr);
+		if (st == -1) {
+			fprintf(stderr, "%s: error: no row gives a converged mission to fit on\n", path);
+			rc = 2;
+		} else if (st != 0) {
+			fprintf(stderr, "%s: internal error: the minimiser failed (status %d)\n",
+			    path, cr.lsq_status);
+			rc = 3;
+		}
+	}
+	if (rc == 0) {
+		double before[CAL_N_PARAMS];
+		calibrate_theta(&cr.before, before);
+		printf("Calibration on %s: %zu of %zu rows (the validate rule; rows it skips "
+		    "or that do not converge are left out)\n", path, cr.n_rows, c.n_rows);
+		printf("%-34s %10s %10s %10s %5s\n", "coefficient", "prior", "before", "after", "rows");
+		for (int j = 0; j < CAL_N_PARAMS; j++)
+			printf("%-34s %10.4g %10.4g %10.4g %5zu\n", calibrate_param_name(j),
+			    calibrate_prior[j], before[j], cr.theta[j], cr.n_per_param[j]);
+		printf("small-platform wiring coefficient: %.4g -> %.4g kg/(A m)\n",
+		    cr.before.wire_coef_small, cr.after.wire_coef_small);
+		printf("MTOW MAPE on the fitted rows: %.1f %% before, %.1f %% after "
+		    "(%zu LM iterations, %zu solves, mu %.2g)\n", cr.mape_before_pct,
+		    cr.mape_after_pct, cr.n_iter, cr.n_solves, CALIBRATE_MU);
+		if (write != NULL) {
+			char *txt = model_io_calibration_json(&cr.after);
+			char err[512];
+			if (fsout_write_atomic(write, txt, strlen(txt), err, sizeof err) != 0) {
+				fprintf(stderr, "error: %s\n", err);
+				rc = 2;
+			} else {
+				printf("wrote %s\n", write);
+			}
+			free(txt);
+		}
+	}
+	cohort_free(&c);
+	cli_env_free(env);
+	free(env);
+	return rc;
+}

@@ -1,0 +1,29 @@
+/* model.c — lookups over the reference tables (see model.h). */
+#include "core/model.h"
+
+#include <string.h>
+
+const struct batt_chem *
+model_chem(const struct model_data *m, const char *name)
+{
+	for (int i = 0; i < m->n_chem; i++)
+		if (strcmp(m->chem[i].name, name) == 0)
+			return &m->chem[i];
+	return NULL;
+}
+
+enum model_lambda
+model_lambda_index(int airframe_class, int n_rotors)
+{
+	switch (airframe_class) {
+	case AF_MICRO_AIO:
+		return LAMBDA_MICRO;
+	case AF_CONSUMER_FOLDING:
+		return LAMBDA_CONSUMER;
+	case AF_AGRICULTURAL:
+		return LAMBDA_AGRI;
+	default:
+		/* Paper eq. (lambda): hex/octo enterprise frames differ from quads. */
+		return n_rotors > 4 ? LAMBDA_ENTERPRISE_MULTI : LAMBDA_ENTERPRISE_QUAD;
+	}
+}

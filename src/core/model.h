@@ -1,0 +1,93 @@
+/* model.h — the reference tables the engine reads: battery chemistries,
+ * mission roles, airframe classes, calibration coefficients and the Mission
+ * Workspace mapping.  Loaded at run time from data/ (model_io.c); the engine
+ * sees only these plain structs.  Who may include it: everyone.
+ */
+#ifndef AEROEVAL_MODEL_H
+#define AEROEVAL_MODEL_H
+
+#include <stdbool.h>
+
+#include "core/spec.h"
+
+/* One chemistry profile (data/chemistries.json). */
+struct batt_chem {
+	char name[32];              /* profile name, e.g. "LiPo" */
+	double e_spec_wh_kg;        /* cell specific energy, Wh/kg */
+	double p_spec_w_kg;         /* cell specific power, W/kg */
+	double r_cell_mohm;         /* R_i,base per cell at C_ref, mOhm */
+	double v_full;              /* full-charge cell voltage, V */
+	double v_nom;               /* nominal cell voltage, V */
+	double v_exp;               /* end of the exponential zone, V */
+	double v_cutoff;            /* lowest cell voltage under load, V */
+	double b;                   /* Tremblay exponential-zone constant B */
+	double k;                   /* Tremblay polarisation constant K, V */
+	bool pouch;                 /* pouch (LiPo family) vs cylindrical/exotic packaging */
+};
+
+#define MODEL_MAX_CHEM 32
+
+enum shed_kind { SHED_NONE, SHED_DROP, SHED_SPRAY };
+
+/* One row of data/roles.json (paper Table roles). */
+struct model_role {
+	double thrust_margin;           /* 1 - hover throttle */
+	double load_factor;             /* arm design load factor, g */
+	double aux_power_w;             /* default auxiliary power, W */
+	double added_drag_m2;           /* default payload drag area, m^2 */
+	double forward_drag_multiplier; /* S_ref multiplier in forward flight */
+	double integration_frac;        /* role hardware / payload mass */
+	double c_motor;                 /* continuous motor-mass factor */
+	double c_esc;                   /* continuous ESC-mass factor */
+	double h_conv_w_m2k;            /* battery convection coefficient */
+	double burst_factor;            /* 10 s burst / continuous battery power */
+	enum shed_kind shedding;        /* payload shedding */
+};
+
+/* One row of data/airframes.json. */
+struct model_class {
+	double kappa;           /* installed-FoM penalty */
+	double gamma;           /* body overhead on spar mass */
+	double avionics_kg;     /* avionics mass */
+	double shell_kg_m2;     /* body-shell areal mass (gauge × density) */
+	double fairing_section_frac; /* moulded arm fairing side / arm length */
+	int cells_min;          /* series-cell range searched */
+	int cells_max;
+	bool small_platform;    /* racing/small wiring and ESC factors */
+};
+
+/* data/calibration.json: the three calibrated coefficients. */
+enum model_lambda { LAMBDA_MICRO, LAMBDA_CONSUMER, LAMBDA_ENTERPRISE_QUAD,
+	LAMBDA_ENTERPRISE_MULTI, LAMBDA_AGRI, LAMBDA_MAX };
+
+struct model_calibration {
+	double lambda[LAMBDA_MAX];      /* per-class structural multiplier */
+	double packaging_base;          /* LiPo packaging base */
+	double wire_coef;               /* C_wire, kg/(A m) */
+	double wire_coef_small;         /* C_wire for racing/small platforms */
+};
+
+struct model_preset { double payload_kg; int role; char label[64]; };
+struct model_transport { double max_wheelbase_m; int airframe_class; char label[64]; };
+struct model_priority { char chemistry[32]; bool v_auto; };
+
+struct model_data {
+	struct batt_chem chem[MODEL_MAX_CHEM];
+	int n_chem;
+	const char *chem_names[MODEL_MAX_CHEM + 1]; /* NULL-terminated, for the parser */
+	struct model_role role[ROLE_MAX];
+	struct model_class cls[AF_CLASS_MAX];
+	struct model_calibration cal;
+	struct model_preset preset[PRESET_MAX];          /* [PRESET_NONE] unused */
+	struct model_transport transport[TRANSPORT_MAX]; /* [TRANSPORT_NONE] unused */
+	struct model_priority priority[PRIORITY_MAX];    /* [PRIORITY_NONE] unused */
+	double coaxial_disk_loading_n_m2;                /* coaxial trigger */
+};
+
+/* Chemistry by name, or NULL. */
+const struct batt_chem *model_chem(const struct model_data *m, const char *name);
+
+/* Which λ applies to a class and rotor count. */
+enum model_lambda model_lambda_index(int airframe_class, int n_rotors);
+
+#endif

@@ -1,0 +1,56 @@
+/* result.c — the few constants and helpers of the result contract (see
+ * result.h). */
+#include "core/result.h"
+
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+
+/* Spellings of enum res_phase_id, as written to result.json, bom.csv and the
+ * dossier; index = enum value. */
+const char *const res_phase_name[PHASE_MAX] = { "climb", "forward", "hover" };
+
+bool
+res_thrust_relaxed(const struct res_run *run)
+{
+	return run->thrust_margin < run->thrust_margin_requested;
+}
+
+const struct res_check *
+res_tightest_check(const struct res_run *run)
+{
+	const struct res_check *best = NULL;
+	for (int i = 0; i < run->n_checks; i++) {
+		const struct res_check *c = &run->checks[i];
+		if (c->pass && !c->sized && (best == NULL || c->margin < best->margin))
+			best = c;
+	}
+	return best;
+}
+
+/* Where a run's samples end. */
+static size_t
+trace_end(void)
+{
+	return offsetof(struct res_run, trace) + sizeof ((struct res_run *)0)->trace;
+}
+
+void
+res_run_clear_untraced(struct res_run *run)
+{
+	char *base = (char *)run;
+	memset(base, 0, offsetof(struct res_run, trace));
+	memset(base + trace_end(), 0, sizeof *run - trace_end());
+}
+
+void
+res_rationale(struct solve_result *r, const char *fmt, ...)
+{
+	if (r == NULL || r->n_rationale >= RES_MAX_RATIONALE)
+		return;
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(r->rationale[r->n_rationale++], RES_TEXT, fmt, ap);
+	va_end(ap);
+}

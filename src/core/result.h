@@ -1,0 +1,303 @@
+/* result.h — everything a solve produces, as plain values.
+ *
+ * The engine fills a struct solve_result; result.json, bom.csv and the
+ * dossier only read it (const).  Units are SI unless the member name says
+ * otherwise (capacity_mah, temp_c, *_deg, *_in, *_mm, *_rpm).  Every double
+ * here is finite: the engine checks before it stores.
+ * Who may include it: everyone (no I/O library types).
+ */
+#ifndef AEROEVAL_RESULT_H
+#define AEROEVAL_RESULT_H
+
+#include <stdbool.h>
+
+#include "core/spec.h"
+
+#define RES_MAX_HISTORY    256  /* mass-loop iterations kept */
+#define RES_MAX_TRACE      80   /* discharge samples kept (FINAL_STEPS + 13) */
+#define RES_MAX_SWEEP      64   /* power-vs-speed points (1..30 m/s by 0.5) */
+#define RES_MAX_ENDURANCE  32   /* endurance-explorer points */
+#define RES_MAX_CHECKS     24
+#define RES_MAX_VIOLATIONS 24
+#define RES_MAX_FIXES      3
+#define RES_MAX_RATIONALE  48
+#define RES_MAX_BOM        16
+#define RES_MAX_CANDIDATES 256  /* motors scored for the crosshair figure */
+#define RES_TEXT           256
+
+/* Mission phases, in the order they are flown. */
+enum res_phase_id { PHASE_CLIMB, PHASE_FORWARD, PHASE_HOVER, PHASE_MAX };
+extern const char *const res_phase_name[PHASE_MAX]; /* "climb", "forward", "hover" */
+
+/* Mass breakdown; the items sum to total_kg. */
+struct res_mass {
+	double payload_kg;      /* payload at takeoff */
+	double battery_kg;      /* packs incl. packaging */
+	double frame_kg;        /* centre plates, spar joints (C_body share) */
+	double arm_kg;          /* arm tubes */
+	double motor_kg;        /* all motors */
+	double prop_kg;         /* all propellers */
+	double esc_kg;          /* all ESCs */
+	double wiring_kg;       /* power harness */
+	double avionics_kg;     /* FC, GNSS, radios */
+	double role_aux_kg;     /* role hardware (mounts, pump, release) */
+	double other_kg;        /* body shell, landing gear, mounts (γ share) */
+	double total_kg;        /* takeoff mass */
+};
+
+/* One flight phase at the converged design (takeoff mass). */
+struct res_phase {
+	double duration_s;        /* approved duration */
+	double speed_ms;          /* climb or forward speed, 0 in hover */
+	double thrust_per_rotor_n;
+	double shaft_power_w;     /* all rotors */
+	double power_w;           /* electrical at the battery, incl. aux */
+	double current_a;         /* mean battery current */
+	double energy_wh;         /* drawn from the battery in this phase */
+	double rpm;               /* rotor speed */
+	double throttle;          /* rpm / rpm at full throttle */
+	double pitch_deg;         /* body pitch (forward) */
+	double tip_mach;          /* rotor tip Mach */
+};
+
+/* One sample of the discharge simulation. */
+struct res_sample {
+	double t_s;          /* time since takeoff */
+	double soc;          /* state of charge, 0..1 */
+	double v_oc_v;       /* pack open-circuit voltage */
+	double v_term_v;     /* pack terminal voltage */
+	double current_a;    /* battery current */
+	double power_w;      /* battery power */
+	double temp_c;       /* pack temperature */
+	double mass_kg;      /* aircraft mass (falls with drop/spray) */
+	int phase;           /* enum res_phase_id */
+};
+
+/* One constraint of the checks table.  The text fields of checks and
+ * violations point to string literals (the check tables of feasibility.c
+ * and optim.c): static, so results copy freely, and a trial closing writes
+ * no text. */
+struct res_check {
+	const char *name;    /* "Battery peak temperature" */
+	const char *unit;    /* "°C" */
+	double value;        /* achieved */
+	double limit;        /* allowed */
+	bool upper;          /* true: value <= limit passes; false: value >= limit */
+	double margin;       /* (limit - value)/limit or (value - limit)/limit */
+	bool pass;
+	bool sized;          /* the design is sized to this limit by construction */
+};
+
+struct res_violation {
+	const char *run;                    /* "baseline", "custom", "closed" */
+	const char *stage;                  /* "feasibility", "mass_loop", "discharge", "parts" */
+	const char *code;                   /* stable machine code, e.g. "PROP_OVERLAP" */
+	char message[RES_TEXT];             /* plain sentence with numbers */
+	char fixes[RES_MAX_FIXES][RES_TEXT];/* suggested fixes */
+	int n_fixes;
+};
+
+/* Continuous optimum the parts search aims at. */
+struct res_optimum {
+	double prop_diameter_in;
+	double prop_pitch_in;
+	double motor_kv;          /* rpm/V */
+	double motor_mass_kg;     /* one motor, scaling law */
+	double motor_peak_current_a;
+	double motor_peak_power_w;
+};
+
+/* Where a run's mass loop closed: enough to evaluate its design again. */
+struct res_fixed_point {
+	double mass_kg;           /* M* */
+	double capacity_ah;       /* C* */
+	double arm_width_m;       /* the arm diameter the rotors saw */
+	double time_scale;        /* γ the loop flew */
+	int cells;                /* series cells */
+};
+
+/* One sized run (baseline, custom, or the BOM-closed custom design). */
+struct res_run {
+	bool ran;                 /* false if the gate stopped it before the loop */
+	bool feasible;            /* every check passed */
+	bool converged;           /* mass loop met the 1 g tolerance */
+	char termination[RES_TEXT]; /* why the discharge ended / the loop stopped */
+	int iterations;
+	double tolerance_kg;      /* the loop's convergence tolerance |ΔM| */
+	int n_history;
+	double history_kg[RES_MAX_HISTORY];   /* takeoff mass per iteration */
+	double lipschitz;         /* dF/dM at the fixed point */
+	double time_scale;        /* goal relaxation γ (1 = as requested) */
+	double thrust_margin;     /* thrust margin flown, 1 - hover throttle */
+	double thrust_margin_requested; /* the role's or mission's target */
+	struct res_fixed_point fixed;
+
+	struct res_mass mass;
+
+	/* battery */
+	char chemistry[32];
+	int cell_count;           /* series cells */
+	int pack_count;           /* packs in parallel */
+	double capacity_mah;      /* total at the terminals */
+	double energy_wh;         /* nominal stored energy */
+	double packaging_factor;  /* η_pkg */
+	bool battery_power_binds; /* sized by power (sustained or burst), not energy */
+	double nominal_voltage_v;
+
+	/* mission */
+	struct res_phase phase[PHASE_MAX];
+	double approved_time_s[PHASE_MAX];
+	double flight_time_s;     /* total approved mission time */
+	double hover_endurance_s; /* hover-only endurance to the reserve */
+	double marketing_endurance_s; /* best case (0 unless requested) */
+	double optimal_speed_ms;  /* forward speed used (auto: minimum power) */
+	double v_min_power_ms;    /* minimum-power speed of the sweep */
+	double v_max_ms;          /* highest forward speed the thrust margin allows */
+	int n_sweep;
+	double sweep_v_ms[RES_MAX_SWEEP];
+	double sweep_power_w[RES_MAX_SWEEP];
+
+	/* propulsion and aero */
+	double thrust_to_weight;
+	double hover_throttle;
+	double forward_pitch_deg;
+	double disk_loading_n_m2;
+	double downwash_ms;
+	double fom_installed;
+	double interference;      /* k_int */
+	double reynolds_tip;
+	double rpm_hover;
+	double rpm_peak;
+	double tip_mach_peak;
+	double overlap_limit_in;  /* largest propeller the wheelbase allows */
+	double peak_power_w;      /* battery power at full throttle */
+	double peak_current_a;    /* battery current at full throttle */
+	double peak_c_rate;
+	struct res_optimum opt;
+
+	/* structure */
+	double arm_length_m;
+	double arm_outer_diameter_mm;
+	double arm_wall_thickness_mm;
+	double arm_stress_mpa;
+	double arm_stress_allow_mpa;
+	double arm_natural_frequency_hz;
+	double blade_pass_frequency_hz; /* at full-throttle rpm */
+	double blade_pass_low_hz;  /* at the lowest in-flight rpm (0.7 × hover) */
+	double resonance_margin;   /* >= 0: mode clear of the band (structure.h) */
+	double arm_tip_mass_kg;    /* motor(s) + propeller(s) at one arm tip */
+	bool arm_wall_floor_binds;
+	bool min_fraction_binds;
+
+	/* thermal and electrical */
+	double max_battery_temp_c;
+	double thermal_margin_c;  /* 60 - peak */
+	double min_terminal_voltage_v;
+	double voltage_floor_v;
+	double end_soc;
+	double reserve_soc;       /* SOC the 20 % capacity margin leaves (1 - 1/1.2) */
+	double winding_temp_c;    /* motor winding at hover (ambient + 40 K, assumed) */
+	double motor_winding_resistance_ohm; /* R_m(T) of the real motor, 0 = unknown */
+	double motor_copper_loss_w; /* per motor at hover, 0 = unknown */
+	int n_trace;
+	struct res_sample trace[RES_MAX_TRACE];
+
+	/* endurance explorer: flight time vs capacity scale */
+	int n_endurance;
+	double endurance_scale[RES_MAX_ENDURANCE];
+	double endurance_time_s[RES_MAX_ENDURANCE];
+	double endurance_mass_kg[RES_MAX_ENDURANCE];
+	double endurance_inflection_scale; /* where d(time)/d(scale) falls below half its initial value */
+
+	int n_checks;
+	struct res_check checks[RES_MAX_CHECKS];
+};
+
+/* A catalogue part chosen by the optimizer. */
+struct res_part {
+	bool chosen;
+	char id[64];
+	char manufacturer[64];
+	char part_number[128];
+	char description[160];
+	int qty;
+	double unit_mass_kg;
+	double unit_price_usd;    /* 0 = unknown */
+	double j_score;
+};
+
+/* One BOM line (catalogue or custom). */
+struct res_bom_line {
+	int item;
+	int qty;
+	char category[24];        /* motor, propeller, battery, esc, custom */
+	char manufacturer[64];
+	char part_number[128];
+	char description[160];
+	double unit_mass_kg;
+	double total_mass_kg;
+	double unit_price_usd;    /* 0 = unknown */
+	double total_price_usd;
+	char catalogue_id[64];    /* "" for custom lines */
+};
+
+/* A motor scored by the optimizer (crosshair figure). */
+struct res_candidate {
+	char id[64];
+	double kv;
+	double mass_kg;
+	double j_score;           /* 1e9 when pruned */
+	bool feasible;
+};
+
+struct solve_result {
+	struct mission_spec mission;   /* fully resolved input */
+	char input_sha256[65];
+	char catalogue_sha256[65];
+
+	struct res_run baseline;
+	struct res_run custom;
+	struct res_mass role_overhead; /* custom - baseline */
+
+	bool parts_selected;           /* the optimizer ran and found parts */
+	struct res_part motor, prop, battery, esc;
+	int battery_series_packs;      /* catalogue packs in series */
+	int battery_parallel_packs;    /* catalogue packs in parallel */
+	struct res_run closed;         /* custom run re-solved with real part masses */
+	int n_bom;
+	struct res_bom_line bom[RES_MAX_BOM];
+	double bom_mass_kg;
+	double bom_price_usd;
+	int n_candidates;
+	struct res_candidate candidates[RES_MAX_CANDIDATES];
+
+	bool feasible;
+	/* violations keep run, stage and code only, no text: the parts
+	 * search's trial closings, of which one is kept (and re-checked) */
+	bool terse;
+	int n_violations;
+	struct res_violation violations[RES_MAX_VIOLATIONS];
+	int n_rationale;
+	char rationale[RES_MAX_RATIONALE][RES_TEXT];
+};
+
+/* The tightest passing check of a run that is not at its limit by
+ * construction (arm stress, propeller diameter, mission energy), or NULL:
+ * what binds the design.  The rationale and the dossier cover both name it. */
+const struct res_check *res_tightest_check(const struct res_run *run);
+
+/* Did the run fly a lower thrust margin than its role's default target
+ * (the thrust relaxation of sizing.h)?  The rationale, validate and the
+ * sensitivity suite all ask. */
+bool res_thrust_relaxed(const struct res_run *run);
+
+/* Zero all of a run but its trace samples, which are most of its size
+ * and of which only the first n_trace are ever read. */
+void res_run_clear_untraced(struct res_run *run);
+
+/* Append a plain-language sentence to the design rationale (r may be
+ * NULL; a full list keeps its first RES_MAX_RATIONALE lines). */
+void res_rationale(struct solve_result *r, const char *fmt, ...)
+	__attribute__((format(printf, 2, 3)));
+
+#endif

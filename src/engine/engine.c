@@ -1,0 +1,521 @@
+/* engine.c — one solve: requirements, defaults, dual run (see engine.h). */
+#include "engine/engine.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "physics/aero.h"
+#include "sizing/feasibility.h"
+#include "parts/optim.h"
+#include "util/strbuf.h"
+#include "physics/structure.h"
+#include "util/units.h"
+#include "util/xalloc.h"
+
+/* f_scale per aero body class (paper §IV-D). */
+static const double body_f_scale[BODY_CLASS_MAX] = { 0.004, 0.012, 0.05 };
+
+/* Rotor–arm interference constant c per arm configuration (paper §IV-F). */
+static const double arm_interference_c[ARM_CONFIG_MAX] = { 0.6, 0.0, 1.5 };
+
+/* Blade mass coefficient kg / m^2.2 per propeller material: one blade pair
+ * of diameter D weighs k D^2.2 (5 in ≈ 4 g, 10 in ≈ 20 g, 28 in ≈ 190 g for
+ * plastic; carbon is lighter for its stiffness, wood heavier).  Index by
+ * enum prop_class; PROP_AUTO is resolved before use. */
+static const double prop_k[PROP_CLASS_MAX] = { 0.0, 0.40, 0.32, 0.45 };
+#define PROP_AUTO_CARBON_ABOVE_M 0.30 /* auto: carbon above 12 in */
+
+
+
+static const char *
+rotor_word(int n, bool coaxial)
+{
+	if (coaxial && n == 8)
+		return "Octocopter in coaxial X8 layout";
+	if (coaxial && n == 6)
+		return "Hexacopter in coaxial Y6 layout";
+	switch (n) {
+	case 3: return "Tricopter";
+	case 4: return "Quadcopter";
+	case 6: return "Hexacopter";
+	case 8: return "Octocopter";
+	case 12: return "Dodecacopter";
+	default: return "Multirotor";
+	}
+}
+
+/* Requirements-first layer: every decision explained, explicit fields win. */
+static void
+apply_requirements(struct mission_spec *s, const struct model_data *md,
+                   struct solve_result *r)
+{
+	const struct spec_requirements *q = &s->requirements;
+	if (q->payload_preset != PRESET_NONE) {
+		const struct model_preset *p = &md->preset[q->payload_preset];
+		if (!s->given[SPECF_PAYLOAD_KG]) {
+			s->payload_kg = p->payload_kg;
+			res_rationale(r, "Payload set to %.2f kg by the \"%s\" preset.",
+			    p->payload_kg, p->label);
+		}
+		if (!s->given[SPECF_ROLE_TYPE] && q->role == ROLE_NONE && p->role > 0) {
+			s->payload_role.type = p->role;
+			res_rationale(r, "Mission role \"%s\" implied by the \"%s\" preset.",
+			    spec_enum_role[p->role], p->label);
+		}
+	}
+	if (q->role != ROLE_NONE && !s->given[SPECF_ROLE_TYPE]) {
+		s->payload_role.type = q->role;
+		res_rationale(r, "Mission role \"%s\" taken from the requirements.",
+		    spec_enum_role[q->role]);
+	}
+	if (!s->given[SPECF_AIRFRAME_CLASS]) {
+		int cls = -1;
+		const char *why = NULL;
+		if (s->payload_role.type == ROLE_AGRICULTURE) {
+			cls = AF_AGRICULTURAL;
+			why = "agricultural spraying needs the heavy-lift class";
+		} else if (s->payload_role.type == ROLE_RACING) {
+			cls = AF_MICRO_AIO;
+			why = "racing airframes are micro all-in-one builds";
+		} else if (q->transport != TRANSPORT_NONE) {
+			cls = md->transport[q->transport].airframe_class;
+			why = md->transport[q->transport].label;
+		}
+		if (cls >= 0) {
+			s->airframe_class = cls;
+			res_rationale(r, "Airframe class %s: %s.", spec_enum_airframe[cls], why);
+		}
+	}
+	if (q->transport != TRANSPORT_NONE && !s->given[SPECF_MAX_DIAMETER_M]) {
+		const struct model_transport *t = &md->transport[q->transport];
+		s->max_diameter_m = t->max_wheelbase_m;
+		res_rationale(r, "Wheelbase ceiling %.0f mm so that the aircraft %s.",
+		    t->max_wheelbase_m * 1000.0, t->label);
+		/* Coaxial trigger: a quad on this wheelbase would need a disk
+		 * loading above the limit at the seed mass. */
+		if (!s->given[SPECF_COAXIAL_LAYOUT] && !s->given[SPECF_NUM_ROTORS]) {
+			double m0 = sizing_seed_kg(s->payload_kg, RHO_SL_KG_M3);
+			double d = aero_overlap_limit_m(s->max_diameter_m, 4, AERO_TIP_CLEARANCE);
+			double dl = m0 * G0_M_S2 / (4.0 * 0.25 * M_PI * d * d);
+			if (dl > md->coaxial_disk_loading_n_m2) {
+				s->coaxial_layout = true;
+				s->num_rotors = 8;
+				res_rationale(r, "Sized as an Octocopter in coaxial X8 layout: "
+				    "a quad inside the %.0f mm transport limit would load its "
+				    "disks to %.0f N/m², above %.0f N/m²; stacking rotors in "
+				    "pairs doubles the thrust on the same four arms.",
+				    s->max_diameter_m * 1000.0, dl, md->coaxial_disk_loading_n_m2);
+			}
+		}
+	}
+	if (q->priority != PRIORITY_NONE) {
+		const struct model_priority *p = &md->priority[q->priority];
+		if (!s->given[SPECF_BATTERY_CHEMISTRY] && p->chemistry[0]) {
+			snprintf(s->battery_chemistry, sizeof s->battery_chemistry, "%s",
+			    p->chemistry);
+			res_rationale(r, "Chemistry %s chosen for the \"%s\" priority.",
+			    p->chemistry, spec_enum_priority[q->priority]);
+		}
+		if (p->v_auto && !s->given[SPECF_V_FORWARD_MS]) {
+			s->v_forward_auto = true;
+			res_rationale(r, "Forward speed set to the minimum-power speed "
+			    "for the \"%s\" priority.", spec_enum_priority[q->priority]);
+		}
+	}
+}
+
+/* Role and class defaults for every derived field the mission left open;
+ * written back into the spec so result.json shows the values used. */
+static void
+apply_defaults(struct mission_spec *s, const struct model_data *md)
+{
+	const struct model_role *ro = &md->role[s->payload_role.type];
+	struct spec_role *pr = &s->payload_role;
+	if (!s->given[SPECF_ROLE_AUX_POWER_W])
+		pr->aux_power_w = ro->aux_power_w;
+	if (!s->given[SPECF_ROLE_ADDED_DRAG_M2])
+		pr->added_drag_m2 = ro->added_drag_m2;
+	if (!s->given[SPECF_ROLE_THRUST_MARGIN])
+		pr->thrust_margin_override = ro->thrust_margin;
+	if (!s->given[SPECF_ROLE_DRAG_MULT])
+		pr->drag_area_multiplier = ro->forward_drag_multiplier;
+	if (!s->given[SPECF_ROLE_RACING_LOAD_FACTOR])
+		pr->racing_load_factor = md->role[ROLE_RACING].load_factor;
+	if (!s->given[SPECF_ROLE_INTEGRATION_KG])
+		pr->integration_overhead_kg = ro->integration_frac * s->payload_kg;
+	if (!s->given[SPECF_ROLE_DROP_MASS_KG])
+		pr->delivery_drop_mass_kg = s->payload_kg;
+	if (!s->given[SPECF_BASELINE_V_FORWARD_MS])
+		s->baseline_v_forward_ms = s->v_forward_auto ? 10.0 : s->v_forward_ms;
+	if (!s->given[SPECF_BASELINE_T_FORWARD_S])
+		s->baseline_t_forward_s = s->t_forward_s;
+	if (!s->given[SPECF_AMBIENT_TEMP_C])
+		s->ambient_temp_c = k_to_c(atmo_isa_temp_k(s->altitude_m));
+	if (!s->given[SPECF_STRUCT_BODY_MULT])
+		s->structural_overrides.body_mass_multiplier = md->cls[s->airframe_class].gamma;
+}
+
+void
+engine_resolve(struct mission_spec *spec, const struct model_data *md,
+               struct solve_result *r)
+{
+	apply_requirements(spec, md, r);
+	apply_defaults(spec, md);
+}
+
+void
+engine_params(const struct mission_spec *s, const struct model_data *md,
+              bool baseline, struct sizing_params *p)
+{
+	const struct model_class *cls = &md->cls[s->airframe_class];
+	int role = baseline ? ROLE_NONE : s->payload_role.type;
+	const struct model_role *ro = &md->role[role];
+	const struct spec_role *pr = &s->payload_role;
+	const struct spec_aero *ao = &s->aerodynamic_overrides;
+	const struct spec_structural *so = &s->structural_overrides;
+	const struct spec_locks *lk = &s->locks;
+
+	memset(p, 0, sizeof *p);
+	p->wheelbase_m = s->max_diameter_m;
+	p->n_rotors = s->num_rotors;
+	p->coaxial = s->coaxial_layout;
+	p->airframe_class = s->airframe_class;
+	p->ambient_c = s->ambient_temp_c;
+	atmo_at(s->altitude_m, c_to_k(s->ambient_temp_c), &p->air);
+
+	p->duration_s[PHASE_CLIMB] = s->t_climb_s;
+	p->duration_s[PHASE_HOVER] = s->t_hover_s;
+	p->duration_s[PHASE_FORWARD] = baseline ? s->baseline_t_forward_s : s->t_forward_s;
+	p->v_climb_ms = s->v_climb_ms;
+	p->v_forward_ms = baseline ? s->baseline_v_forward_ms : s->v_forward_ms;
+	p->v_auto = baseline ? false : s->v_forward_auto;
+	p->allow_relax = lk->auto_reduce_flight_time;
+
+	/* Baseline: null role, dead-weight hover math at θ = 0.60. */
+	p->thrust_margin = baseline ? md->role[ROLE_NONE].thrust_margin : pr->thrust_margin_override;
+	/* A role's default thrust target may be relaxed down to T/W 2 when it
+	 * cannot close; a margin the mission asked for never is. */
+	p->thrust_margin_floor = baseline || s->given[SPECF_ROLE_THRUST_MARGIN]
+	    ? 0.0 : SIZING_MIN_THRUST_MARGIN;
+	p->load_factor = role == ROLE_RACING ? pr->racing_load_factor : ro->load_factor;
+	p->aux_w = baseline ? 0.0 : pr->aux_power_w;
+	p->added_drag_m2 = baseline ? 0.0 : pr->added_drag_m2;
+	p->fwd_drag_mult = baseline ? 1.0 : pr->drag_area_multiplier;
+	p->cg_shift_m = baseline ? 0.0 : pr->cg_shift_m;
+	p->role_aux_kg = baseline ? 0.0 : pr->integration_overhead_kg;
+	p->c_motor = ro->c_motor;
+	p->c_esc = cls->small_platform ? fmin(ro->c_esc, md->role[ROLE_RACING].c_esc) : ro->c_esc;
+	p->h_conv_w_m2k = ro->h_conv_w_m2k;
+	p->burst_factor = ro->burst_factor;
+	p->small_platform = cls->small_platform || role == ROLE_RACING;
+	p->shed = baseline || !pr->mass_shedding ? SHED_NONE : ro->shedding;
+	p->drop_mass_kg = pr->delivery_drop_mass_kg;
+	p->drop_ratio = pr->delivery_drop_time_ratio;
+	p->spray_rate_kg_s = pr->spray_rate_kg_per_s;
+	p->downwash_cap_ms = role == ROLE_AGRICULTURE ? pr->ag_max_downwash_ms : 0.0;
+	p->payload_kg = s->payload_kg;
+
+	p->chem = model_chem(md, s->battery_chemistry);
+	if (p->chem == NULL)
+		p->chem = &md->chem[0]; /* the parser has already refused unknown names */
+	p->e_spec_wh_kg = s->battery_specific_energy_wh_kg > 0.0
+	    ? s->battery_specific_energy_wh_kg : p->chem->e_spec_wh_kg;
+	p->cells_fixed = lk->is_battery_locked ? lk->locked_cell_count
+	    : lk->is_voltage_locked ? lk->locked_series_cells
+	    : s->nominal_cell_count;
+	p->cells_lo = cls->cells_min;
+	p->cells_hi = cls->cells_max;
+	p->pack_count = s->battery_pack_count;
+	p->cycles = s->battery_cycle_count;
+	p->capacity_locked = lk->is_battery_locked;
+	p->capacity_locked_ah = mah_to_ah(lk->locked_capacity_mah);
+
+	p->prop_locked = lk->is_prop_locked;
+	p->prop_diameter_m = in_to_m(lk->locked_diameter_in);
+	p->prop_pitch_m = in_to_m(lk->locked_pitch_in);
+	p->kv_locked = lk->is_motor_locked;
+	p->kv = lk->locked_kv;
+	p->n_blades = so->num_blades;
+	int pc = ao->propeller_class;
+	if (pc == PROP_AUTO) {
+		double d = p->prop_locked ? p->prop_diameter_m
+		    : aero_overlap_limit_m(p->wheelbase_m,
+		        p->coaxial ? p->n_rotors / 2 : p->n_rotors, AERO_TIP_CLEARANCE);
+		pc = d > PROP_AUTO_CARBON_ABOVE_M ? PROP_CARBON : PROP_PLASTIC;
+	}
+	p->prop_kg_per_m22 = prop_k[pc];
+
+	p->fom_override = ao->figure_of_merit;
+	p->fom_isolated = ao->figure_of_merit_isolated;
+	p->fom_isolated_mode = ao->figure_of_merit_mode == FOM_ISOLATED;
+	p->kappa = cls->kappa;
+	p->interference_c = arm_interference_c[so->arm_config];
+	p->eta_drive = ao->propulsive_efficiency;
+	p->cd_h = ao->cd_horizontal;
+	p->cd_v = ao->cd_vertical;
+	p->f_scale = ao->area_scaling_factor > 0.0 ? ao->area_scaling_factor
+	    : body_f_scale[ao->aero_body_class];
+	p->ct = ao->assumed_ct;
+
+	p->c_body = so->geometry_constant;
+	p->alpha_w = so->wall_thickness_ratio;
+	p->gamma = so->body_mass_multiplier;
+	p->lambda = md->cal.lambda[model_lambda_index(s->airframe_class, s->num_rotors)];
+	p->fixed_frame_kg = s->fixed_airframe_mass_kg;
+	p->avionics_kg = cls->avionics_kg;
+	p->shell_kg_m2 = cls->shell_kg_m2;
+	p->fairing_section_frac = cls->fairing_section_frac;
+
+	p->packaging_base = md->cal.packaging_base;
+	p->wire_coef = p->small_platform ? md->cal.wire_coef_small : md->cal.wire_coef;
+	p->consumer_or_micro = s->airframe_class == AF_MICRO_AIO
+	    || s->airframe_class == AF_CONSUMER_FOLDING;
+	p->enterprise = s->airframe_class == AF_ENTERPRISE_RUGGED;
+
+	p->marketing = !baseline && s->evaluate_marketing_limits;
+	p->max_iter = SIZING_MAX_ITER;
+}
+
+static void
+mass_diff(const struct res_mass *a, const struct res_mass *b, struct res_mass *d)
+{
+	d->payload_kg = a->payload_kg - b->payload_kg;
+	d->battery_kg = a->battery_kg - b->battery_kg;
+	d->frame_kg = a->frame_kg - b->frame_kg;
+	d->arm_kg = a->arm_kg - b->arm_kg;
+	d->motor_kg = a->motor_kg - b->motor_kg;
+	d->prop_kg = a->prop_kg - b->prop_kg;
+	d->esc_kg = a->esc_kg - b->esc_kg;
+	d->wiring_kg = a->wiring_kg - b->wiring_kg;
+	d->avionics_kg = a->avionics_kg - b->avionics_kg;
+	d->role_aux_kg = a->role_aux_kg - b->role_aux_kg;
+	d->other_kg = a->other_kg - b->other_kg;
+	d->total_kg = a->total_kg - b->total_kg;
+}
+
+/* Plain sentences about what the solver decided and what binds. */
+static void
+explain(const struct sizing_params *p, const struct res_run *o,
+        const struct mission_spec *s, struct solve_result *r)
+{
+	res_rationale(r, "Sized as a %s on a %.0f mm wheelbase (%s class).",
+	    rotor_word(p->n_rotors, p->coaxial), p->wheelbase_m * 1000.0,
+	    spec_enum_airframe[p->airframe_class]);
+	if (p->prop_locked)
+		res_rationale(r, "Propeller %.1f × %.1f in is locked by the mission.",
+		    o->opt.prop_diameter_in, o->opt.prop_pitch_in);
+	else
+		res_rationale(r, "Propeller %.1f × %.1f in: the largest the wheelbase "
+		    "admits with 5 %% tip clearance (bigger rotors need less power for "
+		    "the same thrust); pitch from the hover inflow angle plus 4° incidence.",
+		    o->opt.prop_diameter_in, o->opt.prop_pitch_in);
+	res_rationale(r, "Hover throttle %.0f %% (thrust margin %.0f %%) gives a "
+	    "design thrust-to-weight ratio of %.2f.", 100.0 * o->hover_throttle,
+	    100.0 * (1.0 - o->hover_throttle), o->thrust_to_weight);
+	if (s->locks.is_battery_locked)
+		res_rationale(r, "Battery locked at %dS %.0f mAh; everything else "
+		    "re-sized around it.", o->cell_count, o->capacity_mah);
+	else if (p->cells_fixed > 0)
+		res_rationale(r, "%dS bus fixed by the mission.", o->cell_count);
+	else if (p->kv_locked)
+		res_rationale(r, "%dS chosen so that the locked %.0f KV motor reaches "
+		    "full-throttle rpm.", o->cell_count, p->kv);
+	else {
+		double budget = SIZING_CURRENT_BUDGET_A * sqrt(o->mass.total_kg);
+		if (o->peak_current_a <= budget * 1.0001)
+			res_rationale(r, "%dS %s chosen: the smallest series count that "
+			    "keeps the full-throttle current (%.0f A) within the harness "
+			    "budget of %.0f A for a %.1f kg aircraft.", o->cell_count,
+			    o->chemistry, o->peak_current_a, budget, o->mass.total_kg);
+		else
+			res_rationale(r, "%dS %s: the %s class allows at most %dS, so "
+			    "the full-throttle current (%.0f A) stays above the %.0f A "
+			    "harness budget; wiring and ESCs are sized for it.",
+			    o->cell_count, o->chemistry,
+			    spec_enum_airframe[p->airframe_class], p->cells_hi,
+			    o->peak_current_a, budget);
+	}
+	if (!s->locks.is_battery_locked && o->battery_power_binds)
+		res_rationale(r, "Battery capacity %.0f mAh (%.0f Wh) is set by "
+		    "power, not energy: %s cells must deliver the %.0f W full-throttle "
+		    "burst and every sustained phase, which needs more cells than the "
+		    "mission's energy.", o->capacity_mah, o->energy_wh, o->chemistry,
+		    o->peak_power_w);
+	else if (!s->locks.is_battery_locked)
+		res_rationale(r, "Battery capacity %.0f mAh (%.0f Wh): 1.2 × the "
+		    "charge the discharge simulation drew over the mission, under-relaxed "
+		    "to a fixed point.", o->capacity_mah, o->energy_wh);
+	res_rationale(r, "Target motor KV %.0f rpm/V: full-throttle rotor speed "
+	    "%.0f rpm on a %.1f V bus.", o->opt.motor_kv, o->rpm_peak,
+	    (double)o->cell_count * p->chem->v_full);
+	if (o->min_fraction_binds)
+		res_rationale(r, "Arms Ø%.1f mm sized for bending; the frame mass is "
+		    "set by the minimum structural fraction for this wheelbase.",
+		    o->arm_outer_diameter_mm);
+	else
+		res_rationale(r, "Arms Ø%.1f mm × %.2f mm CFRP sized by root bending "
+		    "at %.0f MPa allowable.", o->arm_outer_diameter_mm,
+		    o->arm_wall_thickness_mm, o->arm_stress_allow_mpa);
+	res_rationale(r, "Arm first bending mode %.0f Hz: %s the in-flight "
+	    "blade-pass band %.0f–%.0f Hz.", o->arm_natural_frequency_hz,
+	    o->arm_natural_frequency_hz >= o->blade_pass_frequency_hz
+	        ? "stiff, above" : "soft, below", o->blade_pass_low_hz,
+	    o->blade_pass_frequency_hz);
+	if (p->v_auto)
+		res_rationale(r, "Forward speed %.1f m/s: the minimum-power speed of "
+		    "the 1–30 m/s sweep.", o->optimal_speed_ms);
+	if (res_thrust_relaxed(o))
+		res_rationale(r, "Thrust relaxation: the %s role's default target "
+		    "T/W %.1f (hover throttle %.0f %%) does not close with real motor "
+		    "and battery masses, so the largest that closes is used: T/W %.1f "
+		    "(hover throttle %.0f %%).  Set thrust_margin_override to insist.",
+		    spec_enum_role[s->payload_role.type],
+		    1.0 / pow(1.0 - o->thrust_margin_requested, 2.0),
+		    100.0 * (1.0 - o->thrust_margin_requested),
+		    1.0 / pow(1.0 - o->thrust_margin, 2.0),
+		    100.0 * (1.0 - o->thrust_margin));
+	if (o->time_scale < 1.0)
+		res_rationale(r, "Goal relaxation: the requested mission could not "
+		    "close, so every phase was scaled to %.0f %% of its requested time.",
+		    100.0 * o->time_scale);
+	if (o->converged && o->lipschitz < 1.0)
+		res_rationale(r, "The mass loop converged in %d iterations; the "
+		    "mass-growth Lipschitz constant is %.2f (< 1: a contraction).",
+		    o->iterations, o->lipschitz);
+	else if (o->converged)
+		res_rationale(r, "The mass loop settled in %d iterations, but the "
+		    "mass-growth Lipschitz constant at that point is %.2f (>= 1): each "
+		    "added kilogram needs more than a kilogram of subsystems, so the "
+		    "design sits on the edge of the mass snowball.", o->iterations,
+		    o->lipschitz);
+	/* What binds: the tightest passing check not sized to its limit. */
+	const struct res_check *t = res_tightest_check(o);
+	if (t != NULL)
+		res_rationale(r, "Tightest remaining constraint: %s (%.3g %s "
+		    "against a limit of %.3g, margin %.0f %%).", t->name, t->value,
+		    t->unit, t->limit, 100.0 * t->margin);
+}
+
+/* Is every number a run stores finite?  The output layers refuse NaN. */
+static bool
+run_finite(const struct res_run *o)
+{
+	const struct res_mass *m = &o->mass;
+	double v[] = { m->total_kg, m->battery_kg, m->frame_kg, m->arm_kg,
+		m->motor_kg, m->prop_kg, m->esc_kg, m->wiring_kg, o->lipschitz,
+		o->capacity_mah, o->energy_wh, o->max_battery_temp_c,
+		o->min_terminal_voltage_v, o->arm_natural_frequency_hz,
+		o->hover_endurance_s, o->peak_power_w, o->downwash_ms };
+	for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
+		if (!isfinite(v[i]))
+			return false;
+	for (int i = 0; i < o->n_trace; i++)
+		if (!isfinite(o->trace[i].v_term_v) || !isfinite(o->trace[i].temp_c))
+			return false;
+	return true;
+}
+
+/* Replace non-finite numbers by 0 so nothing unphysical is ever printed;
+ * the caller has already turned the run into a violation. */
+static void
+scrub(struct res_run *o)
+{
+	double *d = (double *)(void *)&o->mass;
+	for (size_t i = 0; i < sizeof o->mass / sizeof(double); i++)
+		if (!isfinite(d[i]))
+			d[i] = 0.0;
+	for (int i = 0; i < o->n_history; i++)
+		if (!isfinite(o->history_kg[i]))
+			o->history_kg[i] = SIZING_RUNAWAY_KG;
+}
+
+/* The feasibility gate of one run; false, with o marked as not run, when
+ * it stops the run. */
+static bool
+run_gate(const struct sizing_params *p, const char *name, struct res_run *o,
+         struct solve_result *r)
+{
+	if (feasibility_gate(p, name, r))
+		return true;
+	memset(o, 0, sizeof *o);
+	o->ran = false;
+	snprintf(o->termination, sizeof o->termination,
+	    "rejected by the feasibility gate");
+	return false;
+}
+
+/* What follows one run's mass loop: the non-finite guard, the checks and
+ * violations, the custom run's rationale. */
+static void
+run_finish(const struct sizing_params *p, const char *name, bool baseline,
+           enum sizing_status st, const struct mission_spec *s,
+           struct res_run *o, struct solve_result *r, int *rc)
+{
+	if (!run_finite(o)) {
+		scrub(o);
+		if (st != SIZING_RUNAWAY)
+			*rc = 3;
+	}
+	feasibility_checks(p, st, name, o, r);
+	if (!baseline && o->ran)
+		explain(p, o, s, r);
+}
+
+/* The role overhead and its rationale line. */
+static void
+role_overhead(struct solve_result *r)
+{
+	if (!r->baseline.ran || !r->custom.ran)
+		return;
+	mass_diff(&r->custom.mass, &r->baseline.mass, &r->role_overhead);
+	res_rationale(r, "The %s role adds %.2f kg over the dead-weight "
+	    "baseline (%.2f kg → %.2f kg).",
+	    spec_enum_role[r->mission.payload_role.type],
+	    r->role_overhead.total_kg, r->baseline.mass.total_kg,
+	    r->custom.mass.total_kg);
+}
+
+int
+engine_solve(const struct mission_spec *spec, const struct model_data *md,
+             const struct catalog *cat, struct solve_result *r)
+{
+	int rc = 0;
+	r->mission = *spec;
+	engine_resolve(&r->mission, md, r);
+
+	struct sizing_params p;
+	engine_params(&r->mission, md, true, &p);
+	if (run_gate(&p, "baseline", &r->baseline, r))
+		run_finish(&p, "baseline", true, sizing_run(&p, &r->baseline),
+		    &r->mission, &r->baseline, r, &rc);
+
+	engine_params(&r->mission, md, false, &p);
+	if (run_gate(&p, "custom", &r->custom, r))
+		run_finish(&p, "custom", false, sizing_run(&p, &r->custom),
+		    &r->mission, &r->custom, r, &rc);
+	role_overhead(r);
+
+	/* Real parts on top of a converged custom run (optim.h). */
+	if (cat != NULL && r->custom.ran && r->custom.converged
+	    && optim_select(&r->mission, &p, md, cat, r) != 0)
+		rc = 3;
+	r->feasible = r->n_violations == 0 && r->custom.ran && r->custom.feasible;
+	return rc;
+}
+
+void
+engine_explore(struct solve_result *r, const struct model_data *md)
+{
+	struct res_run *o = &r->custom;
+	o->n_endurance = 0;
+	o->endurance_inflection_scale = 0.0;
+	/* A run that ran away has no fixed point to explore around. */
+	if (!o->ran || !(o->fixed.mass_kg > 0.0))
+		return;
+	struct sizing_params p;
+	engine_params(&r->mission, md, false, &p);
+	sizing_explore(&p, o);
+}

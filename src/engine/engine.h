@@ -1,0 +1,50 @@
+/* engine.h — one solve: mission in, struct solve_result out.
+ *
+ * Applies the requirements-first layer (paper §III-A Mission Workspace),
+ * resolves every role- and class-derived default the mission left open,
+ * runs the baseline (null role, hover throttle 0.60) and the custom run
+ * through the feasibility gate and the mass loop, fills the checks and
+ * violations, the role overhead, and the plain-language design rationale.
+ * Parts selection (optim.c) runs on top when a catalogue is given.
+ *
+ * Engine layer: no JSON, PDF or cairo.  Reentrant: everything it touches is
+ * in its arguments, so missions can be solved in parallel.
+ */
+#ifndef AEROEVAL_ENGINE_H
+#define AEROEVAL_ENGINE_H
+
+#include "core/model.h"
+#include "parts/optim.h"
+#include "core/result.h"
+#include "sizing/sizing.h"
+#include "core/spec.h"
+
+struct catalog;
+
+/* Solve `spec` with the reference tables `md` and, when cat != NULL, pick
+ * real parts from it.  Returns 0 when every run produced finite numbers
+ * (feasible or not: see r->feasible), 3 on an internal error (a non-finite
+ * value caught before it could reach an output). */
+int engine_solve(const struct mission_spec *spec, const struct model_data *md,
+                 const struct catalog *cat, struct solve_result *r);
+
+/* The endurance explorer of r's custom run (sizing_explore()), for the
+ * outputs that show it: result.json and the dossier.  Kept out of
+ * engine_solve() because nothing the design is decided on reads it, and
+ * the batch analyses (validate, sensitivity) solve hundreds of missions
+ * without it. */
+void engine_explore(struct solve_result *r, const struct model_data *md);
+
+/* Resolve the mission into the custom-run parameters (after the
+ * requirements layer has been applied to *spec).  Exposed for the
+ * sensitivity study and the tests. */
+void engine_params(const struct mission_spec *spec, const struct model_data *md,
+                   bool baseline, struct sizing_params *p);
+
+/* Apply requirements{} and the role/class defaults to *spec in place,
+ * appending one rationale line per decision to r (may be NULL). */
+void engine_resolve(struct mission_spec *spec, const struct model_data *md,
+                    struct solve_result *r);
+
+
+#endif

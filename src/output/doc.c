@@ -1,0 +1,1024 @@
+/* doc.c — the dossier document: flow layout over libharu (see doc.h). */
+#include "output/doc.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <hpdf.h>
+#include <hpdf_namedict.h>   /* internals: rename the attachment key */
+
+#include "util/xalloc.h"
+
+#ifndef AEROEVAL_VERSION
+#define AEROEVAL_VERSION "unknown"
+#endif
+
+#define PT_PER_MM (72.0 / 25.4)
+#define LEADING 1.38          /* line height / font size for body text */
+#define TABLE_SCALE 0.9       /* table text size / body size */
+#define CELL_PAD_X 3.5        /* table cell padding, points */
+#define CELL_PAD_Y 2.6
+#define MIN_LINES_AFTER_HEADING 3  /* keep a heading with this many lines */
+
+struct doc {
+	HPDF_Doc pdf;
+	struct template tpl;        /* copy: the caller's may go away */
+	HPDF_Font font, bold, mono; /* mono loaded on first use */
+	HPDF_Encoder utf8;          /* for outline titles */
+	HPDF_Page *pages;           /* every page, for header/footer at save */
+	int n_pages, cap_pages;
+	HPDF_Page page;             /* current page */
+	double page_w, page_h;      /* points */
+	double left, right, top, bottom; /* text block, PDF coordinates */
+	double y;                   /* cursor: top of the next element */
+	int at_top;                 /* nothing placed on this page yet */
+	HPDF_Outline outline_l1;    /* last level-1 bookmark (parent of level 2) */
+	int n_figures;              /* figures placed */
+	char *title, *mission;      /* running header */
+	int saved;                  /* doc_save_mem ran */
+	char err[128];              /* first error, "" if none */
+};
+
+/* ---- errors ---------------------------------------------------------------- */
+
+static void
+doc_fail(struct doc *d, const char *fmt, ...)
+	__attribute__((format(printf, 2, 3)));
+
+static void
+doc_fail(struct doc *d, const char *fmt, ...)
+{
+	if (d->err[0] != '\0')
+		return;   /* keep the first, it is the cause */
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(d->err, sizeof d->err, fmt, ap);
+	va_end(ap);
+}
+
+/* libharu calls this on every raised error; the document is poisoned from
+ * then on (STACK.md §2a), so the first error is the one to report. */
+static void
+on_hpdf_error(HPDF_STATUS error_no, HPDF_STATUS detail_no, void *user)
+{
+	doc_fail(user, "libharu error 0x%04X (detail %u)", (unsigned)error_no,
+	         (unsigned)detail_no);
+}
+
+static int
+failed(const struct doc *d)
+{
+	return d->err[0] != '\0';
+}
+
+const char *
+doc_error(const struct doc *d)
+{
+	return failed(d) ? d->err : NULL;
+}
+
+/* ---- text measuring and wrapping ------------------------------------------- */
+
+/* Advance width of len bytes of s in font units (1/1000 em): the sum of
+ * the glyphs' widths, so the width of a concatenation is the sum of its
+ * parts' (libharu applies no kerning). */
+static HPDF_UINT
+units_of(HPDF_Font f, const char *s, size_t len)
+{
+	if (len == 0 || f == NULL)
+		return 0;
+	return HPDF_Font_TextWidth(f, (const HPDF_BYTE *)s, (HPDF_UINT)len).width;
+}
+
+static double
+to_points(HPDF_UINT units, double size)
+{
+	return units * size / 1000.0;
+}
+
+static double
+width_of(HPDF_Font f, double size, const char *s, size_t len)
+{
+	return to_points(units_of(f, s, len), size);
+}
+
+/* One output line: a slice of the source text. */
+struct line {
+	const char *s;
+	size_t len;
+};
+
+struct lines {
+	struct line *v;
+	int n, cap;
+};
+
+static void
+lines_push(struct lines *L, const char *s, size_t len)
+{
+	if (L->n == L->cap) {
+		L->cap = L->cap ? 2 * L->cap : 16;
+		L->v = xrealloc(L->v, (size_t)L->cap * sizeof *L->v);
+	}
+	L->v[L->n].s = s;
+	L->v[L->n].len = len;
+	L->n++;
+}
+
+/* Bytes of the UTF-8 character starting at s (1 for a stray byte). */
+static size_t
+utf8_len(const char *s)
+{
+	unsigned char c = (unsigned char)*s;
+	size_t n = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 1;
+	for (size_t i = 1; i < n; i++)
+		if (((unsigned char)s[i] & 0xc0) != 0x80)
+			return 1;
+	return n;
+}
+
+/* Greedy word wrap of text into lines no wider than width.  Spaces separate
+ * words; "\n" forces a break; a word wider than the line is cut between
+ * characters (TextRect would stall on it, STACK.md §2f). */
+static void
+wrap_text(HPDF_Font f, double size, double width, const char *text, struct lines *out)
+{
+	const char *p = text;
+	for (;;) {
+		const char *eol = strchr(p, '\n');
+		if (eol == NULL)
+			eol = p + strlen(p);
+		const char *q = p;
+		int emitted = 0;
+		while (q < eol) {
+			while (q < eol && *q == ' ')
+				q++;
+			if (q == eol)
+				break;
+			/* The line's width grows by each word and the spaces
+			 * before it, measured once (widths add up). */
+			const char *start = q, *end = q;
+			HPDF_UINT units = 0;
+			for (;;) {
+				const char *ws = end;
+				while (ws < eol && *ws == ' ')
+					ws++;
+				if (ws == eol)
+					break;
+				const char *we = ws;
+				while (we < eol && *we != ' ')
+					we++;
+				HPDF_UINT nu = units + units_of(f, end, (size_t)(we - end));
+				double nw = to_points(nu, size);
+				if (end != start && nw > width)
+					break;
+				if (end == start && nw > width) {
+					/* First word alone overflows: take what fits of it. */
+					const char *c = start;
+					HPDF_UINT cu = 0;
+					while (c < we) {
+						size_t cl = utf8_len(c);
+						cu += units_of(f, c, cl);
+						if (c != start && to_points(cu, size) > width)
+							break;
+						c += cl;
+					}
+					end = c;
+					break;
+				}
+				end = we;
+				units = nu;
+			}
+			lines_push(out, start, (size_t)(end - start));
+			emitted = 1;
+			q = end;
+		}
+		if (!emitted)
+			lines_push(out, p, 0);   /* blank line */
+		if (*eol == '\0')
+			break;
+		p = eol + 1;
+	}
+}
+
+/* Draws len bytes of s at baseline (x, y) (page coordinates). */
+static void
+put_text(struct doc *d, HPDF_Font f, double size, double x, double y, const char *s,
+         size_t len, struct template_colour k)
+{
+	char small[256];
+	char *buf = len < sizeof small ? small : xmalloc(len + 1);
+	memcpy(buf, s, len);
+	buf[len] = '\0';
+	HPDF_Page_BeginText(d->page);
+	HPDF_Page_SetFontAndSize(d->page, f, (HPDF_REAL)size);
+	HPDF_Page_SetRGBFill(d->page, (HPDF_REAL)k.r, (HPDF_REAL)k.g, (HPDF_REAL)k.b);
+	HPDF_Page_TextOut(d->page, (HPDF_REAL)x, (HPDF_REAL)y, buf);
+	HPDF_Page_EndText(d->page);
+	if (buf != small)
+		free(buf);
+}
+
+static void
+put_aligned(struct doc *d, HPDF_Font f, double size, double x0, double x1, double y,
+            const char *s, size_t len, enum doc_align al, struct template_colour k)
+{
+	double w = width_of(f, size, s, len), x = x0;
+	if (al == DOC_ALIGN_RIGHT)
+		x = x1 - w;
+	else if (al == DOC_ALIGN_CENTER)
+		x = 0.5 * (x0 + x1 - w);
+	put_text(d, f, size, x, y, s, len, k);
+}
+
+static void
+fill_rect(struct doc *d, double x, double y, double w, double h, struct template_colour k)
+{
+	HPDF_Page_SetRGBFill(d->page, (HPDF_REAL)k.r, (HPDF_REAL)k.g, (HPDF_REAL)k.b);
+	HPDF_Page_Rectangle(d->page, (HPDF_REAL)x, (HPDF_REAL)y, (HPDF_REAL)w, (HPDF_REAL)h);
+	HPDF_Page_Fill(d->page);
+}
+
+static void
+hrule(struct doc *d, double x0, double x1, double y, double width, struct template_colour k)
+{
+	HPDF_Page_SetRGBStroke(d->page, (HPDF_REAL)k.r, (HPDF_REAL)k.g, (HPDF_REAL)k.b);
+	HPDF_Page_SetLineWidth(d->page, (HPDF_REAL)width);
+	HPDF_Page_SetDash(d->page, NULL, 0, 0);
+	HPDF_Page_MoveTo(d->page, (HPDF_REAL)x0, (HPDF_REAL)y);
+	HPDF_Page_LineTo(d->page, (HPDF_REAL)x1, (HPDF_REAL)y);
+	HPDF_Page_Stroke(d->page);
+}
+
+static struct template_colour
+mix_white(struct template_colour k, double f)
+{
+	struct template_colour m = { k.r * f + (1 - f), k.g * f + (1 - f), k.b * f + (1 - f) };
+	return m;
+}
+
+/* ---- pages ----------------------------------------------------------------- */
+
+static void
+add_page(struct doc *d)
+{
+	HPDF_Page pg = HPDF_AddPage(d->pdf);
+	if (pg == NULL) {
+		doc_fail(d, "cannot add a page");
+		return;
+	}
+	HPDF_Page_SetWidth(pg, (HPDF_REAL)d->page_w);
+	HPDF_Page_SetHeight(pg, (HPDF_REAL)d->page_h);
+	if (d->n_pages == d->cap_pages) {
+		d->cap_pages = d->cap_pages ? 2 * d->cap_pages : 16;
+		d->pages = xrealloc(d->pages, (size_t)d->cap_pages * sizeof *d->pages);
+	}
+	d->pages[d->n_pages++] = pg;
+	d->page = pg;
+	d->y = d->top;
+	d->at_top = 1;
+}
+
+int
+doc_new_page(struct doc *d)
+{
+	if (failed(d))
+		return -1;
+	add_page(d);
+	return failed(d) ? -1 : 0;
+}
+
+double doc_space_left(const struct doc *d) { return d->y - d->bottom; }
+double doc_text_width(const struct doc *d) { return d->right - d->left; }
+int doc_page_count(const struct doc *d) { return d->n_pages; }
+int doc_next_figure_number(const struct doc *d) { return d->n_figures + 1; }
+
+int
+doc_ensure_space(struct doc *d, double h)
+{
+	if (failed(d))
+		return -1;
+	if (d->y - h < d->bottom && !d->at_top)
+		add_page(d);
+	return failed(d) ? -1 : 0;
+}
+
+int
+doc_space(struct doc *d, double h)
+{
+	if (failed(d))
+		return -1;
+	if (d->y - h < d->bottom)
+		add_page(d);
+	else
+		d->y -= h;
+	return failed(d) ? -1 : 0;
+}
+
+/* Moves the cursor down by h after placing something. */
+static void
+advance(struct doc *d, double h)
+{
+	d->y -= h;
+	d->at_top = 0;
+}
+
+/* ---- document -------------------------------------------------------------- */
+
+static HPDF_Font
+load_font(struct doc *d, const char *path)
+{
+	const char *name = HPDF_LoadTTFontFromFile(d->pdf, path, HPDF_TRUE);
+	if (name == NULL) {
+		doc_fail(d, "cannot load font %s", path);
+		return NULL;
+	}
+	return HPDF_GetFont(d->pdf, name, "UTF-8");
+}
+
+static HPDF_Font
+mono_font(struct doc *d)
+{
+	if (d->mono == NULL && !failed(d))
+		d->mono = load_font(d, d->tpl.font_mono);
+	return d->mono;
+}
+
+/* Parses "YYYY-MM-DD" into a libharu date at 00:00 UTC. */
+static int
+parse_date(const char *s, HPDF_Date *out)
+{
+	int y, m, dd;
+	char tail;
+	if (sscanf(s, "%4d-%2d-%2d%c", &y, &m, &dd, &tail) != 3 || strlen(s) != 10)
+		return -1;
+	if (y < 1900 || y > 9999 || m < 1 || m > 12 || dd < 1 || dd > 31)
+		return -1;
+	memset(out, 0, sizeof *out);
+	out->year = y;
+	out->month = m;
+	out->day = dd;
+	out->ind = 'Z';
+	return 0;
+}
+
+static void
+set_info(struct doc *d, const struct doc_info *info)
+{
+	if (info->title != NULL)
+		HPDF_SetInfoAttr(d->pdf, HPDF_INFO_TITLE, info->title);
+	if (info->author != NULL)
+		HPDF_SetInfoAttr(d->pdf, HPDF_INFO_AUTHOR, info->author);
+	if (info->subject != NULL)
+		HPDF_SetInfoAttr(d->pdf, HPDF_INFO_SUBJECT, info->subject);
+	HPDF_SetInfoAttr(d->pdf, HPDF_INFO_CREATOR, "aeroeval " AEROEVAL_VERSION);
+	if (info->date != NULL) {
+		HPDF_Date date;
+		if (parse_date(info->date, &date) != 0) {
+			doc_fail(d, "bad document date \"%s\" (want YYYY-MM-DD)", info->date);
+			return;
+		}
+		HPDF_SetInfoDateAttr(d->pdf, HPDF_INFO_CREATION_DATE, date);
+		HPDF_SetInfoDateAttr(d->pdf, HPDF_INFO_MOD_DATE, date);
+	}
+}
+
+struct doc *
+doc_alloc(const struct template *tpl, const struct doc_info *info)
+{
+	static const struct doc_info none = { 0 };
+	struct doc *d = xcalloc(1, sizeof *d);
+	d->tpl = *tpl;
+	if (info == NULL)
+		info = &none;
+	d->title = xstrdup(info->title != NULL ? info->title : "");
+	d->mission = xstrdup(info->mission != NULL ? info->mission : "");
+	d->page_w = tpl->page_width_mm * PT_PER_MM;
+	d->page_h = tpl->page_height_mm * PT_PER_MM;
+	d->left = tpl->margin_left_mm * PT_PER_MM;
+	d->right = d->page_w - tpl->margin_right_mm * PT_PER_MM;
+	d->top = d->page_h - tpl->margin_top_mm * PT_PER_MM;
+	d->bottom = tpl->margin_bottom_mm * PT_PER_MM;
+
+	d->pdf = HPDF_New(on_hpdf_error, d);
+	if (d->pdf == NULL) {
+		doc_fail(d, "cannot create a PDF document");
+		return d;
+	}
+	HPDF_SetCompressionMode(d->pdf, HPDF_COMP_ALL);
+	HPDF_UseUTFEncodings(d->pdf);
+	HPDF_SetCurrentEncoder(d->pdf, "UTF-8");
+	d->utf8 = HPDF_GetEncoder(d->pdf, "UTF-8");
+	HPDF_SetPageMode(d->pdf, HPDF_PAGE_MODE_USE_OUTLINE);
+	d->font = load_font(d, tpl->font_regular);
+	d->bold = load_font(d, tpl->font_bold);
+	set_info(d, info);
+	if (!failed(d))
+		add_page(d);
+	return d;
+}
+
+void
+doc_free(struct doc *d)
+{
+	if (d == NULL)
+		return;
+	if (d->pdf != NULL)
+		HPDF_Free(d->pdf);
+	free(d->pages);
+	free(d->title);
+	free(d->mission);
+	free(d);
+}
+
+void
+doc_global_cleanup(void)
+{
+	plot_global_cleanup();
+}
+
+/* ---- text blocks ------------------------------------------------------------ */
+
+/* Flows wrapped text from x0 to x1, breaking pages between lines. */
+static void
+flow_text(struct doc *d, HPDF_Font f, double size, double x0, double x1, const char *text,
+          struct template_colour k)
+{
+	struct lines L = { 0 };
+	double lh = size * LEADING;
+	wrap_text(f, size, x1 - x0, text, &L);
+	for (int i = 0; i < L.n && !failed(d); i++) {
+		if (d->y - lh < d->bottom)
+			add_page(d);
+		put_text(d, f, size, x0, d->y - size, L.v[i].s, L.v[i].len, k);
+		advance(d, lh);
+	}
+	free(L.v);
+}
+
+int
+doc_paragraph(struct doc *d, const char *text)
+{
+	if (failed(d))
+		return -1;
+	flow_text(d, d->font, d->tpl.font_size_pt, d->left, d->right, text != NULL ? text : "",
+	          d->tpl.text);
+	if (!d->at_top)
+		d->y -= 0.55 * d->tpl.font_size_pt;
+	return failed(d) ? -1 : 0;
+}
+
+int
+doc_code(struct doc *d, const char *text)
+{
+	HPDF_Font f = mono_font(d);
+	if (failed(d))
+		return -1;
+	flow_text(d, f, 0.85 * d->tpl.font_size_pt, d->left + 6.0, d->right,
+	          text != NULL ? text : "", d->tpl.text);
+	if (!d->at_top)
+		d->y -= 0.55 * d->tpl.font_size_pt;
+	return failed(d) ? -1 : 0;
+}
+
+int
+doc_bullets(struct doc *d, const char *const *items, int n)
+{
+	double size = d->tpl.font_size_pt, indent = 13.0;
+	for (int i = 0; i < n && !failed(d); i++) {
+		if (d->y - size * LEADING < d->bottom)
+			add_page(d);
+		put_text(d, d->font, size, d->left + 3.0, d->y - size, "\xe2\x80\xa2", 3,
+		         d->tpl.primary);
+		flow_text(d, d->font, size, d->left + indent, d->right,
+		          items[i] != NULL ? items[i] : "", d->tpl.text);
+		d->y -= 0.2 * size;
+	}
+	if (!d->at_top)
+		d->y -= 0.4 * size;
+	return failed(d) ? -1 : 0;
+}
+
+static void bookmark(struct doc *d, int level, const char *text, double y);
+
+int
+doc_title(struct doc *d, const char *title, const char *subtitle)
+{
+	if (failed(d))
+		return -1;
+	/* The cover gets its outline entry too; level-2 headings under it nest. */
+	bookmark(d, 1, title != NULL ? title : "", d->y);
+	double size = 2.6 * d->tpl.font_size_pt;
+	double logo_w = 0.0;
+	if (d->tpl.logo[0] != '\0') {
+		HPDF_Image img = HPDF_LoadPngImageFromFile(d->pdf, d->tpl.logo);
+		if (img != NULL) {
+			double iw = HPDF_Image_GetWidth(img), ih = HPDF_Image_GetHeight(img);
+			double h = 42.0, w = ih > 0 ? iw * h / ih : h;
+			HPDF_Page_DrawImage(d->page, img, (HPDF_REAL)(d->right - w),
+			                    (HPDF_REAL)(d->y - h), (HPDF_REAL)w, (HPDF_REAL)h);
+			logo_w = w + 12.0;
+		}
+	}
+	d->y -= 0.3 * size;
+	flow_text(d, d->bold, size, d->left, d->right - logo_w, title != NULL ? title : "",
+	          d->tpl.primary);
+	if (subtitle != NULL) {
+		d->y -= 2.0;
+		flow_text(d, d->font, 1.4 * d->tpl.font_size_pt, d->left, d->right - logo_w,
+		          subtitle, d->tpl.muted);
+	}
+	d->y -= 6.0;
+	hrule(d, d->left, d->right, d->y, 1.6, d->tpl.primary);
+	advance(d, 14.0);
+	return failed(d) ? -1 : 0;
+}
+
+static void
+bookmark(struct doc *d, int level, const char *text, double y)
+{
+	HPDF_Outline parent = level == 2 ? d->outline_l1 : NULL;
+	HPDF_Outline o = HPDF_CreateOutline(d->pdf, parent, text, d->utf8);
+	if (o == NULL)
+		return;
+	HPDF_Destination dst = HPDF_Page_CreateDestination(d->page);
+	if (dst != NULL) {
+		HPDF_Destination_SetFitH(dst, (HPDF_REAL)fmin(y + 6.0, d->page_h));
+		HPDF_Outline_SetDestination(o, dst);
+	}
+	HPDF_Outline_SetOpened(o, HPDF_FALSE);
+	if (level == 1)
+		d->outline_l1 = o;
+}
+
+int
+doc_heading(struct doc *d, int level, const char *text)
+{
+	if (failed(d))
+		return -1;
+	double base = d->tpl.font_size_pt;
+	text = text != NULL ? text : "";
+	if (level <= 1) {
+		if (!d->at_top)
+			add_page(d);
+		double size = 1.75 * base;
+		bookmark(d, 1, text, d->y);
+		flow_text(d, d->bold, size, d->left, d->right, text, d->tpl.primary);
+		hrule(d, d->left, d->right, d->y + 0.04 * size, 0.8, d->tpl.primary);
+		d->y -= 0.7 * base;
+	} else {
+		double size = level == 2 ? 1.25 * base : 1.05 * base;
+		double need = size * LEADING + MIN_LINES_AFTER_HEADING * base * LEADING;
+		if (!d->at_top)
+			d->y -= 0.5 * base;
+		if (d->y - need < d->bottom && !d->at_top)
+			add_page(d);
+		if (level == 2)
+			bookmark(d, 2, text, d->y);
+		flow_text(d, d->bold, size, d->left, d->right, text,
+		          level == 2 ? d->tpl.primary : d->tpl.text);
+		d->y -= 0.25 * base;
+	}
+	return failed(d) ? -1 : 0;
+}
+
+int
+doc_callout(struct doc *d, enum doc_callout_style style, const char *title, const char *text)
+{
+	if (failed(d))
+		return -1;
+	struct template_colour k = style == DOC_CALLOUT_PASS ? d->tpl.pass
+	                         : style == DOC_CALLOUT_FAIL ? d->tpl.fail
+	                         : style == DOC_CALLOUT_WARN ? d->tpl.warn : d->tpl.primary;
+	double base = d->tpl.font_size_pt, tsize = 1.9 * base, pad = 8.0, bar = 4.0;
+	double x0 = d->left + bar + pad, x1 = d->right - pad;
+	struct lines tl = { 0 }, bl = { 0 };
+	if (title != NULL)
+		wrap_text(d->bold, tsize, x1 - x0, title, &tl);
+	if (text != NULL)
+		wrap_text(d->font, base, x1 - x0, text, &bl);
+	double h = 2 * pad + tl.n * tsize * 1.2 + bl.n * base * LEADING +
+	           (tl.n > 0 && bl.n > 0 ? 3.0 : 0.0);
+	/* A callout is kept whole unless it is taller than a page. */
+	if (d->y - h < d->bottom && !d->at_top)
+		add_page(d);
+	double y = d->y;
+	fill_rect(d, d->left, y - h, d->right - d->left, h, mix_white(k, 0.12));
+	fill_rect(d, d->left, y - h, bar, h, k);
+	y -= pad;
+	for (int i = 0; i < tl.n; i++) {
+		put_text(d, d->bold, tsize, x0, y - tsize * 0.95, tl.v[i].s, tl.v[i].len, k);
+		y -= tsize * 1.2;
+	}
+	if (tl.n > 0 && bl.n > 0)
+		y -= 3.0;
+	for (int i = 0; i < bl.n; i++) {
+		put_text(d, d->font, base, x0, y - base, bl.v[i].s, bl.v[i].len, d->tpl.text);
+		y -= base * LEADING;
+	}
+	free(tl.v);
+	free(bl.v);
+	advance(d, h + 0.9 * base);
+	return failed(d) ? -1 : 0;
+}
+
+int
+doc_figure(struct doc *d, const struct plot *p, const char *caption)
+{
+	if (failed(d) || p == NULL)
+		return -1;
+	double tw = d->right - d->left;
+	double w = plot_width_pt(p) > 0 ? fmin(plot_width_pt(p), tw) : tw;
+	double h = plot_height_pt(p);
+	double csize = 0.9 * d->tpl.font_size_pt;
+	char *cap = xmalloc(strlen(caption != NULL ? caption : "") + 32);
+	sprintf(cap, "Figure %d: %s", d->n_figures + 1, caption != NULL ? caption : "");
+	struct lines L = { 0 };
+	wrap_text(d->font, csize, w, cap, &L);
+	double need = h + 6.0 + L.n * csize * LEADING;
+	if (d->y - need < d->bottom && !d->at_top)
+		add_page(d);
+	double x = d->left + 0.5 * (tw - w);
+	struct plot_render r = { .pdf = d->pdf, .page = d->page, .font = d->font,
+	                         .bold = d->bold, .tpl = &d->tpl, .x_pt = x,
+	                         .y_top_pt = d->y - 4.0, .width_pt = w };
+	if (!failed(d) && plot_render(p, &r) != 0)
+		doc_fail(d, "figure %d: cairo could not build the paths", d->n_figures + 1);
+	d->n_figures++;
+	advance(d, h + 10.0);
+	for (int i = 0; i < L.n && !failed(d); i++) {
+		/* One line is centred under the figure, several are left aligned. */
+		put_aligned(d, d->font, csize, x, x + w, d->y - csize, L.v[i].s, L.v[i].len,
+		            L.n == 1 ? DOC_ALIGN_CENTER : DOC_ALIGN_LEFT, d->tpl.muted);
+		advance(d, csize * LEADING);
+	}
+	d->y -= 0.8 * d->tpl.font_size_pt;
+	free(L.v);
+	free(cap);
+	return failed(d) ? -1 : d->n_figures;
+}
+
+/* ---- tables ------------------------------------------------------------------ */
+
+void
+doc_table_init(struct doc_table *t, const struct doc_column *cols, int n_cols)
+{
+	memset(t, 0, sizeof *t);
+	t->cols = cols;
+	t->n_cols = n_cols;
+}
+
+static void
+table_push(struct doc_table *t, enum doc_cell style, char *s)
+{
+	if (t->n_cells == t->cap_cells) {
+		t->cap_cells = t->cap_cells ? 2 * t->cap_cells : 32;
+		t->cells = xrealloc(t->cells, (size_t)t->cap_cells * sizeof *t->cells);
+		t->styles = xrealloc(t->styles, (size_t)t->cap_cells);
+	}
+	t->cells[t->n_cells] = s;
+	t->styles[t->n_cells] = (unsigned char)style;
+	t->n_cells++;
+}
+
+void
+doc_table_cell(struct doc_table *t, enum doc_cell style, const char *fmt, ...)
+{
+	va_list ap;
+	va_start(ap, fmt);
+	int n = vsnprintf(NULL, 0, fmt, ap);
+	va_end(ap);
+	char *s = xmalloc(n > 0 ? (size_t)n + 1 : 1);
+	s[0] = '\0';
+	if (n > 0) {
+		va_start(ap, fmt);
+		vsnprintf(s, (size_t)n + 1, fmt, ap);
+		va_end(ap);
+	}
+	table_push(t, style, s);
+}
+
+void
+doc_table_row(struct doc_table *t, const char *const *cells)
+{
+	for (int i = 0; i < t->n_cols; i++)
+		table_push(t, DOC_CELL_NORMAL, xstrdup(cells != NULL && cells[i] != NULL ? cells[i] : ""));
+}
+
+void
+doc_table_clear(struct doc_table *t)
+{
+	for (int i = 0; i < t->n_cells; i++)
+		free(t->cells[i]);
+	free(t->cells);
+	free(t->styles);
+	memset(t, 0, sizeof *t);
+}
+
+/* Column edges and cell fonts of a table being drawn. */
+struct tstate {
+	const struct doc_table *t;
+	double x[65];        /* column edges, n_cols + 1 */
+	double size;         /* text size */
+	double lh;           /* line height */
+};
+
+static HPDF_Font
+cell_font(struct doc *d, enum doc_cell s)
+{
+	if (s == DOC_CELL_MONO)
+		return mono_font(d);
+	if (s == DOC_CELL_BOLD || s == DOC_CELL_PASS || s == DOC_CELL_FAIL || s == DOC_CELL_WARN)
+		return d->bold;
+	return d->font;
+}
+
+static struct template_colour
+cell_colour(const struct doc *d, enum doc_cell s)
+{
+	switch (s) {
+	case DOC_CELL_MUTED: return d->tpl.muted;
+	case DOC_CELL_PASS: return d->tpl.pass;
+	case DOC_CELL_FAIL: return d->tpl.fail;
+	case DOC_CELL_WARN: return d->tpl.warn;
+	default: return d->tpl.text;
+	}
+}
+
+/* Wraps every cell of a row; returns the row height. */
+static double
+row_layout(struct doc *d, const struct tstate *ts, const char *const *cells,
+           const enum doc_cell *styles, struct lines *L)
+{
+	int nl = 1;
+	for (int c = 0; c < ts->t->n_cols; c++) {
+		L[c].n = 0;
+		HPDF_Font f = cell_font(d, styles[c]);
+		double size = styles[c] == DOC_CELL_MONO ? 0.92 * ts->size : ts->size;
+		wrap_text(f, size, ts->x[c + 1] - ts->x[c] - 2 * CELL_PAD_X, cells[c], &L[c]);
+		if (L[c].n > nl)
+			nl = L[c].n;
+	}
+	return nl * ts->lh + 2 * CELL_PAD_Y;
+}
+
+static void
+row_draw(struct doc *d, const struct tstate *ts, const enum doc_cell *styles,
+         const struct lines *L, double h, const struct template_colour *bg, int header)
+{
+	if (bg != NULL)
+		fill_rect(d, ts->x[0], d->y - h, ts->x[ts->t->n_cols] - ts->x[0], h, *bg);
+	for (int c = 0; c < ts->t->n_cols; c++) {
+		HPDF_Font f = header ? d->bold : cell_font(d, styles[c]);
+		double size = !header && styles[c] == DOC_CELL_MONO ? 0.92 * ts->size : ts->size;
+		struct template_colour k = header ? (struct template_colour){ 1, 1, 1 }
+		                                  : cell_colour(d, styles[c]);
+		for (int i = 0; i < L[c].n; i++)
+			put_aligned(d, f, size, ts->x[c] + CELL_PAD_X, ts->x[c + 1] - CELL_PAD_X,
+			            d->y - CELL_PAD_Y - i * ts->lh - 0.8 * ts->size - 0.5,
+			            L[c].v[i].s, L[c].v[i].len, ts->t->cols[c].align, k);
+	}
+	advance(d, h);
+}
+
+/* Lays out the header row (column titles, bold); returns its height. */
+static double
+header_layout(struct doc *d, const struct tstate *ts, struct lines *L, enum doc_cell *st)
+{
+	const char *titles[64];
+	for (int c = 0; c < ts->t->n_cols; c++) {
+		titles[c] = ts->t->cols[c].title != NULL ? ts->t->cols[c].title : "";
+		st[c] = DOC_CELL_BOLD;
+	}
+	return row_layout(d, ts, titles, st, L);
+}
+
+static void
+header_draw(struct doc *d, const struct tstate *ts, struct lines *L)
+{
+	enum doc_cell st[64];
+	double h = header_layout(d, ts, L, st);
+	row_draw(d, ts, st, L, h, &d->tpl.primary, 1);
+}
+
+int
+doc_table(struct doc *d, const struct doc_table *t)
+{
+	if (failed(d))
+		return -1;
+	if (t->n_cols < 1 || t->n_cols > 64 || t->cols == NULL) {
+		doc_fail(d, "table with %d columns", t->n_cols);
+		return -1;
+	}
+	struct tstate ts = { .t = t, .size = TABLE_SCALE * d->tpl.font_size_pt };
+	ts.lh = ts.size * 1.25;
+	double wsum = 0.0;
+	for (int c = 0; c < t->n_cols; c++)
+		wsum += t->cols[c].weight > 0 ? t->cols[c].weight : 1.0;
+	ts.x[0] = d->left;
+	for (int c = 0; c < t->n_cols; c++)
+		ts.x[c + 1] = ts.x[c] + (d->right - d->left) *
+		              (t->cols[c].weight > 0 ? t->cols[c].weight : 1.0) / wsum;
+	if (t->n_cells % t->n_cols != 0) {
+		doc_fail(d, "table: %d cells do not fill rows of %d columns", t->n_cells, t->n_cols);
+		return -1;
+	}
+	struct lines *L = xcalloc((size_t)t->n_cols, sizeof *L);
+	int n_rows = t->n_cells / t->n_cols;
+	enum doc_cell hst[64];
+	double hh = t->no_header ? 0.0 : header_layout(d, &ts, L, hst);
+	struct template_colour zebra = mix_white(d->tpl.grid, 0.35);
+	const char **cells = xmalloc((size_t)t->n_cols * sizeof *cells);
+	enum doc_cell *st = xmalloc((size_t)t->n_cols * sizeof *st);
+	int need_header = !t->no_header;
+	for (int r = 0; r < n_rows && !failed(d); r++) {
+		int total = t->total_row && r == n_rows - 1;
+		for (int c = 0; c < t->n_cols; c++) {
+			cells[c] = t->cells[r * t->n_cols + c];
+			st[c] = (enum doc_cell)t->styles[r * t->n_cols + c];
+			if (total && st[c] == DOC_CELL_NORMAL)
+				st[c] = DOC_CELL_BOLD;
+		}
+		double h = row_layout(d, &ts, cells, st, L);
+		double head = need_header ? hh : 0.0;
+		if (d->y - head - h < d->bottom && !d->at_top) {
+			add_page(d);
+			need_header = !t->no_header;   /* repeat the header on the new page */
+		}
+		if (need_header) {
+			header_draw(d, &ts, L);
+			need_header = 0;
+			h = row_layout(d, &ts, cells, st, L);
+		}
+		if (total)
+			hrule(d, ts.x[0], ts.x[t->n_cols], d->y, 0.8, d->tpl.text);
+		row_draw(d, &ts, st, L, h, (!t->no_zebra && r % 2 == 1 && !total) ? &zebra : NULL, 0);
+	}
+	if (n_rows == 0 && need_header)
+		header_draw(d, &ts, L);
+	hrule(d, ts.x[0], ts.x[t->n_cols], d->y, 0.6, d->tpl.grid);
+	d->y -= 0.9 * d->tpl.font_size_pt;
+	for (int c = 0; c < t->n_cols; c++)
+		free(L[c].v);
+	free(L);
+	free(cells);
+	free(st);
+	return failed(d) ? -1 : 0;
+}
+
+int
+doc_kv_table(struct doc *d, const char *const *kv, int n_pairs)
+{
+	static const struct doc_column cols[2] = { { "", 2.0, DOC_ALIGN_LEFT },
+	                                           { "", 3.0, DOC_ALIGN_LEFT } };
+	struct doc_table t;
+	doc_table_init(&t, cols, 2);
+	t.no_header = 1;
+	for (int i = 0; i < n_pairs; i++) {
+		table_push(&t, DOC_CELL_MUTED, xstrdup(kv[2 * i] != NULL ? kv[2 * i] : ""));
+		table_push(&t, DOC_CELL_NORMAL, xstrdup(kv[2 * i + 1] != NULL ? kv[2 * i + 1] : ""));
+	}
+	int rc = doc_table(d, &t);
+	doc_table_clear(&t);
+	return rc;
+}
+
+/* ---- attachment --------------------------------------------------------------- */
+
+/* The EmbeddedFiles name tree also keys the file by the path libharu was
+ * given (and the temp directory name is random): rename the key too, or two
+ * builds would differ.  The tree's Names array holds (key, filespec) pairs;
+ * keys are direct string objects. */
+static void
+rename_in_name_tree(struct doc *d, const char *path, const char *name)
+{
+	HPDF_NameDict nd = HPDF_Catalog_GetNames(d->pdf->catalog);
+	HPDF_NameTree nt = nd != NULL ? HPDF_NameDict_GetNameTree(nd, HPDF_NAME_EMBEDDED_FILES) : NULL;
+	HPDF_Array arr = nt != NULL ? HPDF_Dict_GetItem(nt, "Names", HPDF_OCLASS_ARRAY) : NULL;
+	int renamed = 0;
+	for (HPDF_UINT i = 0; arr != NULL && i < arr->list->count; i += 2) {
+		HPDF_String key = HPDF_List_ItemAt(arr->list, i);
+		if (key != NULL &&
+		    (key->header.obj_class & HPDF_OCLASS_ANY) == HPDF_OCLASS_STRING &&
+		    key->len == strlen(path) && memcmp(key->value, path, key->len) == 0) {
+			HPDF_String_SetValue(key, name);
+			renamed = 1;
+		}
+	}
+	if (!renamed)
+		doc_fail(d, "attachment: name tree entry for %s not found", name);
+}
+
+int
+doc_attach(struct doc *d, const char *name, const void *data, size_t n)
+{
+	if (failed(d))
+		return -1;
+	if (name == NULL || name[0] == '\0' || strchr(name, '/') != NULL ||
+	    strcmp(name, ".") == 0 || strcmp(name, "..") == 0 || strlen(name) > 200) {
+		doc_fail(d, "attachment name must be a bare file name");
+		return -1;
+	}
+	/* libharu attaches by path only and stores the path it was given
+	 * (STACK.md §2b): write the bytes to a private temp directory, attach,
+	 * then replace the stored name with the bare one.  libharu keeps the
+	 * file open and reads it at save time, so it is unlinked right away. */
+	const char *tmp = getenv("TMPDIR");
+	char dir[512], path[768];
+	snprintf(dir, sizeof dir, "%s/aeroeval-XXXXXX", tmp != NULL && tmp[0] != '\0' ? tmp : "/tmp");
+	if (mkdtemp(dir) == NULL) {
+		doc_fail(d, "attachment: cannot create a temp directory: %s", strerror(errno));
+		return -1;
+	}
+	snprintf(path, sizeof path, "%s/%s", dir, name);
+	FILE *f = fopen(path, "wb");
+	int ok = f != NULL && fwrite(data, 1, n, f) == n;
+	if (f != NULL && fclose(f) != 0)
+		ok = 0;
+	HPDF_EmbeddedFile ef = ok ? HPDF_AttachFile(d->pdf, path) : NULL;
+	if (ok && ef != NULL) {
+		HPDF_String s = HPDF_Dict_GetItem(ef, "F", HPDF_OCLASS_STRING);
+		if (s == NULL || HPDF_String_SetValue(s, name) != HPDF_OK)
+			doc_fail(d, "attachment: cannot set the file name");
+		HPDF_Dict_AddName(ef, "Type", "Filespec");
+		HPDF_Dict_Add(ef, "UF", HPDF_String_New(ef->mmgr, name, NULL));
+		rename_in_name_tree(d, path, name);
+	} else {
+		doc_fail(d, "attachment: cannot write %s", path);
+	}
+	unlink(path);
+	rmdir(dir);
+	return failed(d) ? -1 : 0;
+}
+
+/* ---- save ---------------------------------------------------------------------- */
+
+/* Running header and footer on every page; the cover (page 1) gets only
+ * the footer. */
+static void
+decorate_pages(struct doc *d)
+{
+	double size = 0.8 * d->tpl.font_size_pt;
+	double hy = d->top + 12.0, fy = 0.5 * d->bottom;
+	char num[32];
+	for (int i = 0; i < d->n_pages && !failed(d); i++) {
+		d->page = d->pages[i];
+		if (i > 0) {
+			put_text(d, d->font, size, d->left, hy, d->title, strlen(d->title), d->tpl.muted);
+			put_aligned(d, d->font, size, d->left, d->right, hy, d->mission,
+			            strlen(d->mission), DOC_ALIGN_RIGHT, d->tpl.muted);
+			hrule(d, d->left, d->right, hy - 4.0, 0.4, d->tpl.grid);
+		}
+		snprintf(num, sizeof num, "%d / %d", i + 1, d->n_pages);
+		put_aligned(d, d->font, size, d->left, d->right, fy, num, strlen(num),
+		            DOC_ALIGN_CENTER, d->tpl.muted);
+	}
+}
+
+int
+doc_save_mem(struct doc *d, unsigned char **out, size_t *n)
+{
+	*out = NULL;
+	*n = 0;
+	if (d->saved && !failed(d))
+		doc_fail(d, "document saved twice");
+	if (failed(d))
+		return -1;
+	d->saved = 1;
+	decorate_pages(d);
+	if (failed(d) || HPDF_SaveToStream(d->pdf) != HPDF_OK || failed(d))
+		return -1;
+	HPDF_UINT32 size = HPDF_GetStreamSize(d->pdf);
+	unsigned char *buf = xmalloc(size ? size : 1);
+	HPDF_UINT32 got = 0;
+	while (got < size) {
+		HPDF_UINT32 chunk = size - got;
+		HPDF_STATUS st = HPDF_ReadFromStream(d->pdf, buf + got, &chunk);
+		got += chunk;
+		if (st != HPDF_OK || chunk == 0)
+			break;
+	}
+	if (got != size || size == 0) {
+		doc_fail(d, "cannot read the PDF back from memory (%u of %u bytes)", (unsigned)got,
+		         (unsigned)size);
+		free(buf);
+		return -1;
+	}
+	/* Reading to the end may raise HPDF_STREAM_EOF; that is not a failure. */
+	if (failed(d) && HPDF_GetError(d->pdf) == HPDF_STREAM_EOF) {
+		d->err[0] = '\0';
+		HPDF_ResetError(d->pdf);
+	}
+	if (failed(d)) {
+		free(buf);
+		return -1;
+	}
+	*out = buf;
+	*n = size;
+	return 0;
+}

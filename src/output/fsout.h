@@ -1,0 +1,65 @@
+/* fsout.h — file output that never loses the previous good file, plus the
+ * small filesystem helpers the compiler needs around it.
+ *
+ * For the CLI and the output layer (result_json, bom_csv, report); physics
+ * modules never include this.  Every function returns 0 on success and -1
+ * on failure; on failure err (if errlen > 0) holds one line without a
+ * trailing newline, of the form "PATH: what failed: strerror", ready to be
+ * prefixed with "error: " by the caller.  Nothing here prints.
+ *
+ * Test hook: with AEROEVAL_FAIL_WRITE=N in the environment, the N-th call of
+ * fsout_write_atomic() in the process (counting from 1) writes part of its
+ * temporary file and then fails as if the disk were full, so tests can prove
+ * that the previous output survives and no temporary file is left behind.
+ */
+#ifndef AEROEVAL_FSOUT_H
+#define AEROEVAL_FSOUT_H
+
+#include <stddef.h>
+
+/* Writes data[0..n) to path so that, whatever happens, path holds either its
+ * previous content or the complete new content, never a truncated mix:
+ * a temporary file ".NAME.tmp.PID.SEQ" is created in the same directory
+ * (O_EXCL, mode 0644), written, fsync'ed, renamed over path, and then the
+ * directory is fsync'ed so the rename itself is durable.  On any failure the
+ * temporary file is removed and path is untouched.  The directory must
+ * exist (see fsout_mkdirs).  Safe to call from several threads at once. */
+int fsout_write_atomic(const char *path, const void *data, size_t n,
+                       char *err, size_t errlen);
+
+/* Creates dir and any missing parents (mkdir -p, mode 0755).  An existing
+ * directory is success; an existing non-directory is an error. */
+int fsout_mkdirs(const char *dir, char *err, size_t errlen);
+
+
+/* Where fsout_resolve_date found the date (PRODUCT.md §2, in this order). */
+enum fsout_date_source {
+	FSOUT_DATE_REPORT,      /* the mission's report.date */
+	FSOUT_DATE_EPOCH_ENV,   /* the SOURCE_DATE_EPOCH environment variable */
+	FSOUT_DATE_MISSION_MTIME /* the mission file's modification time */
+};
+
+/* The dossier date as "YYYY-MM-DD" (UTC) in out, never from the clock
+ * alone: report_date if it is not "" (it must be a real calendar date
+ * written YYYY-MM-DD), else SOURCE_DATE_EPOCH if set and not empty (decimal
+ * seconds since 1970-01-01T00:00:00Z, digits only, at most year 9999), else
+ * the mtime of mission_path.  A set but invalid report_date or
+ * SOURCE_DATE_EPOCH is an error, not a reason to fall through, so a typo
+ * cannot silently change the date.  Returns the enum fsout_date_source used
+ * (>= 0), or -1 with err set. */
+int fsout_resolve_date(const char *report_date, const char *mission_path,
+                       char out[11], char *err, size_t errlen);
+
+/* The output folder name for a mission file: its base name (after the last
+ * '/') without a final ".json".  Rejected (-1, out = "") when that is empty,
+ * "." or "..", contains a byte outside [A-Za-z0-9._-], or does not fit in
+ * n bytes — so the name is always one harmless path component and a write
+ * under DIR/<name>/ cannot leave DIR.  "../../etc.json" gives "etc"; the
+ * directories of the mission path never reach the output path. */
+int fsout_safe_name(const char *mission_path, char *out, size_t n);
+
+/* Test support only: restarts the AEROEVAL_FAIL_WRITE count at zero so a
+ * test program can inject a failure into a chosen later write. */
+void fsout_fault_reset(void);
+
+#endif

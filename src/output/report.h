@@ -1,0 +1,65 @@
+/* report.h — the design dossier (PRODUCT.md §4 "dossier.pdf"): what it says.
+ *
+ * doc.h and plot.h know how a page looks; this module knows what a client,
+ * a procurement team and an archive need to read about one solve: the
+ * cover with the verdict, the executive summary, the rationale, the mass
+ * budget, mission energy, thermal and electrical traces, structure and
+ * resonance, propulsion selection, convergence, the endurance explorer, the
+ * bill of materials, the checks and the appendix with the whole defaulted
+ * mission.  Sections appear in the template's order, each only if enabled,
+ * under the template's titles; the mission file travels inside the PDF as
+ * an attachment.  An infeasible design gets the full dossier too.
+ *
+ * Colours are fixed by role in every figure: the baseline run is palette
+ * entry 0, the custom run entry 1, the BOM-closed run entry 2.
+ *
+ * The output depends only on the input (no clock, no environment), so two
+ * renders of the same solve are byte-identical.  Reentrant: several
+ * missions may be rendered in parallel.
+ *
+ * Who may include it: the command layer (cli_*.c) and the tests.
+ */
+#ifndef AEROEVAL_REPORT_H
+#define AEROEVAL_REPORT_H
+
+#include <stddef.h>
+
+#include "core/result.h"
+#include "core/template.h"
+
+struct catalog;
+struct doc;
+
+/* Draws an optional section into the dossier (the study layer's trade
+ * study): returns 0, or -1 when it could not. */
+typedef int report_section_fn(struct doc *d, const struct template *t,
+                              const void *arg);
+
+/* Everything one dossier needs.  Only r and tpl are required; a NULL
+ * string prints as absent, a NULL mission_bytes attaches nothing. */
+struct report_input {
+	const struct solve_result *r;          /* the solve */
+	const struct template *tpl;            /* layout, sections, colours */
+	const char *mission_name;              /* output folder name, e.g. "sar_imaging_quad" */
+	const char *mission_file_name;         /* bare name for the attachment, e.g. "sar_imaging_quad.json" */
+	const unsigned char *mission_bytes;    /* the mission file, embedded as attachment */
+	size_t mission_len;
+	const char *date;                      /* "YYYY-MM-DD", already resolved by the caller */
+	const char *engine_version;            /* AEROEVAL_VERSION */
+	const struct catalog *cat;             /* may be NULL: for the crosshair figure (all motors) and the appendix */
+	report_section_fn *sensitivity;        /* may be NULL: draws the optional Sensitivity section */
+	const void *sensitivity_arg;           /* ... from this */
+};
+
+/* Renders the dossier into a new buffer (*pdf, *n).  Returns 0, or -1 with
+ * a one-line message in err (nothing returned: *pdf NULL, *n 0).
+ * Ownership: the caller frees *pdf with free(). */
+int report_render(const struct report_input *in, unsigned char **pdf, size_t *n,
+                  char *err, size_t errlen);
+
+/* The EU open-category class a takeoff mass allows (informative: a class
+ * mark also needs the manufacturer's conformity): "C0" below 250 g, "C1"
+ * below 900 g, "C2" below 4 kg, "C3/C4" below 25 kg, else "specific". */
+const char *report_eu_class(double mass_kg);
+
+#endif

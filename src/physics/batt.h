@@ -1,0 +1,73 @@
+/* batt.h — battery electrochemistry: Tremblay–Dessaint OCV with C-rate
+ * scaling, dynamic system resistance, current from the power balance with
+ * voltage-collapse detection, and the per-configuration packaging factor.
+ *
+ * Paper §VI-A..E, eqs. (voc), (rsys), (batmass).  Physics layer: pure
+ * functions over value structs, SI units (ohm, A, V, Ah where noted).
+ */
+#ifndef AEROEVAL_BATT_H
+#define AEROEVAL_BATT_H
+
+#include <stdbool.h>
+
+#include "core/model.h"
+
+#define BATT_SOC_MIN          0.02    /* SOC clamp against the K/SOC pole, - */
+#define BATT_C_RATE_B_SLOPE   0.18    /* B_eff = B (1 + 0.18 ln C), - */
+#define BATT_TEMP_COEF_PER_K  0.013   /* f_temp = exp(-0.013 (T - 25)), 1/K */
+#define BATT_AGING_PER_CYCLE  0.00125 /* k_ag, mid of the paper's 0.001-0.0015 */
+#define BATT_REF_CAPACITY_AH  5.0     /* C_ref of eq. (rsys): R_i is quoted for a 5 Ah cell */
+#define BATT_RDS_ON_OHM       0.002   /* ESC MOSFET on-resistance per ESC, ohm */
+#define BATT_POWER_GUARD_W    1e7     /* power-overflow guard, W */
+
+/* Current solution status. */
+enum batt_status {
+	BATT_OK,            /* a real current exists */
+	BATT_COLLAPSE,      /* negative discriminant: voltage collapse */
+	BATT_OVERFLOW       /* power not finite or above the guard */
+};
+
+/* Exponential-zone constant scaled by C-rate (only above 1C). */
+double batt_b_eff(double b, double c_rate);
+
+/* Open-circuit cell voltage at soc (clamped) and c_rate, eq. (voc). */
+double batt_ocv_cell(const struct batt_chem *c, double soc, double c_rate);
+
+/* System resistance of a pack of `cells` in series and total capacity_ah
+ * at temp_c after `cycles`, plus the ESC on-resistance shared by n_rotors
+ * ESCs, eq. (rsys), ohm. */
+double batt_r_sys_ohm(const struct batt_chem *c, int cells, double capacity_ah,
+                      double temp_c, int cycles, int n_rotors);
+
+/* The same split into what a pack fixes and what its temperature changes,
+ * for a time-step simulation that evaluates it every step:
+ * batt_r_sys_at(&rs, T) after batt_r_sys_init() equals batt_r_sys_ohm()
+ * to the last bit. */
+struct batt_r_sys {
+	double r_cells_ohm;    /* 1e-3 R_i N (C_ref / C): the cells at 25 °C, new */
+	double f_aging;        /* 1 + k_ag · cycles */
+	double r_esc_ohm;      /* R_ds,on / N_r: the ESC MOSFETs */
+};
+void batt_r_sys_init(const struct batt_chem *c, int cells, double capacity_ah,
+                     int cycles, int n_rotors, struct batt_r_sys *out);
+double batt_r_sys_at(const struct batt_r_sys *rs, double temp_c);
+
+/* Current drawn for power_w from a source v_oc behind r_ohm:
+ * I = (V - sqrt(V² - 4 R P)) / (2 R), computed as 2P / (V + sqrt(...)) so
+ * that it stays exact as R -> 0.  Returns the status; *current_a is
+ * set only when BATT_OK. */
+enum batt_status batt_current_a(double v_oc, double r_ohm, double power_w,
+                                double *current_a);
+
+/* Packaging multiplier η_pkg (paper §VI-D).  base is the calibrated LiPo
+ * base (1.04 in the paper); consumer_or_micro reduces the small-cell
+ * penalty; enterprise marks EnterpriseRugged. */
+double batt_packaging_factor(const struct batt_chem *c, double base, int cells,
+                             double pack_capacity_mah, int n_packs,
+                             double wheelbase_m, bool consumer_or_micro,
+                             bool enterprise);
+
+/* Mass of a pack storing energy_wh: E / e_spec · η_pkg, kg (eq. batmass). */
+double batt_mass_kg(double energy_wh, double e_spec_wh_kg, double eta_pkg);
+
+#endif

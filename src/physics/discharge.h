@@ -1,0 +1,88 @@
+/* discharge.h — the time-step discharge simulation (paper Module 4).
+ *
+ * Flies the mission phase by phase (climb, forward, hover) with the
+ * Tremblay–Dessaint pack (C-rate-scaled OCV, temperature- and age-dependent
+ * resistance, current from the quadratic power balance), the transient pack
+ * temperature, and the payload shedding of the role.  It stops early on
+ * voltage collapse, power overflow, the terminal-voltage floor, an empty
+ * pack or thermal runaway (60 °C), and says which.  The sampled trace is
+ * what the dossier plots.
+ */
+#ifndef AEROEVAL_DISCHARGE_H
+#define AEROEVAL_DISCHARGE_H
+
+#include <stdbool.h>
+
+#include "physics/batt.h"
+#include "physics/mission.h"
+#include "core/result.h"
+#include "physics/role.h"
+
+enum discharge_end {
+	DIS_COMPLETED,      /* flew the whole mission */
+	DIS_DEPLETED,       /* state of charge reached the clamp */
+	DIS_VOLTAGE_FLOOR,  /* loaded voltage fell below cells × cutoff */
+	DIS_COLLAPSE,       /* no real current: voltage collapse */
+	DIS_OVERFLOW,       /* power not finite / above the guard */
+	DIS_THERMAL,        /* pack above 60 °C: thermal runaway */
+	DIS_END_MAX
+};
+extern const char *const discharge_end_text[DIS_END_MAX];
+
+struct discharge_pack {
+	const struct batt_chem *chem;
+	int cells;               /* series cells */
+	double capacity_ah;      /* total at the terminals */
+	double mass_kg;          /* pack mass (thermal capacity and area) */
+	int cycles;              /* ageing */
+	int n_rotors;            /* ESCs sharing R_ds,on */
+	double h_conv_w_m2k;     /* convection coefficient */
+};
+
+struct discharge_mission {
+	const struct mission_model *model;
+	double dry_mass_kg;              /* aircraft without payload */
+	struct role_shedding shed;       /* payload over time */
+	double duration_s[PHASE_MAX];    /* phase durations (already relaxed) */
+	double speed_ms[PHASE_MAX];      /* climb speed, forward speed, 0 */
+	double ambient_c;                /* air temperature */
+};
+
+struct discharge_out {
+	enum discharge_end end;
+	double t_end_s;           /* time flown */
+	double ah_used;           /* charge drawn */
+	double wh_used;           /* energy drawn at the terminals */
+	double peak_temp_c;
+	double min_v_term_v;
+	double end_soc;
+	double peak_current_a;
+	double phase_energy_wh[PHASE_MAX];
+	double phase_mean_current_a[PHASE_MAX];
+	double phase_mean_power_w[PHASE_MAX];
+};
+
+/* Simulate the mission with about `steps` time steps in all (at least 4 per
+ * flown phase).  When trace != NULL, up to max_trace samples are stored and
+ * *n_trace set.  Returns out->end == DIS_COMPLETED on success. */
+void discharge_run(const struct discharge_pack *pack,
+                   const struct discharge_mission *mis, int steps,
+                   struct res_sample *trace, int max_trace, int *n_trace,
+                   struct discharge_out *out);
+
+/* Hover endurance at constant mass_kg from full charge down to reserve_soc
+ * (or the voltage floor, or a thermal stop), s.  aux_w replaces the model's
+ * auxiliary load (marketing mode passes 0). */
+double discharge_hover_endurance_s(const struct discharge_pack *pack,
+                                   const struct mission_model *model,
+                                   double mass_kg, double ambient_c,
+                                   double reserve_soc);
+
+/* The same with `steps` integration steps over the estimated endurance
+ * (the plain form uses 240); the crossing is interpolated within a step. */
+double discharge_hover_endurance_steps_s(const struct discharge_pack *pack,
+                                         const struct mission_model *model,
+                                         double mass_kg, double ambient_c,
+                                         double reserve_soc, int steps);
+
+#endif

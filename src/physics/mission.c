@@ -1,0 +1,270 @@
+/* mission.c — three-phase mission power model (see mission.h). */
+#include "physics/mission.h"
+
+#include <stddef.h>
+
+#include "util/units.h"
+
+static void
+finish(const struct mission_model *m, struct mission_power *out)
+{
+	out->shaft_w = out->rotor.p_shaft_w * (double)m->n_rotors;
+	/* Paper eq. (powerbudget): ½ f_pwm C_oss V² per ESC. */
+	out->switching_w = 0.5 * MISSION_F_PWM_HZ * MISSION_C_OSS_F
+	    * m->bus_voltage_v * m->bus_voltage_v * (double)m->n_rotors;
+	out->electrical_w = out->shaft_w / m->eta_drive + out->switching_w + m->aux_w;
+}
+
+/* Coaxial pairs: the lower rotor works in the upper one's wake. */
+static void
+apply_coaxial(const struct mission_model *m, struct aero_point *p)
+{
+	if (!m->coaxial)
+		return;
+	double extra = (MISSION_COAX_INDUCED - 1.0) * p->p_induced_w;
+	p->p_induced_w += extra;
+	p->p_shaft_w += extra;
+}
+
+/* Drag reference area in forward flight at mass_kg, m² (a pow: the speed
+ * sweep computes it once for all its speeds). */
+static double
+forward_ref_area_m2(const struct mission_model *m, double mass_kg)
+{
+	/* Mapping LiDAR's multiplier acts in forward flight only. */
+	return aero_ref_area_m2(m->f_scale, mass_kg, m->added_drag_m2)
+	    * m->fwd_drag_mult;
+}
+
+/* mission_power with the forward reference area s_fwd_m2 already known
+ * (read only when v_fwd_ms > 0). */
+static void
+phase_power(const struct mission_model *m, double mass_kg, double v_climb_ms,
+            double v_fwd_ms, double s_fwd_m2, struct mission_power *out)
+{
+	double weight_n = mass_kg * G0_M_S2;
+	double n = (double)m->n_rotors;
+	double rho = m->air.rho_kg_m3;
+	double parasite_w = 0.0;
+
+	out->pitch_deg = 0.0;
+	out->drag_n = 0.0;
+	if (v_fwd_ms > 0.0) {
+		out->drag_n = aero_drag_n(rho, v_fwd_ms, m->cd_h, s_fwd_m2);
+		out->pitch_deg = atan(out->drag_n / weight_n) * 180.0 / M_PI;
+		out->thrust_per_rotor_n = sqrt(weight_n * weight_n
+		    + out->drag_n * out->drag_n) / n;
+		parasite_w = out->drag_n * v_fwd_ms / n;
+	} else if (v_climb_ms > 0.0) {
+		double s_ref = aero_ref_area_m2(m->f_scale, mass_kg, m->added_drag_m2);
+		out->drag_n = aero_drag_n(rho, v_climb_ms, m->cd_v, s_ref);
+		out->thrust_per_rotor_n = (weight_n + out->drag_n) / n;
+	} else {
+		out->thrust_per_rotor_n = weight_n / n;
+	}
+	aero_rotor_power(&m->rotor, &m->air, out->thrust_per_rotor_n,
+	    v_climb_ms > 0.0 && v_fwd_ms <= 0.0 ? v_climb_ms : 0.0,
+	    v_fwd_ms > 0.0 ? v_fwd_ms : 0.0, parasite_w, &out->rotor);
+	apply_coaxial(m, &out->rotor);
+	finish(m, out);
+}
+
+void
+mission_power(const struct mission_model *m, double mass_kg, double v_climb_ms,
+              double v_fwd_ms, struct mission_power *out)
+{
+	double s_fwd_m2 = v_fwd_ms > 0.0 ? forward_ref_area_m2(m, mass_kg) : 0.0;
+	phase_power(m, mass_kg, v_climb_ms, v_fwd_ms, s_fwd_m2, out);
+}
+
+void
+mission_peak_power(const struct mission_model *m, double thrust_per_rotor_n,
+                   struct mission_power *out)
+{
+	out->thrust_per_rotor_n = thrust_per_rotor_n;
+	out->drag_n = 0.0;
+	out->pitch_deg = 0.0;
+	aero_rotor_power(&m->rotor, &m->air, thrust_per_rotor_n, 0.0, 0.0, 0.0,
+	    &out->rotor);
+	apply_coaxial(m, &out->rotor);
+	finish(m, out);
+}
+
+/* The sweep's grid: speed i of 0..mission_sweep_last(). */
+static int
+sweep_last(void)
+{
+	return (int)((MISSION_SWEEP_V1_MS - MISSION_SWEEP_V0_MS)
+	    / MISSION_SWEEP_STEP_MS + 0.5);
+}
+
+static double
+sweep_speed_ms(int i)
+{
+	return MISSION_SWEEP_V0_MS + MISSION_SWEEP_STEP_MS * (double)i;
+}
+
+/* Past the thrust or pitch limit at this operating point? */
+static bool
+sweep_over(const struct mission_power *p, double max_thrust_per_rotor_n)
+{
+	return p->thrust_per_rotor_n > max_thrust_per_rotor_n
+	    || p->pitch_deg > MISSION_PITCH_MAX_DEG;
+}
+
+int
+mission_speed_sweep(const struct mission_model *m, double mass_kg,
+                    double max_thrust_per_rotor_n, double *v_ms,
+                    double *power_w, int max_points, double *v_min_power_ms,
+                    double *v_max_ms)
+{
+	int n = 0;
+	double best = 0.0;
+	bool limited = false;
+	*v_min_power_ms = MISSION_SWEEP_V0_MS;
+	*v_max_ms = MISSION_SWEEP_V1_MS;
+	int steps = sweep_last();
+	double s_fwd_m2 = forward_ref_area_m2(m, mass_kg); /* the same at every speed */
+	for (int i = 0; i <= steps; i++) {
+		double v = sweep_speed_ms(i);
+		struct mission_power p;
+		phase_power(m, mass_kg, 0.0, v, s_fwd_m2, &p);
+		if (n < max_points) {
+			v_ms[n] = v;
+			power_w[n] = p.electrical_w;
+			n++;
+		}
+		bool over = sweep_over(&p, max_thrust_per_rotor_n);
+		if (over && !limited) {
+			limited = true;
+			*v_max_ms = v - MISSION_SWEEP_STEP_MS;
+		}
+		if (!over && (i == 0 || p.electrical_w < best)) {
+			best = p.electrical_w;
+			*v_min_power_ms = v;
+		}
+	}
+	return n;
+}
+
+/* The speed search's memo: each grid speed's power and limit flag,
+ * computed on first use. */
+struct sweep_memo {
+	const struct mission_model *m;
+	double mass_kg, s_fwd_m2, max_thrust_n;
+	double power_w[MISSION_SWEEP_MAX_POINTS];
+	signed char over[MISSION_SWEEP_MAX_POINTS]; /* -1: not computed */
+};
+
+static void
+memo_at(struct sweep_memo *s, int i)
+{
+	if (s->over[i] >= 0)
+		return;
+	struct mission_power p;
+	phase_power(s->m, s->mass_kg, 0.0, sweep_speed_ms(i), s->s_fwd_m2, &p);
+	s->power_w[i] = p.electrical_w;
+	s->over[i] = sweep_over(&p, s->max_thrust_n);
+}
+
+/* The tests the search bisects on, each monotone in i on the grid: past
+ * the limits (thrust and pitch grow with speed, drag ~ V²), and the power
+ * no longer falling to the next speed (it falls, then rises). */
+static bool
+over_at(struct sweep_memo *s, int i)
+{
+	memo_at(s, i);
+	return s->over[i] != 0;
+}
+
+static bool
+rises_at(struct sweep_memo *s, int i)
+{
+	memo_at(s, i);
+	memo_at(s, i + 1);
+	return !(s->power_w[i + 1] < s->power_w[i]);
+}
+
+/* The first i in [lo, hi) where the monotone test holds, hi if none.  With
+ * a hint in [lo, hi] the bracket grows from it in steps of 1, 2, 4, ...
+ * (the answer a few points off costs a few tests), then bisects; without
+ * one (hint < 0) it bisects [lo, hi].  The same answer either way. */
+static int
+first_true(struct sweep_memo *s, bool (*test)(struct sweep_memo *, int),
+           int lo, int hi, int hint)
+{
+	if (hint >= lo && hint <= hi) {
+		if (hint == hi || test(s, hint)) {
+			/* The answer is at or below the hint. */
+			int top = hint, step = 1;
+			while (top - step >= lo && test(s, top - step)) {
+				top -= step;
+				step *= 2;
+			}
+			hi = top;
+			lo = top - step >= lo ? top - step + 1 : lo;
+		} else {
+			/* Above it. */
+			int bottom = hint, step = 1;
+			while (bottom + step < hi && !test(s, bottom + step)) {
+				bottom += step;
+				step *= 2;
+			}
+			lo = bottom + 1;
+			hi = bottom + step < hi ? bottom + step : hi;
+		}
+	}
+	while (lo < hi) {
+		int mid = lo + (hi - lo) / 2;
+		if (test(s, mid))
+			hi = mid;
+		else
+			lo = mid + 1;
+	}
+	return lo;
+}
+
+void
+mission_speed_search_hinted(const struct mission_model *m, double mass_kg,
+                            double max_thrust_per_rotor_n,
+                            double *v_min_power_ms, double *v_max_ms,
+                            struct mission_speed_hint *hint)
+{
+	struct sweep_memo s = { m, mass_kg, forward_ref_area_m2(m, mass_kg),
+	    max_thrust_per_rotor_n, { 0.0 }, { 0 } };
+	int last = sweep_last();
+	if (last >= MISSION_SWEEP_MAX_POINTS) {
+		/* A grid finer than the memo holds: sweep it all. */
+		(void)mission_speed_sweep(m, mass_kg, max_thrust_per_rotor_n, NULL,
+		    NULL, 0, v_min_power_ms, v_max_ms);
+		if (hint != NULL)
+			hint->set = false;
+		return;
+	}
+	for (int i = 0; i <= last; i++)
+		s.over[i] = -1;
+	bool hinted = hint != NULL && hint->set;
+	/* The speeds within the limits are a prefix 0..n_ok-1. */
+	int n_ok = first_true(&s, over_at, 0, last + 1, hinted ? hint->n_ok : -1);
+	*v_max_ms = n_ok <= last ? sweep_speed_ms(n_ok) - MISSION_SWEEP_STEP_MS
+	    : MISSION_SWEEP_V1_MS;
+	*v_min_power_ms = MISSION_SWEEP_V0_MS;
+	int i_min = 0;
+	if (n_ok > 0) {
+		/* The first minimum: the first i whose successor is not lower. */
+		i_min = first_true(&s, rises_at, 0, n_ok - 1,
+		    hinted ? hint->i_min : -1);
+		*v_min_power_ms = sweep_speed_ms(i_min);
+	}
+	if (hint != NULL)
+		*hint = (struct mission_speed_hint){ true, n_ok, i_min };
+}
+
+void
+mission_speed_search(const struct mission_model *m, double mass_kg,
+                     double max_thrust_per_rotor_n, double *v_min_power_ms,
+                     double *v_max_ms)
+{
+	mission_speed_search_hinted(m, mass_kg, max_thrust_per_rotor_n,
+	    v_min_power_ms, v_max_ms, NULL);
+}

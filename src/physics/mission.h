@@ -1,0 +1,100 @@
+/* mission.h — three-phase mission power model (hover, climb, forward).
+ *
+ * Paper §IV-C..F: per-phase thrust (hover M g / N, climb (M g + F_dv) / N,
+ * forward sqrt((M g)² + F_d²) / N with body pitch atan(F_d / M g)), parasite
+ * drag on S_ref = f_scale M^(2/3) + ΔA (the role's forward multiplier in
+ * forward flight only), rotor power from aero.h, electrical power
+ * P_mech / η + ESC switching loss + auxiliary power (eq. powerbudget), and
+ * the auto-velocity sweep 1–30 m/s in 0.5 m/s steps.
+ */
+#ifndef AEROEVAL_MISSION_H
+#define AEROEVAL_MISSION_H
+
+#include <stdbool.h>
+
+#include "physics/aero.h"
+#include "physics/atmo.h"
+
+#define MISSION_SWEEP_V0_MS   1.0
+#define MISSION_SWEEP_V1_MS   30.0
+#define MISSION_SWEEP_STEP_MS 0.5
+#define MISSION_SWEEP_MAX_POINTS 64 /* grid speeds, with room to spare */
+#define MISSION_F_PWM_HZ      24000.0 /* ESC PWM frequency, Hz */
+#define MISSION_C_OSS_F       3.75e-9 /* MOSFET output capacitance, mid of 2.5-5 nF */
+#define MISSION_COAX_INDUCED  1.22    /* coaxial-pair induced-power factor (Leishman) */
+#define MISSION_PITCH_MAX_DEG 35.0    /* steepest body pitch accepted in cruise */
+
+/* Everything the power of a phase depends on besides mass and speed. */
+struct mission_model {
+	struct atmo_state air;      /* the air */
+	struct aero_rotor rotor;    /* one rotor */
+	int n_rotors;               /* N_r */
+	bool coaxial;               /* stacked pairs: induced factor */
+	double f_scale;             /* S_ref scale, m²/kg^(2/3) */
+	double added_drag_m2;       /* ΔA */
+	double fwd_drag_mult;       /* role forward-flight multiplier */
+	double cd_h;                /* body Cd, forward */
+	double cd_v;                /* body Cd, climb */
+	double eta_drive;           /* motor + ESC efficiency */
+	double aux_w;               /* auxiliary load, W */
+	double bus_voltage_v;       /* for the switching loss */
+};
+
+struct mission_power {
+	double thrust_per_rotor_n;
+	double drag_n;              /* body drag in this phase */
+	double pitch_deg;           /* body pitch */
+	struct aero_point rotor;    /* one rotor's operating point */
+	double shaft_w;             /* all rotors */
+	double switching_w;         /* ESC switching loss, all ESCs */
+	double electrical_w;        /* at the battery: shaft/η + switching + aux */
+};
+
+/* Power of one phase at mass_kg: v_climb_ms > 0 for climb, v_fwd_ms > 0 for
+ * forward flight, both 0 for hover. */
+void mission_power(const struct mission_model *m, double mass_kg,
+                   double v_climb_ms, double v_fwd_ms, struct mission_power *out);
+
+/* Full-throttle static power when each rotor gives thrust_per_rotor_n. */
+void mission_peak_power(const struct mission_model *m, double thrust_per_rotor_n,
+                        struct mission_power *out);
+
+/* Sweep forward speed; fills up to max_points (v, electrical power) pairs and
+ * returns the count.  *v_min_power_ms gets the minimum-power speed, and
+ * *v_max_ms the highest speed whose thrust stays within
+ * max_thrust_per_rotor_n and whose pitch stays under MISSION_PITCH_MAX_DEG
+ * (the sweep's end if none exceeds them). */
+int mission_speed_sweep(const struct mission_model *m, double mass_kg,
+                        double max_thrust_per_rotor_n, double *v_ms,
+                        double *power_w, int max_points,
+                        double *v_min_power_ms, double *v_max_ms);
+
+/* mission_speed_sweep()'s *v_min_power_ms and *v_max_ms without the curve,
+ * by bisection on the same grid: about 18 operating points instead of 59.
+ * Equal to the sweep's whenever the power has a single minimum over the
+ * speeds within the limits (tests/test_mission.c checks it on random
+ * aircraft). */
+void mission_speed_search(const struct mission_model *m, double mass_kg,
+                          double max_thrust_per_rotor_n,
+                          double *v_min_power_ms, double *v_max_ms);
+
+/* Where a speed search ended on the grid: the count of speeds within the
+ * limits (a prefix) and the index of the power's first minimum.  A mass
+ * loop's next search, at a mass close by, ends at the same points. */
+struct mission_speed_hint {
+	bool set;
+	int n_ok;
+	int i_min;
+};
+
+/* mission_speed_search() that first verifies the points *hint names (two
+ * or three operating points each, against the bisection's ~9) and
+ * bisects only where they fail; the result is the bisection's whenever
+ * its tests are monotone on the grid, as mission_speed_search() assumes.
+ * *hint gets this search's points. */
+void mission_speed_search_hinted(const struct mission_model *m, double mass_kg,
+                                 double max_thrust_per_rotor_n,
+                                 double *v_min_power_ms, double *v_max_ms,
+                                 struct mission_speed_hint *hint);
+
+#endif

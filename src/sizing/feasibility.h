@@ -1,0 +1,40 @@
+/* feasibility.h — the feasibility gate and the checks table.
+ *
+ * Paper §IV-A: cheap geometric and physical checks reject impossible
+ * configurations before the mass loop (coaxial arm count, a locked propeller
+ * that overlaps its neighbour, a CG outside the rotor polygon, no mission,
+ * a locked battery that cannot hold even the mission's lower-bound energy).
+ * After the loop, every constraint becomes one row of the checks table
+ * (value, limit, margin, PASS/FAIL), and each failure becomes a violation
+ * with a plain message and suggested fixes.
+ */
+#ifndef AEROEVAL_FEASIBILITY_H
+#define AEROEVAL_FEASIBILITY_H
+
+#include <stdbool.h>
+
+#include "core/result.h"
+#include "sizing/sizing.h"
+
+/* Pre-loop gate for one run.  Appends violations (run name `run`, a
+ * string literal) to r and returns true when the run may go on. */
+bool feasibility_gate(const struct sizing_params *p, const char *run,
+                      struct solve_result *r);
+
+/* Fill run->checks from a finished run and append a violation for each
+ * failed check and for the loop status (run: a string literal, as the
+ * violations keep it).  Sets run->feasible. */
+void feasibility_checks(const struct sizing_params *p, enum sizing_status st,
+                        const char *run, struct res_run *run_out,
+                        struct solve_result *r);
+
+/* Append one violation; fixes is a NULL-terminated list (may be NULL).
+ * run, stage and code are string literals (the violation keeps the
+ * pointers, see result.h).  With r->terse, run, stage and code only
+ * (fixes and fmt are not read, message is empty). */
+void feasibility_violation(struct solve_result *r, const char *run,
+                           const char *stage, const char *code,
+                           const char *const *fixes, const char *fmt, ...)
+    __attribute__((format(printf, 6, 7)));
+
+#endif

@@ -1,0 +1,187 @@
+/* validate.h — accuracy against real aircraft: cohort row -> mission, one
+ * solve per row, and the statistics of predicted vs actual takeoff mass.
+ *
+ * For the `validate` and `calibrate` commands (cli_validate.c, calibrate.c).
+ * Engine layer plus stats: no JSON, PDF or printing here.
+ *
+ * THE MISSION RULE (validate_mission_from_row), applied identically to every
+ * row and using only the row's own facts — never takeoff_mass_kg,
+ * empty_mass_kg, battery_mass_kg or anything derived from them:
+ *   payload     payload_kg (integrated-camera aircraft say 0); unknown ->
+ *               row skipped.  A takeoff figure is the aircraft plus what it
+ *               carries: without that fact the row cannot be predicted (a
+ *               rated maximum takeoff mass with 0 kg of payload would only
+ *               measure the missing payload), no other fact bounds it, and
+ *               empty_mass_kg is off limits (takeoff minus empty is the
+ *               answer).
+ *   rotors      rotor_count; unknown -> row skipped (a guess between 4, 6
+ *               and 8 would change the prediction by tens of percent).
+ *   coaxial     coaxial; unknown -> flat (noted): coaxial aircraft are the
+ *               exception and cohort rows say so when they are.
+ *   class       airframe_class; unknown -> row skipped.
+ *   role        role -> payload_role.type; unknown -> "none" (noted).
+ *   shedding    off (payload_role.mass_shedding = false) for the roles that
+ *               shed (delivery, agriculture): a published endurance is
+ *               flown at one takeoff mass, the load on board throughout.
+ *   wheelbase   diagonal_wheelbase_mm; else the smallest wheelbase whose
+ *               overlap limit (paper eq. overlap, 5 % tip clearance) admits
+ *               the row's propeller, W = D / ((1 - 0.05) sin(pi / N_arms))
+ *               with N_arms = rotors (coaxial: rotors / 2) (noted); else
+ *               skipped.
+ *   propeller   diameter locked at prop_diameter_in when it fits the
+ *               wheelbase's overlap limit (pitch = prop_pitch_in, else
+ *               0.45 D, which only labels the design: pitch enters no mass);
+ *               a propeller larger than the limit is not locked and the
+ *               engine uses the limit, the nearest diameter the model
+ *               admits (noted); unknown -> not locked (the engine's own
+ *               choice, the largest the wheelbase admits).
+ *   chemistry   battery_chemistry when it names a loaded profile (case
+ *               ignored); the bare family "Li-ion" -> "Li-ion NMC" (of the
+ *               two Li-ion profiles the lower specific energy: no fact
+ *               picks one, so the conservative one) (noted); else LiPo, the
+ *               engine's default (noted).
+ *   packs       battery_pack_count; unknown -> 1.
+ *   cells       cell_count -> nominal_cell_count (the bus voltage is a fact
+ *               of the aircraft); unknown -> chosen by the solver.
+ *   capacity    NOT locked.  Sizing the energy is what is being tested (the
+ *               paper sizes it too); a locked battery would hand the model
+ *               the largest single mass of the aircraft as a given.
+ *   endurance   one hover phase (no climb, no forward flight).  The engine
+ *               sizes capacity as 1.2 x the charge the mission draws, while
+ *               manufacturer times run the pack to empty, so:
+ *               t_hover = hover_time_min / 1.2, else
+ *               t_hover = 0.8 x max_flight_time_min / 1.2 (noted): the
+ *               advertised maximum is flown at the best-endurance forward
+ *               speed, where a multirotor draws roughly 0.8 of its hover
+ *               power; else skipped.
+ * Everything else keeps the mission defaults (sea level, ISA, role and
+ * class defaults).  The prediction is the custom run's takeoff mass.
+ */
+#ifndef AEROEVAL_VALIDATE_H
+#define AEROEVAL_VALIDATE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "input/cohort.h"
+#include "core/model.h"
+#include "core/result.h"
+#include "core/spec.h"
+#include "util/stats.h"
+
+#define VALIDATE_PITCH_RATIO     0.45  /* pitch/diameter when only D is known */
+#define VALIDATE_MAXFLIGHT_HOVER 0.8   /* hover-equivalent share of the max flight time */
+#define VALIDATE_BOOT_RESAMPLES  2000  /* bootstrap resamples of the MAPE CI */
+#define VALIDATE_BOOT_SEED       20261122u /* fixed: the CI is reproducible */
+
+/* Stand-ins the rule used for a row (bit flags, validate_note_text). */
+enum validate_note {
+	VALIDATE_NOTE_WHEELBASE_PROP = 1u << 0, /* wheelbase from the prop overlap */
+	VALIDATE_NOTE_PROP_OVER      = 1u << 1, /* prop above the overlap limit, not locked */
+	VALIDATE_NOTE_CHEM_FAMILY    = 1u << 2, /* "Li-ion" -> "Li-ion NMC" */
+	VALIDATE_NOTE_CHEM_DEFAULT   = 1u << 3, /* chemistry unknown -> LiPo */
+	VALIDATE_NOTE_COAX_DEFAULT   = 1u << 4, /* coaxial unknown -> flat */
+	VALIDATE_NOTE_ROLE_DEFAULT   = 1u << 5, /* role unknown -> none */
+	VALIDATE_NOTE_MAX_FLIGHT     = 1u << 6, /* endurance from the max flight time */
+	VALIDATE_NOTE_COUNT          = 7
+};
+
+/* Why a row was skipped. */
+enum validate_skip {
+	VALIDATE_SKIP_NONE,        /* not skipped */
+	VALIDATE_SKIP_PAYLOAD,     /* payload of the takeoff figure unknown */
+	VALIDATE_SKIP_ROTORS,      /* rotor count unknown */
+	VALIDATE_SKIP_CLASS,       /* airframe class unknown */
+	VALIDATE_SKIP_WHEELBASE,   /* neither wheelbase nor propeller known */
+	VALIDATE_SKIP_ENDURANCE,   /* neither hover time nor max flight time */
+	VALIDATE_SKIP_RANGE,       /* a fact outside the mission contract's range */
+	VALIDATE_SKIP_MAX
+};
+
+/* Outcome of one row. */
+enum validate_status {
+	VALIDATE_ROW_SKIPPED,      /* the rule had no mission for it */
+	VALIDATE_ROW_OK,           /* converged: counts in the statistics */
+	VALIDATE_ROW_NOT_CONVERGED,/* ran, mass loop did not converge: listed apart */
+	VALIDATE_ROW_NOT_RUN,      /* rejected by the feasibility gate or an internal error */
+	VALIDATE_ROW_STATUS_MAX
+};
+
+/* The one-line text of a single note flag ("role unknown: none"), or "". */
+const char *validate_note_text(unsigned note);
+
+/* The text of a skip reason ("rotor count unknown"), "" for NONE. */
+const char *validate_skip_text(enum validate_skip s);
+
+/* The status word ("ok", "skipped", "not converged", "not run"). */
+const char *validate_status_text(enum validate_status s);
+
+/* Builds the mission for a row by the rule above into *out (every field it
+ * sets is marked given[]).  md supplies the chemistry names.  *notes gets
+ * the OR of the enum validate_note flags used.  Returns VALIDATE_SKIP_NONE,
+ * or the reason the row has no mission (then *out holds the defaults). */
+enum validate_skip validate_mission_from_row(const struct cohort_row *row,
+                                             const struct model_data *md,
+                                             struct mission_spec *out,
+                                             unsigned *notes);
+
+/* One row's result. */
+struct validate_row {
+	size_t index;              /* row in the cohort */
+	enum validate_status status;
+	enum validate_skip skip;   /* when status is SKIPPED */
+	unsigned notes;            /* enum validate_note flags */
+	struct mission_spec spec;  /* the mission the rule built (unresolved) */
+	double actual_kg;          /* takeoff_mass_kg */
+	double predicted_kg;       /* custom-run MTOW; 0 unless OK or NOT_CONVERGED */
+	double err_pct;            /* 100 (pred - actual) / actual; 0 unless OK */
+	double k;                  /* actual / predicted; 0 unless OK */
+	bool feasible;             /* every check of the custom run passed */
+	bool has_battery;          /* status OK and the row gives battery_mass_kg */
+	double battery_actual_kg;
+	double battery_pred_kg;
+	double battery_err_pct;
+	int cells;                 /* series cells of the design (0 unless run) */
+	double capacity_mah;       /* capacity of the design (0 unless run) */
+	double thrust_to_weight;   /* T/W the design flies (0 unless run) */
+	bool thrust_relaxed;       /* the role's default target did not close
+	                            * and was relaxed (sizing.h) */
+};
+
+/* The whole validation. */
+struct validate_report {
+	size_t n_rows;             /* = cohort rows */
+	struct validate_row *rows; /* n_rows, cohort order */
+	size_t n_ok;               /* rows in the statistics */
+	struct stats_summary mtow; /* over the OK rows */
+	double ci_lo_pct;          /* bootstrap 95 % CI of the MAPE */
+	double ci_hi_pct;
+	struct stats_group *by_class; /* MAPE per airframe class name */
+	size_t n_classes;
+	struct stats_summary battery; /* over the OK rows with battery_mass_kg */
+};
+
+/* Solves one mission and fills the prediction fields of *vr (status,
+ * predicted_kg, feasible, cells, capacity) from the custom run.  work is a
+ * caller-owned scratch result (large: keep one per thread). */
+void validate_solve_row(const struct mission_spec *spec, const struct model_data *md,
+                        struct solve_result *work, struct validate_row *vr);
+
+/* Runs the rule and a solve on every row of c and the statistics over the
+ * converged rows.  Returns 0, or -1 if a statistic refused its input (cannot
+ * happen for finite positive masses).  Release with validate_report_free. */
+int validate_cohort(const struct cohort *c, const struct model_data *md,
+                    struct validate_report *out);
+
+void validate_report_free(struct validate_report *v);
+
+/* The statistics part of validate_cohort: from v->rows (status, actual_kg,
+ * predicted_kg, has_battery and the battery masses) fills n_ok, mtow,
+ * the CI, by_class (keys from c's rows) and battery, replacing what was
+ * there.  Returns 0, or -1 if a statistic refused its input. */
+int validate_summarize(const struct cohort *c, struct validate_report *v);
+
+/* The group key of a row for the per-class statistics ("MicroAIO", ...). */
+const char *validate_class_key(const struct cohort_row *row);
+
+#endif

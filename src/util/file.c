@@ -1,0 +1,85 @@
+/* file.c — reading a whole input file, safely (see file.h). */
+#include "util/file.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "util/xalloc.h"
+
+static void
+file_err(char *err, size_t errlen, const char *fmt, ...)
+{
+	if (err == NULL || errlen == 0)
+		return;
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(err, errlen, fmt, ap);
+	va_end(ap);
+}
+
+int
+file_read(const char *path, size_t max_n, unsigned char **out,
+                size_t *n, char *err, size_t errlen)
+{
+	*out = NULL;
+	*n = 0;
+	/* O_NONBLOCK: opening a FIFO must not wait for a writer (it is then
+	 * refused below as not a regular file); reads of a regular file are
+	 * unaffected. */
+	int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+	if (fd < 0) {
+		file_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+		return -1;
+	}
+	struct stat st;
+	if (fstat(fd, &st) < 0 || !S_ISREG(st.st_mode)) {
+		file_err(err, errlen, "%s: not a regular file", path);
+		close(fd);
+		return -1;
+	}
+	if ((unsigned long long)st.st_size > max_n) {
+		file_err(err, errlen, "%s: file too large (%lld bytes, limit %zu)",
+		        path, (long long)st.st_size, max_n);
+		close(fd);
+		return -1;
+	}
+	/* The size is a hint only: a file that grows while we read is read
+	 * to its end, up to the cap. */
+	size_t cap = (size_t)st.st_size + 1, len = 0;
+	unsigned char *buf = xmalloc(cap);
+	for (;;) {
+		if (len + 1 >= cap) {
+			cap *= 2;
+			buf = xrealloc(buf, cap);
+		}
+		ssize_t k = read(fd, buf + len, cap - 1 - len);
+		if (k < 0 && errno == EINTR)
+			continue;
+		if (k < 0) {
+			file_err(err, errlen, "%s: read failed: %s", path, strerror(errno));
+			goto fail;
+		}
+		if (k == 0)
+			break;
+		len += (size_t)k;
+		if (len > max_n) {
+			file_err(err, errlen, "%s: file too large (limit %zu bytes)", path, max_n);
+			goto fail;
+		}
+	}
+	close(fd);
+	buf[len] = '\0';
+	*out = buf;
+	*n = len;
+	return 0;
+fail:
+	close(fd);
+	free(buf);
+	return -1;
+}

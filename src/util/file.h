@@ -1,0 +1,22 @@
+/* file.h — reading a whole input file, safely.
+ *
+ * Every reader of aeroeval (missions, the catalogue, reference data,
+ * templates, cohorts, fonts and logos) takes its bytes through
+ * file_read(): a regular file only (a FIFO, device or directory is refused
+ * at once, never waited on), and never more than a cap.
+ * Who may include it: every layer but physics.
+ */
+#ifndef AEROEVAL_FILE_H
+#define AEROEVAL_FILE_H
+
+#include <stddef.h>
+
+/* Reads the whole regular file at path.  On success *out is a heap buffer
+ * of *n bytes plus one extra NUL byte (so text parsers may treat it as a C
+ * string); the caller frees it with free().  A file larger than max_n bytes
+ * is refused (a mission or catalogue of gigabytes is a mistake, not input).
+ * On failure *out is NULL and *n is 0. */
+int file_read(const char *path, size_t max_n, unsigned char **out,
+                    size_t *n, char *err, size_t errlen);
+
+#endif

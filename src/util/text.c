@@ -1,0 +1,102 @@
+/* text.c — UTF-8, positions in text and edit distance (see text.h). */
+#include "util/text.h"
+
+#include <ctype.h>
+#include <string.h>
+
+size_t
+text_utf8_seq(const char *s, size_t left)
+{
+	const unsigned char *u = (const unsigned char *)s;
+	size_t n;
+	unsigned long cp;
+
+	if (left == 0)
+		return 0;
+	if (u[0] < 0x80)
+		return 1;
+	if (u[0] >= 0xc2 && u[0] <= 0xdf) {
+		n = 2;
+		cp = u[0] & 0x1fu;
+	} else if (u[0] >= 0xe0 && u[0] <= 0xef) {
+		n = 3;
+		cp = u[0] & 0x0fu;
+	} else if (u[0] >= 0xf0 && u[0] <= 0xf4) {
+		n = 4;
+		cp = u[0] & 0x07u;
+	} else {
+		return 0; /* continuation byte, 0xc0/0xc1 or 0xf5.. */
+	}
+	if (left < n)
+		return 0;
+	for (size_t i = 1; i < n; i++) {
+		if ((u[i] & 0xc0) != 0x80)
+			return 0;
+		cp = (cp << 6) | (u[i] & 0x3fu);
+	}
+	if ((n == 3 && cp < 0x800) || (n == 4 && cp < 0x10000))
+		return 0; /* overlong */
+	if ((cp >= 0xd800 && cp <= 0xdfff) || cp > 0x10ffff)
+		return 0; /* surrogate or beyond Unicode */
+	return n;
+}
+
+size_t
+text_bom(const char *b, size_t len)
+{
+	return len >= 3 && memcmp(b, "\xef\xbb\xbf", 3) == 0 ? 3 : 0;
+}
+
+void
+text_line_col(const char *buf, size_t len, size_t off, int *line, int *col)
+{
+	int l = 1, c = 1;
+	if (off > len)
+		off = len;
+	for (size_t i = off >= text_bom(buf, len) ? text_bom(buf, len) : 0; i < off; i++) {
+		unsigned char ch = (unsigned char)buf[i];
+		if (ch == '\n') {
+			l++;
+			c = 1;
+		} else if ((ch & 0xc0) != 0x80) {
+			c++;
+		}
+	}
+	*line = l;
+	*col = c;
+}
+
+/* Edit distance between a and b ignoring case, where insertions,
+ * deletions, substitutions and swaps of two neighbours cost 1 (optimal
+ * string alignment).  Strings longer than TEXT_DISTANCE_MAX count as far. */
+size_t
+text_distance(const char *a, const char *b)
+{
+	size_t na = strlen(a), nb = strlen(b);
+	size_t d[TEXT_DISTANCE_MAX + 1][TEXT_DISTANCE_MAX + 1];
+
+	if (na > TEXT_DISTANCE_MAX || nb > TEXT_DISTANCE_MAX)
+		return (size_t)-1 / 2;
+	for (size_t i = 0; i <= na; i++)
+		d[i][0] = i;
+	for (size_t j = 0; j <= nb; j++)
+		d[0][j] = j;
+	for (size_t i = 1; i <= na; i++) {
+		for (size_t j = 1; j <= nb; j++) {
+			int ca = tolower((unsigned char)a[i - 1]);
+			int cb = tolower((unsigned char)b[j - 1]);
+			size_t best = d[i - 1][j - 1] + (ca != cb);
+			if (d[i - 1][j] + 1 < best)
+				best = d[i - 1][j] + 1;
+			if (d[i][j - 1] + 1 < best)
+				best = d[i][j - 1] + 1;
+			if (i > 1 && j > 1 &&
+			    ca == tolower((unsigned char)b[j - 2]) &&
+			    tolower((unsigned char)a[i - 2]) == cb &&
+			    d[i - 2][j - 2] + 1 < best)
+				best = d[i - 2][j - 2] + 1;
+			d[i][j] = best;
+		}
+	}
+	return d[na][nb];
+}

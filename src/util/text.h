@@ -1,0 +1,34 @@
+/* text.h — small text helpers every reader shares: UTF-8 validation,
+ * line:col of a byte offset, and the edit distance behind every
+ * "did you mean" suggestion.
+ * Who may include it: everyone.
+ */
+#ifndef AEROEVAL_TEXT_H
+#define AEROEVAL_TEXT_H
+
+#include <stddef.h>
+
+/* Strings longer than this are "far" for text_distance(). */
+#define TEXT_DISTANCE_MAX 64
+
+/* Length in bytes of the valid UTF-8 sequence at s (at most left bytes),
+ * or 0 when the bytes there are not valid UTF-8 (overlong forms,
+ * surrogates and code points above U+10FFFF are invalid). */
+size_t text_utf8_seq(const char *s, size_t left);
+
+/* Length of a UTF-8 byte-order mark at the start of b[0..len), or 0. */
+size_t text_bom(const char *b, size_t len);
+
+/* Line and column (1-based; columns count characters, not bytes) of byte
+ * offset off in buf[0..len) (off is clamped to len; a leading byte-order
+ * mark takes no column). */
+void text_line_col(const char *buf, size_t len, size_t off, int *line,
+                   int *col);
+
+/* Edit distance between a and b ignoring case, where insertions,
+ * deletions, substitutions and swaps of two neighbours cost 1 (optimal
+ * string alignment); strings longer than TEXT_DISTANCE_MAX count as far
+ * ((size_t)-1 / 2). */
+size_t text_distance(const char *a, const char *b);
+
+#endif
