@@ -6,14 +6,14 @@
 #include "physics/therm.h"
 
 static void
-therm_hac_should_be_h_times_6_times_mass_ratio_to_two_thirds(void **state)
+therm_hac_should_be_h_times_6_dm2_times_mass_ratio_to_two_thirds(void **state)
 {
 	(void)state;
-	/* 838.5 g pack, h = 12: 12 · 6 · (838.5/2400)^(2/3) = 72 · 0.349375^(2/3)
-	 *   = 72 · 0.496052775 = 35.7157998 W/K */
-	assert_rel(therm_hac_w_k(0.8385, THERM_H_DEFAULT), 35.7157998, 1e-8);
-	/* The 2400 g reference pack has exactly 6 m²-equivalents: 12 · 6 = 72 W/K */
-	assert_rel(therm_hac_w_k(2.4, 12.0), 72.0, 1e-12);
+	/* 838.5 g pack, h = 12: 12 · 0.06 · (838.5/2400)^(2/3) = 0.72 · 0.349375^(2/3)
+	 *   = 0.72 · 0.496052775 = 0.357157998 W/K */
+	assert_rel(therm_hac_w_k(0.8385, THERM_H_DEFAULT), 0.357157998, 1e-8);
+	/* The 2400 g reference pack has 6 dm² of surface: 12 · 0.06 = 0.72 W/K */
+	assert_rel(therm_hac_w_k(2.4, 12.0), 0.72, 1e-12);
 	assert_rel(THERM_H_DEFAULT, 12.0, 0.0);
 }
 
@@ -32,22 +32,22 @@ therm_racing_cooling_should_use_h_120(void **state)
 {
 	(void)state;
 	assert_rel(THERM_H_RACING, 120.0, 0.0);
-	/* 120 · 6 · 0.496052775 = 357.157998 W/K: ten times the default */
-	assert_rel(therm_hac_w_k(0.8385, THERM_H_RACING), 357.157998, 1e-8);
+	/* 120 · 0.06 · 0.496052775 = 3.57157998 W/K: ten times the default */
+	assert_rel(therm_hac_w_k(0.8385, THERM_H_RACING), 3.57157998, 1e-8);
 }
 
 static void
 therm_step_should_be_the_exact_exponential_solution(void **state)
 {
 	(void)state;
-	/* 838.5 g pack at 31.5 °C in 23.85 °C air, 18.5 W of heat, 7.35 s:
-	 * C_th = 0.8385 · 795 = 666.6075 J/K, hA = 35.7157998 W/K
-	 * T_ss = 23.85 + 18.5/35.7157998 = 24.367978 °C
-	 * T = T_ss + (31.5 - T_ss) exp(-35.7157998 · 7.35 / 666.6075)
-	 *   = 24.367978 + 7.132022 · exp(-0.393801643) = 24.367978 + 7.132022 · 0.674487833
-	 *   = 29.178440 °C */
+	/* 838.5 g pack at 31.5 °C in 23.85 °C air, 18.5 W of heat, 73.5 s:
+	 * C_th = 0.8385 · 795 = 666.6075 J/K, hA = 0.357157998 W/K
+	 * T_ss = 23.85 + 18.5/0.357157998 = 75.6478041 °C
+	 * T = T_ss + (31.5 - T_ss) exp(-0.357157998 · 73.5 / 666.6075)
+	 *   = 75.6478041 - 44.1478041 · exp(-0.0393801643)
+	 *   = 75.6478041 - 44.1478041 · 0.961385093 = 33.2047606 °C */
 	double hac = therm_hac_w_k(0.8385, 12.0);
-	assert_rel(therm_step_c(31.5, 23.85, 18.5, hac, 0.8385, 7.35), 29.17844007, 1e-9);
+	assert_rel(therm_step_c(31.5, 23.85, 18.5, hac, 0.8385, 73.5), 33.2047606, 1e-8);
 	assert_rel(THERM_CP_J_KGK, 795.0, 0.0);
 }
 
@@ -69,8 +69,8 @@ therm_step_should_settle_at_the_steady_state_for_a_huge_step(void **state)
 {
 	(void)state;
 	double hac = therm_hac_w_k(0.8385, 12.0);
-	/* T_ss = 23.85 + 18.5 / 35.7157998 = 24.36797804 °C, stable for any dt */
-	assert_rel(therm_step_c(31.5, 23.85, 18.5, hac, 0.8385, 1e9), 24.36797804, 1e-9);
+	/* T_ss = 23.85 + 18.5 / 0.357157998 = 75.64780406 °C, stable for any dt */
+	assert_rel(therm_step_c(31.5, 23.85, 18.5, hac, 0.8385, 1e9), 75.64780406, 1e-9);
 }
 
 static void
@@ -124,7 +124,7 @@ int
 main(void)
 {
 	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(therm_hac_should_be_h_times_6_times_mass_ratio_to_two_thirds),
+		cmocka_unit_test(therm_hac_should_be_h_times_6_dm2_times_mass_ratio_to_two_thirds),
 		cmocka_unit_test(therm_hac_should_be_scale_invariant_with_mass_to_two_thirds),
 		cmocka_unit_test(therm_racing_cooling_should_use_h_120),
 		cmocka_unit_test(therm_step_should_be_the_exact_exponential_solution),

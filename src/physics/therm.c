@@ -3,9 +3,14 @@
 
 #include <math.h>
 
-/* Reference pack of eq. (hacool): 2400 g has 6 m²-equivalents of cooling. */
+/* Reference pack of eq. (hacool): 2400 g with 6 dm² of surface.  The paper
+ * prints "h · 6 (M/2400)^(2/3)" without the area's unit; a 2.4 kg cube of
+ * pack density (about 2200 kg/m³) has 6.4 dm² of surface, so the 6 is in
+ * dm².  Read as m² it would cool a pack a hundred times better than its
+ * surface can: 72 W/K for 2.4 kg, a flat temperature trace whatever the
+ * losses. */
 #define HAC_REF_MASS_G 2400.0
-#define HAC_REF_AREA   6.0
+#define HAC_REF_AREA_M2 0.06
 
 double
 therm_hac_w_k(double battery_mass_kg, double h_w_m2k)
@@ -13,7 +18,7 @@ therm_hac_w_k(double battery_mass_kg, double h_w_m2k)
 	double m_g = battery_mass_kg * 1000.0;
 	if (m_g < 0.0)
 		m_g = 0.0;
-	return h_w_m2k * HAC_REF_AREA * pow(m_g / HAC_REF_MASS_G, 2.0 / 3.0);
+	return h_w_m2k * HAC_REF_AREA_M2 * pow(m_g / HAC_REF_MASS_G, 2.0 / 3.0);
 }
 
 void

@@ -1,8 +1,9 @@
 /* therm.h — transient battery thermal model and motor winding resistance.
  *
  * Paper §VI-G, eq. (hacool): C_th dT/dt = I² R - hA (T - T_a), with
- * C_th = M_bat C_p and the scale-invariant cooling hA = h · 6 (M_bat/2400 g)^(2/3)
- * (h = 12 W/m²K, 120 for racing).  Thermal runaway is declared above 60 °C.
+ * C_th = M_bat C_p and the scale-invariant cooling hA = h A, A = 6 dm² ×
+ * (M_bat/2400 g)^(2/3) (h = 12 W/m²K, 120 for racing; the paper's 6 is the
+ * reference pack's surface in dm², see therm.c).  Thermal runaway is declared above 60 °C.
  * Paper §V-D: R_m(T) = R_nom (1 + α_Cu (T - 25)).
  */
 #ifndef AEROEVAL_THERM_H
