@@ -2,6 +2,7 @@
 #include "physics/mission.h"
 
 #include <stddef.h>
+#include <string.h>
 
 #include "util/units.h"
 
@@ -12,7 +13,16 @@ finish(const struct mission_model *m, struct mission_power *out)
 	/* Paper eq. (powerbudget): ½ f_pwm C_oss V² per ESC. */
 	out->switching_w = 0.5 * MISSION_F_PWM_HZ * MISSION_C_OSS_F
 	    * m->bus_voltage_v * m->bus_voltage_v * (double)m->n_rotors;
-	out->electrical_w = out->shaft_w / m->eta_drive + out->switching_w + m->aux_w;
+	double drive_w;
+	if (m->real_drive) {
+		motor_at_shaft(&m->motor, m->motor_temp_c, out->rotor.p_shaft_w,
+		    out->rotor.rps, &out->motor);
+		drive_w = out->motor.power_in_w * (double)m->n_rotors;
+	} else {
+		memset(&out->motor, 0, sizeof out->motor);
+		drive_w = out->shaft_w / m->eta_drive;
+	}
+	out->electrical_w = drive_w + out->switching_w + m->aux_w;
 }
 
 /* Coaxial pairs: the lower rotor works in the upper one's wake. */

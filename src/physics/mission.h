@@ -6,6 +6,12 @@
  * forward flight only), rotor power from aero.h, electrical power
  * P_mech / η + ESC switching loss + auxiliary power (eq. powerbudget), and
  * the auto-velocity sweep 1–30 m/s in 0.5 m/s steps.
+ *
+ * The continuous design uses the paper's drive efficiency η.  A design on
+ * real parts gives the model its motor (real_drive): each rotor's
+ * electrical power is then the motor's input at the rotor's speed and
+ * shaft power (motor.h), so efficiency, current and voltage are the
+ * motor's own at every operating point.
  */
 #ifndef AEROEVAL_MISSION_H
 #define AEROEVAL_MISSION_H
@@ -14,6 +20,7 @@
 
 #include "physics/aero.h"
 #include "physics/atmo.h"
+#include "physics/motor.h"
 
 #define MISSION_SWEEP_V0_MS   1.0
 #define MISSION_SWEEP_V1_MS   30.0
@@ -38,6 +45,9 @@ struct mission_model {
 	double eta_drive;           /* motor + ESC efficiency */
 	double aux_w;               /* auxiliary load, W */
 	double bus_voltage_v;       /* for the switching loss */
+	bool real_drive;            /* electrical power from `motor`, not η */
+	struct motor_model motor;   /* the real motor (real_drive) */
+	double motor_temp_c;        /* its winding temperature */
 };
 
 struct mission_power {
@@ -47,7 +57,9 @@ struct mission_power {
 	struct aero_point rotor;    /* one rotor's operating point */
 	double shaft_w;             /* all rotors */
 	double switching_w;         /* ESC switching loss, all ESCs */
-	double electrical_w;        /* at the battery: shaft/η + switching + aux */
+	double electrical_w;        /* at the battery: shaft/η (or the motors'
+	                               input) + switching + aux */
+	struct motor_point motor;   /* one motor's point (real_drive only) */
 };
 
 /* Power of one phase at mass_kg: v_climb_ms > 0 for climb, v_fwd_ms > 0 for

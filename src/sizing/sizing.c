@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "physics/aero.h"
+#include "sizing/airframe.h"
 #include "physics/discharge.h"
 #include "physics/mission.h"
 #include "util/strbuf.h"
@@ -20,9 +21,6 @@
 #define FINAL_STEPS       60
 _Static_assert(FINAL_STEPS + 13 <= RES_MAX_TRACE, "trace buffer too small");
 #define BLADE_INCIDENCE_DEG 4.0 /* best-L/D incidence at blade Reynolds numbers */
-#define S_SCALE_LO_KG     0.3   /* S_scale = 0.25 below this M_ref */
-#define S_SCALE_HI_KG     1.8   /* S_scale = 1 above this M_ref */
-#define S_SCALE_MIN       0.25
 #define MIN_THROTTLE      0.20  /* t_hover floor of paper §V-D */
 #define LIPSCHITZ_STEP    0.01  /* ±1 % of M for dF/dM */
 #define GAMMA_BISECT      8     /* bisection steps of the goal relaxation */
@@ -120,17 +118,6 @@ n_arms(const struct sizing_params *p)
 	return p->coaxial ? p->n_rotors / 2 : p->n_rotors;
 }
 
-static double
-s_scale(double m_ref_kg)
-{
-	/* Paper §VI-E: light configurations get lighter ESCs and harnesses. */
-	if (m_ref_kg <= S_SCALE_LO_KG)
-		return S_SCALE_MIN;
-	if (m_ref_kg >= S_SCALE_HI_KG)
-		return 1.0;
-	return S_SCALE_MIN + (1.0 - S_SCALE_MIN)
-	    * (m_ref_kg - S_SCALE_LO_KG) / (S_SCALE_HI_KG - S_SCALE_LO_KG);
-}
 
 /* Phase durations after goal relaxation. */
 static void
@@ -350,55 +337,30 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 	e->mass.motor_kg = motor_total;
 	e->mass.prop_kg = prop_each * (double)nr;
 
-	/* Arms: strength at max(load factor × CG thrust, full thrust); the
-	 * resonance is checked afterwards (feasibility.c). */
-	double arm_len = 0.5 * p->wheelbase_m;
-	double t_cg;
-	/* The CG polygon is that of the arms (a coaxial pair shares one). */
-	e->cg_ok = structure_cg_thrust_n(mass_kg, n_arms(p), arm_len,
-	    p->cg_shift_m, &t_cg);
-	if (p->coaxial)
-		t_cg *= 0.5; /* each rotor of the pair carries half the arm's share */
-	double per_arm = p->coaxial ? 2.0 : 1.0;
-	double force = fmax(p->load_factor * t_cg, e->t_peak_n) * per_arm;
-	double tip_kg = (motor_total / (double)nr + prop_each) * per_arm;
-	structure_size_arm(force, arm_len, p->alpha_w, tip_kg, &e->arm);
-	double arms = (double)n_arms(p) * e->arm.mass_kg;
-	/* The minimum structural fraction floors the whole structure.  (The
-	 * paper floors the spar and then adds γ on top, which puts an
-	 * agricultural frame at >= 40 % of takeoff mass and makes every
-	 * spraying mission diverge; see README "Where aeroeval departs".) */
-	double sized = p->c_body * arms * (1.0 + p->gamma);
-	double floor_kg = mass_kg * structure_min_fraction(p->wheelbase_m);
-	e->min_fraction_binds = floor_kg > sized;
-	double frame_total = p->lambda * fmax(sized, floor_kg);
-	if (p->fixed_frame_kg > 0.0)
-		frame_total = p->fixed_frame_kg;
-	/* Split the structure: tubes, centre plates/joints, body and gear. */
-	double unit = frame_total / ((1.0 + p->gamma) * p->c_body);
-	e->mass.arm_kg = unit;
-	e->mass.frame_kg = unit * (p->c_body - 1.0);
-	e->mass.other_kg = unit * p->c_body * p->gamma;
+	/* Arms, frame, body, harness and avionics for these loads. */
+	struct airframe_loads al = { mass_kg, e->t_peak_n,
+		motor_total / (double)nr + prop_each, e->peak_current_a,
+		e->mass.battery_kg };
+	struct airframe_masses am;
+	airframe_masses(p, &al, &am);
+	e->arm = am.arm;
+	e->cg_ok = am.cg_ok;
+	e->min_fraction_binds = am.min_fraction_binds;
+	e->mass.arm_kg = am.arm_kg;
+	e->mass.frame_kg = am.frame_kg;
+	e->mass.other_kg = am.other_kg;
+	e->shell_kg = am.shell_kg;
+	e->mass.wiring_kg = am.wiring_kg;
+	e->mass.avionics_kg = am.avionics_kg;
 
-	/* ESCs and harness scale with the current they carry (paper §VI-E). */
-	double scale = s_scale(frame_total + p->payload_kg);
+	/* ESCs scale with the current they carry (paper §VI-E). */
+	double scale = airframe_s_scale(am.frame_total_kg + p->payload_kg);
 	double i_rotor = fmax(SIZING_ESC_MIN_A,
 	    SIZING_ESC_RATING * e->peak_current_a / (double)nr);
 	e->mass.esc_kg = p->parts.active && p->parts.esc_kg_total > 0.0
 	    ? p->parts.esc_kg_total
 	    : SIZING_ESC_KG_PER_A * i_rotor * (double)nr * p->c_esc * scale;
-	e->mass.wiring_kg = p->wire_coef * e->peak_current_a * p->wheelbase_m * scale;
-	e->mass.avionics_kg = p->avionics_kg;
-	/* Body shell around the pack and the electronics, plus the moulded
-	 * arm fairings of classes that have them: each a hollow box of
-	 * side c·L over the arm length L, surface 4c·L² (in other_kg).  λ
-	 * covers it as the paper's "frame and complexity mass". */
-	e->shell_kg = p->shell_kg_m2 * sizing_shell_area_m2(e->mass.battery_kg,
-	    p->avionics_kg, n_arms(p), arm_len, p->fairing_section_frac);
-	if (p->fixed_frame_kg <= 0.0)
-		e->shell_kg *= p->lambda;
-	e->mass.other_kg += e->shell_kg;
-	e->mass.role_aux_kg = p->role_aux_kg;
+	e->mass.role_aux_kg = am.role_aux_kg;
 	e->mass.payload_kg = p->payload_kg;
 	e->mass.total_kg = e->mass.payload_kg + e->mass.battery_kg
 	    + e->mass.frame_kg + e->mass.arm_kg + e->mass.motor_kg

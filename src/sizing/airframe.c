@@ -1,0 +1,75 @@
+/* airframe.c — the structure, body, harness and avionics masses (see
+ * airframe.h). */
+#include "sizing/airframe.h"
+
+#include <math.h>
+
+#define S_SCALE_LO_KG     0.3   /* S_scale = 0.25 below this M_ref */
+#define S_SCALE_HI_KG     1.8   /* S_scale = 1 above this M_ref */
+#define S_SCALE_MIN       0.25
+
+double
+airframe_s_scale(double m_ref_kg)
+{
+	/* Paper §VI-E: light configurations get lighter ESCs and harnesses. */
+	if (m_ref_kg <= S_SCALE_LO_KG)
+		return S_SCALE_MIN;
+	if (m_ref_kg >= S_SCALE_HI_KG)
+		return 1.0;
+	return S_SCALE_MIN + (1.0 - S_SCALE_MIN)
+	    * (m_ref_kg - S_SCALE_LO_KG) / (S_SCALE_HI_KG - S_SCALE_LO_KG);
+}
+
+void
+airframe_masses(const struct sizing_params *p, const struct airframe_loads *in,
+                struct airframe_masses *out)
+{
+	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
+	double arm_len = 0.5 * p->wheelbase_m;
+
+	/* Arms: strength at max(load factor × CG thrust, full thrust); the
+	 * resonance is checked afterwards (feasibility.c).  The CG polygon is
+	 * that of the arms (a coaxial pair shares one). */
+	double t_cg;
+	out->cg_ok = structure_cg_thrust_n(in->mass_kg, arms, arm_len,
+	    p->cg_shift_m, &t_cg);
+	if (p->coaxial)
+		t_cg *= 0.5; /* each rotor of the pair carries half the arm's share */
+	double per_arm = p->coaxial ? 2.0 : 1.0;
+	double force = fmax(p->load_factor * t_cg, in->peak_thrust_n) * per_arm;
+	structure_size_arm(force, arm_len, p->alpha_w, in->tip_mass_kg * per_arm,
+	    &out->arm);
+	double tubes = (double)arms * out->arm.mass_kg;
+
+	/* The minimum structural fraction floors the whole structure.  (The
+	 * paper floors the spar and then adds γ on top, which puts an
+	 * agricultural frame at >= 40 % of takeoff mass and makes every
+	 * spraying mission diverge; see docs/model.md.) */
+	double sized = p->c_body * tubes * (1.0 + p->gamma);
+	double floor_kg = in->mass_kg * structure_min_fraction(p->wheelbase_m);
+	out->min_fraction_binds = floor_kg > sized;
+	double frame_total = p->lambda * fmax(sized, floor_kg);
+	if (p->fixed_frame_kg > 0.0)
+		frame_total = p->fixed_frame_kg;
+	out->frame_total_kg = frame_total;
+	/* Split the structure: tubes, centre plates/joints, body and gear. */
+	double unit = frame_total / ((1.0 + p->gamma) * p->c_body);
+	out->arm_kg = unit;
+	out->frame_kg = unit * (p->c_body - 1.0);
+	out->other_kg = unit * p->c_body * p->gamma;
+
+	/* The harness scales with the current it carries (paper §VI-E). */
+	double scale = airframe_s_scale(frame_total + p->payload_kg);
+	out->wiring_kg = p->wire_coef * in->peak_current_a * p->wheelbase_m * scale;
+	out->avionics_kg = p->avionics_kg;
+	/* Body shell around the pack and the electronics, plus the moulded
+	 * arm fairings of classes that have them: each a hollow box of side
+	 * c·L over the arm length L, surface 4c·L² (in other_kg).  λ covers it
+	 * as the paper's "frame and complexity mass". */
+	out->shell_kg = p->shell_kg_m2 * sizing_shell_area_m2(in->battery_kg,
+	    p->avionics_kg, arms, arm_len, p->fairing_section_frac);
+	if (p->fixed_frame_kg <= 0.0)
+		out->shell_kg *= p->lambda;
+	out->other_kg += out->shell_kg;
+	out->role_aux_kg = p->role_aux_kg;
+}
