@@ -31,6 +31,7 @@ hand_pack(struct discharge_pack *p, const struct batt_chem *c)
 	p->cycles = 0;
 	p->n_rotors = 4;
 	p->h_conv_w_m2k = 12.0;
+	p->r_cells_ohm = 0.0;
 }
 
 /* Hover only, 600 s, at 15 °C, no shedding. */
@@ -181,7 +182,7 @@ discharge_should_stop_on_thermal_runaway_above_60_c(void **state)
 	fixture_hand_model(&m, false);
 	hand_pack(&pk, &c);
 	/* 0.1 kg of thermal mass (C_th = 79.5 J/K) in still air (h = 1:
-	 * hA = 6 (100/2400)^(2/3) = 0.72 W/K) heated by ≈ 21 W: it warms by
+	 * hA = 0.06 (100/2400)^(2/3) = 0.0072 W/K) heated by ≈ 21 W: it warms by
 	 * ≈ 0.26 K/s, from 45 °C past 60 °C in about a minute. */
 	pk.mass_kg = 0.1;
 	pk.h_conv_w_m2k = 1.0;

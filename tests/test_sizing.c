@@ -9,6 +9,7 @@
 #include "test_missions.h"
 #include "cli/cli.h"
 #include "engine/engine.h"
+#include "sizing/airframe.h"
 #include "sizing/sizing.h"
 #include "util/units.h"
 #include "util/xalloc.h"
@@ -139,12 +140,12 @@ static void
 sizing_shell_should_add_moulded_arm_fairings_to_the_body_box(void **state)
 {
 	(void)state;
-	double box = sizing_shell_area_m2(0.2, 0.12, 4, 0.175, 0.0);
+	double box = airframe_shell_area_m2(0.2, 0.12, 4, 0.175, 0.0);
 	assert_rel(box, 7.2 * pow(4.21818181818e-4, 2.0 / 3.0), 1e-9);
 	assert_rel(box, 0.040498, 1e-4);
-	assert_rel(sizing_shell_area_m2(0.2, 0.12, 4, 0.175, 0.1) - box, 0.049, 1e-12);
+	assert_rel(airframe_shell_area_m2(0.2, 0.12, 4, 0.175, 0.1) - box, 0.049, 1e-12);
 	/* A hexacopter moulds six arms. */
-	assert_rel(sizing_shell_area_m2(0.2, 0.12, 6, 0.175, 0.1) - box, 0.0735, 1e-12);
+	assert_rel(airframe_shell_area_m2(0.2, 0.12, 6, 0.175, 0.1) - box, 0.0735, 1e-12);
 }
 
 static void

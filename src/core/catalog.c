@@ -40,6 +40,8 @@ enum kind {
 	K_BOOL,           /* true/false into a bool */
 	K_TRIBOOL,        /* true/false/null into an int 1/0/-1 */
 	K_LIST,           /* the `uncertain` array of field names */
+	K_ANY,            /* accepted, not stored (format version 2 keys the
+	                     engine does not read) */
 };
 
 enum check {
@@ -73,7 +75,9 @@ struct order { const char *lo, *hi; };
 	STR(T, part_number, C_NONEMPTY), STR(T, source, C_NONEMPTY),       \
 	STR(T, confidence, C_CONF),                                        \
 	{ "uncertain", K_LIST, offsetof(T, uncertain), CATALOG_UNCERTAIN_MAX, 1, C_NONE, false, false, false }, \
-	{ "price_usd", K_NUM, offsetof(T, price_usd), 0, 1, C_POS, true, false, false }
+	{ "price_usd", K_NUM, offsetof(T, price_usd), 0, 1, C_POS, true, false, false }, \
+	{ "price_date", K_STR, offsetof(T, price_date), sizeof(((T *)0)->price_date), 1, C_NONE, true, true, false }
+#define ANY(k) { k, K_ANY, 0, 0, 1, C_NONE, true, true, false }
 /* A number field: JSON key, destination, scale, needed for `usable`. */
 #define NUM(T, k, dst, sc, need) { k, K_NUM, offsetof(T, dst), 0, sc, C_POS, true, false, need }
 #define INT(T, k, need) { #k, K_INT, offsetof(T, k), 0, 1, C_POS, true, false, need }
@@ -92,6 +96,10 @@ static const struct field motor_fields[] = {
 	{ "integrated", K_BOOL, offsetof(struct catalog_motor, integrated), 0, 1, C_NONE, false, false, false },
 	/* Present only for integrated systems; enforced in check_integrated(). */
 	{ "integrated_prop_in", K_NUM, offsetof(struct catalog_motor, integrated_prop_in), 0, 1, C_POS, true, true, false },
+	{ "no_load_current_a", K_NUM, offsetof(struct catalog_motor, no_load_current_a), 0, 1, C_POS, true, true, false },
+	{ "integrated_pitch_in", K_NUM, offsetof(struct catalog_motor, integrated_pitch_in), 0, 1, C_POS, true, true, false },
+	{ "integrated_esc_current_a", K_NUM, offsetof(struct catalog_motor, integrated_esc_current_a), 0, 1, C_POS, true, true, false },
+	ANY("max_current_basis"), ANY("no_load_voltage_v"), ANY("stator"), ANY("max_thrust_g"),
 };
 
 static const struct field prop_fields[] = {
@@ -103,6 +111,10 @@ static const struct field prop_fields[] = {
 	NUM(struct catalog_prop, "mass_g", mass_kg, G_TO_KG, true),
 	NUM(struct catalog_prop, "max_rpm", max_rpm, 1, false),
 	{ "folding", K_TRIBOOL, offsetof(struct catalog_prop, folding), 0, 1, C_NONE, true, false, false },
+	{ "ct_static", K_NUM, offsetof(struct catalog_prop, ct_static), 0, 1, C_POS, true, true, false },
+	{ "cp_static", K_NUM, offsetof(struct catalog_prop, cp_static), 0, 1, C_POS, true, true, false },
+	{ "part_number_ccw", K_STR, offsetof(struct catalog_prop, part_number_ccw), sizeof(((struct catalog_prop *)0)->part_number_ccw), 1, C_NONE, true, true, false },
+	ANY("coeff_source"),
 };
 
 static const struct field battery_fields[] = {
@@ -115,6 +127,7 @@ static const struct field battery_fields[] = {
 	NUM(struct catalog_battery, "burst_c", burst_c, 1, false),
 	NUM(struct catalog_battery, "nominal_voltage_v", nominal_voltage_v, 1, false),
 	NUM(struct catalog_battery, "energy_wh", energy_wh, 1, false),
+	ANY("cells_parallel"), ANY("connector"), ANY("smart"),
 };
 
 static const struct field esc_fields[] = {
@@ -125,10 +138,11 @@ static const struct field esc_fields[] = {
 	INT(struct catalog_esc, cells_max, false),
 	NUM(struct catalog_esc, "mass_g", mass_kg, G_TO_KG, true),
 	INT(struct catalog_esc, channels, true),
+	ANY("burst_seconds"),
 };
 
 #define N_OF(a) (sizeof(a) / sizeof((a)[0]))
-#define MAX_FIELDS 24
+#define MAX_FIELDS 32
 
 static const struct order motor_orders[] = {
 	{ "cells_min", "cells_max" }, { "prop_min_in", "prop_max_in" },
@@ -436,6 +450,8 @@ store_value(struct ctx *cx, const struct field *f, const cJSON *v, char *base)
 		else
 			*(int *)dst = cJSON_IsTrue(v) ? 1 : 0;
 		return true;
+	case K_ANY:
+		return true;
 	case K_NUM:
 	case K_INT:
 		break;
@@ -501,8 +517,8 @@ check_integrated(struct ctx *cx, const struct catalog_motor *m, const bool *seen
 	size_t i = (size_t)(f - cx->cat->fields);
 	if (m->integrated && !seen[i])
 		report(cx, f->key, "required when integrated is true (null if unknown)");
-	if (!m->integrated && seen[i])
-		report(cx, f->key, "allowed only when integrated is true");
+	if (!m->integrated && known[i])
+		report(cx, f->key, "must be null unless integrated is true");
 	return !m->integrated || known[i];
 }
 

@@ -28,7 +28,7 @@
 
 #define CATALOG_ID_MAX 64          /* buffer sizes, NUL included */
 #define CATALOG_NAME_MAX 128
-#define CATALOG_SOURCE_MAX 512
+#define CATALOG_SOURCE_MAX 2048
 #define CATALOG_UNCERTAIN_MAX 256
 
 /* Fields every entry carries.  They are repeated in each struct (not nested)
@@ -43,6 +43,7 @@
 	char uncertain[CATALOG_UNCERTAIN_MAX]; /* JSON names of doubtful      \
 	                                      fields, comma-separated, or "" */  \
 	double price_usd;                  /* old store snapshot; 0 unknown */  \
+	char price_date[12];               /* "YYYY-MM" of the snapshot, or "" */ \
 	bool usable                        /* every field the optimizer needs  \
 	                                      is known */
 
@@ -57,8 +58,11 @@ struct catalog_motor {
 	double prop_min_in;        /* recommended propeller diameter range */
 	double prop_max_in;
 	double resistance_ohm;     /* winding resistance as published */
+	double no_load_current_a;  /* I0; 0 unknown */
 	bool integrated;           /* motor + ESC + prop sold as one system */
 	double integrated_prop_in; /* its propeller diameter; 0 if !integrated */
+	double integrated_pitch_in; /* its pitch; 0 unknown */
+	double integrated_esc_current_a; /* its ESC's continuous rating; 0 unknown */
 };
 
 struct catalog_prop {
@@ -72,6 +76,9 @@ struct catalog_prop {
 	double mass_kg;            /* one complete propeller (needed) */
 	double max_rpm;            /* maker's limit; 0 unknown */
 	int folding;               /* 1 folding, 0 fixed, -1 unknown */
+	char part_number_ccw[CATALOG_NAME_MAX]; /* the counter-rotating SKU, or "" */
+	double ct_static;          /* static C_T, n-based; 0 unknown */
+	double cp_static;          /* static C_P; 0 unknown */
 };
 
 struct catalog_battery {

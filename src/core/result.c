@@ -10,6 +10,7 @@
 /* Spellings of enum res_phase_id, as written to result.json, bom.csv and the
  * dossier; index = enum value. */
 const char *const res_phase_name[PHASE_MAX] = { "climb", "forward", "hover" };
+const char *const res_op_name[OP_MAX] = { "hover", "climb", "cruise", "full throttle" };
 
 bool
 res_thrust_relaxed(const struct res_run *run)

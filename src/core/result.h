@@ -21,8 +21,8 @@
 #define RES_MAX_VIOLATIONS 24
 #define RES_MAX_FIXES      3
 #define RES_MAX_RATIONALE  48
-#define RES_MAX_BOM        16
-#define RES_MAX_CANDIDATES 256  /* motors scored for the crosshair figure */
+#define RES_MAX_BOM        32
+#define RES_MAX_CANDIDATES 512  /* motors scored for the crosshair figure */
 #define RES_TEXT           256
 
 /* Mission phases, in the order they are flown. */
@@ -114,6 +114,54 @@ struct res_fixed_point {
 	double arm_width_m;       /* the arm diameter the rotors saw */
 	double time_scale;        /* γ the loop flew */
 	int cells;                /* series cells */
+};
+
+/* Operating points of a design on real parts, in the layout eCalc users
+ * know: hover and climb and cruise at the mission's takeoff mass, full
+ * throttle at the nominal pack voltage. */
+enum res_op_id { OP_HOVER, OP_CLIMB, OP_CRUISE, OP_FULL, OP_MAX };
+extern const char *const res_op_name[OP_MAX]; /* "hover", "climb", "cruise", "full throttle" */
+
+/* One operating point (per motor unless said otherwise). */
+struct res_op {
+	bool valid;
+	double thrust_n;          /* one rotor */
+	double rpm;
+	double throttle;          /* motor voltage / available bus voltage, 0..1 */
+	double motor_current_a;
+	double motor_voltage_v;   /* at the motor terminals */
+	double power_in_w;        /* electrical, one motor */
+	double power_shaft_w;     /* one motor */
+	double motor_efficiency;  /* shaft / electrical, (0, 1] */
+	double g_per_w;           /* thrust in grams per electrical watt */
+	double winding_temp_c;    /* estimated (motor.h) */
+	double tip_mach;
+	double battery_current_a; /* whole aircraft */
+	double bus_voltage_v;     /* pack terminal voltage under this load */
+	double c_load;            /* battery current over capacity, 1/h */
+	double electrical_w;      /* whole aircraft at the pack */
+};
+
+/* What a design on real parts can do beyond its mission. */
+struct res_perf {
+	bool valid;               /* computed (the design flies on real parts) */
+	struct res_op op[OP_MAX];
+	double hover_time_s;      /* hover at takeoff mass down to the reserve */
+	double mixed_time_s;      /* the mission's phase mix down to the reserve */
+	double full_throttle_time_s; /* full throttle down to the reserve */
+	double max_speed_ms;      /* level flight within thrust and 35° pitch */
+	double max_climb_ms;      /* vertical, at full throttle */
+	double max_tilt_deg;      /* bank holding altitude at full throttle */
+	double spare_payload_kg;  /* more payload before T/W falls below the target */
+	int motor_out_rotors;     /* rotors counted with one out (0: a quad) */
+	double motor_out_ratio;   /* their full thrust over the weight */
+	bool motor_out_holds;     /* >= 1: it holds altitude and lands */
+	double motor_resistance_ohm; /* R used (published or estimated) */
+	double motor_no_load_a;   /* I0 used */
+	bool motor_r_estimated;   /* R or I0 came from motor.h's fit */
+	double prop_ct, prop_cp;  /* static coefficients used */
+	bool prop_coeffs_measured;/* published, not prop.h's fit */
+	double landing_soc;       /* state of charge at touchdown */
 };
 
 /* One sized run (baseline, custom, or the BOM-closed custom design). */
@@ -209,6 +257,8 @@ struct res_run {
 	double endurance_mass_kg[RES_MAX_ENDURANCE];
 	double endurance_inflection_scale; /* where d(time)/d(scale) falls below half its initial value */
 
+	struct res_perf perf;     /* real-parts performance (the design of record) */
+
 	int n_checks;
 	struct res_check checks[RES_MAX_CHECKS];
 };
@@ -223,6 +273,8 @@ struct res_part {
 	int qty;
 	double unit_mass_kg;
 	double unit_price_usd;    /* 0 = unknown */
+	char price_date[12];      /* of the price snapshot, "" unknown */
+	char source_url[160];     /* the maker's page the facts come from, or "" */
 	double j_score;
 };
 
@@ -238,6 +290,8 @@ struct res_bom_line {
 	double total_mass_kg;
 	double unit_price_usd;    /* 0 = unknown */
 	double total_price_usd;
+	char price_date[12];      /* of the price snapshot, "" unknown */
+	char source_url[160];     /* the maker's page, "" for custom lines */
 	char catalogue_id[64];    /* "" for custom lines */
 };
 
@@ -266,8 +320,10 @@ struct solve_result {
 	struct res_run closed;         /* custom run re-solved with real part masses */
 	int n_bom;
 	struct res_bom_line bom[RES_MAX_BOM];
-	double bom_mass_kg;
-	double bom_price_usd;
+	double bom_mass_kg;            /* the aircraft's parts (not the payload) */
+	double bom_price_usd;          /* the priced lines' sum: a lower bound */
+	int bom_parts_lines;           /* lines of parts (the payload line aside) */
+	int bom_priced_lines;          /* of those, with a price */
 	int n_candidates;
 	struct res_candidate candidates[RES_MAX_CANDIDATES];
 

@@ -9,7 +9,7 @@
 
 #include "physics/aero.h"
 #include "sizing/feasibility.h"
-#include "parts/optim.h"
+#include "parts/parts.h"
 #include "util/strbuf.h"
 #include "physics/structure.h"
 #include "util/units.h"
@@ -498,9 +498,9 @@ engine_solve(const struct mission_spec *spec, const struct model_data *md,
 		    &r->mission, &r->custom, r, &rc);
 	role_overhead(r);
 
-	/* Real parts on top of a converged custom run (optim.h). */
+	/* Real parts on top of a converged custom run (parts.h). */
 	if (cat != NULL && r->custom.ran && r->custom.converged
-	    && optim_select(&r->mission, &p, md, cat, r) != 0)
+	    && parts_select(&r->mission, &p, md, cat, r) != 0)
 		rc = 3;
 	r->feasible = r->n_violations == 0 && r->custom.ran && r->custom.feasible;
 	return rc;

@@ -5,7 +5,7 @@
  * runs the baseline (null role, hover throttle 0.60) and the custom run
  * through the feasibility gate and the mass loop, fills the checks and
  * violations, the role overhead, and the plain-language design rationale.
- * Parts selection (optim.c) runs on top when a catalogue is given.
+ * Parts selection (parts/parts.c) runs on top when a catalogue is given.
  *
  * Engine layer: no JSON, PDF or cairo.  Reentrant: everything it touches is
  * in its arguments, so missions can be solved in parallel.
@@ -14,7 +14,6 @@
 #define AEROEVAL_ENGINE_H
 
 #include "core/model.h"
-#include "parts/optim.h"
 #include "core/result.h"
 #include "sizing/sizing.h"
 #include "core/spec.h"

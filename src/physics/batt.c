@@ -64,6 +64,15 @@ batt_r_sys_ohm(const struct batt_chem *c, int cells, double capacity_ah,
 	return batt_r_sys_at(&rs, temp_c);
 }
 
+double
+batt_rated_cell_ohm(const struct batt_chem *c, double capacity_ah,
+                    double continuous_c)
+{
+	double cap = c->pouch ? BATT_C_CREDIBLE_LIPO : BATT_C_CREDIBLE_LI_ION;
+	double rate = continuous_c < cap ? continuous_c : cap;
+	return BATT_RATED_SAG_V / (rate * capacity_ah);
+}
+
 enum batt_status
 batt_current_a(double v_oc, double r_ohm, double power_w, double *current_a)
 {

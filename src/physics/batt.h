@@ -52,6 +52,19 @@ void batt_r_sys_init(const struct batt_chem *c, int cells, double capacity_ah,
                      int cycles, int n_rotors, struct batt_r_sys *out);
 double batt_r_sys_at(const struct batt_r_sys *rs, double temp_c);
 
+/* The cell resistance of a real pack from its maker's continuous rating:
+ * makers rate the continuous current at about BATT_RATED_SAG_V of sag per
+ * cell, so R_cell = sag / (C · Ah).  The C figure counted is capped by
+ * chemistry (BATT_C_CREDIBLE_*): label ratings of high-C hobby packs run
+ * far beyond what their cells deliver continuously.  Ohm per cell at 25 °C,
+ * new.  The chemistry profile's R_i (eq. rsys) serves the continuous
+ * design, which has no rating to go on. */
+#define BATT_RATED_SAG_V        0.6   /* sag per cell at the rated current, V */
+#define BATT_C_CREDIBLE_LIPO    100.0 /* LiPo/LiHV continuous C counted at most */
+#define BATT_C_CREDIBLE_LI_ION  15.0  /* cylindrical Li-ion */
+double batt_rated_cell_ohm(const struct batt_chem *c, double capacity_ah,
+                           double continuous_c);
+
 /* Current drawn for power_w from a source v_oc behind r_ohm:
  * I = (V - sqrt(V² - 4 R P)) / (2 R), computed as 2P / (V + sqrt(...)) so
  * that it stays exact as R -> 0.  Returns the status; *current_a is

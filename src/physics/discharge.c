@@ -47,6 +47,8 @@ step_init(const struct discharge_pack *p, double hac_w_k, double ambient_c,
 	sc->dt_s = dt_s;
 	batt_r_sys_init(p->chem, p->cells, p->capacity_ah, p->cycles, p->n_rotors,
 	    &sc->rs);
+	if (p->r_cells_ohm > 0.0)
+		sc->rs.r_cells_ohm = p->r_cells_ohm;
 	therm_step_init(hac_w_k, p->mass_kg, dt_s, &sc->ts);
 }
 
@@ -313,12 +315,20 @@ discharge_hover_endurance_steps_s(const struct discharge_pack *pack,
 {
 	struct mission_power pw;
 	mission_power(model, mass_kg, 0.0, 0.0, &pw);
+	return discharge_power_endurance_s(pack, pw.electrical_w, ambient_c,
+	    reserve_soc, steps);
+}
+
+double
+discharge_power_endurance_s(const struct discharge_pack *pack, double power_w,
+                            double ambient_c, double reserve_soc, int steps)
+{
 	double v_nom = (double)pack->cells * pack->chem->v_nom;
-	if (!(pw.electrical_w > 0.0) || !(v_nom > 0.0))
+	if (!(power_w > 0.0) || !(v_nom > 0.0))
 		return 0.0;
 	/* First estimate from nominal energy sets the step. */
 	double est_s = pack->capacity_ah * (1.0 - reserve_soc) * v_nom
-	    * S_PER_H / pw.electrical_w;
+	    * S_PER_H / power_w;
 	double dt = est_s / (double)(steps > 0 ? steps : ENDURANCE_STEPS);
 	if (!(dt > 0.0))
 		return 0.0;
@@ -330,7 +340,7 @@ discharge_hover_endurance_steps_s(const struct discharge_pack *pack,
 	for (int k = 0; k < ENDURANCE_MAX_STEPS; k++) {
 		struct step_out so;
 		double soc0 = st.soc;
-		enum discharge_end e = step(&sc, pw.electrical_w, &st, &so);
+		enum discharge_end e = step(&sc, power_w, &st, &so);
 		if (e == DIS_OVERFLOW || e == DIS_COLLAPSE || e == DIS_VOLTAGE_FLOOR)
 			return t;
 		if (st.soc <= reserve_soc) {

@@ -37,6 +37,9 @@ struct discharge_pack {
 	int cycles;              /* ageing */
 	int n_rotors;            /* ESCs sharing R_ds,on */
 	double h_conv_w_m2k;     /* convection coefficient */
+	double r_cells_ohm;      /* a real pack's cells in series at 25 °C,
+	                            new (batt_rated_cell_ohm() × cells); 0:
+	                            the chemistry profile's R_sys (eq. rsys) */
 };
 
 struct discharge_mission {
@@ -84,5 +87,12 @@ double discharge_hover_endurance_steps_s(const struct discharge_pack *pack,
                                          const struct mission_model *model,
                                          double mass_kg, double ambient_c,
                                          double reserve_soc, int steps);
+
+/* Endurance at a constant battery power power_w from full charge down to
+ * reserve_soc (or the voltage floor, or a thermal stop), in `steps` steps
+ * over the estimate, s: the full-throttle flight time of a design. */
+double discharge_power_endurance_s(const struct discharge_pack *pack,
+                                   double power_w, double ambient_c,
+                                   double reserve_soc, int steps);
 
 #endif

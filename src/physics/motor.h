@@ -29,9 +29,10 @@
 #define MOTOR_RTH_REF_K_W    3.0    /* winding-to-air thermal resistance of a
                                        100 g motor in its own propwash, K/W */
 #define MOTOR_RTH_REF_KG     0.1
-#define MOTOR_WINDING_MAX_C  120.0  /* enamelled wire class limit kept in
-                                       flight (class H is 180 °C; magnets
-                                       lose strength above about 120 °C) */
+#define MOTOR_WINDING_MAX_C  150.0  /* winding limit kept in flight: class H
+                                       enamel takes 180 °C, the high-grade
+                                       (SH) neodymium magnets of UAV motors
+                                       150 °C before they demagnetise */
 
 /* A motor's constants (one motor). */
 struct motor_model {

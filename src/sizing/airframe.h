@@ -15,7 +15,7 @@
 #include <stdbool.h>
 
 #include "physics/structure.h"
-#include "sizing/sizing.h"
+#include "sizing/params.h"
 
 /* The loads and parts the airframe carries. */
 struct airframe_loads {
@@ -47,6 +47,22 @@ struct airframe_masses {
 void airframe_masses(const struct sizing_params *p,
                      const struct airframe_loads *in,
                      struct airframe_masses *out);
+
+/* Body shell (a mass term the paper leaves open): a minimum-gauge shell
+ * enclosing the battery and the electronics.  Volume from the pack and
+ * electronics densities at 50 % fill; surface of a box of that volume with
+ * a 1.2 shape factor over a cube. */
+#define AIRFRAME_PACK_DENSITY_KG_M3 2200.0 /* LiPo/Li-ion pack incl. case */
+#define AIRFRAME_AVIONICS_DENSITY_KG_M3 1000.0 /* boards, modules, cables */
+#define AIRFRAME_BODY_FILL          0.5    /* fraction of the body that is equipment */
+#define AIRFRAME_BODY_SHAPE         1.2    /* body surface over a cube's */
+
+/* Surface of the body shell: a box around the pack and the electronics
+ * (volume from their densities at the fill fraction, surface a shape
+ * factor over a cube's) plus the moulded arm fairings of classes that have
+ * them, 4 c L² per arm, m². */
+double airframe_shell_area_m2(double battery_kg, double avionics_kg, int n_arms,
+                              double arm_length_m, double fairing_section_frac);
 
 /* The light-configuration scale S_scale of paper §VI-E at M_ref. */
 double airframe_s_scale(double m_ref_kg);

@@ -150,9 +150,9 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 	return ok;
 }
 
-static struct res_check *
-add_check(struct res_run *run, const char *name, const char *unit,
-          double value, double limit, bool upper)
+struct res_check *
+feasibility_add_check(struct res_run *run, const char *name, const char *unit,
+                      double value, double limit, bool upper)
 {
 	if (run->n_checks >= RES_MAX_CHECKS)
 		return NULL;
@@ -185,7 +185,7 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	double last_step = o->n_history >= 2
 	    ? fabs(o->history_kg[o->n_history - 1] - o->history_kg[o->n_history - 2])
 	    : 0.0;
-	struct res_check *c = add_check(o, "Mass loop step at exit", "kg",
+	struct res_check *c = feasibility_add_check(o, "Mass loop step at exit", "kg",
 	    last_step, SIZING_TOL_KG, true);
 	if (c && st == SIZING_CONVERGED)
 		c->pass = true;
@@ -208,15 +208,15 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 		    o->iterations);
 		fx[2] = f3;
 	}
-	add_check(o, "Mass-growth Lipschitz constant", "", o->lipschitz, 1.0, true);
-	add_check(o, "Takeoff mass", "kg", o->mass.total_kg, SIZING_RUNAWAY_KG, true);
+	feasibility_add_check(o, "Mass-growth Lipschitz constant", "", o->lipschitz, 1.0, true);
+	feasibility_add_check(o, "Takeoff mass", "kg", o->mass.total_kg, SIZING_RUNAWAY_KG, true);
 
 	/* Mission flown on the battery (discharge simulation). */
 	double need = 0.0, flown = 0.0;
 	for (int i = 0; i < PHASE_MAX; i++)
 		need += o->approved_time_s[i];
 	flown = o->n_trace > 0 ? o->trace[o->n_trace - 1].t_s : 0.0;
-	c = add_check(o, "Mission flown on the battery", "s", flown, need * 0.999, false);
+	c = feasibility_add_check(o, "Mission flown on the battery", "s", flown, need * 0.999, false);
 	if (c)
 		c->sized = !p->capacity_locked;
 	if (c && !c->pass && st != SIZING_RUNAWAY) {
@@ -236,11 +236,11 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	}
 
 	/* Propulsion geometry. */
-	c = add_check(o, "Propeller diameter (overlap limit)", "in",
+	c = feasibility_add_check(o, "Propeller diameter (overlap limit)", "in",
 	    o->opt.prop_diameter_in, o->overlap_limit_in + 1e-9, true);
 	if (c)
 		c->sized = !p->prop_locked;
-	c = add_check(o, "Tip Mach number at full throttle", "", o->tip_mach_peak,
+	c = feasibility_add_check(o, "Tip Mach number at full throttle", "", o->tip_mach_peak,
 	    AERO_TIP_MACH_MAX, true);
 	if (c && !c->pass) {
 		fix_text(r, f1, "Use a larger propeller (lower rpm for the same thrust)");
@@ -253,7 +253,7 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	}
 
 	/* Electrical and thermal. */
-	c = add_check(o, "Battery peak temperature", "°C", o->max_battery_temp_c,
+	c = feasibility_add_check(o, "Battery peak temperature", "°C", o->max_battery_temp_c,
 	    THERM_RUNAWAY_C, true);
 	if (c && !c->pass) {
 		fix_text(r, f1, "Add capacity or parallel packs to lower the C-rate");
@@ -263,7 +263,7 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 		    "The pack reaches %.1f °C, above the %.0f °C thermal-runaway limit.",
 		    o->max_battery_temp_c, THERM_RUNAWAY_C);
 	}
-	c = add_check(o, "Minimum terminal voltage", "V", o->min_terminal_voltage_v,
+	c = feasibility_add_check(o, "Minimum terminal voltage", "V", o->min_terminal_voltage_v,
 	    o->voltage_floor_v, false);
 	if (c && !c->pass) {
 		fix_text(r, f1, "Add series cells (nominal_cell_count)");
@@ -276,7 +276,7 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	}
 	double p_max = p->burst_factor * p->chem->p_spec_w_kg * o->mass.battery_kg
 	    / (o->packaging_factor > 0.0 ? o->packaging_factor : 1.0);
-	c = add_check(o, "Full-throttle battery power (burst capability)", "W",
+	c = feasibility_add_check(o, "Full-throttle battery power (burst capability)", "W",
 	    o->peak_power_w, p_max, true);
 	if (c)
 		c->sized = o->battery_power_binds;
@@ -292,11 +292,11 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	}
 
 	/* Structure. */
-	c = add_check(o, "Arm root bending stress", "MPa", o->arm_stress_mpa,
+	c = feasibility_add_check(o, "Arm root bending stress", "MPa", o->arm_stress_mpa,
 	    o->arm_stress_allow_mpa, true);
 	if (c)
 		c->sized = true;
-	c = add_check(o, "Arm mode clear of the blade-pass band", "",
+	c = feasibility_add_check(o, "Arm mode clear of the blade-pass band", "",
 	    o->resonance_margin, 0.0, false);
 	if (c && !c->pass) {
 		fix_text(r, f1, "Stiffen the arm above %.0f Hz (larger tube diameter)",
@@ -312,11 +312,11 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	}
 	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
 	double d_y = 0.5 * p->wheelbase_m * cos(M_PI / (double)arms);
-	add_check(o, "Payload CG offset", "m", p->cg_shift_m, d_y, true);
+	feasibility_add_check(o, "Payload CG offset", "m", p->cg_shift_m, d_y, true);
 
 	/* Role-specific limits. */
 	if (p->downwash_cap_ms > 0.0) {
-		c = add_check(o, "Downwash (crop and drift limit)", "m/s",
+		c = feasibility_add_check(o, "Downwash (crop and drift limit)", "m/s",
 		    o->downwash_ms, p->downwash_cap_ms, true);
 		if (c && !c->pass) {
 			fix_text(r, f1, "Increase max_diameter_m: larger rotors lower the downwash");
@@ -328,9 +328,9 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 		}
 	}
 	if (p->duration_s[PHASE_FORWARD] > 0.0) {
-		c = add_check(o, "Forward body pitch", "°", o->forward_pitch_deg,
+		c = feasibility_add_check(o, "Forward body pitch", "°", o->forward_pitch_deg,
 		    MISSION_PITCH_MAX_DEG, true);
-		c = add_check(o, "Forward speed within thrust margin", "m/s",
+		c = feasibility_add_check(o, "Forward speed within thrust margin", "m/s",
 		    o->optimal_speed_ms, o->v_max_ms, true);
 		if (c && !c->pass) {
 			fix_text(r, f1, "Reduce v_forward_ms to %.1f m/s or less", o->v_max_ms);

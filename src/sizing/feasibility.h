@@ -28,6 +28,13 @@ void feasibility_checks(const struct sizing_params *p, enum sizing_status st,
                         const char *run, struct res_run *run_out,
                         struct solve_result *r);
 
+/* Append one row to run's checks table (NULL when it is full): value
+ * against limit, an upper limit when upper; margin and pass follow, with a
+ * relative tolerance of 1e-9 for a value sized to its limit. */
+struct res_check *feasibility_add_check(struct res_run *run, const char *name,
+                                        const char *unit, double value,
+                                        double limit, bool upper);
+
 /* Append one violation; fixes is a NULL-terminated list (may be NULL).
  * run, stage and code are string literals (the violation keeps the
  * pointers, see result.h).  With r->terse, run, stage and code only

@@ -15,11 +15,7 @@
 #include "util/units.h"
 
 #define LOOP_STEPS        30    /* discharge steps per loop iteration */
-/* Steps of the final, recorded flight: twice the loop's, so a limit the
- * loop's steps hide shows; each phase's count rounds down and is floored
- * at 4, so the trace holds at most FINAL_STEPS + 13 samples. */
-#define FINAL_STEPS       60
-_Static_assert(FINAL_STEPS + 13 <= RES_MAX_TRACE, "trace buffer too small");
+#define FINAL_STEPS       SIZING_FINAL_STEPS
 #define BLADE_INCIDENCE_DEG 4.0 /* best-L/D incidence at blade Reynolds numbers */
 #define MIN_THROTTLE      0.20  /* t_hover floor of paper §V-D */
 #define LIPSCHITZ_STEP    0.01  /* ±1 % of M for dF/dM */
@@ -119,29 +115,28 @@ n_arms(const struct sizing_params *p)
 }
 
 
-/* Phase durations after goal relaxation. */
-static void
-durations(const struct sizing_params *p, double gamma_time, double *d)
+void
+sizing_durations(const struct sizing_params *p, double gamma_time, double *d)
 {
 	for (int i = 0; i < PHASE_MAX; i++)
 		d[i] = p->duration_s[i] * gamma_time;
 }
 
-static double
-total_duration(const struct sizing_params *p, double gamma_time)
+double
+sizing_total_duration(const struct sizing_params *p, double gamma_time)
 {
 	double d[PHASE_MAX], t = 0.0;
-	durations(p, gamma_time, d);
+	sizing_durations(p, gamma_time, d);
 	for (int i = 0; i < PHASE_MAX; i++)
 		t += d[i];
 	return t;
 }
 
-static void
-shedding(const struct sizing_params *p, double gamma_time,
-         struct role_shedding *s)
+void
+sizing_shedding(const struct sizing_params *p, double gamma_time,
+                struct role_shedding *s)
 {
-	double t_total = total_duration(p, gamma_time);
+	double t_total = sizing_total_duration(p, gamma_time);
 	memset(s, 0, sizeof *s);
 	s->kind = p->shed;
 	s->payload0_kg = p->payload_kg;
@@ -179,6 +174,7 @@ pack_of(const struct sizing_params *p, const struct eval *e,
 	pk->cycles = p->cycles;
 	pk->n_rotors = p->n_rotors;
 	pk->h_conv_w_m2k = p->h_conv_w_m2k;
+	pk->r_cells_ohm = 0.0; /* the chemistry profile's (eq. rsys) */
 }
 
 /* The three phase powers of an evaluation, and the hover pitch they give
@@ -381,8 +377,8 @@ evaluate_flight(const struct sizing_params *p, double gamma_time, int steps,
 	struct discharge_mission dm;
 	dm.model = &e->model;
 	dm.dry_mass_kg = e->mass_kg - p->payload_kg;
-	shedding(p, gamma_time, &dm.shed);
-	durations(p, gamma_time, dm.duration_s);
+	sizing_shedding(p, gamma_time, &dm.shed);
+	sizing_durations(p, gamma_time, dm.duration_s);
 	dm.speed_ms[PHASE_CLIMB] = p->v_climb_ms;
 	dm.speed_ms[PHASE_FORWARD] = e->v_fwd_ms;
 	dm.speed_ms[PHASE_HOVER] = 0.0;
@@ -391,7 +387,7 @@ evaluate_flight(const struct sizing_params *p, double gamma_time, int steps,
 	    rec ? RES_MAX_TRACE : 0, rec ? &rec->n_trace : NULL, &e->dis);
 
 	/* Capacity the mission needs, with the 20 % margin. */
-	double t_req = total_duration(p, gamma_time);
+	double t_req = sizing_total_duration(p, gamma_time);
 	switch (e->dis.end) {
 	case DIS_COMPLETED:
 		e->c_target_ah = SIZING_CAP_MARGIN * e->dis.ah_used;
@@ -440,17 +436,6 @@ sizing_motor_kg(double power_max_w, double omega_max_rad_s)
 	    * pow(omega_max_rad_s, -SIZING_MOTOR_EXP_W);
 }
 
-double
-sizing_shell_area_m2(double battery_kg, double avionics_kg, int n_arms,
-                     double arm_length_m, double fairing_section_frac)
-{
-	double v_body_m3 = (battery_kg / SIZING_PACK_DENSITY_KG_M3
-	    + avionics_kg / SIZING_AVIONICS_DENSITY_KG_M3) / SIZING_BODY_FILL;
-	double box_m2 = SIZING_BODY_SHAPE * 6.0 * pow(v_body_m3, 2.0 / 3.0);
-	double fairings_m2 = (double)n_arms * 4.0 * fairing_section_frac
-	    * arm_length_m * arm_length_m;
-	return box_m2 + fairings_m2;
-}
 
 /* Initial capacity: nominal energy of the mission at the seed mass. */
 static double
@@ -462,7 +447,7 @@ seed_capacity_ah(const struct sizing_params *p, const struct loop_state *ls,
 	struct eval e;
 	evaluate(p, ls, mass_kg, 1.0, 0, NULL, &e);
 	double d[PHASE_MAX], wh = 0.0;
-	durations(p, ls->gamma_time, d);
+	sizing_durations(p, ls->gamma_time, d);
 	for (int i = 0; i < PHASE_MAX; i++)
 		wh += e.ph[i].electrical_w * d[i] / S_PER_H;
 	double v = (double)ls->cells * p->chem->v_nom;
@@ -797,7 +782,7 @@ record_run(const struct sizing_params *p, struct eval *e,
 {
 	eval_phases(p, e);
 	double d[PHASE_MAX];
-	durations(p, ls->gamma_time, d);
+	sizing_durations(p, ls->gamma_time, d);
 	out->mass = e->mass;
 	out->reserve_soc = sizing_reserve_soc();
 	out->tolerance_kg = SIZING_TOL_KG;

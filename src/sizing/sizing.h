@@ -16,8 +16,10 @@
 
 #include "physics/atmo.h"
 #include "physics/batt.h"
+#include "physics/role.h"
 #include "core/model.h"
 #include "core/result.h"
+#include "sizing/params.h"
 
 #define SIZING_TOL_KG        0.001  /* convergence |M(k+1) - M(k)|, kg */
 #define SIZING_MAX_ITER      200    /* bounded iteration count */
@@ -32,6 +34,11 @@
                                       * T/W 2.0, the usual minimum for
                                       * attitude authority in gusts */
 #define SIZING_SEED_FRACTION 0.60   /* M(0) = payload / 0.60 (eq. altcorrect) */
+/* Steps of a final, recorded flight: twice the loop's, so a limit the
+ * loop's steps hide shows; each phase's count rounds down and is floored
+ * at 4, so the trace holds at most SIZING_FINAL_STEPS + 13 samples. */
+#define SIZING_FINAL_STEPS   60
+_Static_assert(SIZING_FINAL_STEPS + 13 <= RES_MAX_TRACE, "trace buffer too small");
 
 /* Continuous component laws.  The paper's motor and ESC laws
  * (0.00035 kg per N or A) are ten times lighter than any datasheet, so
@@ -58,14 +65,6 @@
 #define SIZING_ESC_RATING       1.2     /* ESC rating over the peak current */
 #define SIZING_PROP_EXPONENT    2.2    /* blade mass ~ D^2.2 */
 #define SIZING_CURRENT_BUDGET_A 60.0   /* bus current budget at 1 kg, A (× sqrt(M)) */
-/* Body shell (a mass term the paper leaves open): a minimum-gauge shell
- * enclosing the battery and the electronics.  Volume from the pack and
- * electronics densities at 50 % fill; surface of a box of that volume with
- * a 1.2 shape factor over a cube. */
-#define SIZING_PACK_DENSITY_KG_M3 2200.0 /* LiPo/Li-ion pack incl. case */
-#define SIZING_AVIONICS_DENSITY_KG_M3 1000.0 /* boards, modules, cables */
-#define SIZING_BODY_FILL          0.5    /* fraction of the body that is equipment */
-#define SIZING_BODY_SHAPE         1.2    /* body surface over a cube's */
 #define SIZING_LOW_FLIGHT_RPM   0.7    /* lowest in-flight rpm / hover rpm (descent) */
 #define SIZING_WINDING_RISE_K   40.0   /* winding above ambient at hover, K (assumed) */
 
@@ -78,104 +77,6 @@ enum sizing_status {
 	SIZING_GATE           /* rejected before the loop (CG, geometry) */
 };
 
-/* Real parts fixed by the optimizer (BOM-closed run); 0 = scaling law. */
-struct sizing_parts {
-	bool active;
-	double motor_kg_each;
-	double prop_kg_each;
-	double esc_kg_total;
-	double battery_kg;        /* whole battery, catalogue packs */
-	double capacity_ah;       /* its total capacity */
-	int cells;                /* its series cells */
-	double motor_kv;          /* selected motor KV (0 = unknown) */
-	double motor_resistance_ohm; /* winding resistance (0 = unknown) */
-};
-
-struct sizing_params {
-	/* geometry */
-	double wheelbase_m;          /* W */
-	int n_rotors;                /* N_r */
-	bool coaxial;                /* stacked pairs on N_r/2 arms */
-	int airframe_class;          /* enum airframe_class */
-	/* air */
-	struct atmo_state air;
-	double ambient_c;
-	/* mission as requested (goal relaxation scales the durations) */
-	double duration_s[PHASE_MAX];
-	double v_climb_ms;
-	double v_forward_ms;
-	bool v_auto;
-	bool allow_relax;            /* locks.auto_reduce_flight_time */
-	/* role */
-	double thrust_margin;        /* hover throttle = 1 - margin */
-	double thrust_margin_floor;  /* > 0: the margin is the role's default
-	                              * target and may be relaxed down to this
-	                              * value when the loop cannot close */
-	double load_factor;
-	double aux_w;
-	double added_drag_m2;
-	double fwd_drag_mult;
-	double cg_shift_m;
-	double role_aux_kg;
-	double c_motor;
-	double c_esc;
-	double h_conv_w_m2k;
-	double burst_factor;         /* 10 s burst / continuous battery power */
-	bool small_platform;         /* racing/small wiring coefficient */
-	enum shed_kind shed;
-	double drop_mass_kg;
-	double drop_ratio;
-	double spray_rate_kg_s;      /* 0 = payload / mission time */
-	double downwash_cap_ms;      /* agriculture downwash cap, 0 = none */
-	double payload_kg;
-	/* battery */
-	const struct batt_chem *chem;
-	double e_spec_wh_kg;         /* may override the chemistry */
-	int cells_fixed;             /* 0 = auto */
-	int cells_lo, cells_hi;      /* auto range (class table) */
-	int pack_count;
-	int cycles;
-	bool capacity_locked;
-	double capacity_locked_ah;
-	/* propeller and motor */
-	bool prop_locked;
-	double prop_diameter_m;
-	double prop_pitch_m;
-	bool kv_locked;
-	double kv;
-	int n_blades;
-	double prop_kg_per_m22;      /* blade mass coefficient, kg / m^2.2 */
-	/* aerodynamics */
-	double fom_override;         /* > 0: installed FoM used as is */
-	double fom_isolated;
-	bool fom_isolated_mode;
-	double kappa;
-	double interference_c;       /* 0.6 offset, 1.5 under-rotor, 0 folding */
-	double eta_drive;
-	double cd_h, cd_v;
-	double f_scale;
-	double ct;
-	/* structure */
-	double c_body;
-	double alpha_w;
-	double gamma;
-	double lambda;
-	double fixed_frame_kg;       /* > 0: frame mass given */
-	double avionics_kg;
-	double shell_kg_m2;          /* body-shell areal mass */
-	double fairing_section_frac; /* arm fairing side over arm length; 0: none */
-	/* calibration */
-	double packaging_base;
-	double wire_coef;
-	bool consumer_or_micro;      /* packaging small-cell reduction */
-	bool enterprise;             /* packaging enterprise terms */
-	/* real parts for the BOM-closed run */
-	struct sizing_parts parts;
-	/* extras of the final evaluation */
-	bool marketing;              /* evaluate_marketing_limits */
-	/* numerics */
-	int max_iter;
-};
 
 /* Size one run.  Fills *out completely (history, masses, phases, trace,
  * sweep, checks are left to feasibility.c) and returns the status.  If the
@@ -187,6 +88,14 @@ struct sizing_params {
  * <= SIZING_RELAX_MAX_L (else to the floor, if that closes at all);
  * out->thrust_margin and out->thrust_margin_requested record both. */
 enum sizing_status sizing_run(const struct sizing_params *p, struct res_run *out);
+
+/* The phase durations of p after goal relaxation γ (d: PHASE_MAX), their
+ * sum, and the payload's shedding over that mission. */
+void sizing_durations(const struct sizing_params *p, double gamma_time,
+                      double *d);
+double sizing_total_duration(const struct sizing_params *p, double gamma_time);
+void sizing_shedding(const struct sizing_params *p, double gamma_time,
+                     struct role_shedding *s);
 
 /* State of charge left by the 20 % capacity margin (1 - 1/1.2). */
 double sizing_reserve_soc(void);
@@ -214,11 +123,5 @@ int sizing_auto_cells(double peak_power_w, double mass_kg, double v_nom_cell,
  * inflow angle + 4° incidence, m. */
 double sizing_pitch_m(double diameter_m, double induced_ms, double rps);
 
-/* Body-shell surface, m²: the box around the pack and the electronics
- * (see SIZING_BODY_*) plus, where the class moulds its arms
- * (fairing_section_frac c > 0), a hollow fairing of side c·L over each
- * arm of length L: 4c·L² per arm. */
-double sizing_shell_area_m2(double battery_kg, double avionics_kg, int n_arms,
-                            double arm_length_m, double fairing_section_frac);
 
 #endif

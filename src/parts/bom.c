@@ -1,0 +1,303 @@
+/* bom.c — the chosen parts, the bill of materials they make and the
+ * rationale lines that say why (see parts.h). */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "parts/parts_int.h"
+#include "util/strbuf.h"
+#include "util/units.h"
+
+/* Append a formatted piece to dst[n]. */
+static void __attribute__((format(printf, 3, 4)))
+append(char *dst, size_t n, const char *fmt, ...)
+{
+	size_t len = strlen(dst);
+	if (len + 1 >= n)
+		return;
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(dst + len, n - len, fmt, ap);
+	va_end(ap);
+}
+
+/* The first web address in a catalogue source note, for the buyer: up to
+ * the first blank or ";", "http" or "www" at its start. */
+static void
+source_url(const char *source, char *out, size_t n)
+{
+	out[0] = '\0';
+	const char *u = strstr(source, "http");
+	if (u == NULL)
+		u = strstr(source, "www.");
+	if (u == NULL)
+		return;
+	size_t len = strcspn(u, " ;|,\"");
+	while (len > 0 && (u[len - 1] == '.' || u[len - 1] == ')'))
+		len--;
+	if (len >= n)
+		return; /* a cut address is worse than none */
+	memcpy(out, u, len);
+	out[len] = '\0';
+}
+
+static void
+part_common(struct res_part *rp, const char *id, const char *manufacturer,
+            const char *part_number, double price_usd, const char *price_date,
+            const char *source)
+{
+	memset(rp, 0, sizeof *rp);
+	rp->chosen = true;
+	str_copy(rp->id, sizeof rp->id, id);
+	str_copy(rp->manufacturer, sizeof rp->manufacturer, manufacturer);
+	str_copy(rp->part_number, sizeof rp->part_number, part_number);
+	rp->unit_price_usd = price_usd > 0.0 ? price_usd : 0.0;
+	str_copy(rp->price_date, sizeof rp->price_date, price_date);
+	source_url(source, rp->source_url, sizeof rp->source_url);
+}
+
+/* r->motor/prop/battery/esc from the design of record. */
+static void
+fill_parts(const struct parts_ctx *x, const struct parts_closed *c,
+           struct solve_result *r)
+{
+	int n = x->p->n_rotors;
+	const struct catalog_motor *m = c->o.motor;
+	struct res_part *rp = &r->motor;
+	part_common(rp, m->id, m->manufacturer, m->part_number, m->price_usd,
+	    m->price_date, m->source);
+	if (m->integrated)
+		append(rp->description, sizeof rp->description, "integrated motor + "
+		    "ESC + %.0f in propeller, ", m->integrated_prop_in);
+	append(rp->description, sizeof rp->description, "%.0f KV, %.0f g, %.0f A max",
+	    m->kv_rpm_per_v, m->mass_kg * 1000.0, m->max_current_a);
+	if (m->cells_min > 0 && m->cells_max > 0)
+		append(rp->description, sizeof rp->description, ", %d-%dS",
+		    m->cells_min, m->cells_max);
+	rp->qty = n;
+	rp->unit_mass_kg = m->mass_kg;
+	rp->j_score = c->o.j;
+
+	memset(&r->prop, 0, sizeof r->prop);
+	memset(&r->esc, 0, sizeof r->esc);
+	if (c->o.prop != NULL) {
+		const struct catalog_prop *p = c->o.prop;
+		rp = &r->prop;
+		part_common(rp, p->id, p->manufacturer, p->part_number, p->price_usd,
+		    p->price_date, p->source);
+		append(rp->description, sizeof rp->description, "%.1f x %.1f in",
+		    p->diameter_in, p->pitch_in);
+		if (p->blades > 0)
+			append(rp->description, sizeof rp->description, ", %d-blade", p->blades);
+		if (p->material[0])
+			append(rp->description, sizeof rp->description, ", %s", p->material);
+		if (p->folding == 1)
+			append(rp->description, sizeof rp->description, ", folding");
+		rp->qty = n;
+		rp->unit_mass_kg = p->mass_kg;
+		rp->j_score = c->o.j;
+	}
+	if (c->esc != NULL) {
+		const struct catalog_esc *e = c->esc;
+		rp = &r->esc;
+		part_common(rp, e->id, e->manufacturer, e->part_number, e->price_usd,
+		    e->price_date, e->source);
+		append(rp->description, sizeof rp->description, "%.0f A continuous",
+		    e->continuous_current_a);
+		if (e->burst_current_a > 0.0)
+			append(rp->description, sizeof rp->description, ", %.0f A burst",
+			    e->burst_current_a);
+		if (e->channels == 4)
+			append(rp->description, sizeof rp->description, ", 4-in-1");
+		if (e->cells_max > 0)
+			append(rp->description, sizeof rp->description, ", up to %dS", e->cells_max);
+		rp->qty = c->n_esc;
+		rp->unit_mass_kg = e->mass_kg;
+	}
+	const struct catalog_battery *b = c->pack.b;
+	rp = &r->battery;
+	part_common(rp, b->id, b->manufacturer, b->part_number, b->price_usd,
+	    b->price_date, b->source);
+	append(rp->description, sizeof rp->description, "%s %dS %.0f mAh, %.0fC "
+	    "continuous", b->chemistry, b->cells_series, b->capacity_ah * 1000.0,
+	    b->continuous_c);
+	if (c->pack.series * c->pack.parallel > 1)
+		append(rp->description, sizeof rp->description, "; %d in series x %d "
+		    "in parallel for %dS %.0f mAh", c->pack.series, c->pack.parallel,
+		    c->o.cells, c->pack.capacity_ah * 1000.0);
+	rp->qty = c->pack.series * c->pack.parallel;
+	rp->unit_mass_kg = b->mass_kg;
+	r->battery_series_packs = c->pack.series;
+	r->battery_parallel_packs = c->pack.parallel;
+}
+
+static struct res_bom_line *
+bom_add(struct solve_result *r, int qty, const char *category,
+        const char *manufacturer, const char *part_number,
+        const char *description, double unit_kg, double unit_usd,
+        const char *id)
+{
+	if (r->n_bom >= RES_MAX_BOM || qty <= 0)
+		return NULL;
+	struct res_bom_line *b = &r->bom[r->n_bom];
+	memset(b, 0, sizeof *b);
+	b->item = ++r->n_bom;
+	b->qty = qty;
+	str_copy(b->category, sizeof b->category, category);
+	str_copy(b->manufacturer, sizeof b->manufacturer, manufacturer);
+	str_copy(b->part_number, sizeof b->part_number, part_number);
+	str_copy(b->description, sizeof b->description, description);
+	b->unit_mass_kg = unit_kg;
+	b->total_mass_kg = unit_kg * (double)qty;
+	b->unit_price_usd = unit_usd > 0.0 ? unit_usd : 0.0;
+	b->total_price_usd = b->unit_price_usd * (double)qty;
+	str_copy(b->catalogue_id, sizeof b->catalogue_id, id);
+	return b;
+}
+
+static void
+bom_part(struct solve_result *r, const struct res_part *p, int qty,
+         const char *category, const char *part_number, const char *note)
+{
+	if (!p->chosen)
+		return;
+	char d[160];
+	snprintf(d, sizeof d, "%s%s", p->description, note);
+	struct res_bom_line *b = bom_add(r, qty, category, p->manufacturer,
+	    part_number, d, p->unit_mass_kg, p->unit_price_usd, p->id);
+	if (b != NULL) {
+		str_copy(b->price_date, sizeof b->price_date, p->price_date);
+		str_copy(b->source_url, sizeof b->source_url, p->source_url);
+	}
+}
+
+/* A sized part the catalogue cannot supply (mass from the design of
+ * record): made to the dimensions the description gives. */
+static void
+bom_custom(struct solve_result *r, int qty, const char *part_number,
+           const char *description, double total_kg)
+{
+	if (total_kg > 0.0)
+		bom_add(r, qty, "custom", "custom", part_number, description,
+		    total_kg / (double)qty, 0.0, "");
+}
+
+/* The bill of materials: catalogue parts (propellers in their two turning
+ * directions), the sized custom parts, then the payload the customer
+ * furnishes.  The parts sum, with the payload, to the takeoff mass of
+ * record. */
+static void
+fill_bom(const struct parts_ctx *x, const struct parts_closed *c,
+         struct solve_result *r)
+{
+	const struct sizing_params *p = x->p;
+	const struct res_run *o = &r->closed;
+	const struct res_mass *m = &o->mass;
+	char d[160];
+	r->n_bom = 0;
+	bom_part(r, &r->motor, r->motor.qty, "motor", r->motor.part_number, "");
+	if (r->prop.chosen) {
+		/* Half turn each way; a maker sells the counter-rotating blade
+		 * under its own SKU or as the pair under one. */
+		int cw = (r->prop.qty + 1) / 2, ccw = r->prop.qty - cw;
+		bom_part(r, &r->prop, cw, "propeller", r->prop.part_number,
+		    ", CW (normal)");
+		char ccw_pn[sizeof r->prop.part_number + 8];
+		snprintf(ccw_pn, sizeof ccw_pn, "%s%s", r->prop.part_number,
+		    c->o.prop->part_number_ccw[0] ? "" : " (CCW)");
+		bom_part(r, &r->prop, ccw, "propeller",
+		    c->o.prop->part_number_ccw[0] ? c->o.prop->part_number_ccw : ccw_pn,
+		    ", CCW (pusher)");
+	}
+	bom_part(r, &r->battery, r->battery.qty, "battery", r->battery.part_number, "");
+	bom_part(r, &r->esc, r->esc.qty, "esc", r->esc.part_number, "");
+	if (c->pack.series > 1) {
+		snprintf(d, sizeof d, "Series lead joining %d packs into %dS, rated "
+		    "for %.0f A (its mass is in the power harness)", c->pack.series,
+		    c->o.cells, o->peak_current_a);
+		bom_add(r, 1, "custom", "custom", "Series lead", d, 0.0, 0.0, "");
+	}
+	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
+	snprintf(d, sizeof d, "CFRP arm tube OD %.1f x wall %.2f x length %.0f mm, "
+	    "cut to length", o->arm_outer_diameter_mm, o->arm_wall_thickness_mm,
+	    o->arm_length_m * 1000.0);
+	bom_custom(r, arms > 0 ? arms : 1, "Carbon arm", d, m->arm_kg);
+	bom_custom(r, 1, "Centre frame", "Centre plates and spar joints", m->frame_kg);
+	bom_custom(r, 1, "Body and landing gear", "Body shell, landing gear and mounts",
+	    m->other_kg);
+	snprintf(d, sizeof d, "Power harness for %.0f A peak: wiring, connectors, "
+	    "distribution", o->peak_current_a);
+	bom_custom(r, 1, "Power harness", d, m->wiring_kg);
+	bom_custom(r, 1, "Avionics", "Flight controller, GNSS, radios", m->avionics_kg);
+	bom_custom(r, 1, "Role hardware", "Payload mounts and role equipment "
+	    "(release, pump, gimbal)", m->role_aux_kg);
+	r->bom_mass_kg = 0.0;
+	r->bom_price_usd = 0.0;
+	r->bom_priced_lines = 0;
+	for (int i = 0; i < r->n_bom; i++) {
+		r->bom_mass_kg += r->bom[i].total_mass_kg;
+		r->bom_price_usd += r->bom[i].total_price_usd;
+		r->bom_priced_lines += r->bom[i].unit_price_usd > 0.0;
+	}
+	r->bom_parts_lines = r->n_bom;
+	if (m->payload_kg > 0.0)
+		bom_add(r, 1, "payload", "customer-furnished", "Payload",
+		    "Payload at takeoff, furnished by the customer", m->payload_kg,
+		    0.0, "");
+}
+
+void
+parts_fill(const struct parts_ctx *x, const struct parts_closed *c,
+           struct solve_result *r)
+{
+	fill_parts(x, c, r);
+	fill_bom(x, c, r);
+}
+
+void
+parts_explain(const struct parts_ctx *x, const struct parts_closed *c,
+              int n_closed, int n_better_failed, struct solve_result *r)
+{
+	const struct catalog_motor *m = c->o.motor;
+	const struct res_run *o = &r->closed;
+	const struct res_op *hov = &o->perf.op[OP_HOVER];
+	if (c->o.prop != NULL)
+		res_rationale(r, "Motor %s (%.0f KV) on %s propellers (%.1f x %.1f in) "
+		    "at %dS: J = %+.1f %% of takeoff mass over the continuous design, "
+		    "the best of %d closings on real parts; hover at %.0f %% throttle "
+		    "and %.0f %% motor efficiency.", m->id, m->kv_rpm_per_v,
+		    c->o.prop->id, c->o.prop->diameter_in, c->o.prop->pitch_in,
+		    c->o.cells, c->o.j, n_closed, 100.0 * hov->throttle,
+		    100.0 * hov->motor_efficiency);
+	else
+		res_rationale(r, "Integrated system %s (%.0f KV, %.0f in propeller, "
+		    "ESC inside) at %dS: J = %+.1f %%, the best of %d closings; "
+		    "hover at %.0f %% throttle.", m->id, m->kv_rpm_per_v,
+		    m->integrated_prop_in, c->o.cells, c->o.j, n_closed,
+		    100.0 * hov->throttle);
+	if (c->o.cells != x->aim.cells)
+		res_rationale(r, "Bus %dS instead of the continuous %dS: the real "
+		    "parts close lighter there.", c->o.cells, x->aim.cells);
+	if (strcmp(c->pack.chem->name, x->p->chem->name) != 0)
+		res_rationale(r, "The battery is %s (the continuous design assumed "
+		    "%s): the lightest pack that flies the mission; the design of "
+		    "record flies its own chemistry profile.", c->pack.chem->name,
+		    x->p->chem->name);
+	res_rationale(r, "Battery: %d x %s (%dS%dP) = %dS %.0f mAh, %.2f kg.",
+	    c->pack.series * c->pack.parallel, c->pack.b->id, c->pack.series,
+	    c->pack.parallel, c->o.cells, c->pack.capacity_ah * 1000.0,
+	    c->pack.mass_kg);
+	if (c->esc != NULL)
+		res_rationale(r, "ESC: %d x %s, %.0f A continuous for the %.0f A "
+		    "each motor draws at full throttle.", c->n_esc, c->esc->id,
+		    c->esc->continuous_current_a, o->perf.op[OP_FULL].motor_current_a);
+	if (n_better_failed > 0)
+		res_rationale(r, "%d better-scoring combination%s did not close the "
+		    "mission on real parts.", n_better_failed,
+		    n_better_failed == 1 ? "" : "s");
+	res_rationale(r, "Design of record (the aircraft the bill of materials "
+	    "builds): MTOW %.3f kg against %.3f kg continuous (%+.1f %%).",
+	    o->mass.total_kg, r->custom.mass.total_kg,
+	    100.0 * (o->mass.total_kg / r->custom.mass.total_kg - 1.0));
+}

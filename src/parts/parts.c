@@ -1,0 +1,304 @@
+/* parts.c — the parts search: rank, close, choose (see parts.h). */
+#include "parts/parts.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "parts/parts_int.h"
+#include "physics/batt.h"
+#include "sizing/feasibility.h"
+#include "util/strbuf.h"
+#include "util/xalloc.h"
+
+/* A locked part id that the catalogue lacks, or whose entry is unusable. */
+static bool
+lock_known(struct solve_result *r, const char *field, const char *id,
+           const char *file, bool found, bool usable)
+{
+	char f1[RES_TEXT], f2[RES_TEXT], f3[RES_TEXT];
+	const char *fx[4] = { f1, f2, f3, NULL };
+	if (!found) {
+		snprintf(f1, sizeof f1, "Check the id against data/catalog/%s (ids are lowercase slugs)", file);
+		snprintf(f2, sizeof f2, "Use --db DIR for a catalogue that has it");
+		snprintf(f3, sizeof f3, "Remove locks.%s to let the search choose", field);
+		feasibility_violation(r, "closed", "parts", "UNKNOWN_PART", fx,
+		    "locks.%s names \"%s\", which is not in the parts catalogue.",
+		    field, id);
+		return false;
+	}
+	if (!usable) {
+		snprintf(f1, sizeof f1, "Fill the missing fields of \"%s\" in data/catalog/%s", id, file);
+		snprintf(f2, sizeof f2, "Remove locks.%s to let the search choose", field);
+		fx[2] = NULL;
+		feasibility_violation(r, "closed", "parts", "UNUSABLE_PART", fx,
+		    "locks.%s names \"%s\", whose catalogue entry lacks a value the "
+		    "search needs.", field, id);
+		return false;
+	}
+	return true;
+}
+
+/* The mission's part locks; false (with violations) if one is unknown. */
+static bool
+read_locks(struct parts_ctx *x, struct solve_result *r)
+{
+	const struct spec_locks *sl = &x->spec->locks;
+	const struct catalog *cat = x->cat;
+	bool ok = true;
+	if (sl->motor_part[0]) {
+		x->lock_motor = catalog_find_motor(cat, sl->motor_part);
+		ok &= lock_known(r, "motor_part", sl->motor_part, "motors.json",
+		    x->lock_motor != NULL, x->lock_motor && x->lock_motor->usable);
+	}
+	if (sl->prop_part[0]) {
+		x->lock_prop = catalog_find_prop(cat, sl->prop_part);
+		ok &= lock_known(r, "prop_part", sl->prop_part, "propellers.json",
+		    x->lock_prop != NULL, x->lock_prop && x->lock_prop->usable);
+	}
+	if (sl->battery_part[0]) {
+		x->lock_battery = catalog_find_battery(cat, sl->battery_part);
+		ok &= lock_known(r, "battery_part", sl->battery_part, "batteries.json",
+		    x->lock_battery != NULL, x->lock_battery && x->lock_battery->usable);
+	}
+	if (sl->esc_part[0]) {
+		x->lock_esc = catalog_find_esc(cat, sl->esc_part);
+		ok &= lock_known(r, "esc_part", sl->esc_part, "escs.json",
+		    x->lock_esc != NULL, x->lock_esc && x->lock_esc->usable);
+	}
+	return ok;
+}
+
+/* No option survived the ranking: say what set them aside, most first. */
+static void
+report_none(const struct parts_ctx *x, struct solve_result *r)
+{
+	char msg[RES_TEXT];
+	int order[PARTS_REASON_MAX], n = 0;
+	for (int k = 1; k < PARTS_REASON_MAX; k++)
+		if (x->n_census[k] > 0)
+			order[n++] = k;
+	for (int a = 1; a < n; a++)
+		for (int b = a; b > 0 && x->n_census[order[b]] > x->n_census[order[b - 1]]; b--) {
+			int tmp = order[b];
+			order[b] = order[b - 1];
+			order[b - 1] = tmp;
+		}
+	size_t len = (size_t)snprintf(msg, sizeof msg, "No catalogue combination "
+	    "fits at %d-%dS; of %d options: ", x->cells_lo, x->cells_hi,
+	    x->n_examined);
+	for (int k = 0; k < n && len < sizeof msg; k++)
+		len += (size_t)snprintf(msg + len, sizeof msg - len, "%s%s %d",
+		    k > 0 ? ", " : "", parts_reason_text[order[k]], x->n_census[order[k]]);
+	if (len < sizeof msg)
+		snprintf(msg + len, sizeof msg - len, ".");
+	const char *fx[] = {
+		"Add parts near the continuous optimum to the catalogue, or use --db",
+		"Lock a part by id (locks.motor_part) to see which of its limits binds",
+		"Relax the mission (payload, times, thrust margin)", NULL };
+	feasibility_violation(r, "closed", "parts", "NO_PARTS", fx, "%s", msg);
+}
+
+/* A closing's score: its takeoff mass, counted heavier by 2 % for every
+ * 10 % it falls short of the role's T/W goal (parts_int.h). */
+static double
+score(const struct parts_ctx *x, const struct parts_closed *c)
+{
+	const struct res_run *o = &c->r->closed;
+	double short_by = 1.0 - o->thrust_to_weight / x->aim.tw_target;
+	return o->mass.total_kg * (1.0 + PARTS_TW_SHORTFALL_W
+	    * (short_by > 0.0 ? short_by : 0.0));
+}
+
+/* Is closing a better than b?  Passing every check first, then the fewest
+ * failed checks, then the lower score. */
+static bool
+better(const struct parts_ctx *x, const struct parts_closed *a,
+       const struct parts_closed *b)
+{
+	if (b->r == NULL)
+		return true;
+	if (!a->finite || !b->finite)
+		return a->finite;
+	if (a->failed != b->failed)
+		return a->failed < b->failed;
+	return score(x, a) < score(x, b);
+}
+
+/* The lightest arrangement of the bus that holds need_wh and carries the
+ * option's currents: hover within the continuous rating, full throttle
+ * within the burst rating and with the pack's sag at most PARTS_MAX_SAG of
+ * its voltage (else the thrust the ranking counted on is not there).  -1
+ * when none does. */
+static int
+pick_pack(const struct parts_ctx *x, const struct parts_option *o,
+          const struct parts_pack *pk, int n, double need_wh)
+{
+	double v = (double)o->cells * x->p->chem->v_nom;
+	double i_full = (double)x->p->n_rotors * o->full_current_a;
+	double i_hover = o->hover_power_w / v;
+	int best = -1;
+	for (int i = 0; i < n; i++) {
+		const struct parts_pack *q = &pk[i];
+		double r_pack = (double)o->cells * batt_rated_cell_ohm(q->chem,
+		    q->capacity_ah, q->b->continuous_c);
+		if (q->energy_wh >= need_wh && q->max_burst_a >= i_full
+		    && q->max_continuous_a >= i_hover
+		    && r_pack * i_full <= PARTS_MAX_SAG * v
+		    && (best < 0 || q->mass_kg < pk[best].mass_kg))
+			best = i;
+	}
+	return best;
+}
+
+static void
+swap_closed(struct parts_closed *a, struct parts_closed *b)
+{
+	struct parts_closed t = *a;
+	*a = *b;
+	*b = t;
+}
+
+/* Close option o on the lightest fitting pack, then, while the pack lands
+ * below the reserve, on one sized up by the charge it fell short. */
+static int
+close_option(const struct parts_ctx *x, const struct parts_option *o,
+             const struct catalog_esc *esc, int n_esc, struct parts_closed *cur,
+             struct parts_closed *pick, struct solve_result **spare)
+{
+	int n_pk, n_closed = 0;
+	const struct parts_pack *pk = parts_packs_for(x, o, &n_pk);
+	if (pk == NULL)
+		return 0;
+	/* The continuous design's energy, scaled by this option's hover
+	 * power, a little below: the real design may well be lighter. */
+	double need = x->aim.hover_power_w > 0.0
+	    ? 0.85 * x->aim.energy_wh * o->hover_power_w / x->aim.hover_power_w : 0.0;
+	int last = -1;
+	for (int k = 0; k < PARTS_PACK_TRIES; k++) {
+		int at = pick_pack(x, o, pk, n_pk, need);
+		if (at < 0 || at == last)
+			break;
+		last = at;
+		parts_close(x, o, &pk[at], esc, n_esc, false, cur);
+		n_closed++;
+		double end_soc = cur->r->closed.end_soc;
+		double reserve = cur->r->closed.reserve_soc;
+		if (better(x, cur, pick)) {
+			if (pick->r == NULL) {
+				pick->r = *spare;
+				*spare = NULL;
+			}
+			swap_closed(cur, pick);
+		}
+		/* Short of the reserve: the charge it needs over the charge it
+		 * drew, with 5 % to spare. */
+		double used = 1.0 - end_soc;
+		if (end_soc >= reserve || !(used > 0.0))
+			break;
+		need = pk[at].energy_wh * (1.0 - reserve) / used * 1.05;
+	}
+	return n_closed;
+}
+
+
+int
+parts_select(const struct mission_spec *spec, const struct sizing_params *p,
+             const struct model_data *md, const struct catalog *cat,
+             struct solve_result *r)
+{
+	r->parts_selected = false;
+	r->n_bom = 0;
+	r->n_candidates = 0;
+	r->bom_mass_kg = 0.0;
+	r->bom_price_usd = 0.0;
+	memset(&r->motor, 0, sizeof r->motor);
+	memset(&r->prop, 0, sizeof r->prop);
+	memset(&r->battery, 0, sizeof r->battery);
+	memset(&r->esc, 0, sizeof r->esc);
+	memset(&r->closed, 0, sizeof r->closed);
+	if (!r->custom.ran || !r->custom.converged) {
+		res_rationale(r, "No parts selected: the continuous design did not "
+		    "converge.");
+		return 0;
+	}
+	struct parts_ctx x;
+	memset(&x, 0, sizeof x);
+	x.spec = spec;
+	x.p = p;
+	x.md = md;
+	x.cat = cat;
+	parts_aim_from(p, &r->custom, &x.aim);
+	if (!read_locks(&x, r))
+		return 0;
+	if (p->cells_fixed > 0) {
+		x.cells_lo = x.cells_hi = p->cells_fixed;
+	} else {
+		x.cells_lo = p->cells_lo > 1 ? p->cells_lo : 1;
+		x.cells_hi = p->cells_hi < PARTS_MAX_CELLS ? p->cells_hi : PARTS_MAX_CELLS;
+	}
+	parts_packs_init(&x);
+	struct parts_option best[PARTS_KEEP];
+	int n_best = parts_rank(&x, best, PARTS_KEEP, r->candidates,
+	    &r->n_candidates);
+	if (n_best == 0) {
+		parts_packs_free(&x);
+		report_none(&x, r);
+		return 0;
+	}
+
+	/* Close the ranked options, each on the lightest pack arrangement
+	 * that fits it; keep the best closing.  The trial buffers keep their
+	 * violations' codes only. */
+	struct parts_closed cur = { 0 }, pick = { 0 };
+	cur.r = xmalloc(sizeof *cur.r);
+	struct solve_result *spare = xmalloc(sizeof *spare);
+	cur.r->terse = spare->terse = true;
+	int n_closed = 0;
+	for (int i = 0; i < n_best; i++) {
+		const struct catalog_esc *esc;
+		int n_esc;
+		if (!parts_pick_esc(&x, &best[i], &esc, &n_esc)) {
+			x.n_census[PARTS_NO_ESC]++;
+			continue;
+		}
+		n_closed += close_option(&x, &best[i], esc, n_esc, &cur, &pick, &spare);
+	}
+	free(spare);
+	free(cur.r);
+	if (pick.r == NULL || !pick.finite) {
+		free(pick.r);
+		parts_packs_free(&x);
+		report_none(&x, r);
+		return pick.r != NULL ? 3 : 0;
+	}
+
+	/* The design of record, closed again with its violations' texts. */
+	struct parts_closed rec = pick;
+	rec.r = xcalloc(1, sizeof *rec.r);
+	parts_close(&x, &pick.o, &pick.pack, pick.esc, pick.n_esc, true, &rec);
+	r->closed = rec.r->closed;
+	for (int i = 0; i < rec.r->n_violations && r->n_violations < RES_MAX_VIOLATIONS; i++)
+		r->violations[r->n_violations++] = rec.r->violations[i];
+	if (rec.failed > 0) {
+		const char *fx[] = {
+			"Add parts near the continuous optimum to the catalogue, or use --db",
+			"Lock parts by id (locks.motor_part, ...) to study one combination",
+			"Relax the mission (payload, times, thrust margin)", NULL };
+		feasibility_violation(r, "closed", "parts", "PARTS_DO_NOT_CLOSE", fx,
+		    "None of the %d closings on catalogue parts passes every check; "
+		    "the closest (%s%s%s, %d x %s) fails %d.", n_closed,
+		    rec.o.motor->id, rec.o.prop ? " + " : "",
+		    rec.o.prop ? rec.o.prop->id : "",
+		    rec.pack.series * rec.pack.parallel, rec.pack.b->id, rec.failed);
+	}
+	parts_fill(&x, &rec, r);
+	parts_explain(&x, &rec, n_closed, 0, r);
+	r->parts_selected = true;
+	bool finite = rec.finite && isfinite(r->bom_mass_kg);
+	free(rec.r);
+	free(pick.r);
+	parts_packs_free(&x);
+	return finite ? 0 : 3;
+}

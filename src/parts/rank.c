@@ -1,0 +1,430 @@
+/* rank.c — every bus × motor × propeller option, flown at full throttle
+ * on its own constants and scored (see parts.h).
+ *
+ * J is the takeoff-mass penalty an option would bring over the continuous
+ * design, in percent:
+ *
+ *     J = 100 · growth · (Δdrive + Δbattery) / M*
+ *
+ * Δdrive is the option's motors, propellers and ESCs (the ESC from the
+ * catalogue's mass per amp at its full-throttle current) against the
+ * continuous design's; Δbattery is the continuous battery scaled by the
+ * option's hover power over the continuous design's (the energy the
+ * mission needs follows the hover power); growth = 1 / (1 - L) carries
+ * every added kilogram through the mass loop (L, the continuous loop's
+ * Lipschitz constant).  So J weighs each mismatch by what it costs in
+ * flight: a propeller smaller than the aim raises the induced power as
+ * 1/D, a KV away from the aim moves the motor off its efficient speed and
+ * raises current and copper loss, a heavier motor adds its mass — instead
+ * of the paper's fixed weights (100 per unit of diameter error, 10 of KV,
+ * 50 of pitch, 1000 of hover throttle), under which a small, fast FPV
+ * motor on a 7 in propeller outscored the right 13 in one.  Options that
+ * cannot reach the required thrust, overrun a rating or break tip Mach are
+ * pruned before scoring.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "parts/parts_int.h"
+#include "physics/aero.h"
+#include "physics/mission.h"
+#include "util/units.h"
+#include "util/xalloc.h"
+
+#define MIN_DIAMETER_FRAC  0.55   /* smallest propeller searched, × D* */
+#define KV_WINDOW_LO       0.6    /* KV searched around the KV the thrust */
+#define KV_WINDOW_HI       2.5    /* ... needs on each bus and propeller */
+#define LOADED_SPEED       0.85   /* loaded full-throttle speed / no-load */
+#define RANK_WINDING_RISE_K 40.0  /* winding above ambient assumed for ranking */
+#define LOCK_KV_TOL        0.05   /* a KV lock matches within 5 % */
+#define LOCK_DIAMETER_TOL_IN 0.3  /* a propeller lock within 0.3 in */
+#define LOCK_PITCH_TOL_IN  0.5
+#define MAX_L              0.8    /* growth factor capped at 5 */
+#define PRUNED_J           1e9
+
+const char *const parts_reason_text[PARTS_REASON_MAX] = {
+	"none",
+	"motor cell range",
+	"propeller overlap",
+	"recommended propeller range",
+	"thrust at full throttle",
+	"motor current",
+	"motor power",
+	"tip Mach",
+	"propeller rpm limit",
+	"no ESC for the current",
+	"no pack for the bus",
+	"lock",
+};
+
+void
+parts_aim_from(const struct sizing_params *p, const struct res_run *custom,
+               struct parts_aim *aim)
+{
+	memset(aim, 0, sizeof *aim);
+	const struct res_mass *m = &custom->mass;
+	aim->mass_kg = m->total_kg;
+	aim->drive_kg = m->motor_kg + m->prop_kg + m->esc_kg;
+	aim->battery_kg = m->battery_kg;
+	aim->energy_wh = custom->energy_wh;
+	aim->hover_power_w = custom->phase[PHASE_HOVER].shaft_power_w / p->eta_drive;
+	double l = custom->lipschitz;
+	l = l < 0.0 ? 0.0 : l > MAX_L ? MAX_L : l;
+	aim->growth = 1.0 / (1.0 - l);
+	/* The continuous run's T/W is the role's target (or the relaxed one
+	 * it flew).  A role's default target is a goal the parts search
+	 * prefers but may fall short of, down to the relaxation floor; a
+	 * target the mission sets is a requirement. */
+	double theta_floor = 1.0 - p->thrust_margin_floor;
+	aim->tw_target = custom->thrust_to_weight;
+	aim->tw_required = p->thrust_margin_floor > 0.0
+	    ? PARTS_TW_TOL / (theta_floor * theta_floor)
+	    : custom->thrust_to_weight * PARTS_TW_TOL;
+	if (aim->tw_required > aim->tw_target)
+		aim->tw_required = aim->tw_target * PARTS_TW_TOL;
+	aim->prop_diameter_in = custom->opt.prop_diameter_in;
+	aim->prop_pitch_in = custom->opt.prop_pitch_in;
+	aim->motor_kv = custom->opt.motor_kv;
+	aim->cells = custom->cell_count > 0 ? custom->cell_count : 1;
+	aim->overlap_limit_in = custom->overlap_limit_in;
+	/* The rotor's installed power over the propeller's own at the same
+	 * thrust and speed: κ and the arm interference (perf.c's FoM), and the
+	 * lower rotor's wake on a coaxial pair. */
+	aim->install_factor = (p->fom_isolated_mode ? 1.0 : p->kappa)
+	    * (custom->interference > 1.0 ? custom->interference : 1.0)
+	    * (p->coaxial ? 1.0 + 0.5 * (MISSION_COAX_INDUCED - 1.0) : 1.0);
+}
+
+/* The propeller of an option: the catalogue's, or an integrated system's. */
+static void
+option_prop(const struct catalog_motor *m, const struct catalog_prop *pr,
+            const struct parts_aim *aim, struct perf_craft *c)
+{
+	double d_in, pitch_in;
+	int blades = 2;
+	if (pr != NULL) {
+		d_in = pr->diameter_in;
+		pitch_in = pr->pitch_in;
+		blades = pr->blades > 0 ? pr->blades : 2;
+		c->prop_max_rpm = pr->max_rpm;
+	} else {
+		d_in = m->integrated_prop_in;
+		pitch_in = m->integrated_pitch_in > 0.0 ? m->integrated_pitch_in
+		    : aim->prop_pitch_in / aim->prop_diameter_in * d_in;
+		c->prop_max_rpm = 0.0;
+	}
+	c->prop_diameter_m = in_to_m(d_in);
+	c->prop_pitch_m = in_to_m(pitch_in);
+	c->prop_blades = blades;
+	if (pr != NULL && pr->ct_static > 0.0 && pr->cp_static > 0.0) {
+		c->prop.ct = pr->ct_static;
+		c->prop.cp = pr->cp_static;
+		c->prop.measured = true;
+	} else {
+		prop_estimate(pitch_in / d_in, blades, &c->prop);
+	}
+}
+
+bool
+parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
+            const struct catalog_prop *pr, int cells, struct parts_option *o)
+{
+	const struct sizing_params *p = x->p;
+	const struct parts_aim *aim = &x->aim;
+	memset(o, 0, sizeof *o);
+	o->cells = cells;
+	o->motor = m;
+	o->prop = pr;
+	struct perf_craft *c = &o->craft;
+	c->motor.kv_rpm_per_v = m->kv_rpm_per_v;
+	c->motor.mass_kg = m->mass_kg;
+	c->motor.resistance_ohm = m->resistance_ohm > 0.0 ? m->resistance_ohm
+	    : motor_estimate_resistance_ohm(m->kv_rpm_per_v, m->mass_kg);
+	c->motor.no_load_current_a = m->no_load_current_a > 0.0
+	    ? m->no_load_current_a
+	    : motor_estimate_no_load_a(m->kv_rpm_per_v, m->mass_kg);
+	c->motor_r_estimated = !(m->resistance_ohm > 0.0 && m->no_load_current_a > 0.0);
+	c->motor_max_current_a = m->max_current_a;
+	c->motor_max_power_w = m->max_power_w;
+	option_prop(m, pr, aim, c);
+	c->cells = cells;
+
+	double rho = p->air.rho_kg_m3;
+	double d = c->prop_diameter_m;
+	double kq = aim->install_factor * prop_kq_nm_s2(&c->prop, rho, d);
+	double t_w = p->ambient_c + RANK_WINDING_RISE_K;
+	double v = (double)cells * p->chem->v_nom * PARTS_LOADED_BUS;
+	struct motor_point full;
+	if (!motor_at_voltage(&c->motor, t_w, v, kq, &full))
+		return false;
+	o->full_thrust_n = prop_thrust_n(&c->prop, rho, full.rps, d);
+	o->full_current_a = full.current_a;
+	o->full_power_w = full.power_in_w;
+	/* Hover of the continuous design's mass on this rotor. */
+	double t_h = aim->mass_kg * G0_M_S2 / (double)p->n_rotors;
+	double n_h = sqrt(t_h / (c->prop.ct * rho * pow(d, 4.0)));
+	struct motor_point hov;
+	motor_at_shaft(&c->motor, t_w, kq * 2.0 * M_PI * n_h * n_h * n_h, n_h,
+	    &hov);
+	o->hover_power_w = hov.power_in_w * (double)p->n_rotors;
+	return true;
+}
+
+/* The first reason the option fails a hard limit, or PARTS_OK. */
+static enum parts_reason
+option_limits(const struct parts_ctx *x, const struct parts_option *o)
+{
+	const struct sizing_params *p = x->p;
+	const struct perf_craft *c = &o->craft;
+	const struct catalog_motor *m = o->motor;
+	bool locked = x->lock_motor != NULL;
+	/* The thrust at the mass the option is estimated to close at (J), with
+	 * a little to spare for the estimate; never below the continuous
+	 * design's mass, which the estimate may undercut. */
+	double growth = o->j > 0.0 ? 1.0 + o->j / 100.0 : 1.0;
+	double weight_n = x->aim.mass_kg * growth * G0_M_S2;
+	if ((double)p->n_rotors * o->full_thrust_n
+	    < PARTS_TW_SPARE * x->aim.tw_required * weight_n)
+		return PARTS_THRUST;
+	if (!locked && o->full_current_a > m->max_current_a)
+		return PARTS_MOTOR_CURRENT;
+	if (!locked && m->max_power_w > 0.0 && o->full_power_w > m->max_power_w)
+		return PARTS_MOTOR_POWER;
+	double rps_full = sqrt(o->full_thrust_n / (c->prop.ct * p->air.rho_kg_m3
+	    * pow(c->prop_diameter_m, 4.0)));
+	if (M_PI * c->prop_diameter_m * rps_full / p->air.sound_m_s > AERO_TIP_MACH_MAX)
+		return PARTS_TIP_MACH;
+	if (c->prop_max_rpm > 0.0 && rps_full * S_PER_MIN > c->prop_max_rpm)
+		return PARTS_PROP_RPM;
+	return PARTS_OK;
+}
+
+static double
+option_j(const struct parts_ctx *x, const struct parts_option *o)
+{
+	const struct parts_aim *aim = &x->aim;
+	double n = (double)x->p->n_rotors;
+	const struct catalog_motor *m = o->motor;
+	double drive = n * m->mass_kg;
+	if (o->prop != NULL)
+		drive += n * (o->prop->mass_kg + SIZING_ESC_KG_PER_A
+		    * PARTS_CURRENT_MARGIN * o->full_current_a);
+	double d_battery = aim->hover_power_w > 0.0
+	    ? aim->battery_kg * (o->hover_power_w / aim->hover_power_w - 1.0) : 0.0;
+	return 100.0 * aim->growth * (drive - aim->drive_kg + d_battery)
+	    / aim->mass_kg;
+}
+
+/* Keep o among the best max_best, best J first (ties: fewer cells nearer
+ * the continuous bus, then ids: deterministic). */
+static void
+keep(struct parts_option *best, int *n, int max_best, const struct parts_option *o)
+{
+	/* One option per motor and bus (its best propeller): the closings then
+	 * try different motors and buses, not variants of one. */
+	for (int i = 0; i < *n; i++) {
+		if (best[i].motor != o->motor || best[i].cells != o->cells)
+			continue;
+		if (best[i].j <= o->j)
+			return;
+		memmove(&best[i], &best[i + 1], (size_t)(*n - i - 1) * sizeof *best);
+		(*n)--;
+		break;
+	}
+	int at = *n;
+	while (at > 0 && (best[at - 1].j > o->j || (best[at - 1].j == o->j
+	    && strcmp(best[at - 1].motor->id, o->motor->id) > 0)))
+		at--;
+	if (at >= max_best)
+		return;
+	int last = *n < max_best ? *n : max_best - 1;
+	memmove(&best[at + 1], &best[at], (size_t)(last - at) * sizeof *best);
+	best[at] = *o;
+	if (*n < max_best)
+		(*n)++;
+}
+
+static bool
+motor_on_bus(const struct catalog_motor *m, int cells)
+{
+	return !(m->cells_min > 0 && cells < m->cells_min)
+	    && !(m->cells_max > 0 && cells > m->cells_max);
+}
+
+static bool
+bus_has_pack(const struct parts_ctx *x, int cells)
+{
+	for (int i = 0; i < x->n_packs; i++)
+		if (x->packs[i].b->cells_series * x->packs[i].series == cells)
+			return true;
+	return false;
+}
+
+/* The mission's locks on values (paper §II-C) on a motor or propeller. */
+static bool
+motor_locked_out(const struct parts_ctx *x, const struct catalog_motor *m)
+{
+	if (x->lock_motor != NULL)
+		return m != x->lock_motor;
+	const struct spec_locks *lk = &x->spec->locks;
+	return lk->is_motor_locked
+	    && fabs(m->kv_rpm_per_v / lk->locked_kv - 1.0) > LOCK_KV_TOL;
+}
+
+static bool
+prop_locked_out(const struct parts_ctx *x, const struct catalog_prop *pr)
+{
+	if (x->lock_prop != NULL)
+		return pr != x->lock_prop;
+	const struct spec_locks *lk = &x->spec->locks;
+	return lk->is_prop_locked
+	    && (fabs(pr->diameter_in - lk->locked_diameter_in) > LOCK_DIAMETER_TOL_IN
+	    || fabs(pr->pitch_in - lk->locked_pitch_in) > LOCK_PITCH_TOL_IN);
+}
+
+/* One option: flown, checked, scored; kept among the best. */
+static void
+try_option(struct parts_ctx *x, const struct catalog_motor *m,
+           const struct catalog_prop *pr, int cells, struct parts_option *best,
+           int *n_best, int max_best, double *motor_best_j)
+{
+	struct parts_option o;
+	x->n_examined++;
+	if (!parts_drive(x, m, pr, cells, &o)) {
+		x->n_census[PARTS_THRUST]++;
+		return;
+	}
+	o.j = option_j(x, &o);
+	enum parts_reason why = option_limits(x, &o);
+	if (why != PARTS_OK) {
+		x->n_census[why]++;
+		return;
+	}
+	if (o.j < *motor_best_j)
+		*motor_best_j = o.j;
+	keep(best, n_best, max_best, &o);
+}
+
+/* The catalogue's usable motors by KV, for the KV window of a bus and
+ * propeller. */
+static int
+cmp_kv(const void *a, const void *b)
+{
+	const struct catalog_motor *x = *(const struct catalog_motor *const *)a;
+	const struct catalog_motor *y = *(const struct catalog_motor *const *)b;
+	if (x->kv_rpm_per_v != y->kv_rpm_per_v)
+		return x->kv_rpm_per_v < y->kv_rpm_per_v ? -1 : 1;
+	return strcmp(x->id, y->id);
+}
+
+int
+parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
+           struct res_candidate *cand, int *n_cand)
+{
+	const struct sizing_params *p = x->p;
+	const struct catalog *cat = x->cat;
+	size_t nm = catalog_n_motors(cat), np = catalog_n_props(cat);
+	const struct catalog_motor **mv = xmalloc((nm ? nm : 1) * sizeof *mv);
+	double *mj = xmalloc((nm ? nm : 1) * sizeof *mj);
+	int n_m = 0;
+	for (size_t i = 0; i < nm; i++) {
+		const struct catalog_motor *m = catalog_motor(cat, i);
+		if (!m->usable)
+			continue;
+		if (motor_locked_out(x, m)) {
+			x->n_census[PARTS_LOCK]++;
+			continue;
+		}
+		mv[n_m++] = m;
+	}
+	qsort(mv, (size_t)n_m, sizeof *mv, cmp_kv);
+	for (int i = 0; i < n_m; i++)
+		mj[i] = PRUNED_J;
+
+	int n_best = 0;
+	double rho = p->air.rho_kg_m3;
+	double t_req = x->aim.tw_required * x->aim.mass_kg * G0_M_S2
+	    / (double)p->n_rotors;
+	double d_min_in = MIN_DIAMETER_FRAC * x->aim.prop_diameter_in;
+	for (int s = x->cells_lo; s <= x->cells_hi; s++) {
+		if (!bus_has_pack(x, s)) {
+			x->n_census[PARTS_NO_BATTERY]++;
+			continue;
+		}
+		double v_bus = (double)s * p->chem->v_nom * PARTS_LOADED_BUS;
+		/* Integrated systems bring their own propeller. */
+		for (int i = 0; i < n_m; i++) {
+			const struct catalog_motor *m = mv[i];
+			if (!m->integrated)
+				continue;
+			if (!motor_on_bus(m, s)) {
+				x->n_census[PARTS_MOTOR_CELLS]++;
+				continue;
+			}
+			if (m->integrated_prop_in > x->aim.overlap_limit_in + 1e-6) {
+				x->n_census[PARTS_PROP_OVERLAP]++;
+				continue;
+			}
+			try_option(x, m, NULL, s, best, &n_best, max_best, &mj[i]);
+		}
+		for (size_t k = 0; k < np; k++) {
+			const struct catalog_prop *pr = catalog_prop(cat, k);
+			if (!pr->usable || pr->diameter_in < d_min_in)
+				continue;
+			if (pr->diameter_in > x->aim.overlap_limit_in + 1e-6) {
+				x->n_census[PARTS_PROP_OVERLAP]++;
+				continue;
+			}
+			if (prop_locked_out(x, pr)) {
+				x->n_census[PARTS_LOCK]++;
+				continue;
+			}
+			/* The KV whose loaded full-throttle speed gives the thrust. */
+			struct parts_option probe;
+			memset(&probe, 0, sizeof probe);
+			option_prop(NULL, pr, &x->aim, &probe.craft);
+			double d = probe.craft.prop_diameter_m;
+			double n_req = sqrt(t_req / (probe.craft.prop.ct * rho * pow(d, 4.0)));
+			double kv_req = S_PER_MIN * n_req / (v_bus * LOADED_SPEED);
+			for (int i = 0; i < n_m; i++) {
+				const struct catalog_motor *m = mv[i];
+				if (m->integrated)
+					continue;
+				if (x->lock_motor == NULL
+				    && m->kv_rpm_per_v < KV_WINDOW_LO * kv_req)
+					continue;
+				if (x->lock_motor == NULL
+				    && m->kv_rpm_per_v > KV_WINDOW_HI * kv_req)
+					break;
+				if (!motor_on_bus(m, s)) {
+					x->n_census[PARTS_MOTOR_CELLS]++;
+					continue;
+				}
+				if ((m->prop_min_in > 0.0 && pr->diameter_in
+				    < m->prop_min_in - PARTS_RANGE_TOL_IN)
+				    || (m->prop_max_in > 0.0 && pr->diameter_in
+				    > m->prop_max_in + PARTS_RANGE_TOL_IN)) {
+					x->n_census[PARTS_PROP_RANGE]++;
+					continue;
+				}
+				try_option(x, m, pr, s, best, &n_best, max_best, &mj[i]);
+			}
+		}
+	}
+	/* One crosshair point per usable motor: its best J anywhere. */
+	*n_cand = 0;
+	for (int i = 0; i < n_m && *n_cand < RES_MAX_CANDIDATES; i++) {
+		struct res_candidate *c = &cand[(*n_cand)++];
+		memset(c, 0, sizeof *c);
+		snprintf(c->id, sizeof c->id, "%s", mv[i]->id);
+		c->kv = mv[i]->kv_rpm_per_v;
+		c->mass_kg = mv[i]->mass_kg;
+		c->j_score = mj[i];
+		c->feasible = mj[i] < PRUNED_J;
+	}
+	free(mv);
+	free(mj);
+	return n_best;
+}
