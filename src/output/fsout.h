@@ -14,7 +14,8 @@
  * EIO, EDQUOT, EROFS, EFBIG), so tests can prove that the previous output
  * survives and no temporary file is left behind.  AEROEVAL_TEST_WRITE_DELAY_MS=T
  * makes fsfolder sleep T ms before each file and before the swap, so a test
- * can kill a build while it writes.
+ * can kill a build while it writes; AEROEVAL_TEST_NO_EXCHANGE (any value)
+ * makes fsfolder swap by two renames, as where renameat2 is missing.
  */
 #ifndef AEROEVAL_FSOUT_H
 #define AEROEVAL_FSOUT_H
