@@ -76,7 +76,8 @@ static const char *const pipeline_files[] = { "bom.csv", "result.json",
 
 /* The stamp's text: the fingerprint of the inputs, the verdict and the
  * SHA-256 of every output, so "up to date" can prove the files are the
- * ones this stamp was written with.  hex[i] == NULL leaves file i out. */
+ * ones this stamp was written with: the first n_out outputs (no dossier
+ * without a template). */
 static void
 stamp_text(struct strbuf *sb, const char *fp, int infeasible,
            char hex[N_OUTPUTS][SHA256_HEX_LEN], int n_out)
@@ -96,10 +97,11 @@ pipeline_current(const struct pipeline_opts *o, const char *name, const char *fp
 	size_t n = 0;
 	int n_out = o->tpl != NULL ? N_OUTPUTS : N_OUTPUTS - 1, rc = -1;
 	if (fsfolder_open(&f, o->out_dir, name, pipeline_files, FSFOLDER_NOWAIT, 0.0,
-	    msg, sizeof msg) != 0 || !fsfolder_exists(&f))
+	    msg, sizeof msg) != 0)
 		goto done;
 	fsfolder_clean(&f, FSFOLDER_STALE_S);
-	if (fsfolder_read(&f, PIPELINE_STAMP, stamp, sizeof stamp, &n) != 0)
+	if (!fsfolder_exists(&f)
+	    || fsfolder_read(&f, PIPELINE_STAMP, stamp, sizeof stamp, &n) != 0)
 		goto done;
 	for (int i = 0; i < n_out; i++)
 		if (fsfolder_hash(&f, pipeline_files[i], hex[i]) != 0)

@@ -88,7 +88,8 @@ lock_take(struct fsfolder *f, int flags, double wait_s, char *err, size_t errlen
 		    | O_NONBLOCK, 0644);
 		if (fd < 0 && (flags & FSFOLDER_NOWAIT)
 		    && (errno == EROFS || errno == EACCES || errno == EPERM))
-			return 0;  /* a read-only DIR: readers need no lock */
+			return 0;  /* read-only DIR: nobody can swap a set in, and
+			            * sets are only ever swapped whole anyway */
 		if (fd < 0 && errno == ELOOP) {
 			fail(f, IN_DIR, lk, err, errlen, "%s", why(errno));
 			return -1;
