@@ -12,7 +12,8 @@ bin=${AEROEVAL:-build/aeroeval}
 case "$bin" in /*) ;; *) bin="$root/$bin" ;; esac
 export AEROEVAL_DATA="$root/data"
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+mounted=""  # tmpfs mounts of the file-system tests, undone on exit
+trap 'for m in $mounted; do umount "$m"; done; rm -rf "$work"' EXIT
 mkdir -p "$work/m" "$work/cwd/a/b"
 cd "$work" || exit 1
 
@@ -243,6 +244,350 @@ if [ -n "$(cd "$root" && git status --porcelain --untracked-files=all -- data ex
 else
 	ok repository_untouched
 fi
+
+# ---- the file system (issue 25): never write outside, never mix, never hang
+# A mission's outputs are one set: whole old or whole new after any fault.
+mkdir -p fs
+cp "$root/examples/delivery_quad.json" fs/zz_fs25.json
+sed 's/"t_hover_s": [0-9]*/"t_hover_s": 95/' fs/zz_fs25.json >fs/new.json
+# set_of DIR: the digests of a set's three outputs, "" if one is missing.
+set_of() {
+	[ -f "$1/bom.csv" ] && [ -f "$1/result.json" ] && [ -f "$1/dossier.pdf" ] &&
+	    sha256sum "$1/bom.csv" "$1/result.json" "$1/dossier.pdf" | cut -c1-64 | tr '\n' ' '
+}
+# stamp_vouches DIR: every "sha256 HEX FILE" line of the stamp holds.
+stamp_vouches() {
+	[ -f "$1/.aeroeval-stamp" ] || return 1
+	grep '^sha256 ' "$1/.aeroeval-stamp" | while read -r _ h f; do
+		[ "$(sha256sum <"$1/$f" | cut -c1-64)" = "$h" ] || echo bad
+	done | grep -q bad && return 1
+	return 0
+}
+# one_error PATH: stderr has one error line, naming PATH once, and no
+# internal error.
+one_error() {
+	[ "$(grep -c ': error: ' err.txt)" -eq 1 ] && [ "$(grep -o -F "$1" err.txt | wc -l)" -eq 1 ] &&
+	    ! grep -q ': internal error' err.txt
+}
+# temps_in DIR: hidden entries left beside the output folders.
+temps_in() { ls -A "$1" | grep '^\.' ; }
+
+# -o "" once wrote /zz_fs25/; the root, however spelled, is refused too.
+run build -o "" fs/zz_fs25.json
+if [ "$rc" -eq 2 ] && grep -q 'empty' err.txt && [ ! -e /zz_fs25 ]; then ok o_empty_is_refused
+else notok o_empty_is_refused "exit $rc"; fi
+for o in / // /. /tmp/..; do
+	run build -o "$o" fs/zz_fs25.json
+	if [ "$rc" -eq 2 ] && grep -q 'root folder' err.txt && [ ! -e /zz_fs25 ]; then
+		ok "o_root_is_refused: $o"
+	else
+		notok "o_root_is_refused: $o" "exit $rc"
+	fi
+done
+
+# Planted links: out/NAME itself, a file in it, the stamp's old temporary
+# name, the lock.  Each is an error naming it (exit 2); nothing outside
+# out/ changes.
+rm -rf out elsewhere && mkdir -p out elsewhere && ln -s ../elsewhere out/zz_fs25
+run build -o out fs/zz_fs25.json
+if [ "$rc" -eq 2 ] && grep -q '^out/zz_fs25: error: .*symbolic link' err.txt &&
+    [ -z "$(ls -A elsewhere)" ]; then ok linked_output_folder_is_refused
+else notok linked_output_folder_is_refused "exit $rc"; fi
+printf 'precious\n' >victim
+rm -rf out && run build -o out fs/zz_fs25.json
+good_set=$(set_of out/zz_fs25)
+for planted in out/zz_fs25/..aeroeval-stamp.tmp.12345.0 out/zz_fs25/dossier.pdf out/.zz_fs25.lock; do
+	rm -f "$planted" && ln -s "$work/victim" "$planted"
+	for force in "" --force; do
+		run build $force -o out fs/zz_fs25.json
+		if [ "$rc" -eq 2 ] && one_error "$planted" && grep -q 'symbolic link' err.txt &&
+		    [ "$(cat victim)" = precious ]; then
+			ok "planted_link_is_refused_not_followed: $planted $force"
+		else
+			notok "planted_link_is_refused_not_followed: $planted $force" "exit $rc"
+			sed 's/^/# /' err.txt | head -3
+		fi
+	done
+	rm -f "$planted"
+done
+
+# A FIFO where an output goes, or where the folder goes: refused at once,
+# whether the build only checks (up to date?) or writes (--force).
+rm -rf out && run build -o out fs/zz_fs25.json
+rm out/zz_fs25/dossier.pdf && mkfifo out/zz_fs25/dossier.pdf
+for force in "" --force; do
+	timeout 10 "$bin" build $force -o out fs/zz_fs25.json >out.txt 2>err.txt
+	rc=$?
+	if [ "$rc" -eq 2 ] && one_error out/zz_fs25/dossier.pdf; then ok "fifo_where_an_output_goes $force"
+	else notok "fifo_where_an_output_goes $force" "exit $rc"; fi
+done
+rm -rf out && mkdir out && mkfifo out/zz_fs25
+timeout 10 "$bin" build -o out fs/zz_fs25.json >out.txt 2>err.txt
+rc=$?
+if [ "$rc" -eq 2 ] && one_error out/zz_fs25; then ok fifo_where_the_output_folder_goes
+else notok fifo_where_the_output_folder_goes "exit $rc"; fi
+
+# Corrupted outputs are rebuilt, not "up to date": the stamp vouches for
+# the SHA-256 of each file.
+rm -rf out && run build -o out fs/zz_fs25.json
+good_set=$(set_of out/zz_fs25)
+for how in empty_dossier garbage_result appended_bom no_stamp; do
+	case $how in
+	empty_dossier) : >out/zz_fs25/dossier.pdf ;;
+	garbage_result) printf 'garbage' >out/zz_fs25/result.json ;;
+	appended_bom) printf 'x\n' >>out/zz_fs25/bom.csv ;;
+	no_stamp) rm out/zz_fs25/.aeroeval-stamp ;;
+	esac
+	run build -o out fs/zz_fs25.json
+	if [ "$rc" -le 1 ] && grep -q 'zz_fs25.json: compiled' err.txt &&
+	    [ "$(set_of out/zz_fs25)" = "$good_set" ] && stamp_vouches out/zz_fs25; then
+		ok "corrupted_output_is_rebuilt: $how"
+	else
+		notok "corrupted_output_is_rebuilt: $how" "exit $rc"
+	fi
+done
+run build -o out fs/zz_fs25.json
+if grep -q 'zz_fs25.json: up to date' err.txt; then ok whole_set_is_up_to_date
+else notok whole_set_is_up_to_date; fi
+
+# A full disk during a rebuild keeps the whole old set; on a fresh folder
+# it leaves nothing.  A small tmpfs where we may mount one, else a
+# file-size limit (ulimit -f: EFBIG instead of ENOSPC).
+full_disk() {  # full_disk DIR SIZE_KB ARGS...: build into DIR on a full disk
+	d=$1 kb=$2
+	shift 2
+	if [ "$disk" = tmpfs ]; then
+		mkdir -p "$d" && mount -t tmpfs -o "size=${kb}k" tmpfs "$d" && mounted="$mounted $work/$d"
+		timeout 30 "$bin" "$@" >out.txt 2>err.txt
+	else
+		mkdir -p "$d"
+		(ulimit -f 200; exec timeout 30 "$bin" "$@") >out.txt 2>err.txt
+	fi
+	rc=$?
+}
+disk=ulimit
+if [ "$(id -u)" -eq 0 ] && mkdir -p probe && mount -t tmpfs -o size=64k tmpfs probe 2>/dev/null; then
+	umount probe && disk=tmpfs
+fi
+full_disk full1 200 build -o full1 fs/zz_fs25.json
+if [ "$rc" -eq 2 ] && one_error full1/zz_fs25 && grep -qE 'No space left|File too large' err.txt &&
+    [ ! -e full1/zz_fs25 ] && [ -z "$(temps_in full1)" ]; then ok "full_disk_on_a_fresh_folder_leaves_nothing ($disk)"
+else notok "full_disk_on_a_fresh_folder_leaves_nothing ($disk)" "exit $rc"; sed 's/^/# /' err.txt | head -3; fi
+if [ "$disk" = tmpfs ]; then
+	# Room for one set, not two: the old set on disk, the new one fails.
+	mkdir -p full2 && mount -t tmpfs -o size=640k tmpfs full2 && mounted="$mounted $work/full2"
+	"$bin" build -q -o full2 fs/zz_fs25.json 2>/dev/null
+else
+	"$bin" build -q -o full2 fs/zz_fs25.json 2>/dev/null
+fi
+old_set=$(set_of full2/zz_fs25)
+cp fs/new.json fs/zz_fs25.json.new && mv fs/zz_fs25.json fs/zz_fs25.json.old && mv fs/zz_fs25.json.new fs/zz_fs25.json
+if [ "$disk" = tmpfs ]; then
+	run build -o full2 fs/zz_fs25.json
+else
+	(ulimit -f 200; exec timeout 30 "$bin" build -o full2 fs/zz_fs25.json) >out.txt 2>err.txt
+	rc=$?
+fi
+mv fs/zz_fs25.json.old fs/zz_fs25.json
+if [ "$rc" -eq 2 ] && one_error full2/zz_fs25 && [ -n "$old_set" ] &&
+    [ "$(set_of full2/zz_fs25)" = "$old_set" ] && stamp_vouches full2/zz_fs25 &&
+    [ -z "$(temps_in full2)" ]; then ok "full_disk_on_a_rebuild_keeps_the_whole_old_set ($disk)"
+else notok "full_disk_on_a_rebuild_keeps_the_whole_old_set ($disk)" "exit $rc"; sed 's/^/# /' err.txt | head -3; fi
+for m in $mounted; do umount "$m"; done
+mounted=""
+
+# Every write failing in turn (ENOSPC, EIO) through the fault hook: exit 2,
+# one message, the old set whole, no temporary left.
+rm -rf out && run build -o out fs/zz_fs25.json
+old_set=$(set_of out/zz_fs25)
+for n in 1 2 3 4 1:EIO 3:EIO 4:EDQUOT; do
+	AEROEVAL_FAIL_WRITE=$n run build --force -o out fs/zz_fs25.json
+	if [ "$rc" -eq 2 ] && one_error out/zz_fs25/ && [ "$(set_of out/zz_fs25)" = "$old_set" ] &&
+	    stamp_vouches out/zz_fs25 && [ -z "$(temps_in out)" ]; then ok "failed_write_keeps_the_old_set: $n"
+	else notok "failed_write_keeps_the_old_set: $n" "exit $rc"; sed 's/^/# /' err.txt | head -3; fi
+done
+
+# A read-only output folder: exit 2 and one message; an up-to-date check
+# still works there.
+rm -rf out && run build -o out fs/zz_fs25.json
+if [ "$(id -u)" -eq 0 ]; then
+	mkdir -p ro && mount -t tmpfs tmpfs ro 2>/dev/null && mounted="$work/ro"
+	"$bin" build -q -o ro fs/zz_fs25.json 2>/dev/null
+	[ -n "$mounted" ] && mount -o remount,ro ro
+else
+	"$bin" build -q -o ro fs/zz_fs25.json 2>/dev/null
+	chmod 555 ro ro/zz_fs25
+fi
+ro_set=$(set_of ro/zz_fs25)
+run build -o ro fs/zz_fs25.json
+if [ "$rc" -eq 0 ] && grep -q 'zz_fs25.json: up to date' err.txt; then ok read_only_folder_can_be_up_to_date
+else notok read_only_folder_can_be_up_to_date "exit $rc"; fi
+run build --force -o ro fs/zz_fs25.json
+if [ "$rc" -eq 2 ] && one_error ro/zz_fs25 && grep -qE 'Read-only|Permission denied' err.txt &&
+    [ "$(set_of ro/zz_fs25)" = "$ro_set" ]; then ok read_only_folder_is_exit_2_with_one_message
+else notok read_only_folder_is_exit_2_with_one_message "exit $rc"; sed 's/^/# /' err.txt | head -3; fi
+if [ -n "$mounted" ]; then umount ro; else chmod -R u+w ro 2>/dev/null; fi
+mounted=""
+
+# -o naming a file: one message, exit 2.
+: >afile
+run build -o afile fs/zz_fs25.json
+if [ "$rc" -eq 2 ] && one_error afile; then ok o_naming_a_file_is_exit_2
+else notok o_naming_a_file_is_exit_2 "exit $rc"; fi
+
+# TMPDIR plays no part (the mission is attached from memory): unusable or
+# a file, the build works and the dossier is byte-identical.
+for t in /nonexistent "$work/afile"; do
+	rm -rf tmpd && TMPDIR=$t run build -o tmpd fs/zz_fs25.json
+	if [ "$rc" -eq 0 ] && [ "$(set_of tmpd/zz_fs25)" = "$good_set" ]; then ok "unusable_tmpdir_is_harmless: $t"
+	else notok "unusable_tmpdir_is_harmless: $t" "exit $rc"; sed 's/^/# /' err.txt | head -3; fi
+done
+
+# Outputs do not depend on the working directory (or the path spelling).
+rm -rf cwd1 cwd2 && mkdir -p cwd2/x
+"$bin" build -q -o cwd1 fs/zz_fs25.json 2>/dev/null
+(cd cwd2/x && "$bin" build -q -o "$work/cwd2/out" "$work/fs/../fs/zz_fs25.json" 2>/dev/null)
+if diff -r cwd1/zz_fs25 cwd2/out/zz_fs25 >/dev/null; then ok outputs_identical_across_working_directories
+else notok outputs_identical_across_working_directories; fi
+
+# Mission names: 200 characters work; longer ones are refused before the
+# solve (they once failed after it, "attachment name must be a bare file name").
+n200=$(awk 'BEGIN { while (i++ < 200) printf "n" }')
+cp fs/zz_fs25.json "fs/$n200.json"
+run build -o names "fs/$n200.json"
+if [ "$rc" -eq 0 ] && [ -s "names/$n200/dossier.pdf" ]; then ok name_of_200_characters_compiles
+else notok name_of_200_characters_compiles "exit $rc"; sed 's/^/# /' err.txt | head -2; fi
+rm "fs/$n200.json"
+for len in 201 245; do
+	long=$(awk -v n=$len 'BEGIN { while (i++ < n) printf "n" }')
+	cp fs/zz_fs25.json "fs/$long.json"
+	run build -o names "fs/$long.json"
+	if [ "$rc" -eq 2 ] && grep -q 'too long' err.txt && ! grep -q 'attachment' err.txt &&
+	    [ ! -e "names/$long" ]; then ok "name_of_${len}_characters_is_refused_up_front"
+	else notok "name_of_${len}_characters_is_refused_up_front" "exit $rc"; fi
+	rm "fs/$long.json"
+done
+
+# Stale temporaries of a killed build go at the next build of that mission
+# (only its own, only when their owner is gone), --force included.
+sh -c 'exit 0' &
+dead=$!
+wait $dead
+for force in "" --force; do
+	rm -rf out && "$bin" build -q -o out fs/zz_fs25.json 2>/dev/null
+	mkdir out/.zz_fs25.tmp.$dead.0 out/.zz_fs25.tmp.$$.0 out/.other.tmp.$dead.0
+	: >out/.zz_fs25.tmp.$dead.0/dossier.pdf
+	run build $force -o out fs/zz_fs25.json
+	if [ "$rc" -eq 0 ] && [ ! -e out/.zz_fs25.tmp.$dead.0 ] && [ -d out/.zz_fs25.tmp.$$.0 ] &&
+	    [ -d out/.other.tmp.$dead.0 ]; then ok "stale_temporaries_are_removed $force"
+	else notok "stale_temporaries_are_removed $force" "exit $rc"; fi
+done
+
+# Out of memory anywhere, libharu included, is the one out-of-memory
+# error (exit 3), and the previous set stays whole.  T is the number of
+# allocations of the whole build (-j 1), found by bisection.
+rm -rf oom && "$bin" build -q -j 1 -o oom fs/zz_fs25.json 2>/dev/null
+oom_set=$(set_of oom/zz_fs25)
+alloc_fails() {
+	AEROEVAL_FAIL_ALLOC=$1 timeout 30 "$bin" build -q -j 1 --force -o oom fs/zz_fs25.json >out.txt 2>err.txt
+	rc=$?
+	[ "$rc" -ne 0 ]
+}
+lo=1 hi=8388608
+while [ $((hi - lo)) -gt 1 ]; do
+	mid=$(((lo + hi) / 2))
+	if alloc_fails $mid; then lo=$mid; else hi=$mid; fi
+done
+bad=""
+for k in 1 2 3 5 8 13 21 34 55 89 144 233; do
+	n=$((lo - lo * k / 256))
+	alloc_fails $n
+	if [ "$rc" -ne 3 ] || ! grep -q 'out of memory' err.txt || grep -q 'libharu' err.txt ||
+	    [ "$(set_of oom/zz_fs25)" != "$oom_set" ]; then bad="$bad $n:$rc"; fi
+done
+if [ -z "$bad" ] && [ "$lo" -gt 1000 ]; then ok "out_of_memory_is_one_message_and_keeps_the_set ($lo allocations)"
+else notok out_of_memory_is_one_message_and_keeps_the_set "failed at$bad (T=$lo)"; fi
+
+# Two builds into one folder at once with different templates: afterwards
+# the folder is one build's whole set with a stamp that vouches for it, and
+# a build with either template calls it up to date only if it is its own.
+rm -rf refa refb
+"$bin" build -q -o refa --template "$root/templates/a4.json" fs/zz_fs25.json 2>/dev/null
+"$bin" build -q -o refb --template "$root/templates/letter.json" fs/zz_fs25.json 2>/dev/null
+set_a=$(set_of refa/zz_fs25) set_b=$(set_of refb/zz_fs25)
+bad=""
+[ "$set_a" != "$set_b" ] || bad="the templates give one dossier"
+for round in 1 2 3 4 5 6 7 8; do
+	[ $((round % 3)) -eq 1 ] && rm -rf pair
+	"$bin" build -q -o pair --template "$root/templates/a4.json" fs/zz_fs25.json 2>/dev/null &
+	p1=$!
+	"$bin" build -q -o pair --template "$root/templates/letter.json" fs/zz_fs25.json 2>/dev/null &
+	p2=$!
+	wait $p1 $p2
+	s=$(set_of pair/zz_fs25)
+	{ [ "$s" = "$set_a" ] || [ "$s" = "$set_b" ]; } && stamp_vouches pair/zz_fs25 || bad="$bad mixed:$round"
+	for t in a4:"$set_a" letter:"$set_b"; do
+		run build -o pair --template "$root/templates/${t%%:*}.json" fs/zz_fs25.json
+		if grep -q 'zz_fs25.json: up to date' err.txt && [ "$s" != "${t#*:}" ]; then
+			bad="$bad false_up_to_date:$round"
+		fi
+		s=$(set_of pair/zz_fs25)
+		[ "$s" = "${t#*:}" ] || bad="$bad not_rebuilt:$round"
+	done
+done
+if [ -z "$bad" ] && [ -z "$(temps_in pair)" ]; then ok concurrent_builds_with_two_templates_stay_consistent
+else notok concurrent_builds_with_two_templates_stay_consistent "$bad"; fi
+
+# kill -9 (the whole build, workers too) at random moments while the set
+# changes between two versions: the folder always holds one whole set.
+# Writes are slowed (AEROEVAL_TEST_WRITE_DELAY_MS) so kills land in them.
+export SOURCE_DATE_EPOCH=1700000000
+mkdir -p kv/old kv/new kk
+cp fs/zz_fs25.json kv/old/zz_fs25.json
+cp fs/new.json kv/new/zz_fs25.json
+rm -rf krefo krefn kout
+"$bin" build -q -o krefo kv/old/zz_fs25.json 2>/dev/null
+"$bin" build -q -o krefn kv/new/zz_fs25.json 2>/dev/null
+"$bin" build -q -o kout kv/old/zz_fs25.json 2>/dev/null
+set_o=$(set_of krefo/zz_fs25) set_n=$(set_of krefn/zz_fs25)
+bad="" v=new n_kept=0 n_changed=0 before=$set_o
+for round in $(seq 1 20); do
+	cp kv/$v/zz_fs25.json kk/zz_fs25.json
+	r=$(od -An -N2 -tu2 /dev/urandom | tr -d ' ')
+	AEROEVAL_TEST_WRITE_DELAY_MS=30 setsid "$bin" build -q -o kout kk/zz_fs25.json 2>/dev/null &
+	p=$!
+	sleep "$(awk -v r="$r" 'BEGIN { printf "%.3f", (r % 300) / 1000 }')"
+	kill -9 -$p 2>/dev/null
+	wait $p 2>/dev/null
+	s=$(set_of kout/zz_fs25)
+	{ [ "$s" = "$set_o" ] || [ "$s" = "$set_n" ]; } && stamp_vouches kout/zz_fs25 || bad="$bad $round"
+	if [ "$s" = "$before" ]; then n_kept=$((n_kept + 1)); else n_changed=$((n_changed + 1)); fi
+	before=$s
+	# The next round builds the version the folder does not hold.
+	[ "$s" = "$set_o" ] && v=new
+	[ "$s" = "$set_n" ] && v=old
+done
+echo "# kill -9 rounds: $n_kept kept the previous set, $n_changed got the next one"
+"$bin" build -q -o kout kk/zz_fs25.json 2>/dev/null
+if [ -z "$bad" ] && [ -z "$(temps_in kout)" ]; then ok kill_9_leaves_the_whole_old_or_new_set
+else notok kill_9_leaves_the_whole_old_or_new_set "mixed in rounds$bad; left: $(temps_in kout | tr '\n' ' ')"; fi
+unset SOURCE_DATE_EPOCH
+
+# A catalogue file over 64 MiB is hashed whole: a byte past 64 MiB changes
+# catalogue_sha256 and makes the mission rebuild.
+mkdir -p bigdb && cp "$root/data/catalog/"*.json bigdb/
+{ cat "$root/data/catalog/motors.json"; head -c 67108864 /dev/zero | tr '\0' ' '; printf ' \n'; } >bigdb/motors.json
+rm -rf big && run build --db bigdb -o big fs/zz_fs25.json
+sha1=$(grep -o '"catalogue_sha256": *"[0-9a-f]*"' big/zz_fs25/result.json 2>/dev/null)
+printf '\t\n' | dd of=bigdb/motors.json bs=1 seek=$(($(wc -c <bigdb/motors.json) - 2)) conv=notrunc 2>/dev/null
+run build --db bigdb -o big fs/zz_fs25.json
+sha2=$(grep -o '"catalogue_sha256": *"[0-9a-f]*"' big/zz_fs25/result.json 2>/dev/null)
+if [ "$rc" -le 1 ] && grep -q 'compiled' err.txt && [ -n "$sha1" ] && [ "$sha1" != "$sha2" ]; then
+	ok catalogue_over_64_mib_is_hashed_whole
+else
+	notok catalogue_over_64_mib_is_hashed_whole "exit $rc"
+fi
+rm -rf bigdb big
 
 # ---- valgrind: a whole build of one example, no memory error, no leak -----
 # (skipped where valgrind is not installed; ASan covers the unit suite)

@@ -1,15 +1,21 @@
 /* test_fsout.c — atomic output, mkdir -p, whole-file reads, dossier dates
- * and output names. */
+ * and output names (fsout), and output folders replaced as a whole
+ * (fsfolder: the issue 25 guarantees). */
 #include "util/file.h"
 #include "test_util.h"
+#include "output/fsfolder.h"
 #include "output/fsout.h"
+#include "output/fsout_int.h"
 
 #include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/time.h>
+#include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -399,9 +405,347 @@ fsout_safe_name_should_keep_only_a_harmless_base_name(void **state)
 		assert_string_equal(out, "");
 	}
 	/* Too long for the caller's buffer: refused, not truncated. */
-	assert_int_equal(fsout_safe_name("abcdefgh.json", out, 8), -1);
+	assert_int_equal(fsout_safe_name("abcdefgh.json", out, 8), -2);  /* too long for n */
 	assert_int_equal(fsout_safe_name("abcdefg.json", out, 8), 0);
 	assert_string_equal(out, "abcdefg");
+}
+
+/* ---- fsfolder ------------------------------------------------------------ */
+
+/* The names a test folder may hold. */
+static const char *const set_files[] = { "a.json", "b.csv", NULL };
+
+/* Writes the set "TAG-a" / "TAG-b" as fx->dir/m; asserts success. */
+static void
+write_set(const struct fixture *fx, const char *tag)
+{
+	struct fsfolder f;
+	char err[512] = "", a[64], b[64];
+	snprintf(a, sizeof a, "%s-a", tag);
+	snprintf(b, sizeof b, "%s-b", tag);
+	assert_int_equal(fsfolder_open(&f, fx->dir, "m", set_files, 0, 1.0, err, sizeof err), 0);
+	assert_int_equal(fsfolder_begin(&f, err, sizeof err), 0);
+	assert_int_equal(fsfolder_put(&f, "a.json", a, strlen(a), 1, err, sizeof err), 0);
+	assert_int_equal(fsfolder_put(&f, "b.csv", b, strlen(b), 0, err, sizeof err), 0);
+	assert_int_equal(fsfolder_commit(&f, err, sizeof err), 0);
+	fsfolder_close(&f);
+}
+
+/* Asserts that fx->dir/m holds exactly the set TAG. */
+static void
+assert_set(const struct fixture *fx, const char *tag)
+{
+	char p[160], want[64];
+	snprintf(p, sizeof p, "%s/m", fx->dir);
+	assert_int_equal(count_entries(p), 2);
+	snprintf(p, sizeof p, "%s/m/a.json", fx->dir);
+	snprintf(want, sizeof want, "%s-a", tag);
+	assert_file_is(p, want);
+	snprintf(p, sizeof p, "%s/m/b.csv", fx->dir);
+	snprintf(want, sizeof want, "%s-b", tag);
+	assert_file_is(p, want);
+}
+
+/* Opening fx->dir/m must fail with a message that starts with the path
+ * fx->dir/SUB, names it once, and contains what. */
+static void
+assert_open_refused(const struct fixture *fx, const char *sub, const char *what)
+{
+	struct fsfolder f;
+	char err[512] = "", path[160];
+	assert_int_equal(fsfolder_open(&f, fx->dir, "m", set_files, 0, 1.0, err, sizeof err), -1);
+	fsfolder_close(&f);
+	snprintf(path, sizeof path, "%s/%s: error: ", fx->dir, sub);
+	if (strncmp(err, path, strlen(path)) != 0 || strstr(err, what) == NULL
+	    || strstr(err + 1, fx->dir) != NULL)
+		fail_msg("got \"%s\", want \"%s... %s ...\"", err, path, what);
+}
+
+static void
+fsfolder_commit_should_replace_the_whole_set_and_leave_nothing_beside_it(void **state)
+{
+	struct fixture *fx = *state;
+	write_set(fx, "one");
+	assert_set(fx, "one");
+	write_set(fx, "two");
+	assert_set(fx, "two");
+	/* No temporary folder, no old set, no lock file: only m. */
+	assert_int_equal(count_entries(fx->dir), 1);
+	char p[160];
+	struct stat st;
+	snprintf(p, sizeof p, "%s/m/b.csv", fx->dir);
+	assert_int_equal(stat(p, &st), 0);
+	assert_int_equal(st.st_mode & 0777, 0644);
+}
+
+static void
+fsfolder_commit_without_exchange_should_swap_by_two_renames(void **state)
+{
+	struct fixture *fx = *state;
+	setenv("AEROEVAL_TEST_NO_EXCHANGE", "1", 1);
+	write_set(fx, "one");
+	write_set(fx, "two");
+	unsetenv("AEROEVAL_TEST_NO_EXCHANGE");
+	assert_set(fx, "two");
+	assert_int_equal(count_entries(fx->dir), 1);  /* the old set is gone */
+}
+
+static void
+fsfolder_failed_write_should_leave_the_old_set_whole(void **state)
+{
+	struct fixture *fx = *state;
+	/* The hook's setting and the words the message must carry. */
+	static const char *const faults[][2] = { { "1", "No space left" },
+		{ "2:EIO", "Input/output error" }, { "1:EDQUOT", "quota" } };
+	write_set(fx, "old");
+	for (size_t i = 0; i < sizeof faults / sizeof faults[0]; i++) {
+		struct fsfolder f;
+		char err[512] = "";
+		fsout_fault_reset();
+		setenv("AEROEVAL_FAIL_WRITE", faults[i][0], 1);
+		assert_int_equal(fsfolder_open(&f, fx->dir, "m", set_files, 0, 1.0, err, sizeof err), 0);
+		assert_int_equal(fsfolder_begin(&f, err, sizeof err), 0);
+		int rc = fsfolder_put(&f, "a.json", "new-a", 5, 1, err, sizeof err);
+		if (rc == 0)
+			rc = fsfolder_put(&f, "b.csv", "new-b", 5, 1, err, sizeof err);
+		assert_int_equal(rc, -1);
+		/* One line naming the file the user knows, not the temporary. */
+		assert_non_null(strstr(err, "/m/"));
+		assert_null(strstr(err, ".tmp."));
+		assert_non_null(strstr(err, faults[i][1]));
+		fsfolder_close(&f);
+		unsetenv("AEROEVAL_FAIL_WRITE");
+		assert_set(fx, "old");
+		assert_int_equal(count_entries(fx->dir), 1);
+	}
+}
+
+/* Makes the folder fx->dir/NAME (outside any output set) and gives its path. */
+static void
+make_dir(const struct fixture *fx, const char *name, char *out, size_t n)
+{
+	path_in(fx, name, out, n);
+	assert_int_equal(mkdir(out, 0755), 0);
+}
+
+static void
+fsfolder_open_should_refuse_a_linked_or_non_folder_output_naming_it(void **state)
+{
+	struct fixture *fx = *state;
+	char p[160], other[160];
+	make_dir(fx, "elsewhere", other, sizeof other);
+	path_in(fx, "m", p, sizeof p);
+	assert_int_equal(symlink("elsewhere", p), 0);
+	assert_open_refused(fx, "m", "symbolic link");
+	assert_int_equal(count_entries(other), 0);
+	assert_int_equal(unlink(p), 0);
+	assert_int_equal(mkfifo(p, 0644), 0);
+	assert_open_refused(fx, "m", "not a directory");
+	assert_int_equal(unlink(p), 0);
+	/* A name that would leave DIR is refused before anything is opened. */
+	struct fsfolder f;
+	char err[256];
+	assert_int_equal(fsfolder_open(&f, fx->dir, "../m", set_files, 0, 1.0, err, sizeof err), -1);
+	fsfolder_close(&f);
+}
+
+static void
+fsfolder_open_should_refuse_links_fifos_and_foreign_files_inside(void **state)
+{
+	struct fixture *fx = *state;
+	char p[200], victim[160];
+	snprintf(victim, sizeof victim, "%s/victim", fx->dir);
+	FILE *v = fopen(victim, "w");
+	assert_non_null(v);
+	fputs("precious", v);
+	fclose(v);
+	write_set(fx, "old");
+
+	/* The link an attacker plants where an older aeroeval put its stamp's
+	 * temporary file, and a link in place of an output. */
+	snprintf(p, sizeof p, "%s/m/..aeroeval-stamp.tmp.4242.0", fx->dir);
+	assert_int_equal(symlink(victim, p), 0);
+	assert_open_refused(fx, "m/..aeroeval-stamp.tmp.4242.0", "symbolic link");
+	assert_int_equal(unlink(p), 0);
+	snprintf(p, sizeof p, "%s/m/b.csv", fx->dir);
+	assert_int_equal(unlink(p), 0);
+	assert_int_equal(symlink(victim, p), 0);
+	assert_open_refused(fx, "m/b.csv", "symbolic link");
+	assert_int_equal(unlink(p), 0);
+	/* A FIFO where an output goes: refused at once, never opened. */
+	assert_int_equal(mkfifo(p, 0644), 0);
+	assert_open_refused(fx, "m/b.csv", "not a regular file");
+	assert_int_equal(unlink(p), 0);
+	/* The folder is replaced whole, so a file of the user's in it would be
+	 * lost: refused.  An older aeroeval's temporary file is ours. */
+	snprintf(p, sizeof p, "%s/m/notes.txt", fx->dir);
+	assert_int_equal(close(open(p, O_CREAT | O_WRONLY, 0644)), 0);
+	assert_open_refused(fx, "m/notes.txt", "not an output of aeroeval");
+	assert_int_equal(unlink(p), 0);
+	snprintf(p, sizeof p, "%s/m/.a.json.tmp.4242.7", fx->dir);
+	assert_int_equal(close(open(p, O_CREAT | O_WRONLY, 0644)), 0);
+	write_set(fx, "new");
+	assert_set(fx, "new");
+	assert_file_is(victim, "precious");
+}
+
+static void
+fsfolder_begin_should_step_over_a_link_planted_at_its_temporary_name(void **state)
+{
+	struct fixture *fx = *state;
+	char p[200], trap[160];
+	make_dir(fx, "trap", trap, sizeof trap);
+	snprintf(p, sizeof p, "%s/.m.tmp.%ld.0", fx->dir, (long)getpid());
+	assert_int_equal(symlink("trap", p), 0);
+	write_set(fx, "one");
+	assert_set(fx, "one");
+	assert_int_equal(count_entries(trap), 0);
+	/* Not ours (a link, not a folder), so it is left alone. */
+	struct stat st;
+	assert_int_equal(lstat(p, &st), 0);
+	assert_true(S_ISLNK(st.st_mode));
+}
+
+/* A pid that no process has: a child that has exited and been reaped. */
+static long
+dead_pid(void)
+{
+	pid_t pid = fork();
+	assert_true(pid >= 0);
+	if (pid == 0)
+		_exit(0);
+	assert_int_equal(waitpid(pid, NULL, 0), pid);
+	return (long)pid;
+}
+
+/* Makes fx->dir/NAME as a folder with one file, mtime age_s seconds ago. */
+static void
+make_temp(const struct fixture *fx, const char *name, double age_s)
+{
+	char p[200], q[240];
+	snprintf(p, sizeof p, "%s/%s", fx->dir, name);
+	assert_int_equal(mkdir(p, 0755), 0);
+	snprintf(q, sizeof q, "%s/result.json", p);
+	assert_int_equal(close(open(q, O_CREAT | O_WRONLY, 0644)), 0);
+	struct timeval tv[2];
+	gettimeofday(&tv[0], NULL);
+	tv[0].tv_sec -= (time_t)age_s;
+	tv[1] = tv[0];
+	assert_int_equal(utimes(p, tv), 0);
+}
+
+static int
+exists_in(const struct fixture *fx, const char *name)
+{
+	char p[200];
+	struct stat st;
+	snprintf(p, sizeof p, "%s/%s", fx->dir, name);
+	return lstat(p, &st) == 0;
+}
+
+static void
+fsfolder_clean_should_remove_only_its_own_stale_temporaries(void **state)
+{
+	struct fixture *fx = *state;
+	char dead[64], dead_other[64], dead_longer[64], live_young[64], live_old[64];
+	long gone = dead_pid(), live = (long)getppid();
+	snprintf(dead, sizeof dead, ".m.tmp.%ld.0", gone);
+	snprintf(dead_other, sizeof dead_other, ".other.tmp.%ld.0", gone);
+	snprintf(dead_longer, sizeof dead_longer, ".m.tmp.5.tmp.%ld.0", gone);
+	snprintf(live_young, sizeof live_young, ".m.tmp.%ld.1", live);
+	snprintf(live_old, sizeof live_old, ".m.tmp.%ld.2", live);
+	make_temp(fx, dead, 0.0);
+	make_temp(fx, dead_other, 0.0);
+	make_temp(fx, dead_longer, 0.0);
+	make_temp(fx, live_young, 60.0);
+	make_temp(fx, live_old, 2.0 * FSFOLDER_STALE_S);
+
+	struct fsfolder f;
+	char err[256];
+	assert_int_equal(fsfolder_open(&f, fx->dir, "m", set_files, 0, 1.0, err, sizeof err), 0);
+	assert_int_equal(fsfolder_clean(&f, FSFOLDER_STALE_S), 2);
+	fsfolder_close(&f);
+	assert_false(exists_in(fx, dead));        /* its writer is gone */
+	assert_false(exists_in(fx, live_old));    /* older than any build */
+	assert_true(exists_in(fx, live_young));   /* may still be written */
+	assert_true(exists_in(fx, dead_other));   /* another mission's */
+	assert_true(exists_in(fx, dead_longer));  /* mission "m.tmp.5"'s */
+}
+
+static void
+fsfolder_lock_should_keep_a_second_writer_out_until_released(void **state)
+{
+	struct fixture *fx = *state;
+	int to_child[2], to_parent[2];
+	assert_int_equal(pipe(to_child), 0);
+	assert_int_equal(pipe(to_parent), 0);
+	pid_t pid = fork();
+	assert_true(pid >= 0);
+	if (pid == 0) {
+		struct fsfolder f;
+		char err[256], c = 0;
+		int rc = fsfolder_open(&f, fx->dir, "m", set_files, 0, 1.0, err, sizeof err);
+		if (write(to_parent[1], "x", 1) != 1 || read(to_child[0], &c, 1) != 1)
+			rc = -1;
+		fsfolder_close(&f);
+		_exit(rc == 0 ? 0 : 1);
+	}
+	char c, err[512] = "";
+	assert_int_equal(read(to_parent[0], &c, 1), 1);
+	struct fsfolder f;
+	assert_int_equal(fsfolder_open(&f, fx->dir, "m", set_files, FSFOLDER_NOWAIT, 0.0,
+	    err, sizeof err), FSFOLDER_BUSY);
+	fsfolder_close(&f);
+	assert_int_equal(fsfolder_open(&f, fx->dir, "m", set_files, 0, 0.1, err, sizeof err), -1);
+	assert_non_null(strstr(err, "another build"));
+	fsfolder_close(&f);
+	assert_int_equal(write(to_child[1], "x", 1), 1);
+	assert_int_equal(fsfolder_open(&f, fx->dir, "m", set_files, 0, 5.0, err, sizeof err), 0);
+	fsfolder_close(&f);
+	int status = -1;
+	assert_int_equal(waitpid(pid, &status, 0), pid);
+	assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+	assert_int_equal(count_entries(fx->dir), 0);  /* the lock file went with it */
+	for (int i = 0; i < 2; i++) {
+		close(to_child[i]);
+		close(to_parent[i]);
+	}
+}
+
+static void
+fsfolder_hash_should_match_the_bytes_written(void **state)
+{
+	struct fixture *fx = *state;
+	write_set(fx, "one");
+	struct fsfolder f;
+	char err[256], got[SHA256_HEX_LEN], want[SHA256_HEX_LEN], buf[16];
+	size_t n;
+	assert_int_equal(fsfolder_open(&f, fx->dir, "m", set_files, FSFOLDER_NOWAIT, 0.0,
+	    err, sizeof err), 0);
+	assert_int_equal(fsfolder_hash(&f, "a.json", got), 0);
+	sha256_hex("one-a", 5, want);
+	assert_string_equal(got, want);
+	assert_int_equal(fsfolder_hash(&f, "missing", got), -1);
+	assert_int_equal(fsfolder_read(&f, "b.csv", buf, sizeof buf, &n), 0);
+	assert_int_equal(n, 5);
+	assert_string_equal(buf, "one-b");
+	assert_int_equal(fsfolder_read(&f, "b.csv", buf, 5, &n), -1);  /* too long */
+	fsfolder_close(&f);
+}
+
+static void
+fsout_safe_name_should_refuse_a_name_too_long_for_its_temporaries(void **state)
+{
+	(void)state;
+	char base[FSOUT_NAME_MAX + 16], out[256];
+	memset(base, 'n', FSOUT_NAME_MAX);
+	strcpy(base + FSOUT_NAME_MAX, ".json");
+	assert_int_equal(fsout_safe_name(base, out, sizeof out), 0);
+	assert_int_equal(strlen(out), FSOUT_NAME_MAX);
+	memset(base, 'n', FSOUT_NAME_MAX + 1);
+	strcpy(base + FSOUT_NAME_MAX + 1, ".json");
+	assert_int_equal(fsout_safe_name(base, out, sizeof out), -2);
+	assert_string_equal(out, "");
 }
 
 int
@@ -420,6 +764,16 @@ main(void)
 		cmocka_unit_test_setup_teardown(fsout_resolve_date_should_prefer_report_then_epoch_then_mtime, setup, teardown),
 		cmocka_unit_test_setup_teardown(fsout_resolve_date_should_reject_bad_dates_instead_of_falling_through, setup, teardown),
 		cmocka_unit_test(fsout_safe_name_should_keep_only_a_harmless_base_name),
+		cmocka_unit_test(fsout_safe_name_should_refuse_a_name_too_long_for_its_temporaries),
+		cmocka_unit_test_setup_teardown(fsfolder_commit_should_replace_the_whole_set_and_leave_nothing_beside_it, setup, teardown),
+		cmocka_unit_test_setup_teardown(fsfolder_commit_without_exchange_should_swap_by_two_renames, setup, teardown),
+		cmocka_unit_test_setup_teardown(fsfolder_failed_write_should_leave_the_old_set_whole, setup, teardown),
+		cmocka_unit_test_setup_teardown(fsfolder_open_should_refuse_a_linked_or_non_folder_output_naming_it, setup, teardown),
+		cmocka_unit_test_setup_teardown(fsfolder_open_should_refuse_links_fifos_and_foreign_files_inside, setup, teardown),
+		cmocka_unit_test_setup_teardown(fsfolder_begin_should_step_over_a_link_planted_at_its_temporary_name, setup, teardown),
+		cmocka_unit_test_setup_teardown(fsfolder_clean_should_remove_only_its_own_stale_temporaries, setup, teardown),
+		cmocka_unit_test_setup_teardown(fsfolder_lock_should_keep_a_second_writer_out_until_released, setup, teardown),
+		cmocka_unit_test_setup_teardown(fsfolder_hash_should_match_the_bytes_written, setup, teardown),
 	};
 	return cmocka_run_group_tests_name("fsout", tests, NULL, NULL);
 }

@@ -2,8 +2,10 @@
 #include "test_util.h"
 #include "util/sha256.h"
 
+#include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 static void
 hex_of(const unsigned char d[SHA256_DIGEST_LEN], char out[SHA256_HEX_LEN])
@@ -89,6 +91,58 @@ sha256_updates_should_not_depend_on_the_split(void **state)
 	assert_string_equal(h, want);
 }
 
+static void
+sha256_update_fd_should_hash_a_file_of_any_size_whole(void **state)
+{
+	(void)state;
+	/* One million 'a' through a file gives the NIST digest. */
+	char path[] = "/tmp/aeroeval-sha256-XXXXXX";
+	int fd = mkstemp(path);
+	assert_true(fd >= 0);
+	unlink(path);
+	char *m = malloc(1000000);
+	assert_non_null(m);
+	memset(m, 'a', 1000000);
+	assert_int_equal(write(fd, m, 1000000), 1000000);
+	free(m);
+	assert_int_equal(lseek(fd, 0, SEEK_SET), 0);
+	struct sha256_ctx c;
+	unsigned char d[SHA256_DIGEST_LEN];
+	char h[SHA256_HEX_LEN];
+	uint64_t n = 0;
+	sha256_init(&c);
+	assert_int_equal(sha256_update_fd(&c, fd, &n), 0);
+	assert_int_equal(n, 1000000);
+	sha256_final(&c, d);
+	hex_of(d, h);
+	assert_string_equal(h, "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+
+	/* 70 MiB (sparse) whose last byte differs from all zeros: past the
+	 * old 64 MiB cut-off, that byte must still change the digest. */
+	const off_t big = (off_t)70 << 20;
+	char zeros_hex[SHA256_HEX_LEN], last_hex[SHA256_HEX_LEN];
+	assert_int_equal(ftruncate(fd, 0), 0);
+	assert_int_equal(ftruncate(fd, big), 0);
+	assert_int_equal(lseek(fd, 0, SEEK_SET), 0);
+	sha256_init(&c);
+	assert_int_equal(sha256_update_fd(&c, fd, &n), 0);
+	assert_true(n == (uint64_t)big);
+	sha256_final(&c, d);
+	hex_of(d, zeros_hex);
+	assert_int_equal(pwrite(fd, "x", 1, big - 1), 1);
+	assert_int_equal(lseek(fd, 0, SEEK_SET), 0);
+	sha256_init(&c);
+	assert_int_equal(sha256_update_fd(&c, fd, NULL), 0);
+	sha256_final(&c, d);
+	hex_of(d, last_hex);
+	assert_string_not_equal(zeros_hex, last_hex);
+	close(fd);
+
+	/* A read error is reported, not hashed as an empty file. */
+	sha256_init(&c);
+	assert_int_equal(sha256_update_fd(&c, -1, &n), -1);
+}
+
 int
 main(void)
 {
@@ -98,6 +152,7 @@ main(void)
 		cmocka_unit_test(sha256_should_hash_the_448_bit_message_across_two_blocks),
 		cmocka_unit_test(sha256_should_hash_one_million_a),
 		cmocka_unit_test(sha256_updates_should_not_depend_on_the_split),
+		cmocka_unit_test(sha256_update_fd_should_hash_a_file_of_any_size_whole),
 	};
 	return cmocka_run_group_tests_name("sha256", tests, NULL, NULL);
 }

@@ -1,7 +1,10 @@
 /* cli.c — shared command set-up (see cli.h). */
 #include "cli/cli.h"
 
+#include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -11,7 +14,6 @@
 #include "output/fsout.h"
 #include "input/model_io.h"
 #include "util/sha256.h"
-#include "util/file.h"
 #include "util/xalloc.h"
 
 static int
@@ -55,34 +57,67 @@ cli_data_dir(char *out, size_t n)
 	snprintf(out, n, "data");
 }
 
+int
+cli_hash_file(struct sha256_ctx *c, const char *path, char *err, size_t errlen)
+{
+	/* O_NONBLOCK: a FIFO must be refused, not waited on. */
+	int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+	struct stat st;
+	if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+		snprintf(err, errlen, "%s", fd < 0 ? strerror(errno) : "not a regular file");
+		if (fd >= 0)
+			close(fd);
+		return -1;
+	}
+	unsigned char len8[8];
+	for (int k = 0; k < 8; k++)
+		len8[k] = (unsigned char)((unsigned long long)st.st_size >> (8 * k));
+	sha256_update(c, len8, sizeof len8);
+	uint64_t n = 0;
+	int rc = sha256_update_fd(c, fd, &n);
+	int saved = errno;
+	close(fd);
+	if (rc != 0) {
+		snprintf(err, errlen, "read failed: %s", strerror(saved));
+		return -2;
+	}
+	if (n != (uint64_t)st.st_size) {
+		snprintf(err, errlen, "changed while it was being read");
+		return -2;
+	}
+	return 0;
+}
+
 /* SHA-256 over the catalogue files (name, NUL, length, bytes each), so a
- * dossier names exactly the catalogue it was built from. */
-static void
-catalogue_hash(const char *db_dir, char out[65])
+ * dossier names exactly the catalogue it was built from.  Every byte is
+ * hashed whatever the size; a file that cannot be opened counts as empty
+ * (the catalogue loader has already said why).  -1, after a diagnostic on
+ * err, when a file changes or fails while it is read. */
+static int
+catalogue_hash(const char *db_dir, char out[65], FILE *err)
 {
 	static const char *const files[] = { "motors.json", "propellers.json",
 		"batteries.json", "escs.json", NULL };
+	static const unsigned char empty8[8] = { 0 };
 	struct sha256_ctx c;
 	unsigned char digest[SHA256_DIGEST_LEN];
 	sha256_init(&c);
 	for (int i = 0; files[i] != NULL; i++) {
-		char path[4400], err[256];
-		unsigned char *buf = NULL;
-		size_t n = 0;
+		char path[4400];
 		snprintf(path, sizeof path, "%s/%s", db_dir, files[i]);
-		if (file_read(path, 64u << 20, &buf, &n, err, sizeof err) != 0)
-			n = 0;
 		sha256_update(&c, files[i], strlen(files[i]) + 1);
-		unsigned char len8[8];
-		for (int k = 0; k < 8; k++)
-			len8[k] = (unsigned char)((unsigned long long)n >> (8 * k));
-		sha256_update(&c, len8, sizeof len8);
-		sha256_update(&c, buf, n);
-		free(buf);
+		char why[256];
+		int rc = cli_hash_file(&c, path, why, sizeof why);
+		if (rc == -1)
+			sha256_update(&c, empty8, sizeof empty8);
+		if (rc == -2) {
+			fprintf(err, "%s: error: %s\n", path, why);
+			return -1;
+		}
 	}
 	sha256_final(&c, digest);
-	for (int i = 0; i < SHA256_DIGEST_LEN; i++)
-		snprintf(out + 2 * i, 3, "%02x", digest[i]);
+	sha256_to_hex(digest, out);
+	return 0;
 }
 
 int
@@ -102,7 +137,8 @@ cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
 		env->cat = catalog_load(env->db_dir, env->model.chem_names, err, &n_err);
 		if (env->cat == NULL)
 			return 2;
-		catalogue_hash(env->db_dir, env->catalogue_sha256);
+		if (catalogue_hash(env->db_dir, env->catalogue_sha256, err) != 0)
+			return 2;
 	}
 	return 0;
 }

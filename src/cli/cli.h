@@ -31,4 +31,14 @@ int cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
 
 void cli_env_free(struct cli_env *env);
 
+struct sha256_ctx;
+
+/* Adds the regular file at path to c as its length (8 bytes, little
+ * endian) followed by every one of its bytes, streamed: no size limit.
+ * Returns 0; -1 when it cannot be opened or is not a regular file
+ * (nothing added); -2 when a read fails or the file changes size while it
+ * is read (c then holds part of it and must be discarded).  On failure err
+ * holds "PATH: why". */
+int cli_hash_file(struct sha256_ctx *c, const char *path, char *err, size_t errlen);
+
 #endif

@@ -3,8 +3,9 @@
  * The parent loads the reference tables, the catalogue and the template
  * once, decides which missions are up to date, and hands the others to a
  * pool of forked workers (batch.h), each of which runs pipeline_build() for
- * one mission.  Outputs are written atomically by the pipeline; a stamp file
- * written last marks a complete, current output folder.
+ * one mission.  The pipeline replaces a mission's outputs as one set, with
+ * a stamp that records the fingerprint of the inputs computed here and the
+ * SHA-256 of every output (pipeline.h).
  */
 #include "cli/cli_build.h"
 
@@ -26,7 +27,6 @@
 #include "util/sha256.h"
 #include "util/strbuf.h"
 #include "core/template.h"
-#include "util/file.h"
 #include "util/xalloc.h"
 
 #define BUILD_USAGE "usage: aeroeval build [-o DIR] [-j N] [-q] [--force] " \
@@ -38,14 +38,6 @@
 #define BUILD_TICK_S 0.1          /* progress line redraw interval */
 #define BUILD_MAX_JOBS 1024       /* -j above this is a typo */
 
-/* Files pipeline_build() writes into DIR/<name>/: a mission is up to date
- * only when every one exists.  Add "dossier.pdf" when the pipeline writes it. */
-static const char *const build_outputs[] = { "result.json", "bom.csv", "dossier.pdf", NULL };
-
-/* The fingerprint file, written last (atomically) after a good compile. */
-#define BUILD_STAMP ".aeroeval-stamp"
-#define BUILD_STAMP_MAGIC "aeroeval-stamp 1\n"
-
 /* A growable list of mission paths. */
 struct path_list {
 	char **v;
@@ -54,7 +46,7 @@ struct path_list {
 
 /* Everything the run shares; workers see it copy-on-write. */
 struct build {
-	const char *out_dir;       /* -o */
+	char out_dir[4096];        /* -o, without trailing slashes */
 	int quiet;                 /* -q */
 	int force;                 /* --force */
 	int tty;                   /* stderr is a terminal: live progress line */
@@ -66,6 +58,7 @@ struct build {
 	struct template *tpl;
 	struct pipeline_opts popts;
 	size_t n_ok, n_inf, n_rej, n_int, n_utd, n_utd_inf, n_stopped;
+	size_t n_unw;              /* not written: a file-system problem */
 	int line_shown;            /* the progress line is on screen */
 };
 
@@ -161,20 +154,17 @@ hash_str(struct sha256_ctx *c, const char *s)
 	hash_field(c, s, strlen(s));
 }
 
-/* The file's name and bytes; a missing file hashes as "missing". */
+/* The file's name and every one of its bytes (streamed, so no size is too
+ * large); a missing or unreadable file hashes as "missing", and one that
+ * changes while it is read as "changing" (never "up to date"). */
 static void
 hash_file(struct sha256_ctx *c, const char *path)
 {
-	unsigned char *buf = NULL;
-	size_t n = 0;
-	char msg[256];
+	char why[256];
 	hash_str(c, path);
-	if (file_read(path, 256u << 20, &buf, &n, msg, sizeof msg) != 0) {
-		hash_str(c, "missing");
-		return;
-	}
-	hash_field(c, buf, n);
-	free(buf);
+	int rc = cli_hash_file(c, path, why, sizeof why);
+	if (rc != 0)
+		hash_str(c, rc == -1 ? "missing" : "changing");
 }
 
 /* A large file that only an install replaces (the program, the fonts), by
@@ -216,7 +206,7 @@ base_fingerprint(struct build *b, const char *tpl_path)
 {
 	struct sha256_ctx c;
 	sha256_init(&c);
-	hash_str(&c, BUILD_STAMP_MAGIC);
+	hash_str(&c, PIPELINE_STAMP_MAGIC);
 	hash_str(&c, AEROEVAL_VERSION);
 	char exe[4096];
 	ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
@@ -250,20 +240,18 @@ base_fingerprint(struct build *b, const char *tpl_path)
 	hex_final(&c, b->base_fp);
 }
 
-/* The mission's fingerprint: the base, its bytes and, unless
- * SOURCE_DATE_EPOCH is set, its mtime (the dossier date falls back to it;
- * with SOURCE_DATE_EPOCH set it never does, so a copy or a checkout that
- * changes only the mtime stays up to date).  Returns -1 when unreadable. */
+/* The mission's fingerprint: the base, its bytes (all of them, streamed)
+ * and, unless SOURCE_DATE_EPOCH is set, its mtime (the dossier date falls
+ * back to it; with SOURCE_DATE_EPOCH set it never does, so a copy or a
+ * checkout that changes only the mtime stays up to date).  Returns -1 when
+ * unreadable. */
 static int
 mission_fingerprint(const struct build *b, size_t i, char out[SHA256_HEX_LEN])
 {
 	const char *path = b->missions.v[i];
-	unsigned char *buf = NULL;
-	size_t n = 0;
-	char msg[256];
+	char why[256];
 	struct stat st;
-	if (stat(path, &st) != 0
-	    || file_read(path, 64u << 20, &buf, &n, msg, sizeof msg) != 0)
+	if (stat(path, &st) != 0)
 		return -1;
 	struct sha256_ctx c;
 	char mtime[64];
@@ -275,46 +263,11 @@ mission_fingerprint(const struct build *b, size_t i, char out[SHA256_HEX_LEN])
 		    (long)st.st_mtim.tv_nsec);
 	sha256_init(&c);
 	hash_str(&c, b->base_fp);
-	hash_field(&c, buf, n);
+	if (cli_hash_file(&c, path, why, sizeof why) != 0)
+		return -1;
 	hash_str(&c, mtime);
-	free(buf);
 	hex_final(&c, out);
 	return 0;
-}
-
-static void
-out_path(const struct build *b, size_t i, const char *file, char *p, size_t n)
-{
-	snprintf(p, n, "%s/%s/%s", b->out_dir, b->names[i], file);
-}
-
-/* 0 feasible, 1 infeasible when the stamp matches fp and every output
- * exists; -1 otherwise. */
-static int
-stamp_status(const struct build *b, size_t i, const char *fp)
-{
-	char p[4800], msg[256];
-	unsigned char *buf = NULL;
-	size_t n = 0;
-	struct stat st;
-	for (int k = 0; build_outputs[k] != NULL; k++) {
-		out_path(b, i, build_outputs[k], p, sizeof p);
-		if (stat(p, &st) != 0 || !S_ISREG(st.st_mode))
-			return -1;
-	}
-	out_path(b, i, BUILD_STAMP, p, sizeof p);
-	if (file_read(p, 4096, &buf, &n, msg, sizeof msg) != 0)
-		return -1;
-	char want[256];
-	int rc = -1;
-	for (int s = 0; s < 2 && rc < 0; s++) {
-		snprintf(want, sizeof want, "%sfingerprint %s\nstatus %s\n",
-		    BUILD_STAMP_MAGIC, fp, s ? "infeasible" : "feasible");
-		if (n == strlen(want) && memcmp(buf, want, n) == 0)
-			rc = s;
-	}
-	free(buf);
-	return rc;
 }
 
 /* ---- output ---------------------------------------------------------------- */
@@ -333,34 +286,6 @@ emit(struct build *b, const struct strbuf *text)
 	fflush(stderr);
 }
 
-/* Removes the temporary files a killed worker left in DIR/<name>/: they are
- * named ".FILE.tmp.PID.SEQ" (fsout_write_atomic), PID the worker's. */
-static void
-clean_temps(const struct build *b, size_t i, long pid)
-{
-	char dir[4600], mark[48];
-	if (b->names[i][0] == '\0' || pid <= 0)
-		return;
-	snprintf(dir, sizeof dir, "%s/%s", b->out_dir, b->names[i]);
-	snprintf(mark, sizeof mark, ".tmp.%ld.", pid);
-	DIR *d = opendir(dir);
-	if (d == NULL)
-		return;
-	struct dirent *e;
-	while ((e = readdir(d)) != NULL) {
-		const char *m = e->d_name[0] == '.' ? strstr(e->d_name, mark) : NULL;
-		if (m == NULL)
-			continue;
-		m += strlen(mark);
-		if (*m == '\0' || strspn(m, "0123456789") != strlen(m))
-			continue;
-		char p[4900];
-		snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
-		unlink(p);
-	}
-	closedir(d);
-}
-
 /* ---- the three callbacks of the worker pool -------------------------------- */
 
 static int
@@ -372,7 +297,7 @@ build_skip(void *ctx, size_t i)
 		b->fp[i][0] = '\0';
 		return 0;  /* the worker reports why */
 	}
-	int st = b->force ? -1 : stamp_status(b, i, b->fp[i]);
+	int st = b->force ? -1 : pipeline_current(&b->popts, b->names[i], b->fp[i]);
 	if (st < 0)
 		return 0;
 	b->n_utd++;
@@ -402,62 +327,14 @@ test_hook(const char *name)
 			pause();
 }
 
-/* Writes the stamp through a temporary file and rename, like the outputs,
- * but without fsync: a stamp lost in a power cut only costs a recompile,
- * and skipping two fsyncs per mission makes large batches a third faster.
- * The temporary name follows fsout_write_atomic's, so clean_temps() finds
- * it after a kill. */
-static int
-write_stamp(const char *path, const char *text, char *msg, size_t n_msg)
-{
-	char tmp[4900];
-	const char *slash = strrchr(path, '/');
-	int dir_len = slash ? (int)(slash - path + 1) : 0;
-	snprintf(tmp, sizeof tmp, "%.*s.%s.tmp.%ld.0", dir_len, path,
-	    slash ? slash + 1 : path, (long)getpid());
-	FILE *f = fopen(tmp, "w");
-	if (f == NULL) {
-		snprintf(msg, n_msg, "%.400s: cannot create: %s", tmp, strerror(errno));
-		return -1;
-	}
-	int bad = fputs(text, f) < 0;
-	bad |= fclose(f) != 0;
-	if (bad || rename(tmp, path) != 0) {
-		snprintf(msg, n_msg, "%.400s: cannot write: %s", tmp, strerror(errno));
-		unlink(tmp);
-		return -1;
-	}
-	return 0;
-}
-
-/* Worker process: compile mission i, then write its stamp. */
+/* Worker process: compile mission i; the pipeline writes its stamp. */
 static int
 build_run(void *ctx, size_t i, FILE *err)
 {
 	struct build *b = ctx;
-	const char *path = b->missions.v[i];
-	char stamp[4800] = "", msg[512];
-	if (b->names[i][0] != '\0') {
+	if (b->names[i][0] != '\0')
 		test_hook(b->names[i]);
-		/* Outputs are about to change: until the stamp is rewritten the
-		 * folder is not "up to date", even if this worker is killed. */
-		out_path(b, i, BUILD_STAMP, stamp, sizeof stamp);
-		if (unlink(stamp) != 0 && errno != ENOENT) {
-			fprintf(err, "%s: error: cannot remove: %s\n", stamp, strerror(errno));
-			return PIPE_INTERNAL;
-		}
-	}
-	enum pipeline_status st = pipeline_build(b->env, &b->popts, path, err);
-	if ((st != PIPE_FEASIBLE && st != PIPE_INFEASIBLE) || b->fp[i][0] == '\0')
-		return st;
-	char text[256];
-	snprintf(text, sizeof text, "%sfingerprint %s\nstatus %s\n", BUILD_STAMP_MAGIC,
-	    b->fp[i], st == PIPE_FEASIBLE ? "feasible" : "infeasible");
-	if (write_stamp(stamp, text, msg, sizeof msg) != 0) {
-		fprintf(err, "%s: error: %s\n", stamp, msg);
-		return PIPE_INTERNAL;
-	}
-	return st;
+	return pipeline_build(b->env, &b->popts, b->missions.v[i], b->fp[i], err);
 }
 
 static void
@@ -467,8 +344,10 @@ build_done(void *ctx, size_t i, const struct batch_outcome *o)
 	const char *path = b->missions.v[i];
 	struct strbuf out = STRBUF_INIT;
 	int bad = 1;  /* an error: printed even with -q */
-	if (o->end != BATCH_EXITED && o->end != BATCH_FAILED)
-		clean_temps(b, i, o->pid);
+	/* A worker that died may have left a temporary folder: its pid is
+	 * gone now, so the folder's stale temporaries can go at once. */
+	if (o->end != BATCH_EXITED && o->end != BATCH_FAILED && b->names[i][0] != '\0')
+		pipeline_clean(&b->popts, b->names[i]);
 	strbuf_append(&out, o->text, o->n_text);
 	if (o->n_text > 0 && o->text[o->n_text - 1] != '\n')
 		strbuf_append_char(&out, '\n');
@@ -485,6 +364,9 @@ build_done(void *ctx, size_t i, const struct batch_outcome *o)
 		} else if (o->code == PIPE_REJECTED) {
 			b->n_rej++;
 			strbuf_printf(&out, "%s: rejected\n", path);
+		} else if (o->code == PIPE_UNWRITTEN) {
+			b->n_unw++;
+			strbuf_printf(&out, "%s: not written\n", path);
 		} else {
 			b->n_int++;
 			strbuf_printf(&out, "%s: internal error\n", path);
@@ -556,6 +438,39 @@ timeout_s(void)
 	return s && end != s && *end == '\0' && v > 0.0 && v < 1e6 ? v : BUILD_TIMEOUT_S;
 }
 
+/* -o must name a folder of its own: not "" (which once wrote /NAME/), not
+ * the root, not a file.  The name is kept without trailing slashes. */
+static int
+check_out_dir(const char *opt, char *out, size_t n)
+{
+	struct stat st, root;
+	size_t len = strlen(opt);
+	while (len > 1 && opt[len - 1] == '/')
+		len--;
+	if (len == 0) {
+		fprintf(stderr, "aeroeval build: error: -o: the output folder name is empty\n");
+		return 2;
+	}
+	if (len >= n) {
+		fprintf(stderr, "aeroeval build: error: -o: the output folder name is too long\n");
+		return 2;
+	}
+	memcpy(out, opt, len);
+	out[len] = '\0';
+	if (stat(out, &st) != 0)
+		return 0;  /* made later; mkdir says what is wrong with it */
+	if (!S_ISDIR(st.st_mode)) {
+		fprintf(stderr, "%s: error: -o names a file, not a folder\n", out);
+		return 2;
+	}
+	if (stat("/", &root) == 0 && st.st_dev == root.st_dev && st.st_ino == root.st_ino) {
+		fprintf(stderr, "%s: error: -o names the root folder; give the outputs "
+		    "a folder of their own\n", out);
+		return 2;
+	}
+	return 0;
+}
+
 /* Name clashes are an error before anything is written. */
 static int
 check_names(struct build *b)
@@ -585,8 +500,10 @@ summary(const struct build *b, int sig, size_t n_started, double seconds)
 	if (sig != 0)
 		strbuf_printf(&s, "interrupted (%s): ", sig == SIGINT ? "SIGINT" : "SIGTERM");
 	strbuf_printf(&s, "%zu compiled (%zu infeasible), %zu up to date (%zu infeasible), "
-	    "%zu rejected, %zu internal errors", b->n_ok + b->n_inf, b->n_inf,
-	    b->n_utd, b->n_utd_inf, b->n_rej, b->n_int);
+	    "%zu rejected, ", b->n_ok + b->n_inf, b->n_inf, b->n_utd, b->n_utd_inf, b->n_rej);
+	if (b->n_unw > 0)  /* shown only when it happened: it is rare */
+		strbuf_printf(&s, "%zu not written (file system), ", b->n_unw);
+	strbuf_printf(&s, "%zu internal errors", b->n_int);
 	if (sig != 0)
 		strbuf_printf(&s, ", %zu stopped, %zu not started", b->n_stopped,
 		    b->missions.n - n_started);
@@ -604,7 +521,7 @@ cli_build(int argc, char **argv)
 	long n_cpu = sysconf(_SC_NPROCESSORS_ONLN);
 	int n_workers = n_cpu >= 1 && n_cpu <= BUILD_MAX_JOBS ? (int)n_cpu : 1;
 	int rc = 0, opts_done = 0;
-	b.out_dir = "out";
+	const char *out_opt = "out";
 	for (int i = 1; i < argc; i++) {
 		const char *a = argv[i];
 		int has_val = i + 1 < argc;
@@ -622,7 +539,7 @@ cli_build(int argc, char **argv)
 		} else if (strcmp(a, "--force") == 0) {
 			b.force = 1;
 		} else if (strcmp(a, "-o") == 0 && has_val) {
-			b.out_dir = argv[++i];
+			out_opt = argv[++i];
 		} else if (strcmp(a, "--db") == 0 && has_val) {
 			db = argv[++i];
 		} else if (strcmp(a, "--template") == 0 && has_val) {
@@ -649,6 +566,8 @@ cli_build(int argc, char **argv)
 	b.fp = xcalloc(b.missions.n + 1, sizeof *b.fp);
 	b.env = xcalloc(1, sizeof *b.env);
 	if (rc == 0)
+		rc = check_out_dir(out_opt, b.out_dir, sizeof b.out_dir);
+	if (rc == 0)
 		rc = check_names(&b);
 	if (rc == 0 && cli_env_load(b.env, db, 1, stderr) != 0)
 		rc = 2;
@@ -657,10 +576,19 @@ cli_build(int argc, char **argv)
 		if (b.tpl == NULL)
 			rc = 2;
 	}
+	char msg[4400];
+	if (rc == 0 && fsout_mkdirs(b.out_dir, msg, sizeof msg) != 0) {
+		fprintf(stderr, "aeroeval build: error: %s\n", msg);
+		rc = 2;
+	}
 	if (rc == 0) {
+		/* A file-size limit (ulimit -f) must fail a write with EFBIG and a
+		 * clear message, not kill the worker; workers inherit this. */
+		signal(SIGXFSZ, SIG_IGN);
 		base_fingerprint(&b, tpl_path);
 		b.popts.out_dir = b.out_dir;
 		b.popts.tpl = b.tpl;
+		b.popts.lock_wait_s = 0.5 * timeout_s();
 		b.tty = isatty(STDERR_FILENO);
 		if ((size_t)n_workers > b.missions.n)
 			n_workers = (int)b.missions.n;
@@ -675,7 +603,7 @@ cli_build(int argc, char **argv)
 		if (sig != 0)
 			rc = 128 + sig;
 		else
-			rc = b.n_int ? 3 : b.n_rej ? 2 : b.n_inf + b.n_utd_inf ? 1 : 0;
+			rc = b.n_int ? 3 : b.n_rej + b.n_unw ? 2 : b.n_inf + b.n_utd_inf ? 1 : 0;
 	}
 	template_free(b.tpl);
 	cli_env_free(b.env);

@@ -30,8 +30,9 @@ static const struct help_cmd help_cmds[] = {
 	  "A mission whose file, catalogue, reference data, template and compiler\n"
 	  "are unchanged since its last good compile is skipped (\"up to date\").\n"
 	  "^C stops the run: finished outputs stay, no partial file is left.\n"
-	  "Exit status: 0 all feasible, 1 some design infeasible, 2 bad usage or\n"
-	  "input, 3 internal error, 130/143 interrupted.\n" },
+	  "A mission's outputs are replaced as one set: old or new, never a mix.\n"
+	  "Exit status: 0 all feasible, 1 some design infeasible, 2 bad usage,\n"
+	  "input or a file-system problem, 3 internal error, 130/143 interrupted.\n" },
 	{ "solve",
 	  "solve [--db DIR] [--summary] MISSION.json",
 	  "solve one mission and print result.json on stdout (no files written)",

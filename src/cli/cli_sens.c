@@ -86,30 +86,34 @@ run_suite(const struct cli_env *env, const char *path, const char *dir_opt,
 	fprintf(stderr, "sensitivity: %d solves in %.3f s (%.2f ms per solve)\n",
 	    s->n_solves, s->seconds, 1e3 * s->seconds / (double)s->n_solves);
 
-	int rc = nominal_bad ? 1 : 0;
+	/* A file-system problem is exit 2, like bad input (PRODUCT.md §2);
+	 * only a failed render is an internal error. */
+	int rc = nominal_bad ? 1 : 0, bad = 0;
 	if (fsout_mkdirs(dir, err, sizeof err) != 0) {
 		fprintf(stderr, "aeroeval: error: %s\n", err);
-		rc = 3;
+		bad = 2;
 	}
-	if (rc != 3) {
+	if (bad == 0) {
 		char *json = sens_report_json(s, AEROEVAL_VERSION);
 		if (write_out(dir, "sensitivity.json", json, strlen(json)) != 0)
-			rc = 3;
+			bad = 2;
 		free(json);
 	}
-	if (rc != 3) {
+	if (bad == 0) {
 		unsigned char *pdf = NULL;
 		size_t n = 0;
 		if (sens_report_pdf(s, tpl, date, &pdf, &n, err, sizeof err) != 0) {
 			fprintf(stderr, "aeroeval: internal error: %s\n", err);
-			rc = 3;
+			bad = 3;
 		} else if (write_out(dir, "sensitivity.pdf", pdf, n) != 0)
-			rc = 3;
+			bad = 2;
 		free(pdf);
 	}
-	if (rc != 3)
+	if (bad == 0)
 		fprintf(stderr, "sensitivity: wrote %s/sensitivity.json and "
 		    "%s/sensitivity.pdf\n", dir, dir);
+	else
+		rc = bad;
 	free(s);
 	template_free(tpl);
 	doc_global_cleanup();

@@ -7,6 +7,7 @@
 #include "output/bom_csv.h"
 #include "core/diag.h"
 #include "engine/engine.h"
+#include "output/fsfolder.h"
 #include "output/fsout.h"
 #include "input/mission_io.h"
 #include "output/report.h"
@@ -16,6 +17,7 @@
 #include "output/result_json.h"
 #include "util/sha256.h"
 #include "util/file.h"
+#include "util/strbuf.h"
 #include "util/xalloc.h"
 
 #define MISSION_MAX_BYTES (4u << 20) /* a mission file above 4 MiB is refused */
@@ -66,17 +68,103 @@ pipeline_solve(const struct cli_env *env, const char *path,
 	return r->feasible ? PIPE_FEASIBLE : PIPE_INFEASIBLE;
 }
 
-/* Write one output file atomically into dir. */
-static int
-put(const char *dir, const char *file, const void *data, size_t n, FILE *err)
+/* The files of DIR/<name>/: the outputs in the order they are written,
+ * then the stamp that vouches for them. */
+static const char *const pipeline_files[] = { "bom.csv", "result.json",
+	"dossier.pdf", PIPELINE_STAMP, NULL };
+#define N_OUTPUTS 3  /* pipeline_files before the stamp */
+
+/* The stamp's text: the fingerprint of the inputs, the verdict and the
+ * SHA-256 of every output, so "up to date" can prove the files are the
+ * ones this stamp was written with: the first n_out outputs (no dossier
+ * without a template). */
+static void
+stamp_text(struct strbuf *sb, const char *fp, int infeasible,
+           char hex[N_OUTPUTS][SHA256_HEX_LEN], int n_out)
 {
-	char path[4608], msg[512];
-	snprintf(path, sizeof path, "%.4400s/%s", dir, file);
-	if (fsout_write_atomic(path, data, n, msg, sizeof msg) != 0) {
-		fprintf(err, "%s: error: %s\n", path, msg);
-		return -1;
+	strbuf_reset(sb);
+	strbuf_printf(sb, "%sfingerprint %s\nstatus %s\n", PIPELINE_STAMP_MAGIC, fp,
+	    infeasible ? "infeasible" : "feasible");
+	for (int i = 0; i < n_out; i++)
+		strbuf_printf(sb, "sha256 %s %s\n", hex[i], pipeline_files[i]);
+}
+
+int
+pipeline_current(const struct pipeline_opts *o, const char *name, const char *fp)
+{
+	struct fsfolder f;
+	char msg[512], stamp[4096], hex[N_OUTPUTS][SHA256_HEX_LEN];
+	size_t n = 0;
+	int n_out = o->tpl != NULL ? N_OUTPUTS : N_OUTPUTS - 1, rc = -1;
+	if (fsfolder_open(&f, o->out_dir, name, pipeline_files, FSFOLDER_NOWAIT, 0.0,
+	    msg, sizeof msg) != 0)
+		goto done;
+	fsfolder_clean(&f, FSFOLDER_STALE_S);
+	if (!fsfolder_exists(&f)
+	    || fsfolder_read(&f, PIPELINE_STAMP, stamp, sizeof stamp, &n) != 0)
+		goto done;
+	for (int i = 0; i < n_out; i++)
+		if (fsfolder_hash(&f, pipeline_files[i], hex[i]) != 0)
+			goto done;
+	struct strbuf want = STRBUF_INIT;
+	for (int inf = 0; inf < 2 && rc < 0; inf++) {
+		stamp_text(&want, fp, inf, hex, n_out);
+		if (want.len == n && memcmp(want.data, stamp, n) == 0)
+			rc = inf;
 	}
-	return 0;
+	strbuf_free(&want);
+done:
+	fsfolder_close(&f);
+	return rc;
+}
+
+void
+pipeline_clean(const struct pipeline_opts *o, const char *name)
+{
+	struct fsfolder f;
+	char msg[512];
+	if (fsfolder_open(&f, o->out_dir, name, pipeline_files, FSFOLDER_NOWAIT, 0.0,
+	    msg, sizeof msg) == 0)
+		fsfolder_clean(&f, FSFOLDER_STALE_S);
+	fsfolder_close(&f);
+}
+
+/* Writes the rendered outputs and the stamp as one new set of out_dir/name
+ * (fsfolder.h); a file-system problem is PIPE_UNWRITTEN, with the folder
+ * as it was. */
+static enum pipeline_status
+write_set(const struct pipeline_opts *o, const char *name, const char *fp,
+          int infeasible, const void *data[N_OUTPUTS], const size_t len[N_OUTPUTS],
+          FILE *err)
+{
+	struct fsfolder f;
+	char msg[5000], hex[N_OUTPUTS][SHA256_HEX_LEN];
+	int n_out = data[N_OUTPUTS - 1] != NULL ? N_OUTPUTS : N_OUTPUTS - 1;
+	int bad = fsfolder_open(&f, o->out_dir, name, pipeline_files, 0, o->lock_wait_s,
+	    msg, sizeof msg) != 0;
+	if (!bad) {
+		fsfolder_clean(&f, FSFOLDER_STALE_S);
+		bad = fsfolder_begin(&f, msg, sizeof msg) != 0;
+	}
+	for (int i = 0; i < n_out && !bad; i++) {
+		bad = fsfolder_put(&f, pipeline_files[i], data[i], len[i], 1, msg, sizeof msg) != 0;
+		sha256_hex(data[i], len[i], hex[i]);
+	}
+	if (!bad && fp != NULL && fp[0] != '\0') {
+		/* Not synced: a stamp lost in a power cut costs a recompile only. */
+		struct strbuf sb = STRBUF_INIT;
+		stamp_text(&sb, fp, infeasible, hex, n_out);
+		bad = fsfolder_put(&f, PIPELINE_STAMP, sb.data, sb.len, 0, msg, sizeof msg) != 0;
+		strbuf_free(&sb);
+	}
+	if (!bad)
+		bad = fsfolder_commit(&f, msg, sizeof msg) != 0;
+	fsfolder_close(&f);
+	if (bad) {
+		fprintf(err, "%s\n", msg);
+		return PIPE_UNWRITTEN;
+	}
+	return infeasible ? PIPE_INFEASIBLE : PIPE_FEASIBLE;
 }
 
 /* The dossier's trade-study section (report_section_fn). */
@@ -88,12 +176,18 @@ sensitivity_section(struct doc *d, const struct template *t, const void *arg)
 
 enum pipeline_status
 pipeline_build(const struct cli_env *env, const struct pipeline_opts *o,
-               const char *path, FILE *err)
+               const char *path, const char *fp, FILE *err)
 {
-	char name[256], dir[4400], msg[512];
-	if (pipeline_name(path, name, sizeof name) != 0) {
-		fprintf(err, "%s: error: the file name cannot name an output folder "
-		    "(use letters, digits, '.', '_' and '-')\n", path);
+	char name[256], msg[512];
+	int nr = pipeline_name(path, name, sizeof name);
+	if (nr != 0) {
+		if (nr == -2)
+			fprintf(err, "%s: error: the file name is too long to name an output "
+			    "folder (at most %d characters before \".json\")\n", path,
+			    FSOUT_NAME_MAX);
+		else
+			fprintf(err, "%s: error: the file name cannot name an output folder "
+			    "(use letters, digits, '.', '_' and '-')\n", path);
 		return PIPE_REJECTED;
 	}
 	struct solve_result *r = xmalloc(sizeof *r);
@@ -144,15 +238,9 @@ pipeline_build(const struct cli_env *env, const struct pipeline_opts *o,
 			goto written;
 		}
 	}
-	snprintf(dir, sizeof dir, "%s/%s", o->out_dir, name);
-	if (fsout_mkdirs(dir, msg, sizeof msg) != 0) {
-		fprintf(err, "%s: error: %s\n", dir, msg);
-		st = PIPE_INTERNAL;
-	} else if (put(dir, "bom.csv", csv, strlen(csv), err) != 0
-	    || put(dir, "result.json", json, strlen(json), err) != 0
-	    || (pdf != NULL && put(dir, "dossier.pdf", pdf, n_pdf, err) != 0)) {
-		st = PIPE_INTERNAL;
-	}
+	const void *data[N_OUTPUTS] = { csv, json, pdf };
+	const size_t len[N_OUTPUTS] = { strlen(csv), strlen(json), n_pdf };
+	st = write_set(o, name, fp, st == PIPE_INFEASIBLE, data, len, err);
 written:
 	free(pdf);
 	free(json);

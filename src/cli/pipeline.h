@@ -3,8 +3,11 @@
  * Everything a mission's outputs depend on is in its arguments (the shared
  * read-only environment and the mission path), so `build` can compile
  * missions in parallel.  Nothing is written unless the mission is valid,
- * and every file is written atomically (temp + rename): an interrupted or
- * failed compile never leaves a truncated file or destroys a good one.
+ * and the outputs of a mission are replaced as one set (fsfolder.h): an
+ * interrupted or failed compile never leaves a truncated file, a mix of
+ * old and new files, or destroys a good set.  A stamp in the set records
+ * the fingerprint of the inputs and the SHA-256 of every output, so a set
+ * is "up to date" only while its files are the ones the stamp vouches for.
  */
 #ifndef AEROEVAL_PIPELINE_H
 #define AEROEVAL_PIPELINE_H
@@ -22,12 +25,20 @@ enum pipeline_status {
 	PIPE_FEASIBLE = 0,    /* compiled, every design feasible */
 	PIPE_INFEASIBLE = 1,  /* compiled, outputs say why it is infeasible */
 	PIPE_REJECTED = 2,    /* bad input: nothing written */
-	PIPE_INTERNAL = 3     /* internal error: nothing (more) written */
+	PIPE_INTERNAL = 3,    /* internal error: nothing written */
+	PIPE_UNWRITTEN = 4    /* a file-system problem (read-only, full disk, a
+	                       * link or FIFO in the way): nothing changed;
+	                       * exit status 2 like bad input */
 };
 
+/* The stamp file in DIR/<name>/ and its first line. */
+#define PIPELINE_STAMP ".aeroeval-stamp"
+#define PIPELINE_STAMP_MAGIC "aeroeval-stamp 2\n"
+
 struct pipeline_opts {
-	const char *out_dir;          /* DIR of DIR/<name>/ */
+	const char *out_dir;          /* DIR of DIR/<name>/; must exist */
 	const struct template *tpl;   /* dossier template (NULL: no dossier) */
+	double lock_wait_s;           /* how long to wait for another writer */
 };
 
 /* Solve the mission at path into *r (callers own r, large: allocate it).
@@ -38,12 +49,27 @@ enum pipeline_status pipeline_solve(const struct cli_env *env, const char *path,
                                     struct solve_result *r, FILE *err,
                                     unsigned char **bytes, size_t *n_bytes);
 
-/* Compile path into out_dir/<name>/{result.json,bom.csv,dossier.pdf}. */
+/* Compile path into out_dir/<name>/{result.json,bom.csv,dossier.pdf} and,
+ * when fp is not NULL or "", a stamp vouching for them with fingerprint fp
+ * (the caller's digest of every input).  The name is checked before the
+ * solve; a file-system problem is one line naming the path, PIPE_UNWRITTEN. */
 enum pipeline_status pipeline_build(const struct cli_env *env,
                                     const struct pipeline_opts *o,
-                                    const char *path, FILE *err);
+                                    const char *path, const char *fp, FILE *err);
 
-/* The output folder name of a mission path, or -1 when unsafe. */
+/* 0 (feasible) or 1 (infeasible) when out_dir/name holds a whole set whose
+ * stamp has fingerprint fp and whose files all have the SHA-256 the stamp
+ * records; -1 otherwise, also when another build holds the folder (it is
+ * never waited for) or anything is odd (pipeline_build() will say what).
+ * Removes the folder's stale temporaries on the way. */
+int pipeline_current(const struct pipeline_opts *o, const char *name, const char *fp);
+
+/* Removes the stale temporaries of out_dir/name (fsfolder_clean()) unless
+ * another build holds the folder; for a worker that was killed. */
+void pipeline_clean(const struct pipeline_opts *o, const char *name);
+
+/* The output folder name of a mission path; -1 when unsafe, -2 when longer
+ * than FSOUT_NAME_MAX. */
 int pipeline_name(const char *path, char *out, size_t n);
 
 #endif

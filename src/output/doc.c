@@ -1,16 +1,14 @@
 /* doc.c — the dossier document: flow layout over libharu (see doc.h). */
 #include "output/doc.h"
 
-#include <errno.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include <hpdf.h>
-#include <hpdf_namedict.h>   /* internals: rename the attachment key */
+#include <hpdf_namedict.h>   /* internals: the attachment's name tree */
 
 #include "util/xalloc.h"
 
@@ -66,8 +64,26 @@ doc_fail(struct doc *d, const char *fmt, ...)
 static void
 on_hpdf_error(HPDF_STATUS error_no, HPDF_STATUS detail_no, void *user)
 {
-	doc_fail(user, "libharu error 0x%04X (detail %u)", (unsigned)error_no,
-	         (unsigned)detail_no);
+	if (error_no == HPDF_FAILD_TO_ALLOC_MEM)  /* hpdf_alloc() exits first */
+		doc_fail(user, "out of memory");
+	else
+		doc_fail(user, "libharu error 0x%04X (detail %u)", (unsigned)error_no,
+		         (unsigned)detail_no);
+}
+
+/* libharu's allocator: through xmalloc, so running out of memory inside
+ * libharu is the one out-of-memory error of the program (exit 3) and not
+ * "libharu error 0x1015", and AEROEVAL_FAIL_ALLOC reaches it too. */
+static void *
+hpdf_alloc(HPDF_UINT size)
+{
+	return xmalloc(size);
+}
+
+static void
+hpdf_free(void *p)
+{
+	free(p);
 }
 
 static int
@@ -405,7 +421,7 @@ doc_alloc(const struct template *tpl, const struct doc_info *info)
 	d->top = d->page_h - tpl->margin_top_mm * PT_PER_MM;
 	d->bottom = tpl->margin_bottom_mm * PT_PER_MM;
 
-	d->pdf = HPDF_New(on_hpdf_error, d);
+	d->pdf = HPDF_NewEx(on_hpdf_error, hpdf_alloc, hpdf_free, 0, d);
 	if (d->pdf == NULL) {
 		doc_fail(d, "cannot create a PDF document");
 		return d;
@@ -890,28 +906,24 @@ doc_kv_table(struct doc *d, const char *const *kv, int n_pairs)
 
 /* ---- attachment --------------------------------------------------------------- */
 
-/* The EmbeddedFiles name tree also keys the file by the path libharu was
- * given (and the temp directory name is random): rename the key too, or two
- * builds would differ.  The tree's Names array holds (key, filespec) pairs;
- * keys are direct string objects. */
-static void
-rename_in_name_tree(struct doc *d, const char *path, const char *name)
+/* The catalogue's EmbeddedFiles name tree, made on first use. */
+static HPDF_NameTree
+embedded_files(struct doc *d)
 {
-	HPDF_NameDict nd = HPDF_Catalog_GetNames(d->pdf->catalog);
-	HPDF_NameTree nt = nd != NULL ? HPDF_NameDict_GetNameTree(nd, HPDF_NAME_EMBEDDED_FILES) : NULL;
-	HPDF_Array arr = nt != NULL ? HPDF_Dict_GetItem(nt, "Names", HPDF_OCLASS_ARRAY) : NULL;
-	int renamed = 0;
-	for (HPDF_UINT i = 0; arr != NULL && i < arr->list->count; i += 2) {
-		HPDF_String key = HPDF_List_ItemAt(arr->list, i);
-		if (key != NULL &&
-		    (key->header.obj_class & HPDF_OCLASS_ANY) == HPDF_OCLASS_STRING &&
-		    key->len == strlen(path) && memcmp(key->value, path, key->len) == 0) {
-			HPDF_String_SetValue(key, name);
-			renamed = 1;
-		}
+	HPDF_NameDict names = HPDF_Catalog_GetNames(d->pdf->catalog);
+	if (names == NULL) {
+		names = HPDF_NameDict_New(d->pdf->mmgr, d->pdf->xref);
+		if (names == NULL || HPDF_Catalog_SetNames(d->pdf->catalog, names) != HPDF_OK)
+			return NULL;
 	}
-	if (!renamed)
-		doc_fail(d, "attachment: name tree entry for %s not found", name);
+	HPDF_NameTree tree = HPDF_NameDict_GetNameTree(names, HPDF_NAME_EMBEDDED_FILES);
+	if (tree == NULL) {
+		tree = HPDF_NameTree_New(d->pdf->mmgr, d->pdf->xref);
+		if (tree == NULL
+		    || HPDF_NameDict_SetNameTree(names, HPDF_NAME_EMBEDDED_FILES, tree) != HPDF_OK)
+			return NULL;
+	}
+	return tree;
 }
 
 int
@@ -919,40 +931,42 @@ doc_attach(struct doc *d, const char *name, const void *data, size_t n)
 {
 	if (failed(d))
 		return -1;
+	/* 255: the longest file name a reader can save the attachment as. */
 	if (name == NULL || name[0] == '\0' || strchr(name, '/') != NULL ||
-	    strcmp(name, ".") == 0 || strcmp(name, "..") == 0 || strlen(name) > 200) {
+	    strcmp(name, ".") == 0 || strcmp(name, "..") == 0 || strlen(name) > 255) {
 		doc_fail(d, "attachment name must be a bare file name");
 		return -1;
 	}
-	/* libharu attaches by path only and stores the path it was given
-	 * (STACK.md §2b): write the bytes to a private temp directory, attach,
-	 * then replace the stored name with the bare one.  libharu keeps the
-	 * file open and reads it at save time, so it is unlinked right away. */
-	const char *tmp = getenv("TMPDIR");
-	char dir[512], path[768];
-	snprintf(dir, sizeof dir, "%s/aeroeval-XXXXXX", tmp != NULL && tmp[0] != '\0' ? tmp : "/tmp");
-	if (mkdtemp(dir) == NULL) {
-		doc_fail(d, "attachment: cannot create a temp directory: %s", strerror(errno));
+	/* libharu attaches only a file it reads from disk by path, so the
+	 * file specification (PDF 1.7 §7.11.3-4) is built here from memory:
+	 * no temporary file, nothing written outside the output folder, and
+	 * TMPDIR plays no part.  The spec dictionary is an indirect object
+	 * keyed by the bare name in the EmbeddedFiles tree; its /EF entry
+	 * holds the compressed stream of the bytes. */
+	HPDF_MMgr mm = d->pdf->mmgr;
+	HPDF_NameTree tree = embedded_files(d);
+	HPDF_Dict spec = tree != NULL ? HPDF_Dict_New(mm) : NULL;
+	if (spec == NULL || HPDF_Xref_Add(d->pdf->xref, spec) != HPDF_OK) {
+		doc_fail(d, "attachment: cannot create the file specification");
 		return -1;
 	}
-	snprintf(path, sizeof path, "%s/%s", dir, name);
-	FILE *f = fopen(path, "wb");
-	int ok = f != NULL && fwrite(data, 1, n, f) == n;
-	if (f != NULL && fclose(f) != 0)
-		ok = 0;
-	HPDF_EmbeddedFile ef = ok ? HPDF_AttachFile(d->pdf, path) : NULL;
-	if (ok && ef != NULL) {
-		HPDF_String s = HPDF_Dict_GetItem(ef, "F", HPDF_OCLASS_STRING);
-		if (s == NULL || HPDF_String_SetValue(s, name) != HPDF_OK)
-			doc_fail(d, "attachment: cannot set the file name");
-		HPDF_Dict_AddName(ef, "Type", "Filespec");
-		HPDF_Dict_Add(ef, "UF", HPDF_String_New(ef->mmgr, name, NULL));
-		rename_in_name_tree(d, path, name);
-	} else {
-		doc_fail(d, "attachment: cannot write %s", path);
+	HPDF_Dict file = HPDF_DictStream_New(mm, d->pdf->xref);
+	HPDF_Dict ef = HPDF_Dict_New(mm);
+	if (file == NULL || ef == NULL) {
+		doc_fail(d, "attachment: cannot create the embedded file");
+		return -1;
 	}
-	unlink(path);
-	rmdir(dir);
+	file->filter = HPDF_STREAM_FILTER_FLATE_DECODE;
+	HPDF_STATUS st = HPDF_Stream_Write(file->stream, data, (HPDF_UINT)n);
+	st += HPDF_Dict_AddName(file, "Type", "EmbeddedFile");
+	st += HPDF_Dict_Add(ef, "F", file);
+	st += HPDF_Dict_AddName(spec, "Type", "Filespec");
+	st += HPDF_Dict_Add(spec, "F", HPDF_String_New(mm, name, NULL));
+	st += HPDF_Dict_Add(spec, "UF", HPDF_String_New(mm, name, NULL));
+	st += HPDF_Dict_Add(spec, "EF", ef);
+	st += HPDF_NameTree_Add(tree, HPDF_String_New(mm, name, NULL), spec);
+	if (st != HPDF_OK)
+		doc_fail(d, "attachment: cannot embed %s", name);
 	return failed(d) ? -1 : 0;
 }
 

@@ -1,6 +1,7 @@
 /* fsout.c — atomic file output, mkdir -p, whole-file reads, deterministic
  * dossier dates and safe output names (see fsout.h). */
 #include "output/fsout.h"
+#include "output/fsout_int.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -43,9 +44,17 @@ fsout_fault_reset(void)
 	atomic_store(&write_count, 0);
 }
 
-/* True when this write is the one AEROEVAL_FAIL_WRITE asks to fail. */
-static int
-fault_due(void)
+/* The errno names AEROEVAL_FAIL_WRITE=N:NAME may ask for. */
+static const struct {
+	const char *name;
+	int code;
+} fault_errnos[] = {
+	{ "ENOSPC", ENOSPC }, { "EIO", EIO }, { "EDQUOT", EDQUOT },
+	{ "EROFS", EROFS }, { "EFBIG", EFBIG },
+};
+
+int
+fsout_fault_take(void)
 {
 	unsigned long k = atomic_fetch_add(&write_count, 1) + 1;
 	const char *e = getenv("AEROEVAL_FAIL_WRITE");
@@ -53,13 +62,32 @@ fault_due(void)
 		return 0;
 	char *end;
 	unsigned long want = strtoul(e, &end, 10);
-	return *end == '\0' && want == k;
+	if (want != k)
+		return 0;
+	if (*end == '\0')
+		return ENOSPC;
+	for (size_t i = 0; *end == ':' && i < sizeof fault_errnos / sizeof fault_errnos[0]; i++)
+		if (strcmp(end + 1, fault_errnos[i].name) == 0)
+			return fault_errnos[i].code;
+	return 0;
 }
 
-/* write(2) until everything is out; EINTR and short writes are retried. */
-static int
-write_all(int fd, const unsigned char *p, size_t n)
+void
+fsout_test_delay(void)
 {
+	const char *e = getenv("AEROEVAL_TEST_WRITE_DELAY_MS");
+	long ms = e != NULL ? strtol(e, NULL, 10) : 0;
+	if (ms > 0 && ms <= 10000) {
+		struct timespec ts = { ms / 1000, (ms % 1000) * 1000000L };
+		while (nanosleep(&ts, &ts) != 0 && errno == EINTR)
+			;
+	}
+}
+
+int
+fsout_write_all(int fd, const void *data, size_t n)
+{
+	const unsigned char *p = data;
 	while (n > 0) {
 		ssize_t k = write(fd, p, n);
 		if (k < 0) {
@@ -96,7 +124,7 @@ fsout_write_atomic(const char *path, const void *data, size_t n,
                    char *err, size_t errlen)
 {
 	struct strbuf dir = STRBUF_INIT, tmp = STRBUF_INIT;
-	int fd = -1, rc = -1, inject = fault_due();
+	int fd = -1, rc = -1, inject = fsout_fault_take();
 	const char *slash = strrchr(path, '/');
 	const char *base = slash ? slash + 1 : path;
 
@@ -132,13 +160,13 @@ fsout_write_atomic(const char *path, const void *data, size_t n,
 		goto fail;
 	}
 	if (inject) {
-		(void)write_all(fd, data, n / 2);
-		errno = ENOSPC;
+		(void)fsout_write_all(fd, data, n / 2);
+		errno = inject;
 		set_err(err, errlen, "%s: write failed: %s (AEROEVAL_FAIL_WRITE)",
 		        strbuf_str(&tmp), strerror(errno));
 		goto fail;
 	}
-	if (write_all(fd, data, n) < 0) {
+	if (fsout_write_all(fd, data, n) < 0) {
 		set_err(err, errlen, "%s: write failed: %s", strbuf_str(&tmp), strerror(errno));
 		goto fail;
 	}
@@ -329,8 +357,10 @@ fsout_safe_name(const char *mission_path, char *out, size_t n)
 	size_t len = strlen(base);
 	if (len >= 5 && strcmp(base + len - 5, ".json") == 0)
 		len -= 5;
-	if (len == 0 || len >= n)
+	if (len == 0)
 		return -1;
+	if (len > FSOUT_NAME_MAX || len >= n)
+		return -2;
 	if ((len == 1 && base[0] == '.') || (len == 2 && base[0] == '.' && base[1] == '.'))
 		return -1;
 	for (size_t i = 0; i < len; i++) {

@@ -7,10 +7,15 @@
  * trailing newline, of the form "PATH: what failed: strerror", ready to be
  * prefixed with "error: " by the caller.  Nothing here prints.
  *
- * Test hook: with AEROEVAL_FAIL_WRITE=N in the environment, the N-th call of
- * fsout_write_atomic() in the process (counting from 1) writes part of its
- * temporary file and then fails as if the disk were full, so tests can prove
- * that the previous output survives and no temporary file is left behind.
+ * Test hooks: with AEROEVAL_FAIL_WRITE=N in the environment, the N-th file
+ * write of the process (counting from 1: fsout_write_atomic() and
+ * fsfolder_put() calls) writes part of its temporary file and then fails as
+ * if the disk were full (ENOSPC), or with the error NAME of N:NAME (ENOSPC,
+ * EIO, EDQUOT, EROFS, EFBIG), so tests can prove that the previous output
+ * survives and no temporary file is left behind.  AEROEVAL_TEST_WRITE_DELAY_MS=T
+ * makes fsfolder sleep T ms before each file and before the swap, so a test
+ * can kill a build while it writes; AEROEVAL_TEST_NO_EXCHANGE (any value)
+ * makes fsfolder swap by two renames, as where renameat2 is missing.
  */
 #ifndef AEROEVAL_FSOUT_H
 #define AEROEVAL_FSOUT_H
@@ -50,12 +55,17 @@ enum fsout_date_source {
 int fsout_resolve_date(const char *report_date, const char *mission_path,
                        char out[11], char *err, size_t errlen);
 
+/* Longest output folder name: with ".NAME.tmp.PID.SEQ" (fsfolder.h) it
+ * still fits the 255 bytes a file name may have. */
+#define FSOUT_NAME_MAX 200
+
 /* The output folder name for a mission file: its base name (after the last
  * '/') without a final ".json".  Rejected (-1, out = "") when that is empty,
- * "." or "..", contains a byte outside [A-Za-z0-9._-], or does not fit in
- * n bytes — so the name is always one harmless path component and a write
- * under DIR/<name>/ cannot leave DIR.  "../../etc.json" gives "etc"; the
- * directories of the mission path never reach the output path. */
+ * "." or "..", or contains a byte outside [A-Za-z0-9._-], so the name is
+ * always one harmless path component and a write under DIR/<name>/ cannot
+ * leave DIR; -2 (out = "") when it is longer than FSOUT_NAME_MAX bytes or
+ * does not fit in n.  "../../etc.json" gives "etc"; the directories of the
+ * mission path never reach the output path. */
 int fsout_safe_name(const char *mission_path, char *out, size_t n);
 
 /* Test support only: restarts the AEROEVAL_FAIL_WRITE count at zero so a

@@ -1601,6 +1601,8 @@ plot_render(const struct plot *p, const struct plot_render *r)
 		}
 	}
 	free(L);
+	if (cairo_status(c.cr) == CAIRO_STATUS_NO_MEMORY)
+		xalloc_die(0);  /* the one out-of-memory error, not a failed figure */
 	if (cairo_status(c.cr) != CAIRO_STATUS_SUCCESS)
 		c.failed = 1;
 	cairo_destroy(c.cr);

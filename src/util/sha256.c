@@ -1,7 +1,9 @@
 /* sha256.c — SHA-256 from FIPS 180-4 §4.1.2, §4.2.2, §5.1.1, §6.2. */
 #include "util/sha256.h"
 
+#include <errno.h>
 #include <string.h>
+#include <unistd.h>
 
 /* §4.2.2: the first 32 bits of the fractional parts of the cube roots of
  * the first 64 primes. */
@@ -126,18 +128,47 @@ sha256_final(struct sha256_ctx *c, unsigned char out[SHA256_DIGEST_LEN])
 	}
 }
 
+int
+sha256_update_fd(struct sha256_ctx *c, int fd, uint64_t *n_read)
+{
+	/* 64 KiB: large enough that read(2) calls cost nothing next to the
+	 * compression, small enough for any stack. */
+	unsigned char buf[1 << 16];
+	uint64_t total = 0;
+	for (;;) {
+		ssize_t k = read(fd, buf, sizeof buf);
+		if (k < 0 && errno == EINTR)
+			continue;
+		if (k < 0)
+			return -1;
+		if (k == 0)
+			break;
+		sha256_update(c, buf, (size_t)k);
+		total += (uint64_t)k;
+	}
+	if (n_read != NULL)
+		*n_read = total;
+	return 0;
+}
+
 void
-sha256_hex(const void *data, size_t n, char out[SHA256_HEX_LEN])
+sha256_to_hex(const unsigned char d[SHA256_DIGEST_LEN], char out[SHA256_HEX_LEN])
 {
 	static const char hex[] = "0123456789abcdef";
-	struct sha256_ctx c;
-	unsigned char d[SHA256_DIGEST_LEN];
-	sha256_init(&c);
-	sha256_update(&c, data, n);
-	sha256_final(&c, d);
 	for (int i = 0; i < SHA256_DIGEST_LEN; i++) {
 		out[2 * i] = hex[d[i] >> 4];
 		out[2 * i + 1] = hex[d[i] & 15];
 	}
 	out[64] = '\0';
+}
+
+void
+sha256_hex(const void *data, size_t n, char out[SHA256_HEX_LEN])
+{
+	struct sha256_ctx c;
+	unsigned char d[SHA256_DIGEST_LEN];
+	sha256_init(&c);
+	sha256_update(&c, data, n);
+	sha256_final(&c, d);
+	sha256_to_hex(d, out);
 }

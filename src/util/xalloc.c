@@ -10,8 +10,8 @@
  * only set by tests, so -j N workers (separate processes) are unaffected. */
 static long fail_countdown = -2; /* -2 unread, -1 disabled */
 
-static void
-die_oom(size_t n)
+void
+xalloc_die(size_t n)
 {
 	fprintf(stderr, "aeroeval: error: out of memory (%zu bytes)\n", n);
 	exit(3);
@@ -25,7 +25,7 @@ maybe_inject_failure(size_t n)
 		fail_countdown = (e != NULL && *e != '\0') ? strtol(e, NULL, 10) : -1;
 	}
 	if (fail_countdown > 0 && --fail_countdown == 0)
-		die_oom(n);
+		xalloc_die(n);
 }
 
 void *
@@ -34,7 +34,7 @@ xmalloc(size_t n)
 	maybe_inject_failure(n);
 	void *p = malloc(n ? n : 1);
 	if (p == NULL)
-		die_oom(n);
+		xalloc_die(n);
 	return p;
 }
 
@@ -44,7 +44,7 @@ xcalloc(size_t n, size_t size)
 	maybe_inject_failure(n * size);
 	void *p = calloc(n ? n : 1, size ? size : 1);
 	if (p == NULL)
-		die_oom(n * size);
+		xalloc_die(n * size);
 	return p;
 }
 
@@ -54,7 +54,7 @@ xrealloc(void *p, size_t n)
 	maybe_inject_failure(n);
 	void *q = realloc(p, n ? n : 1);
 	if (q == NULL)
-		die_oom(n);
+		xalloc_die(n);
 	return q;
 }
 

@@ -16,4 +16,9 @@ void *xcalloc(size_t n, size_t size);
 void *xrealloc(void *p, size_t n);
 char *xstrdup(const char *s);
 
+/* Prints the out-of-memory line (n bytes wanted, 0 if unknown) and exits
+ * with status 3: for a library that reports exhaustion as a status (cairo),
+ * so every out-of-memory reads the same. */
+void xalloc_die(size_t n) __attribute__((noreturn));
+
 #endif
