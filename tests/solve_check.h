@@ -32,8 +32,10 @@ static const char *
 solve_check(int engine_rc, const struct solve_result *r, char *detail, size_t n)
 {
 	snprintf(detail, n, "%s", "");
-	if (engine_rc != 0)
-		return "engine_solve caught a non-finite value";
+	if (engine_rc != 0) {
+		snprintf(detail, n, "%.150s", r->internal_error);
+		return "engine_solve reported an internal error";
+	}
 	struct result_json_faults jf;
 	char *json = result_json_render_checked(r, "check", &jf);
 	free(json);

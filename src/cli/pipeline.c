@@ -62,7 +62,7 @@ pipeline_solve(const struct cli_env *env, const char *path,
 		free(buf);
 	}
 	if (rc != 0) {
-		fprintf(err, "%s: internal error: a non-finite value reached the result\n", path);
+		fprintf(err, "%s: internal error: %s\n", path, r->internal_error);
 		return PIPE_INTERNAL;
 	}
 	return r->feasible ? PIPE_FEASIBLE : PIPE_INFEASIBLE;

@@ -55,3 +55,12 @@ res_rationale(struct solve_result *r, const char *fmt, ...)
 	vsnprintf(r->rationale[r->n_rationale++], RES_TEXT, fmt, ap);
 	va_end(ap);
 }
+
+const struct res_run *
+res_record(const struct solve_result *r, bool *buildable)
+{
+	bool real = r->parts_selected && r->closed.ran;
+	if (buildable != NULL)
+		*buildable = real;
+	return real ? &r->closed : &r->custom;
+}

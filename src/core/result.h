@@ -153,6 +153,8 @@ struct res_perf {
 	double max_climb_ms;      /* vertical, at full throttle */
 	double max_tilt_deg;      /* bank holding altitude at full throttle */
 	double spare_payload_kg;  /* more payload before T/W falls below the target */
+	double throttle_needed;   /* the highest throttle the mission needs
+	                             (above 1: out of reach) */
 	int motor_out_rotors;     /* rotors counted with one out (0: a quad) */
 	double motor_out_ratio;   /* their full thrust over the weight */
 	bool motor_out_holds;     /* >= 1: it holds altitude and lands */
@@ -335,6 +337,7 @@ struct solve_result {
 	struct res_violation violations[RES_MAX_VIOLATIONS];
 	int n_rationale;
 	char rationale[RES_MAX_RATIONALE][RES_TEXT];
+	char internal_error[RES_TEXT]; /* what broke when the solve returns 3 */
 };
 
 /* The tightest passing check of a run that is not at its limit by
@@ -355,5 +358,11 @@ void res_run_clear_untraced(struct res_run *run);
  * NULL; a full list keeps its first RES_MAX_RATIONALE lines). */
 void res_rationale(struct solve_result *r, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));
+
+/* The design of record (PRODUCT "The design of record"): the aircraft
+ * the bill of materials builds when the parts search closed one (feasible
+ * or not: its checks say), else the continuous custom design, which
+ * *buildable (may be NULL) then says is not buildable. */
+const struct res_run *res_record(const struct solve_result *r, bool *buildable);
 
 #endif

@@ -9,6 +9,7 @@
 
 #include "physics/aero.h"
 #include "sizing/feasibility.h"
+#include "engine/invariants.h"
 #include "parts/parts.h"
 #include "util/strbuf.h"
 #include "physics/structure.h"
@@ -503,6 +504,12 @@ engine_solve(const struct mission_spec *spec, const struct model_data *md,
 	    && parts_select(&r->mission, &p, md, cat, r) != 0)
 		rc = 3;
 	r->feasible = r->n_violations == 0 && r->custom.ran && r->custom.feasible;
+	/* Nothing leaves the engine that breaks the physics (invariants.h). */
+	if (rc == 0)
+		rc = invariants_check(r, r->internal_error, sizeof r->internal_error);
+	else if (r->internal_error[0] == '\0')
+		snprintf(r->internal_error, sizeof r->internal_error,
+		    "a non-finite value reached the result");
 	return rc;
 }
 

@@ -333,6 +333,17 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 		violate(r, k, "parts", "THRUST", fx, msg);
 	}
 
+	k = feasibility_add_check(o, "Throttle the mission needs (real drive)", "%",
+	    100.0 * pf->throttle_needed, 100.0, true);
+	fix(r, f1, "A motor of higher KV or a larger propeller");
+	fix(r, f2, "Add series cells");
+	fx[2] = NULL;
+	if (k && !k->pass && !r->terse)
+		snprintf(msg, sizeof msg, "The mission needs %.0f %% throttle: more "
+		    "voltage than the pack gives.", 100.0 * pf->throttle_needed);
+	violate(r, k, "parts", "THROTTLE", fx, msg);
+	fx[2] = f3;
+
 	/* Ratings of the real parts. */
 	k = feasibility_add_check(o, "Motor current at full throttle", "A",
 	    full->motor_current_a, c->motor_max_current_a, true);

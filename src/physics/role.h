@@ -20,4 +20,9 @@ struct role_shedding {
 /* Payload mass carried at time t_s. */
 double role_payload_at(const struct role_shedding *s, double t_s);
 
+/* The payload's time average over [t0_s, t1_s] (exact: a drop is a step,
+ * a spray a ramp): the mass a phase's table is evaluated at. */
+double role_payload_mean(const struct role_shedding *s, double t0_s,
+                         double t1_s);
+
 #endif

@@ -211,14 +211,24 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	feasibility_add_check(o, "Mass-growth Lipschitz constant", "", o->lipschitz, 1.0, true);
 	feasibility_add_check(o, "Takeoff mass", "kg", o->mass.total_kg, SIZING_RUNAWAY_KG, true);
 
-	/* Mission flown on the battery (discharge simulation). */
+	/* The mission, down to the reserve: the pack must land with the state
+	 * of charge the 20 % capacity margin leaves (paper §II-D).  A free
+	 * battery is sized to land on it exactly, within the discharge's
+	 * integration accuracy (SIZING_RESERVE_TOL). */
 	double need = 0.0, flown = 0.0;
 	for (int i = 0; i < PHASE_MAX; i++)
 		need += o->approved_time_s[i];
 	flown = o->n_trace > 0 ? o->trace[o->n_trace - 1].t_s : 0.0;
-	c = feasibility_add_check(o, "Mission flown on the battery", "s", flown, need * 0.999, false);
-	if (c)
-		c->sized = !p->capacity_locked;
+	bool completed = flown >= need * 0.999;
+	bool sized = !p->capacity_locked;
+	c = feasibility_add_check(o, "State of charge at landing (reserve)", "%",
+	    completed ? 100.0 * o->end_soc : 0.0, 100.0 * o->reserve_soc, false);
+	if (c) {
+		c->sized = sized;
+		if (sized && completed
+		    && o->end_soc >= o->reserve_soc - SIZING_RESERVE_TOL)
+			c->pass = true;
+	}
 	if (c && !c->pass && st != SIZING_RUNAWAY) {
 		if (p->capacity_locked) {
 			fix_text(r, f1, "Increase locks.locked_capacity_mah above %.0f mAh",
@@ -230,9 +240,15 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 			fix_text(r, f2, "Shorten the mission or lighten the payload");
 			fix_text(r, f3, "Choose a lower-resistance battery_chemistry");
 		}
-		feasibility_violation(r, run, "discharge", "MISSION_NOT_FLOWN", fx,
-		    "The discharge simulation stopped at %.0f s of %.0f s: %s.",
-		    flown, need, o->termination);
+		if (!completed)
+			feasibility_violation(r, run, "discharge", "MISSION_NOT_FLOWN", fx,
+			    "The discharge simulation stopped at %.0f s of %.0f s: %s.",
+			    flown, need, o->termination);
+		else
+			feasibility_violation(r, run, "discharge", "RESERVE", fx,
+			    "The pack lands at %.1f %% state of charge, below the "
+			    "%.1f %% reserve.", 100.0 * o->end_soc,
+			    100.0 * o->reserve_soc);
 	}
 
 	/* Propulsion geometry. */

@@ -161,6 +161,10 @@ op_from(const struct perf_ctx *x, const struct mission_power *mp,
 	op->throttle = v_b > 0.0 ? op->motor_voltage_v / v_b : 0.0;
 	op->c_load = i_b / x->c->capacity_ah;
 	op->electrical_w = mp->electrical_w;
+	/* A point that needs more voltage than the pack gives is not one the
+	 * design can fly: kept for the checks, marked unreachable. */
+	if (op->throttle > 1.0)
+		op->valid = false;
 }
 
 /* A phase's operating point at mass_kg with its steady winding temperature. */
@@ -372,7 +376,8 @@ record_craft(const struct perf_ctx *x, struct res_run *run)
 }
 
 /* Each phase: its duration and what the discharge drew, its operating
- * point at the mass it starts with. */
+ * point at its time-averaged mass (a drop or a spray lightens it along the
+ * phase; the mean power, convex in mass, is then at least that point's). */
 static void
 record_phases(struct perf_ctx *x, double gamma, double v_fwd_ms,
               const struct discharge_out *dis, struct res_run *run)
@@ -391,7 +396,8 @@ record_phases(struct perf_ctx *x, double gamma, double v_fwd_ms,
 		double v_f = i == PHASE_FORWARD ? v_fwd_ms : 0.0;
 		struct mission_power mp;
 		struct res_op op;
-		phase_op(x, dry + role_payload_at(&shed, t0), v_c, v_f, &mp, &op);
+		phase_op(x, dry + role_payload_mean(&shed, t0, t0 + d[i]), v_c, v_f,
+		    &mp, &op);
 		run->approved_time_s[i] = d[i];
 		run->flight_time_s += d[i];
 		ph->duration_s = d[i];
@@ -403,7 +409,10 @@ record_phases(struct perf_ctx *x, double gamma, double v_fwd_ms,
 		ph->current_a = dis->phase_mean_current_a[i];
 		ph->energy_wh = dis->phase_energy_wh[i];
 		ph->rpm = op.rpm;
-		ph->throttle = op.throttle;
+		/* Saturated when out of reach (the checks say so). */
+		ph->throttle = op.throttle < 1.0 ? op.throttle : 1.0;
+		if (d[i] > 0.0 && op.throttle > run->perf.throttle_needed)
+			run->perf.throttle_needed = op.throttle;
 		ph->pitch_deg = mp.pitch_deg;
 		ph->tip_mach = mp.rotor.tip_mach;
 		t0 += d[i];
@@ -430,6 +439,7 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 	settle_hover(&x, mass);
 	struct mission_power mp;
 	phase_op(&x, mass, 0.0, 0.0, &mp, &pf->op[OP_HOVER]);
+	pf->throttle_needed = pf->op[OP_HOVER].throttle;
 	/* A drive that cannot turn on this pack (the voltage collapses under
 	 * the current) gives no full-throttle point: no thrust to spare, which
 	 * the checks then fail. */
@@ -473,7 +483,7 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 	const struct res_op *hov = &pf->op[OP_HOVER];
 	run->thrust_to_weight = (double)p->n_rotors * full->thrust_n
 	    / (mass * G0_M_S2);
-	run->hover_throttle = hov->throttle;
+	run->hover_throttle = hov->throttle < 1.0 ? hov->throttle : 1.0;
 	run->rpm_hover = hov->rpm;
 	run->rpm_peak = full->rpm;
 	run->tip_mach_peak = full->tip_mach;

@@ -796,9 +796,21 @@ record_run(const struct sizing_params *p, struct eval *e,
 	out->battery_power_binds = e->power_binds;
 	out->time_scale = ls->gamma_time;
 	out->flight_time_s = 0.0;
+	/* Each phase's table at its time-averaged mass: a drop or a spray
+	 * lightens the aircraft along it, and its mean power (the discharge's)
+	 * is that of the mean mass or more (power is convex in mass), so
+	 * shaft and electrical power stay in order. */
+	struct role_shedding shed;
+	sizing_shedding(p, ls->gamma_time, &shed);
+	double dry = e->mass_kg - p->payload_kg, t0 = 0.0;
 	for (int i = 0; i < PHASE_MAX; i++) {
 		struct res_phase *r = &out->phase[i];
-		const struct mission_power *mp = &e->ph[i];
+		struct mission_power mean_mp;
+		mission_power(&e->model, dry + role_payload_mean(&shed, t0, t0 + d[i]),
+		    i == PHASE_CLIMB ? p->v_climb_ms : 0.0,
+		    i == PHASE_FORWARD ? e->v_fwd_ms : 0.0, &mean_mp);
+		const struct mission_power *mp = &mean_mp;
+		t0 += d[i];
 		out->approved_time_s[i] = d[i];
 		out->flight_time_s += d[i];
 		r->duration_s = d[i];

@@ -26,6 +26,8 @@
 #define SIZING_RELAX_ALPHA   0.5    /* capacity under-relaxation α */
 #define SIZING_CAP_MARGIN    1.2    /* capacity = 1.2 × charge the mission used */
 #define SIZING_RATCHET       1.05   /* capacity >= 1.05 × largest failed one */
+#define SIZING_RESERVE_TOL   0.002  /* a sized battery lands on its reserve to
+                                       the discharge's integration accuracy */
 #define SIZING_RUNAWAY_KG    150.0  /* runaway-divergence flag, kg */
 #define SIZING_GAMMA_MIN     0.05   /* goal relaxation floor */
 #define SIZING_MARGIN_BISECT 8      /* bisection steps of the thrust relaxation */
