@@ -304,23 +304,23 @@ report_bad_input_should_fail_with_a_message(void **state)
 }
 
 static void
-report_eu_class_should_follow_the_mass_limits(void **state)
+res_eu_class_should_follow_the_mass_limits(void **state)
 {
 	(void)state;
-	assert_string_equal(report_eu_class(0.249), "C0");
-	assert_string_equal(report_eu_class(0.25), "C1");
-	assert_string_equal(report_eu_class(0.899), "C1");
-	assert_string_equal(report_eu_class(3.999), "C2");
-	assert_string_equal(report_eu_class(4.0), "C3/C4");
-	assert_string_equal(report_eu_class(24.99), "C3/C4");
-	assert_string_equal(report_eu_class(25.0), "specific");
+	assert_string_equal(res_eu_class(0.249), "C0");
+	assert_string_equal(res_eu_class(0.25), "C1");
+	assert_string_equal(res_eu_class(0.899), "C1");
+	assert_string_equal(res_eu_class(3.999), "C2");
+	assert_string_equal(res_eu_class(4.0), "C3/C4");
+	assert_string_equal(res_eu_class(24.99), "C3/C4");
+	assert_string_equal(res_eu_class(25.0), "specific");
 }
 
 int
 main(void)
 {
 	const struct CMUnitTest tests[] = {
-		cmocka_unit_test(report_eu_class_should_follow_the_mass_limits),
+		cmocka_unit_test(res_eu_class_should_follow_the_mass_limits),
 		cmocka_unit_test(report_bad_input_should_fail_with_a_message),
 		cmocka_unit_test(report_every_example_should_render_reproducibly),
 		cmocka_unit_test(report_infeasible_design_should_still_get_a_full_dossier),

@@ -64,3 +64,17 @@ res_record(const struct solve_result *r, bool *buildable)
 		*buildable = real;
 	return real ? &r->closed : &r->custom;
 }
+
+const char *
+res_eu_class(double mass_kg)
+{
+	if (mass_kg < RES_EU_C0_KG)
+		return "C0";
+	if (mass_kg < RES_EU_C1_KG)
+		return "C1";
+	if (mass_kg < RES_EU_C2_KG)
+		return "C2";
+	if (mass_kg < RES_EU_C3_KG)
+		return "C3/C4";
+	return "specific";
+}

@@ -365,4 +365,17 @@ void res_rationale(struct solve_result *r, const char *fmt, ...)
  * *buildable (may be NULL) then says is not buildable. */
 const struct res_run *res_record(const struct solve_result *r, bool *buildable);
 
+/* EU open-category class limits by takeoff mass (Reg. (EU) 2019/945), kg,
+ * and the US 14 CFR Part 107 small-UAS limit (55 lb). */
+#define RES_EU_C0_KG  0.25
+#define RES_EU_C1_KG  0.9
+#define RES_EU_C2_KG  4.0
+#define RES_EU_C3_KG  25.0
+#define RES_US_107_KG 24.948
+
+/* The EU open-category class a takeoff mass allows (informative: a class
+ * mark also needs the manufacturer's conformity): "C0" below 250 g, "C1"
+ * below 900 g, "C2" below 4 kg, "C3/C4" below 25 kg, else "specific". */
+const char *res_eu_class(double mass_kg);
+
 #endif

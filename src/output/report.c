@@ -27,13 +27,6 @@
 #define REP_GRAM_BELOW_KG 2.0
 /* A passing margin under this fraction is printed in the warning colour. */
 #define REP_TIGHT_MARGIN 0.05
-/* EU open-category class limits by takeoff mass (Reg. (EU) 2019/945), kg. */
-#define REP_EU_C0_KG 0.25
-#define REP_EU_C1_KG 0.9
-#define REP_EU_C2_KG 4.0
-#define REP_EU_C3_KG 25.0
-/* US 14 CFR Part 107: small UAS below 55 lb, kg. */
-#define REP_US_107_KG 24.948
 #define REP_KG_PER_LB 0.45359237
 
 /* ---- small helpers shared with report_figs.c ---------------------------- */
@@ -88,19 +81,6 @@ report_subheading(struct rep *rp, const char *title, double keep_pt)
 	doc_heading(rp->d, 2, title);
 }
 
-const char *
-report_eu_class(double mass_kg)
-{
-	if (mass_kg < REP_EU_C0_KG)
-		return "C0";
-	if (mass_kg < REP_EU_C1_KG)
-		return "C1";
-	if (mass_kg < REP_EU_C2_KG)
-		return "C2";
-	if (mass_kg < REP_EU_C3_KG)
-		return "C3/C4";
-	return "specific";
-}
 
 /* ---- local helpers ------------------------------------------------------- */
 
@@ -353,7 +333,7 @@ regulatory(struct rep *rp)
 	struct strbuf sb = STRBUF_INIT;
 	char b1[48], b3[48];
 	double m = rp->r->custom.mass.total_kg;
-	const char *eu = report_eu_class(m);
+	const char *eu = res_eu_class(m);
 	const char *items[3];
 	char *own[3];
 	if (strcmp(eu, "specific") == 0)
@@ -364,7 +344,7 @@ regulatory(struct rep *rp)
 		report_sfmt(&sb, "EU (Regulation 2019/945): a takeoff mass of %s kg falls within class %s by mass "
 		     "(C0 < 250 g, C1 < 900 g, C2 < 4 kg, C3/C4 < 25 kg).", report_num(b1, sizeof b1, m, 3), eu);
 	own[0] = xstrdup(strbuf_str(&sb));
-	if (m < REP_US_107_KG)
+	if (m < RES_US_107_KG)
 		report_sfmt(&sb, "US (14 CFR Part 107): %s kg (%s lb) is below the 55 lb (24.9 kg) small-UAS limit.",
 		     report_num(b1, sizeof b1, m, 2), report_num(b3, sizeof b3, m / REP_KG_PER_LB, 1));
 	else

@@ -57,9 +57,5 @@ struct report_input {
 int report_render(const struct report_input *in, unsigned char **pdf, size_t *n,
                   char *err, size_t errlen);
 
-/* The EU open-category class a takeoff mass allows (informative: a class
- * mark also needs the manufacturer's conformity): "C0" below 250 g, "C1"
- * below 900 g, "C2" below 4 kg, "C3/C4" below 25 kg, else "specific". */
-const char *report_eu_class(double mass_kg);
 
 #endif

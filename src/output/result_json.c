@@ -565,16 +565,26 @@ static void put_bom(struct jw *w, const struct solve_result *r);
  * result whose real-parts selection this run's design is (the custom and
  * BOM-closed runs), or NULL for a run that is not mapped to parts (the
  * baseline): its "selected" and "bom" are then null. */
+static void put_run_fields(struct jw *w, const struct res_run *run,
+                           const struct solve_result *parts);
+
 static void
 put_run(struct jw *w, const char *key, const struct res_run *run,
         const struct solve_result *parts)
 {
 	jw_obj(w, key);
+	put_run_fields(w, run, parts);
+	jw_close(w);
+}
+
+/* The fields of one run, into the object open in w. */
+static void
+put_run_fields(struct jw *w, const struct res_run *run,
+               const struct solve_result *parts)
+{
 	jw_bool(w, "ran", run->ran);
-	if (!run->ran) {
-		jw_close(w);
+	if (!run->ran)
 		return;
-	}
 	jw_bool(w, "feasible", run->feasible);
 	jw_bool(w, "converged", run->converged);
 	jw_int(w, "iterations", run->iterations);
@@ -669,6 +679,81 @@ put_run(struct jw *w, const char *key, const struct res_run *run,
 		jw_null(w, "selected");
 		jw_null(w, "bom");
 	}
+}
+
+/* One operating point of the real drive. */
+static void
+put_op(struct jw *w, int id, const struct res_op *op)
+{
+	jw_obj(w, NULL);
+	jw_lit(w, "point", res_op_name[id]);
+	jw_bool(w, "reachable", op->valid);
+	jw_num(w, "thrust_n", op->thrust_n);
+	jw_num(w, "rpm", op->rpm);
+	jw_num(w, "throttle", op->throttle < 1.0 ? op->throttle : 1.0);
+	jw_num(w, "motor_current_a", op->motor_current_a);
+	jw_num(w, "motor_voltage_v", op->motor_voltage_v);
+	jw_num(w, "motor_input_power_w", op->power_in_w);
+	jw_num(w, "shaft_power_w", op->power_shaft_w);
+	jw_num(w, "motor_efficiency", op->motor_efficiency);
+	jw_num(w, "grams_per_watt", op->g_per_w);
+	jw_num(w, "winding_temp_c", op->winding_temp_c);
+	jw_num(w, "tip_mach", op->tip_mach);
+	jw_num(w, "battery_current_a", op->battery_current_a);
+	jw_num(w, "battery_voltage_v", op->bus_voltage_v);
+	jw_num(w, "c_load", op->c_load);
+	jw_num(w, "electrical_power_w", op->electrical_w);
+	jw_close(w);
+}
+
+/* What the design on real parts can do: its operating points and figures. */
+static void
+put_perf(struct jw *w, const struct res_perf *pf)
+{
+	jw_arr(w, "operating_points");
+	for (int i = 0; i < OP_MAX; i++)
+		put_op(w, i, &pf->op[i]);
+	jw_close(w);
+	jw_obj(w, "performance");
+	jw_num(w, "hover_time_s", pf->hover_time_s);
+	jw_num(w, "mixed_time_s", pf->mixed_time_s);
+	jw_num(w, "full_throttle_time_s", pf->full_throttle_time_s);
+	jw_num(w, "max_speed_ms", pf->max_speed_ms);
+	jw_num(w, "max_climb_ms", pf->max_climb_ms);
+	jw_num(w, "max_tilt_deg", pf->max_tilt_deg);
+	jw_num(w, "spare_payload_kg", pf->spare_payload_kg);
+	jw_num(w, "throttle_needed", pf->throttle_needed);
+	jw_num(w, "landing_soc", pf->landing_soc);
+	if (pf->motor_out_rotors > 0) {
+		jw_obj(w, "motor_out");
+		jw_int(w, "rotors_counted", pf->motor_out_rotors);
+		jw_num(w, "thrust_over_weight", pf->motor_out_ratio);
+		jw_bool(w, "holds_altitude", pf->motor_out_holds);
+		jw_close(w);
+	} else {
+		jw_null(w, "motor_out");
+	}
+	jw_num(w, "motor_resistance_ohm", pf->motor_resistance_ohm);
+	jw_num(w, "motor_no_load_current_a", pf->motor_no_load_a);
+	jw_bool(w, "motor_constants_estimated", pf->motor_r_estimated);
+	jw_num(w, "prop_ct", pf->prop_ct);
+	jw_num(w, "prop_cp", pf->prop_cp);
+	jw_bool(w, "prop_coefficients_published", pf->prop_coeffs_measured);
+	jw_close(w);
+}
+
+/* The design of record: the aircraft every summary describes. */
+static void
+put_record(struct jw *w, const struct solve_result *r)
+{
+	bool buildable;
+	const struct res_run *o = res_record(r, &buildable);
+	jw_obj(w, "design_of_record");
+	jw_lit(w, "basis", buildable ? "real_parts" : "continuous");
+	jw_bool(w, "buildable", buildable);
+	put_run_fields(w, o, buildable ? r : NULL);
+	if (o->perf.valid)
+		put_perf(w, &o->perf);
 	jw_close(w);
 }
 
@@ -800,6 +885,14 @@ result_json_render_checked(const struct solve_result *r,
 	JW_STR(&w, "catalogue_sha256", r->catalogue_sha256);
 	jw_str(&w, "status", r->feasible ? "feasible" : "infeasible",
 	       r->feasible ? 8 : 10);
+	bool buildable;
+	const struct res_run *rec = res_record(r, &buildable);
+	jw_bool(&w, "buildable", buildable);
+	jw_num(&w, "takeoff_mass_kg", rec->mass.total_kg);
+	jw_obj(&w, "regulatory_class");
+	jw_lit(&w, "eu_open_category", res_eu_class(rec->mass.total_kg));
+	jw_bool(&w, "us_part_107_small_uas", rec->mass.total_kg < RES_US_107_KG);
+	jw_close(&w);
 	put_violations(&w, r);
 	int nr = jw_count(&w, "rationale", r->n_rationale, RES_MAX_RATIONALE);
 	jw_arr(&w, "rationale");
@@ -817,11 +910,8 @@ result_json_render_checked(const struct solve_result *r,
 		put_optimum(&w, "continuous_optimum", &r->custom.opt);
 	else
 		jw_null(&w, "continuous_optimum");
+	put_record(&w, r);
 	put_selected(&w, r);
-	if (r->parts_selected)
-		put_run(&w, "bom_closed", &r->closed, r);
-	else
-		jw_null(&w, "bom_closed");
 	put_bom(&w, r);
 	put_candidates(&w, r);
 	jw_close(&w);
