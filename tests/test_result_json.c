@@ -402,9 +402,10 @@ result_json_should_hold_every_product_key_per_run(void **state)
 	(void)state;
 	static const char *const top[] = {
 		"aeroeval_version", "input_sha256", "catalogue_sha256", "status",
+		"buildable", "takeoff_mass_kg", "regulatory_class",
 		"violations", "rationale", "mission", "baseline", "custom",
-		"role_overhead", "continuous_optimum", "selected", "bom_closed",
-		"bom", "candidates"
+		"role_overhead", "continuous_optimum", "design_of_record",
+		"selected", "bom", "candidates"
 	};
 	/* PRODUCT.md §4, "Each run holds at least". */
 	static const char *const per_run[] = {
@@ -427,7 +428,7 @@ result_json_should_hold_every_product_key_per_run(void **state)
 	static const char *const phase_keys[] = {
 		"phase", "duration_s", "power_w", "current_a", "energy_wh"
 	};
-	static const char *const runs[] = { "baseline", "custom", "bom_closed" };
+	static const char *const runs[] = { "baseline", "custom", "design_of_record" };
 	struct solve_result *r = fixture_new(&SMALL);
 	cJSON *root = render_parse(r, NULL);
 
@@ -544,7 +545,7 @@ result_json_numbers_should_round_trip_exactly(void **state)
 	cJSON *root = render_parse(r, NULL);
 	check_run_exact(get(root, "baseline"), &r->baseline);
 	check_run_exact(get(root, "custom"), &r->custom);
-	check_run_exact(get(root, "bom_closed"), &r->closed);
+	check_run_exact(get(root, "design_of_record"), &r->closed);
 
 	const cJSON *bat = get(get(root, "selected"), "battery");
 	assert_exact(num(bat, "unit_mass_kg"), r->battery.unit_mass_kg);
@@ -585,7 +586,7 @@ result_json_mass_breakdown_should_sum_to_total(void **state)
 	(void)state;
 	struct solve_result *r = fixture_new(&SMALL);
 	cJSON *root = render_parse(r, NULL);
-	static const char *const runs[] = { "baseline", "custom", "bom_closed", "role_overhead" };
+	static const char *const runs[] = { "baseline", "custom", "design_of_record", "role_overhead" };
 	for (size_t k = 0; k < 4; k++) {
 		const cJSON *jr = get(root, runs[k]);
 		double sum = 0.0;
@@ -796,7 +797,10 @@ result_json_should_write_ran_false_run_and_null_parts(void **state)
 	assert_int_equal(cJSON_GetArraySize(custom), 1);
 	assert_true(cJSON_IsNull(get(root, "continuous_optimum")));
 	assert_true(cJSON_IsNull(get(root, "selected")));
-	assert_true(cJSON_IsNull(get(root, "bom_closed")));
+	/* Nothing to build: the record is the continuous design, not run. */
+	const cJSON *rec = get(root, "design_of_record");
+	assert_true(cJSON_IsFalse(get(rec, "buildable")));
+	assert_true(cJSON_IsFalse(get(rec, "ran")));
 	const cJSON *bom = get(root, "bom");
 	assert_int_equal(cJSON_GetArraySize(get(bom, "lines")), 0);
 	assert_exact(num(bom, "total_mass_kg"), 0.0);
@@ -809,7 +813,7 @@ result_json_should_write_ran_false_run_and_null_parts(void **state)
 	r->closed.ran = false;
 	r->esc.chosen = false;
 	root = render_parse(r, NULL);
-	assert_int_equal(cJSON_GetArraySize(get(root, "bom_closed")), 1);
+	assert_true(cJSON_IsFalse(get(get(root, "design_of_record"), "buildable")));
 	assert_true(cJSON_IsNull(get(get(root, "selected"), "esc")));
 	cJSON_Delete(root);
 	free(r);
