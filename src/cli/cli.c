@@ -10,8 +10,6 @@
 #include "core/catalog.h"
 #include "output/fsout.h"
 #include "input/model_io.h"
-#include "util/sha256.h"
-#include "util/file.h"
 #include "util/xalloc.h"
 
 static int
@@ -55,36 +53,6 @@ cli_data_dir(char *out, size_t n)
 	snprintf(out, n, "data");
 }
 
-/* SHA-256 over the catalogue files (name, NUL, length, bytes each), so a
- * dossier names exactly the catalogue it was built from. */
-static void
-catalogue_hash(const char *db_dir, char out[65])
-{
-	static const char *const files[] = { "motors.json", "propellers.json",
-		"batteries.json", "escs.json", NULL };
-	struct sha256_ctx c;
-	unsigned char digest[SHA256_DIGEST_LEN];
-	sha256_init(&c);
-	for (int i = 0; files[i] != NULL; i++) {
-		char path[4400], err[256];
-		unsigned char *buf = NULL;
-		size_t n = 0;
-		snprintf(path, sizeof path, "%s/%s", db_dir, files[i]);
-		if (file_read(path, 64u << 20, &buf, &n, err, sizeof err) != 0)
-			n = 0;
-		sha256_update(&c, files[i], strlen(files[i]) + 1);
-		unsigned char len8[8];
-		for (int k = 0; k < 8; k++)
-			len8[k] = (unsigned char)((unsigned long long)n >> (8 * k));
-		sha256_update(&c, len8, sizeof len8);
-		sha256_update(&c, buf, n);
-		free(buf);
-	}
-	sha256_final(&c, digest);
-	for (int i = 0; i < SHA256_DIGEST_LEN; i++)
-		snprintf(out + 2 * i, 3, "%02x", digest[i]);
-}
-
 int
 cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
              FILE *err)
@@ -102,7 +70,8 @@ cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
 		env->cat = catalog_load(env->db_dir, env->model.chem_names, err, &n_err);
 		if (env->cat == NULL)
 			return 2;
-		catalogue_hash(env->db_dir, env->catalogue_sha256);
+		snprintf(env->catalogue_sha256, sizeof env->catalogue_sha256, "%s",
+		         catalog_sha256(env->cat));
 	}
 	return 0;
 }
