@@ -55,7 +55,7 @@ BIN      := $(BUILD)/aeroeval
 TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps test unit example paper install clean check-layers asan fuzz bench golden
+.PHONY: all deps test unit example paper install clean check-layers asan fuzz bench golden fonts
 
 all: $(BIN) aeroeval
 
@@ -64,7 +64,7 @@ aeroeval: $(BIN)
 	ln -sf $(BIN) aeroeval
 
 deps:
-	@missing=""; for p in $(DEB_PKGS); do \
+	@missing=""; for p in $(DEB_PKGS) $(EXTRA_PKGS); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'ok installed' || missing="$$missing $$p"; \
 	done; \
 	if [ -n "$$missing" ]; then \
@@ -147,6 +147,40 @@ example: deps
 # text); `make test` compares against it.  Commit the diff with the reason.
 golden: all
 	AEROEVAL=$(BIN) sh tests/cli_golden.sh update
+
+# ---- fonts ------------------------------------------------------------------
+# `fonts` (not part of the build: its output is committed) regenerates
+# templates/fonts/: Debian's DejaVu Sans, Sans Bold and Sans Mono cut by
+# fonttools' pyftsubset to FONT_CHARS, with DejaVu's licence beside them.
+# libharu parses the whole font file for each document and maps every code
+# point of UTF-8 through the font's cmap, so a font of ~580 glyphs in 17 cmap
+# segments instead of ~6000 in 242 makes each dossier several times cheaper.
+# FONT_CHARS is every character the dossier's own text uses (the non-ASCII
+# ones in src/ string literals: ° ± ² · × Ø ÷ γ η λ – — • … → − ≈ ≤ ≥) plus
+# a margin for the text users bring (titles, clients, catalogue names,
+# template titles): all of Latin-1 and Latin Extended-A, the Greek and basic
+# Cyrillic alphabets, quotes, dashes and other punctuation (‘ ’ “ ” ‰ ′ ″),
+# super- and subscript digits, € and ™, the arrows ← ↑ → ↓ ↔ ↕, the
+# operators ∂ ∆ ∑ − √ ∞ ≈ ≠ ≤ ≥, and U+FFFD.  A character outside the set
+# prints as the .notdef box (as CJK did with the whole font); the text stays
+# searchable.  After changing the set: `make fonts`, check `make test`,
+# commit templates/fonts/.
+FONT_SRC   := /usr/share/fonts/truetype/dejavu
+FONT_FACES := DejaVuSans DejaVuSans-Bold DejaVuSansMono
+FONT_CHARS := U+0020-007E,U+00A0-017F,U+0391-03A1,U+03A3-03C9,U+0400-045F, \
+              U+2010-2027,U+2030-203A,U+2070-2071,U+2074-208E,U+20AC,U+2122, \
+              U+2190-2195,U+2202,U+2206,U+2211-2212,U+221A,U+221E,U+2248, \
+              U+2260,U+2264-2265,U+FFFD
+fonts:
+	@$(MAKE) --no-print-directory deps DEB_PKGS= EXTRA_PKGS='fonttools fonts-dejavu-core'
+	mkdir -p templates/fonts
+	for f in $(FONT_FACES); do \
+	  pyftsubset $(FONT_SRC)/$$f.ttf --unicodes='$(FONT_CHARS)' \
+	    --output-file=templates/fonts/$$f.ttf --layout-features='' \
+	    --drop-tables+=GSUB,GPOS,GDEF,MATH,FFTM --name-IDs='*' \
+	    --notdef-outline || exit 1; \
+	done
+	cp /usr/share/doc/fonts-dejavu-core/copyright templates/fonts/LICENSE
 
 # ---- the paper's studies ----------------------------------------------------
 # Case studies, shedding and the 14-parameter sensitivity, ours beside the paper's.

@@ -1,56 +1,21 @@
 /* cli.c — shared command set-up (see cli.h). */
 #include "cli/cli.h"
 
-#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "core/catalog.h"
-#include "output/fsout.h"
 #include "input/model_io.h"
-#include "util/xalloc.h"
-
-static int
-is_dir_with(const char *dir, const char *file)
-{
-	char path[4200];
-	struct stat st;
-	snprintf(path, sizeof path, "%s/%s", dir, file);
-	return stat(path, &st) == 0;
-}
+#include "util/file.h"
 
 void
 cli_data_dir(char *out, size_t n)
 {
 	const char *env = getenv("AEROEVAL_DATA");
-	if (env != NULL && *env != '\0') {
+	if (env != NULL && *env != '\0')
 		snprintf(out, n, "%s", env);
-		return;
-	}
-	char exe[PATH_MAX];
-	ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
-	if (len > 0) {
-		exe[len] = '\0';
-		char *slash = strrchr(exe, '/');
-		if (slash != NULL) {
-			*slash = '\0';
-			/* build/aeroeval -> ../data; bin/aeroeval -> ../share/aeroeval/data */
-			static const char *const rel[] = { "/../data",
-				"/../share/aeroeval/data", "/data", NULL };
-			for (int i = 0; rel[i] != NULL; i++) {
-				char cand[PATH_MAX + 32];
-				snprintf(cand, sizeof cand, "%s%s", exe, rel[i]);
-				if (is_dir_with(cand, "chemistries.json")) {
-					char real[PATH_MAX];
-					snprintf(out, n, "%s", realpath(cand, real) ? real : cand);
-					return;
-				}
-			}
-		}
-	}
-	snprintf(out, n, "data");
+	else
+		file_shipped_dir("data", "chemistries.json", out, n);
 }
 
 int
