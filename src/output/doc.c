@@ -215,9 +215,7 @@ put_text(struct doc *d, HPDF_Font f, double size, double x, double y, const char
 	char *buf = len < sizeof small ? small : xmalloc(len + 1);
 	memcpy(buf, s, len);
 	buf[len] = '\0';
-	HPDF_Page_BeginText(d->page);
-	HPDF_Page_SetFontAndSize(d->page, f, (HPDF_REAL)size);
-	HPDF_Page_SetRGBFill(d->page, (HPDF_REAL)k.r, (HPDF_REAL)k.g, (HPDF_REAL)k.b);
+	plot_begin_text(d->page, f, size, k);
 	HPDF_Page_TextOut(d->page, (HPDF_REAL)x, (HPDF_REAL)y, buf);
 	HPDF_Page_EndText(d->page);
 	if (buf != small)
