@@ -128,7 +128,8 @@ fuzz: deps
 	  OPT='-O1 -g -fsanitize=fuzzer-no-link,$(FUZZ_SAN)' build-fuzz/libaeroeval.a
 	sh tests/fuzz/run.sh build-fuzz $(FUZZ_CC) '$(FUZZ_FLAGS)' $(FUZZ_SECONDS)
 
-# `bench` (not part of `make test`): timings and peak memory as a table.
+# `bench` (not part of `make test`): instructions per command, the batch's
+# wall time and memory, each beside its target (tests/bench.sh).
 bench: all $(BUILD)/bench
 	sh tests/bench.sh $(BUILD)
 
