@@ -55,7 +55,7 @@ BIN      := $(BUILD)/aeroeval
 TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps test unit example paper install clean check-layers asan fuzz bench golden
+.PHONY: all deps test unit example paper install clean check-layers asan fuzz bench golden fonts
 
 all: $(BIN) aeroeval
 
@@ -64,7 +64,7 @@ aeroeval: $(BIN)
 	ln -sf $(BIN) aeroeval
 
 deps:
-	@missing=""; for p in $(DEB_PKGS); do \
+	@missing=""; for p in $(DEB_PKGS) $(EXTRA_PKGS); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'ok installed' || missing="$$missing $$p"; \
 	done; \
 	if [ -n "$$missing" ]; then \
@@ -128,7 +128,8 @@ fuzz: deps
 	  OPT='-O1 -g -fsanitize=fuzzer-no-link,$(FUZZ_SAN)' build-fuzz/libaeroeval.a
 	sh tests/fuzz/run.sh build-fuzz $(FUZZ_CC) '$(FUZZ_FLAGS)' $(FUZZ_SECONDS)
 
-# `bench` (not part of `make test`): timings and peak memory as a table.
+# `bench` (not part of `make test`): instructions per command, the batch's
+# wall time and memory, each beside its target (tests/bench.sh).
 bench: all $(BUILD)/bench
 	sh tests/bench.sh $(BUILD)
 
@@ -147,6 +148,45 @@ example: deps
 # text); `make test` compares against it.  Commit the diff with the reason.
 golden: all
 	AEROEVAL=$(BIN) sh tests/cli_golden.sh update
+
+# ---- fonts ------------------------------------------------------------------
+# `fonts` (not part of the build: its output is committed) regenerates
+# templates/fonts/: Debian's DejaVu Sans, Sans Bold and Sans Mono cut by
+# fonttools' pyftsubset, with DejaVu's licence beside them.  libharu parses
+# the whole font file for each document and then maps every UTF-8 code point
+# (63 000) through the font's cmap by a linear walk over its segments (runs
+# of consecutive characters), so the cost of a font is its glyph count plus
+# 63 000 x its segment count: the whole DejaVu Sans has ~6000 glyphs in 242
+# segments, the cut one ~830 in 14.
+# FONT_CHARS (Sans, Sans Bold) is every character the dossier's own text
+# uses (the non-ASCII ones in src/ string literals: ° ± ² · × Ø ÷ γ η λ – — •
+# … → − ≈ ≤ ≥) plus a margin for the text users bring (titles, clients,
+# catalogue names, template titles): all of Latin-1 and Latin Extended-A,
+# the Greek and basic Cyrillic alphabets, the punctuation U+2010-203A
+# (dashes, quotes ‘ ’ “ ”, • … ‰ ′ ″), super- and subscript digits, € and ™,
+# the arrows ← ↑ → ↓ ↔ ↕ and the mathematical operators U+2200-22FF, chosen
+# as whole runs (a run costs one segment, a scattered character one each).
+# FONT_CHARS_MONO is for what the dossier sets in Sans Mono: fingerprints and
+# catalogue ids (lowercase slugs), so ASCII and Latin-1.  A character outside
+# the set prints as the .notdef box (as CJK did with the whole font) and stays
+# searchable.  After changing a set: `make fonts`, `make test`, commit
+# templates/fonts/.
+FONT_SRC        := /usr/share/fonts/truetype/dejavu
+FONT_CHARS      := U+0020-007E,U+00A0-017F,U+0391-03A1,U+03A3-03C9,U+0400-045F, \
+                   U+2010-203A,U+2070-2071,U+2074-208E,U+20AC,U+2122,U+2190-2195, \
+                   U+2200-22FF,U+FFFD
+FONT_CHARS_MONO := U+0020-007E,U+00A0-00FF,U+FFFD
+FONT_SUBSET      = pyftsubset $(FONT_SRC)/$(1).ttf --unicodes='$(2)' \
+                   --output-file=templates/fonts/$(1).ttf --layout-features='' \
+                   --drop-tables+=GSUB,GPOS,GDEF,MATH,FFTM --name-IDs='*' \
+                   --notdef-outline
+fonts:
+	@$(MAKE) --no-print-directory deps DEB_PKGS= EXTRA_PKGS='fonttools fonts-dejavu-core'
+	mkdir -p templates/fonts
+	$(call FONT_SUBSET,DejaVuSans,$(FONT_CHARS))
+	$(call FONT_SUBSET,DejaVuSans-Bold,$(FONT_CHARS))
+	$(call FONT_SUBSET,DejaVuSansMono,$(FONT_CHARS_MONO))
+	cp /usr/share/doc/fonts-dejavu-core/copyright templates/fonts/LICENSE
 
 # ---- the paper's studies ----------------------------------------------------
 # Case studies, shedding and the 14-parameter sensitivity, ours beside the paper's.

@@ -1,181 +1,170 @@
-/* bench.c — in-process solve time per mission (`make bench`, not a test).
+/* bench.c — the inputs `make bench` measures with, made deterministically.
  *
- * usage: build/bench [-n SOLVES] MISSION.json...   (from the repository root)
- * Loads the shipped data once, parses each mission once, then solves it
- * SOLVES times (default 200) and prints one table row per mission: the
- * median, the fastest and the slowest solve, the median of SOLVES solves
- * without the parts catalogue (the continuous design only: no parts
- * selection, no BOM-closed run), the endurance explorer that the outputs
- * ask for after the solve (engine_explore(), median of 20), and the time
- * to render result.json (median of 20), in microseconds.  Ends with the
- * medians over all missions and the peak resident memory of this process.
+ * usage: build/bench missions SEED N DIR
+ *   Writes N varied missions DIR/m0000.json ... from a pseudo-random
+ *   sequence seeded by SEED (the same files for the same SEED on every
+ *   machine): payload 0.2-25 kg (log-uniform), wheelbase 0.25-2 m, 4, 6 or
+ *   8 rotors, every payload role, altitude 0-3000 m, hover 60-900 s,
+ *   forward flight 0-1200 s at 5-18 m/s, one of three chemistries.  Many
+ *   are infeasible (a 25 kg payload on a 0.25 m frame): an infeasible
+ *   design still gets its whole dossier, so it costs what a feasible one
+ *   does.
  *
- * usage: build/bench -c parts|noparts MISSION.json
- * One solve of the mission (with or without the parts catalogue) inside
- * counted_solve(), for `valgrind --tool=callgrind
- * --toggle-collect=counted_solve`: the instructions the calling thread
- * spends on it, which repeat (to within 0.2 %: whether the solve waits
- * for the baseline's thread) where wall times drift (bench.sh, part 5).  The solve is engine_solve_unhelped(): all of the parts search
- * on the calling thread, as without the helper, whose share varies.
+ * usage: build/bench catalog SRC DST FACTOR
+ *   Writes into DST every .json catalogue file of SRC with each entry of its
+ *   top-level array repeated FACTOR times, the copies' ids suffixed -x2,
+ *   -x3, ... (ids must stay unique): a catalogue FACTOR times the size,
+ *   for measuring how the solve scales with it (`aeroeval solve --db DST`).
+ *   Every other field is kept, so the copies are valid entries.
  */
-#include <stdbool.h>
+#include <dirent.h>
+#include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
-#include <time.h>
 
-#include "cli/cli.h"
-#include "core/diag.h"
-#include "engine/engine.h"
-#include "output/fsout.h"
-#include "input/mission_io.h"
-#include "output/result_json.h"
-#include "util/xalloc.h"
+#include <cjson/cJSON.h>
 
-#define RENDERS 20 /* result.json renders timed per mission */
+#include "util/file.h"
 
-static double
-now_us(void)
+/* xorshift64: a fixed sequence for a fixed seed, whatever the libc. */
+static uint64_t
+next_u64(uint64_t *s)
 {
-	struct timespec t;
-	clock_gettime(CLOCK_MONOTONIC, &t);
-	return (double)t.tv_sec * 1e6 + (double)t.tv_nsec * 1e-3;
+	*s ^= *s << 13;
+	*s ^= *s >> 7;
+	*s ^= *s << 17;
+	return *s;
+}
+
+/* Uniform in [lo, hi], rounded to 3 decimals so the files read well. */
+static double
+uniform(uint64_t *s, double lo, double hi)
+{
+	double u = (double)(next_u64(s) >> 11) * 0x1p-53;
+	return (double)(long long)((lo + u * (hi - lo)) * 1000.0 + 0.5) / 1000.0;
 }
 
 static int
-cmp_double(const void *a, const void *b)
+write_json(const char *path, const cJSON *root)
 {
-	double x = *(const double *)a, y = *(const double *)b;
-	return (x > y) - (x < y);
+	char *text = cJSON_Print(root);
+	FILE *f = fopen(path, "w");
+	int rc = text != NULL && f != NULL && fputs(text, f) >= 0 ? 0 : -1;
+	if (f != NULL && fclose(f) != 0)
+		rc = -1;
+	free(text);
+	if (rc != 0)
+		fprintf(stderr, "bench: cannot write %s\n", path);
+	return rc;
 }
 
-static double
-median(double *v, int n)
-{
-	qsort(v, (size_t)n, sizeof *v, cmp_double);
-	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-/* The solve callgrind counts (-c); not inlined, so that it has a name. */
-void counted_solve(const struct mission_spec *spec, const struct cli_env *env,
-                   const struct catalog *cat, struct solve_result *r);
-__attribute__((noinline)) void
-counted_solve(const struct mission_spec *spec, const struct cli_env *env,
-              const struct catalog *cat, struct solve_result *r)
-{
-	engine_solve(spec, &env->model, cat, r);
-}
-
-/* -c MODE MISSION: one counted solve; 0 when it ran. */
 static int
-count_one(const char *mode, const char *path)
+make_missions(uint64_t seed, int n, const char *dir)
 {
-	bool parts = strcmp(mode, "parts") == 0;
-	if (!parts && strcmp(mode, "noparts") != 0) {
-		fprintf(stderr, "bench: -c takes parts or noparts\n");
-		return 2;
+	static const char *const roles[] = { "none", "imaging", "delivery",
+		"agriculture", "racing", "inspection", "mapping" };
+	static const char *const chems[] = { "LiPo", "Li-ion NMC", "LiHV" };
+	static const int rotors[] = { 4, 6, 8 };
+	uint64_t s = seed * 0x9E3779B97F4A7C15u + 1;
+	for (int i = 0; i < n; i++) {
+		char name[64], path[4200];
+		snprintf(name, sizeof name, "bench mission %04d", i);
+		cJSON *m = cJSON_CreateObject();
+		cJSON *rep = cJSON_AddObjectToObject(m, "report");
+		cJSON_AddStringToObject(rep, "title", name);
+		cJSON_AddStringToObject(rep, "date", "2026-11-22");
+		/* log-uniform 0.2 .. 25 kg: as many small aircraft as big ones */
+		double payload = 0.2 * pow(125.0, uniform(&s, 0.0, 1.0));
+		cJSON_AddNumberToObject(m, "payload_kg", round(payload * 1000.0) / 1000.0);
+		cJSON_AddNumberToObject(m, "max_diameter_m", uniform(&s, 0.25, 2.0));
+		cJSON_AddNumberToObject(m, "num_rotors", rotors[next_u64(&s) % 3]);
+		cJSON_AddNumberToObject(m, "altitude_m", uniform(&s, 0.0, 3000.0));
+		cJSON_AddNumberToObject(m, "t_hover_s", uniform(&s, 60.0, 900.0));
+		cJSON_AddNumberToObject(m, "t_climb_s", uniform(&s, 20.0, 90.0));
+		cJSON_AddNumberToObject(m, "t_forward_s", uniform(&s, 0.0, 1200.0));
+		cJSON_AddNumberToObject(m, "v_forward_ms", uniform(&s, 5.0, 18.0));
+		cJSON_AddStringToObject(m, "battery_chemistry", chems[next_u64(&s) % 3]);
+		cJSON *role = cJSON_AddObjectToObject(m, "payload_role");
+		cJSON_AddStringToObject(role, "type", roles[next_u64(&s) % 7]);
+		snprintf(path, sizeof path, "%s/m%04d.json", dir, i);
+		int rc = write_json(path, m);
+		cJSON_Delete(m);
+		if (rc != 0)
+			return 1;
 	}
-	struct cli_env *env = xcalloc(1, sizeof *env);
-	if (cli_env_load(env, NULL, 1, stderr) != 0)
-		return 2;
-	struct diag *dg = diag_alloc(stderr);
-	struct mission_spec spec;
-	int n_err = mission_io_load(path, env->model.chem_names, dg, &spec);
-	diag_flush(dg);
-	diag_free(dg);
-	if (n_err != 0)
-		return 2;
-	struct solve_result *r = xcalloc(1, sizeof *r);
-	counted_solve(&spec, env, parts ? env->cat : NULL, r);
-	free(r);
-	cli_env_free(env);
-	free(env);
 	return 0;
+}
+
+/* SRC/FILE's top-level arrays, each entry repeated factor times. */
+static int
+grow_file(const char *src, const char *dst, const char *file, int factor)
+{
+	char in[4200], out[4200], err[256];
+	unsigned char *buf = NULL;
+	size_t n = 0;
+	snprintf(in, sizeof in, "%s/%s", src, file);
+	snprintf(out, sizeof out, "%s/%s", dst, file);
+	if (file_read(in, 64u << 20, &buf, &n, err, sizeof err) != 0) {
+		fprintf(stderr, "bench: %s\n", err);
+		return 1;
+	}
+	cJSON *root = cJSON_ParseWithLength((const char *)buf, n);
+	free(buf);
+	if (root == NULL) {
+		fprintf(stderr, "bench: %s is not JSON\n", in);
+		return 1;
+	}
+	cJSON *arr;
+	cJSON_ArrayForEach(arr, root) {
+		if (!cJSON_IsArray(arr))
+			continue;
+		int n0 = cJSON_GetArraySize(arr);
+		for (int k = 2; k <= factor; k++)
+			for (int i = 0; i < n0; i++) {
+				cJSON *e = cJSON_Duplicate(cJSON_GetArrayItem(arr, i), 1);
+				cJSON *id = cJSON_GetObjectItemCaseSensitive(e, "id");
+				if (cJSON_IsString(id)) {
+					char nid[256];
+					snprintf(nid, sizeof nid, "%s-x%d", id->valuestring, k);
+					cJSON_SetValuestring(id, nid);
+				}
+				cJSON_AddItemToArray(arr, e);
+			}
+	}
+	int rc = write_json(out, root);
+	cJSON_Delete(root);
+	return rc;
+}
+
+static int
+grow_catalog(const char *src, const char *dst, int factor)
+{
+	DIR *d = opendir(src);
+	if (d == NULL) {
+		fprintf(stderr, "bench: cannot open %s\n", src);
+		return 1;
+	}
+	int rc = 0;
+	struct dirent *de;
+	while (rc == 0 && (de = readdir(d)) != NULL) {
+		size_t len = strlen(de->d_name);
+		if (len > 5 && strcmp(de->d_name + len - 5, ".json") == 0)
+			rc = grow_file(src, dst, de->d_name, factor);
+	}
+	closedir(d);
+	return rc;
 }
 
 int
 main(int argc, char **argv)
 {
-	if (argc == 4 && strcmp(argv[1], "-c") == 0)
-		return count_one(argv[2], argv[3]);
-	int n_solves = 200, first = 1;
-	if (argc > 2 && strcmp(argv[1], "-n") == 0) {
-		n_solves = atoi(argv[2]);
-		first = 3;
-	}
-	if (first >= argc || n_solves < 1) {
-		fprintf(stderr, "usage: bench [-n SOLVES] MISSION.json...\n");
-		return 2;
-	}
-	struct cli_env *env = xcalloc(1, sizeof *env);
-	if (cli_env_load(env, NULL, 1, stderr) != 0)
-		return 2;
-	struct solve_result *r = xmalloc(sizeof *r);
-	double *t = xmalloc((size_t)(n_solves > RENDERS ? n_solves : RENDERS) * sizeof *t);
-	double *meds = xmalloc((size_t)argc * sizeof *meds);
-	double *meds_noparts = xmalloc((size_t)argc * sizeof *meds_noparts);
-	int n_meds = 0;
-
-	printf("%-32s %10s %10s %10s %12s %11s %10s  %s\n", "mission", "median_us",
-	    "min_us", "max_us", "noparts_us", "explore_us", "render_us", "status");
-	for (int a = first; a < argc; a++) {
-		struct diag *dg = diag_alloc(stderr);
-		struct mission_spec spec;
-		int n_err = mission_io_load(argv[a], env->model.chem_names, dg, &spec);
-		diag_flush(dg);
-		diag_free(dg);
-		if (n_err != 0)
-			continue;
-		for (int i = 0; i < n_solves; i++) {
-			double t0 = now_us();
-			memset(r, 0, sizeof *r);
-			engine_solve(&spec, &env->model, env->cat, r);
-			t[i] = now_us() - t0;
-		}
-		qsort(t, (size_t)n_solves, sizeof *t, cmp_double);
-		double lo = t[0], hi = t[n_solves - 1], med = median(t, n_solves);
-		/* The same mission without a catalogue, before the render so
-		 * that r holds the solve with parts when it is rendered. */
-		for (int i = 0; i < n_solves; i++) {
-			double t0 = now_us();
-			memset(r, 0, sizeof *r);
-			engine_solve(&spec, &env->model, NULL, r);
-			t[i] = now_us() - t0;
-		}
-		double med_noparts = median(t, n_solves);
-		memset(r, 0, sizeof *r);
-		engine_solve(&spec, &env->model, env->cat, r);
-		for (int i = 0; i < RENDERS; i++) {
-			double t0 = now_us();
-			engine_explore(r, &env->model);
-			t[i] = now_us() - t0;
-		}
-		double med_explore = median(t, RENDERS);
-		for (int i = 0; i < RENDERS; i++) {
-			double t0 = now_us();
-			struct result_json_faults jf;
-			free(result_json_render_checked(r, "bench", &jf));
-			t[i] = now_us() - t0;
-		}
-		const char *base = strrchr(argv[a], '/');
-		printf("%-32s %10.0f %10.0f %10.0f %12.0f %11.0f %10.0f  %s\n",
-		    base ? base + 1 : argv[a], med, lo, hi, med_noparts, med_explore,
-		    median(t, RENDERS), r->feasible ? "feasible" : "infeasible");
-		meds_noparts[n_meds] = med_noparts;
-		meds[n_meds++] = med;
-	}
-	struct rusage ru;
-	getrusage(RUSAGE_SELF, &ru);
-	if (n_meds > 0)
-		printf("%-32s %10.0f %10s %10s %12.0f\n", "median of the medians",
-		    median(meds, n_meds), "", "", median(meds_noparts, n_meds));
-	printf("peak RSS of the bench process: %ld KiB\n", ru.ru_maxrss);
-	free(meds_noparts);
-	free(meds);
-	free(t);
-	free(r);
-	cli_env_free(env);
-	free(env);
-	return 0;
+	if (argc == 5 && strcmp(argv[1], "missions") == 0)
+		return make_missions(strtoull(argv[2], NULL, 10), atoi(argv[3]), argv[4]);
+	if (argc == 5 && strcmp(argv[1], "catalog") == 0 && atoi(argv[4]) >= 1)
+		return grow_catalog(argv[2], argv[3], atoi(argv[4]));
+	fprintf(stderr, "usage: bench missions SEED N DIR\n"
+	                "       bench catalog SRC DST FACTOR\n");
+	return 2;
 }

@@ -1,6 +1,8 @@
 /* test_catalog.c — the parts catalogue: shipped coverage, loader, diagnostics. */
 #include "test_util.h"
 #include "core/catalog.h"
+#include "util/file.h"
+#include "util/sha256.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -397,6 +399,38 @@ catalog_load_should_report_all_errors_of_one_file(void **state)
 	free(msg);
 }
 
+/* The fingerprint is SHA-256 over each file's name, a NUL, its length as
+ * 8 bytes little-endian and its bytes, in category order (result.json's
+ * catalogue_sha256): computed here from the files themselves. */
+static void
+catalog_sha256_should_hash_name_length_and_bytes_of_each_file(void **state)
+{
+	(void)state;
+	struct catalog *c = load_or_print(FIXTURE_DIR "/good");
+	struct sha256_ctx h;
+	sha256_init(&h);
+	for (size_t i = 0; i < sizeof category_files / sizeof category_files[0]; i++) {
+		char path[256], err[256];
+		unsigned char *buf = NULL, len8[8];
+		size_t n = 0;
+		snprintf(path, sizeof path, "%s/%s", FIXTURE_DIR "/good", category_files[i]);
+		assert_int_equal(file_read(path, 1u << 20, &buf, &n, err, sizeof err), 0);
+		for (int b = 0; b < 8; b++)
+			len8[b] = (unsigned char)((unsigned long long)n >> (8 * b));
+		sha256_update(&h, category_files[i], strlen(category_files[i]) + 1);
+		sha256_update(&h, len8, sizeof len8);
+		sha256_update(&h, buf, n);
+		free(buf);
+	}
+	unsigned char d[SHA256_DIGEST_LEN];
+	char want[SHA256_HEX_LEN];
+	sha256_final(&h, d);
+	for (int i = 0; i < SHA256_DIGEST_LEN; i++)
+		snprintf(want + 2 * i, 3, "%02x", d[i]);
+	assert_string_equal(catalog_sha256(c), want);
+	catalog_free(c);
+}
+
 int
 main(void)
 {
@@ -406,6 +440,7 @@ main(void)
 		cmocka_unit_test(catalog_shipped_part_numbers_should_not_repeat_the_maker),
 		cmocka_unit_test(catalog_shipped_values_should_be_converted_to_si),
 		cmocka_unit_test(catalog_load_should_read_a_minimal_catalogue),
+		cmocka_unit_test(catalog_sha256_should_hash_name_length_and_bytes_of_each_file),
 		cmocka_unit_test(catalog_load_should_accept_a_caller_chemistry_list),
 		cmocka_unit_test(catalog_load_should_name_file_entry_and_field_for_each_error_kind),
 		cmocka_unit_test(catalog_load_should_report_the_errors_of_every_file),

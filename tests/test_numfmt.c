@@ -190,6 +190,57 @@ numfmt_shortest_should_print_what_the_definition_prints(void **state)
 	assert_true(n_checked > 299000);
 }
 
+/* The exact integer path (2^-16 <= |x| < 2^52) against the definition:
+ * random significands in every binade it covers, exact ties at the 15th,
+ * 16th and 17th digit (n + 0.5, n + 0.25, n + 0.75, where printf rounds the
+ * exact value half to even), powers of two and their neighbours (narrower
+ * gap below), and the ends of the range. */
+static void
+numfmt_shortest_should_match_the_definition_on_the_exact_path(void **state)
+{
+	(void)state;
+	uint64_t g = 0x9E3779B97F4A7C15u;
+	char want[NUMFMT_SHORTEST_LEN], got[NUMFMT_SHORTEST_LEN];
+	static const double frac[] = { 0.5, 0.25, 0.75, 0.125, 0.375 };
+	for (int i = 0; i < 200000; i++) {
+		uint64_t u = xorshift(&g);
+		double x;
+		int b = (int)(xorshift(&g) % 69) - 17;   /* binades 2^-17 .. 2^51 */
+		switch (i % 4) {
+		case 0:
+			x = ldexp(1.0 + (double)(u >> 12) * 0x1p-52, b);
+			break;
+		case 1: /* n + a binary fraction: decimal ties at 15..17 digits */
+			x = (double)(int64_t)(u % 4000000000000000u + 100000000000000u)
+			    + frac[i % 5];
+			break;
+		case 2:
+			x = ldexp(1.0, b);
+			if (u & 4)
+				x = nextafter(x, (u & 8) ? 0.0 : INFINITY);
+			break;
+		default: /* short decimals, as most outputs are */
+			x = (double)(int64_t)(u % 100000000u) / pow(10.0, (double)(i % 12));
+			break;
+		}
+		if (u & 2)
+			x = -x;
+		if (x == 0.0)
+			continue;
+		shortest_by_definition(want, x);
+		int k = numfmt_shortest(got, x);
+		assert_string_equal(got, want);
+		assert_int_equal(k, (int)strlen(want));
+	}
+	static const double ends[] = { 0x1p-16, 0x1.fffffffffffffp-17, 0x1p52,
+		0x1.fffffffffffffp51, 1e-5, 1.5e-5, 4503599627370495.5, 9.5, 0.5 };
+	for (size_t i = 0; i < sizeof ends / sizeof ends[0]; i++) {
+		shortest_by_definition(want, ends[i]);
+		numfmt_shortest(got, ends[i]);
+		assert_string_equal(got, want);
+	}
+}
+
 int
 main(void)
 {
@@ -198,6 +249,7 @@ main(void)
 		cmocka_unit_test(numfmt_shortest_should_use_more_digits_only_when_needed),
 		cmocka_unit_test(numfmt_shortest_should_round_trip_many_values),
 		cmocka_unit_test(numfmt_shortest_should_print_what_the_definition_prints),
+		cmocka_unit_test(numfmt_shortest_should_match_the_definition_on_the_exact_path),
 		cmocka_unit_test(numfmt_shortest_should_refuse_non_finite_and_unsign_zero),
 		cmocka_unit_test(numfmt_fixed_should_round_to_the_given_decimals),
 		cmocka_unit_test(numfmt_fixed_should_never_print_negative_zero),

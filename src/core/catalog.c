@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "util/sha256.h"
 #include "util/xalloc.h"
 
 #define G_TO_KG 1e-3
@@ -183,6 +184,7 @@ struct catalog {
 	void *items[CAT_N];          /* arrays of the entry structs */
 	size_t n[CAT_N];
 	size_t *prop_order;          /* propeller indices by diameter */
+	char sha256[SHA256_HEX_LEN]; /* fingerprint of the bytes parsed */
 };
 
 /* ---- diagnostics --------------------------------------------------------- */
@@ -196,6 +198,7 @@ struct ctx {
 	const struct category *cat;
 	size_t index;                /* current entry */
 	const char *entry_id;        /* its id if readable, else NULL */
+	struct sha256_ctx sha;       /* over every file as read (catalog_sha256) */
 };
 
 static void report_file(struct ctx *cx, const char *fmt, ...)
@@ -249,13 +252,24 @@ in_list(const char *s, const char *const *list)
 	return false;
 }
 
+/* The field named key, trying fields[hint] first: the entries of a file
+ * list their keys in the table's order, so passing the index after the
+ * last match finds most keys with one comparison instead of a scan. */
 static const struct field *
-find_field(const struct category *cat, const char *key)
+find_field_from(const struct category *cat, const char *key, size_t hint)
 {
+	if (hint < cat->n_fields && strcmp(cat->fields[hint].key, key) == 0)
+		return &cat->fields[hint];
 	for (size_t i = 0; i < cat->n_fields; i++)
 		if (strcmp(cat->fields[i].key, key) == 0)
 			return &cat->fields[i];
 	return NULL;
+}
+
+static const struct field *
+find_field(const struct category *cat, const char *key)
+{
+	return find_field_from(cat, key, 0);
 }
 
 /* Levenshtein distance, capped: enough to suggest a key for a typo. */
@@ -537,8 +551,9 @@ parse_entry(struct ctx *cx, const cJSON *obj, char *base)
 	id = cJSON_GetObjectItemCaseSensitive(obj, "id");
 	if (cJSON_IsString(id))
 		cx->entry_id = id->valuestring;
+	size_t hint = 0;
 	for (const cJSON *kv = obj->child; kv != NULL; kv = kv->next) {
-		const struct field *f = find_field(cat, kv->string);
+		const struct field *f = find_field_from(cat, kv->string, hint);
 		if (f == NULL) {
 			const char *best = NULL;
 			size_t best_d = 3;    /* suggest only close matches */
@@ -556,6 +571,7 @@ parse_entry(struct ctx *cx, const cJSON *obj, char *base)
 			continue;
 		}
 		size_t i = (size_t)(f - cat->fields);
+		hint = i + 1;
 		if (seen[i]) {
 			report(cx, f->key, "duplicate key");
 			continue;
@@ -635,6 +651,14 @@ load_file(struct ctx *cx, const char *dir, struct catalog *c, enum cat k)
 		report_file(cx, "cannot read %s file: %s", cat->key, strerror(errno));
 		goto done;
 	}
+	/* The fingerprint covers each file as name, NUL, length (8 bytes,
+	 * little-endian) and bytes, hashed from the very buffer parsed. */
+	unsigned char len8[8];
+	for (int b = 0; b < 8; b++)
+		len8[b] = (unsigned char)((uint64_t)n >> (8 * b));
+	sha256_update(&cx->sha, cat->file, strlen(cat->file) + 1);
+	sha256_update(&cx->sha, len8, sizeof len8);
+	sha256_update(&cx->sha, buf, n);
 	const char *end = NULL;
 	cJSON *root = cJSON_ParseWithLengthOpts(buf, n + 1, &end, 1);
 	if (root == NULL) {
@@ -677,41 +701,84 @@ done:
 	cx->entry_id = NULL;
 }
 
+/* One catalogue entry's id, for finding duplicates. */
+struct id_ref {
+	const char *id;
+	int k;               /* category */
+	size_t i;            /* index in it */
+};
+
+/* By id, then by place (category, index): equal ids end up together with
+ * the first-loaded one first. */
+static int
+cmp_id_ref(const void *pa, const void *pb)
+{
+	const struct id_ref *a = pa, *b = pb;
+	int c = strcmp(a->id, b->id);
+	if (c != 0)
+		return c;
+	if (a->k != b->k)
+		return a->k < b->k ? -1 : 1;
+	return (a->i > b->i) - (a->i < b->i);
+}
+
 /* Ids must be unique across all four files: the BOM and --db overrides name
- * parts by id alone. */
+ * parts by id alone.  Sorting the ids finds the repeats in n log n (a pairwise
+ * scan grows with the square of the catalogue); each repeat is then reported,
+ * in file order, against the entry that used the id first. */
 static void
 check_duplicates(struct ctx *cx, const char *dir, const struct catalog *c)
 {
+	size_t n = 0, base[CAT_N];
+	for (int k = 0; k < CAT_N; k++) {
+		base[k] = n;
+		n += c->n[k];
+	}
+	if (n == 0)
+		return;
+	struct id_ref *v = xmalloc(n * sizeof *v);
+	size_t m = 0;
+	for (int k = 0; k < CAT_N; k++)
+		for (size_t i = 0; i < c->n[k]; i++) {
+			const char *id = (const char *)c->items[k] + i * categories[k].size
+			                 + categories[k].off_id;
+			if (*id != '\0')
+				v[m++] = (struct id_ref){ id, k, i };
+		}
+	qsort(v, m, sizeof *v, cmp_id_ref);
+	/* first[base[k] + i]: the sorted position of the id's first user, for
+	 * a repeated entry; SIZE_MAX for every other. */
+	size_t *first = xmalloc(n * sizeof *first);
+	for (size_t j = 0; j < n; j++)
+		first[j] = SIZE_MAX;
+	for (size_t j = 1, head = 0; j < m; j++) {
+		if (strcmp(v[j].id, v[head].id) != 0)
+			head = j;
+		else
+			first[base[v[j].k] + v[j].i] = head;
+	}
+	size_t dl = strlen(dir);
+	const char *sep = dl > 0 && dir[dl - 1] == '/' ? "" : "/";
 	for (int k = 0; k < CAT_N; k++) {
 		const struct category *cat = &categories[k];
 		for (size_t i = 0; i < c->n[k]; i++) {
-			const char *id = (const char *)c->items[k] + i * cat->size + cat->off_id;
-			if (*id == '\0')
+			size_t f = first[base[k] + i];
+			if (f == SIZE_MAX)
 				continue;
-			for (int k2 = 0; k2 <= k; k2++) {
-				const struct category *cat2 = &categories[k2];
-				size_t lim = k2 == k ? i : c->n[k2];
-				for (size_t j = 0; j < lim; j++) {
-					const char *id2 = (const char *)c->items[k2] + j * cat2->size + cat2->off_id;
-					if (strcmp(id, id2) != 0)
-						continue;
-					size_t dl = strlen(dir);
-					const char *sep = dl > 0 && dir[dl - 1] == '/' ? "" : "/";
-					char path[1024];
-					snprintf(path, sizeof path, "%s%s%s", dir, sep, cat->file);
-					cx->path = path;
-					cx->cat = cat;
-					cx->index = i;
-					cx->entry_id = id;
-					report(cx, "id", "duplicate id (first used by %s%s%s %s[%zu])",
-					       dir, sep, cat2->file, cat2->key, j);
-					cx->path = NULL;
-					goto next;
-				}
-			}
-next:;
+			const struct category *cat2 = &categories[v[f].k];
+			char path[1024];
+			snprintf(path, sizeof path, "%s%s%s", dir, sep, cat->file);
+			cx->path = path;
+			cx->cat = cat;
+			cx->index = i;
+			cx->entry_id = v[f].id;
+			report(cx, "id", "duplicate id (first used by %s%s%s %s[%zu])",
+			       dir, sep, cat2->file, cat2->key, v[f].i);
+			cx->path = NULL;
 		}
 	}
+	free(first);
+	free(v);
 }
 
 /* The propellers by diameter, ties in file order (insertion sort: a
@@ -741,6 +808,7 @@ catalog_load(const char *dir, const char *const *known_chemistries, FILE *err, i
 	                                                              : catalog_default_chemistries };
 	struct catalog *c = xcalloc(1, sizeof *c);
 
+	sha256_init(&cx.sha);
 	for (int k = 0; k < CAT_N; k++)
 		load_file(&cx, dir, c, (enum cat)k);
 	check_duplicates(&cx, dir, c);
@@ -751,7 +819,20 @@ catalog_load(const char *dir, const char *const *known_chemistries, FILE *err, i
 		return NULL;
 	}
 	sort_props(c);
+	unsigned char digest[SHA256_DIGEST_LEN];
+	sha256_final(&cx.sha, digest);
+	for (int i = 0; i < SHA256_DIGEST_LEN; i++) {
+		c->sha256[2 * i] = "0123456789abcdef"[digest[i] >> 4];
+		c->sha256[2 * i + 1] = "0123456789abcdef"[digest[i] & 15];
+	}
+	c->sha256[64] = '\0';
 	return c;
+}
+
+const char *
+catalog_sha256(const struct catalog *c)
+{
+	return c->sha256;
 }
 
 void

@@ -119,6 +119,12 @@ struct catalog;                /* opaque: the loaded catalogue */
 struct catalog *catalog_load(const char *dir, const char *const *known_chemistries,
                              FILE *err, int *n_errors);
 
+/* The catalogue's fingerprint (result.json's catalogue_sha256): the
+ * lowercase hex SHA-256 over the four files in the order above, each as
+ * its name, a NUL, its length as 8 bytes little-endian, then its bytes --
+ * the very bytes that were parsed.  Lives as long as c. */
+const char *catalog_sha256(const struct catalog *c);
+
 /* Frees a catalogue; NULL is a no-op.  Pointers into it die with it. */
 void catalog_free(struct catalog *c);
 

@@ -21,7 +21,9 @@
  *     "sections": [{"id": "cover", "title": "Cover", "enabled": true}, ...]
  *   }
  * Relative font and logo paths are resolved against the template file's
- * directory.  "sections" replaces the whole list: its order is the dossier's
+ * directory.  A font not given is the DejaVu face shipped in
+ * templates/fonts/ (cut to the characters a dossier prints: `make fonts`),
+ * else the system's DejaVu.  "sections" replaces the whole list: its order is the dossier's
  * order, an id missing from it is disabled, a repeated id is an error.
  *
  * Who may include it: the output layer (doc, plot, report) and the CLI.

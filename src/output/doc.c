@@ -231,9 +231,7 @@ put_text(struct doc *d, HPDF_Font f, double size, double x, double y, const char
 	char *buf = len < sizeof small ? small : xmalloc(len + 1);
 	memcpy(buf, s, len);
 	buf[len] = '\0';
-	HPDF_Page_BeginText(d->page);
-	HPDF_Page_SetFontAndSize(d->page, f, (HPDF_REAL)size);
-	HPDF_Page_SetRGBFill(d->page, (HPDF_REAL)k.r, (HPDF_REAL)k.g, (HPDF_REAL)k.b);
+	plot_begin_text(d->page, f, size, k);
 	HPDF_Page_TextOut(d->page, (HPDF_REAL)x, (HPDF_REAL)y, buf);
 	HPDF_Page_EndText(d->page);
 	if (buf != small)
@@ -426,6 +424,13 @@ doc_alloc(const struct template *tpl, const struct doc_info *info)
 		doc_fail(d, "cannot create a PDF document");
 		return d;
 	}
+	/* Deflate everything (libharu's zlib level is fixed at the default).
+	 * Measured on the SAR example (instructions of the whole build, PDF
+	 * size): none 147 M, 773 KB; page text only 175 M, 557 KB; fonts and
+	 * their maps only 171 M, 344 KB; all 199 M, 128 KB.  Each embedded
+	 * UTF-8 font carries a 128 KB CID-to-glyph map, mostly zeros, and the
+	 * pages ~240 KB of operators: a dossier is mailed and archived, so the
+	 * 28 M instructions (~10 ms) that save 216 KB on the pages are spent. */
 	HPDF_SetCompressionMode(d->pdf, HPDF_COMP_ALL);
 	HPDF_UseUTFEncodings(d->pdf);
 	HPDF_SetCurrentEncoder(d->pdf, "UTF-8");

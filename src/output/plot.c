@@ -699,6 +699,20 @@ text_width(HPDF_Font f, double size, const char *s)
 	return tw.width * size / 1000.0;
 }
 
+void
+plot_begin_text(HPDF_Page pg, HPDF_Font f, double size, struct template_colour k)
+{
+	HPDF_REAL sz = (HPDF_REAL)size;
+	HPDF_REAL r = (HPDF_REAL)k.r, g = (HPDF_REAL)k.g, b = (HPDF_REAL)k.b;
+	HPDF_Page_BeginText(pg);
+	if (HPDF_Page_GetCurrentFont(pg) != f || HPDF_Page_GetCurrentFontSize(pg) != sz)
+		HPDF_Page_SetFontAndSize(pg, f, sz);
+	HPDF_RGBColor now = HPDF_Page_GetRGBFill(pg);
+	if (HPDF_Page_GetFillingColorSpace(pg) != HPDF_CS_DEVICE_RGB ||
+	    now.r != r || now.g != g || now.b != b)
+		HPDF_Page_SetRGBFill(pg, r, g, b);
+}
+
 /* Draws text with baseline start (x, y) in figure coordinates, aligned on
  * x (or along the rotated baseline when rot90, reading bottom to top). */
 static void
@@ -711,9 +725,7 @@ draw_text(struct rctx *c, HPDF_Font f, double size, double x, double y, const ch
 	double w = text_width(f, size, s);
 	double shift = al == PLOT_ALIGN_CENTER ? w / 2 : al == PLOT_ALIGN_RIGHT ? w : 0.0;
 	struct template_colour k = colour_rgb(c->r->tpl, colour);
-	HPDF_Page_BeginText(pg);
-	HPDF_Page_SetFontAndSize(pg, f, (HPDF_REAL)size);
-	HPDF_Page_SetRGBFill(pg, (HPDF_REAL)k.r, (HPDF_REAL)k.g, (HPDF_REAL)k.b);
+	plot_begin_text(pg, f, size, k);
 	if (rot90)
 		HPDF_Page_SetTextMatrix(pg, 0, 1, -1, 0, (HPDF_REAL)px_(c, x),
 		                        (HPDF_REAL)py_(c, y + shift));

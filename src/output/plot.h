@@ -219,6 +219,14 @@ struct plot_render {
 /* Draws the figure; returns 0, or -1 if libharu or cairo failed. */
 int plot_render(const struct plot *p, const struct plot_render *r);
 
+/* Begins a text object on pg in font f at size, filled with k.  The font
+ * and the fill colour are set only where they differ from the page's
+ * current ones (libharu tracks both in the graphics state, which lasts
+ * from one text object to the next): most of a dossier's text repeats the
+ * font and colour of the text before it, and every operator costs libharu
+ * a few thousand instructions and the PDF bytes to deflate. */
+void plot_begin_text(HPDF_Page pg, HPDF_Font f, double size, struct template_colour k);
+
 /* Releases cairo's static caches; call once at program exit (valgrind). */
 void plot_global_cleanup(void);
 

@@ -190,6 +190,15 @@ jw_string(struct jw *w, const char *s, size_t max)
 	size_t n = strnlen(s, max);
 	jw_put(w, "\"", 1);
 	for (size_t i = 0; i < n;) {
+		/* A run of printable ASCII needs no escape: one copy for it. */
+		size_t run = i;
+		while (run < n && p[run] >= 0x20 && p[run] < 0x80 && p[run] != '"' && p[run] != '\\')
+			run++;
+		if (run > i) {
+			jw_put(w, s + i, run - i);
+			i = run;
+			continue;
+		}
 		unsigned c = p[i];
 		char esc[8];
 		if (c == '"' || c == '\\') {

@@ -3,6 +3,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -81,5 +82,45 @@ file_read(const char *path, size_t max_n, unsigned char **out,
 fail:
 	close(fd);
 	free(buf);
+	return -1;
+}
+
+static int
+has_file(const char *dir, const char *file)
+{
+	char path[PATH_MAX + 256];
+	struct stat st;
+	int w = snprintf(path, sizeof path, "%s/%s", dir, file);
+	return w > 0 && (size_t)w < sizeof path && stat(path, &st) == 0;
+}
+
+int
+file_shipped_dir(const char *name, const char *probe, char *out, size_t n)
+{
+	char exe[PATH_MAX];
+	ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
+	if (len > 0) {
+		exe[len] = '\0';
+		char *slash = strrchr(exe, '/');
+		if (slash != NULL) {
+			*slash = '\0';
+			static const char *const rel[] = { "/../", "/../share/aeroeval/", "/" };
+			for (size_t i = 0; i < sizeof rel / sizeof rel[0]; i++) {
+				char cand[2 * PATH_MAX];
+				snprintf(cand, sizeof cand, "%s%s%s", exe, rel[i], name);
+				if (has_file(cand, probe)) {
+					char real[PATH_MAX];
+					snprintf(out, n, "%s", realpath(cand, real) ? real : cand);
+					return 0;
+				}
+			}
+		}
+	}
+	char real[PATH_MAX];
+	if (has_file(name, probe) && realpath(name, real) != NULL) {
+		snprintf(out, n, "%s", real);
+		return 0;
+	}
+	snprintf(out, n, "%s", name);
 	return -1;
 }

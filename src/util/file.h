@@ -19,4 +19,12 @@
 int file_read(const char *path, size_t max_n, unsigned char **out,
                     size_t *n, char *err, size_t errlen);
 
+/* Finds the directory `name` (data, templates) that ships with the program:
+ * next to the build tree (<program dir>/../name), installed
+ * (<program dir>/../share/aeroeval/name), beside the program
+ * (<program dir>/name), then ./name; the first that holds the file `probe`
+ * wins.  Writes its real path into out (n bytes) and returns 0; returns -1
+ * when none holds probe, with out holding "name". */
+int file_shipped_dir(const char *name, const char *probe, char *out, size_t n);
+
 #endif
