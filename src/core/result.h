@@ -306,6 +306,26 @@ struct res_candidate {
 	bool feasible;
 };
 
+/* The accuracy the model reached on its calibration cohort, as shipped in
+ * data/calibration.json (calibrate.c), and the prediction interval it
+ * puts on a takeoff mass: for the dossier's cover and its assumptions. */
+struct res_accuracy {
+	bool valid;               /* the calibration carries these figures */
+	int n_rows;               /* cohort rows the figures come from */
+	double mape;              /* leave-one-out takeoff-mass MAPE, fraction */
+	double battery_mape;      /* leave-one-out battery-mass MAPE, fraction */
+	double level;             /* the interval's nominal coverage, e.g. 0.90 */
+	double ratio_lo, ratio_hi; /* actual/predicted quantiles of that level */
+	double coverage;          /* the share of cohort rows inside it (LOO) */
+};
+
+/* A prediction interval on a takeoff mass. */
+struct res_interval {
+	bool valid;
+	double level;             /* nominal coverage */
+	double lo_kg, hi_kg;
+};
+
 struct solve_result {
 	struct mission_spec mission;   /* fully resolved input */
 	char input_sha256[65];
@@ -338,6 +358,8 @@ struct solve_result {
 	int n_rationale;
 	char rationale[RES_MAX_RATIONALE][RES_TEXT];
 	char internal_error[RES_TEXT]; /* what broke when the solve returns 3 */
+	struct res_accuracy accuracy;  /* of the model, from the calibration */
+	struct res_interval mtow_interval; /* on the takeoff mass of record */
 };
 
 /* The tightest passing check of a run that is not at its limit by
