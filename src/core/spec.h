@@ -124,6 +124,8 @@ X(REPORT_DATE, "report.date", SPEC_DATE, report.date, "", 0, 0, 0, SPEC_F_BEYOND
 \
 X(PAYLOAD_KG, "payload_kg", SPEC_NUM, payload_kg, "kg", 1.0, 0.0, 500.0, SPEC_F_DERIVED, NULL, \
   "Payload mass carried at takeoff (requirements.payload_preset may set it)") \
+X(MAX_PAYLOAD_KG, "max_payload_kg", SPEC_NUM, max_payload_kg, "kg", 0.0, 0.0, 500.0, SPEC_F_ZERO_AUTO, NULL, \
+  "Largest payload the aircraft must lift: structure, propulsion and the thrust floor are sized for the empty aircraft plus it, the energy for the mission as flown with payload_kg; 0 = payload_kg") \
 X(MAX_DIAMETER_M, "max_diameter_m", SPEC_NUM, max_diameter_m, "m", 0.5, 0.05, 5.0, SPEC_F_MIN_EXCL | SPEC_F_DERIVED, NULL, \
   "Diagonal motor-to-motor wheelbase W; bounds propeller size by the overlap limit") \
 X(NUM_ROTORS, "num_rotors", SPEC_INT, num_rotors, "", 4, 3, 16, SPEC_F_DERIVED, NULL, \
@@ -212,8 +214,8 @@ X(ROLE_SPRAY_RATE, "payload_role.spray_rate_kg_per_s", SPEC_NUM, payload_role.sp
   "Agriculture: liquid spray rate (0 = payload spread evenly over the mission)") \
 X(ROLE_RACING_LOAD_FACTOR, "payload_role.racing_load_factor", SPEC_NUM, payload_role.racing_load_factor, "g", 10, 1, 20, SPEC_F_DERIVED, NULL, \
   "Racing: arm design load factor") \
-X(ROLE_AG_MAX_DOWNWASH, "payload_role.ag_max_downwash_ms", SPEC_NUM, payload_role.ag_max_downwash_ms, "m/s", 8, 1, 40, 0, NULL, \
-  "Agriculture: downwash cap against crop damage and drift") \
+X(ROLE_AG_MAX_DOWNWASH, "payload_role.ag_max_downwash_ms", SPEC_NUM, payload_role.ag_max_downwash_ms, "m/s", 17, 1, 40, 0, NULL, \
+  "Agriculture: limit on the far-wake downwash 2 v_i (crop lodging and drift); 17 m/s is that of the heaviest production sprayers (70-80 kg on six 1.2 m rotors), which fly over crops daily; set lower for sensitive crops") \
 X(ROLE_THRUST_MARGIN, "payload_role.thrust_margin_override", SPEC_NUM, payload_role.thrust_margin_override, "", 0.4, 0.05, 0.8, SPEC_F_DERIVED, NULL, \
   "Thrust margin; hover throttle = 1 - margin, T/W = 1/throttle^2 (default from the role)") \
 X(ROLE_DRAG_MULT, "payload_role.drag_area_multiplier", SPEC_NUM, payload_role.drag_area_multiplier, "", 1, 0.1, 10, SPEC_F_DERIVED, NULL, \
@@ -352,6 +354,7 @@ struct mission_spec {
 	char name[SPEC_STR_MAX];          /* mission name */
 	struct spec_report report;        /* dossier identity */
 	double payload_kg;                /* payload at takeoff, kg */
+	double max_payload_kg;            /* largest payload it is built for, kg; 0 = payload_kg */
 	double max_diameter_m;            /* wheelbase W, m */
 	int num_rotors;                   /* N_r */
 	bool coaxial_layout;              /* stacked rotor pairs */

@@ -218,6 +218,8 @@ engine_params(const struct mission_spec *s, const struct model_data *md,
 	p->spray_rate_kg_s = pr->spray_rate_kg_per_s;
 	p->downwash_cap_ms = role == ROLE_AGRICULTURE ? pr->ag_max_downwash_ms : 0.0;
 	p->payload_kg = s->payload_kg;
+	p->extra_payload_kg = s->max_payload_kg > s->payload_kg
+	    ? s->max_payload_kg - s->payload_kg : 0.0;
 
 	p->chem = model_chem(md, s->battery_chemistry);
 	if (p->chem == NULL)

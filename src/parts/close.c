@@ -194,8 +194,8 @@ craft_masses(const struct parts_ctx *x, const struct sizing_params *q,
 {
 	double n = (double)q->n_rotors;
 	double tip = o->motor->mass_kg + (o->prop != NULL ? o->prop->mass_kg : 0.0);
-	struct airframe_loads al = { mass_kg, o->full_thrust_n, tip,
-		n * o->full_current_a, c->battery_kg };
+	struct airframe_loads al = { mass_kg + q->extra_payload_kg,
+		o->full_thrust_n, tip, n * o->full_current_a, c->battery_kg };
 	struct airframe_masses am;
 	airframe_masses(q, &al, &am);
 	c->arm = am.arm;
@@ -343,6 +343,24 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 		    "voltage than the pack gives.", 100.0 * pf->throttle_needed);
 	violate(r, k, "parts", "THROTTLE", fx, msg);
 	fx[2] = f3;
+
+	if (p->extra_payload_kg > 0.0) {
+		double m_max = o->mass.total_kg + p->extra_payload_kg;
+		double floor_tw = 1.0 / ((1.0 - SIZING_MIN_THRUST_MARGIN)
+		    * (1.0 - SIZING_MIN_THRUST_MARGIN));
+		k = feasibility_add_check(o, "Thrust-to-weight with the largest payload", "",
+		    o->thrust_to_weight * o->mass.total_kg / m_max, floor_tw * PARTS_TW_TOL,
+		    false);
+		fix(r, f1, "A stronger motor or a larger propeller");
+		fix(r, f2, "A lower max_payload_kg");
+		fx[2] = NULL;
+		if (k && !k->pass && !r->terse)
+			snprintf(msg, sizeof msg, "With the largest payload (%.2f kg) "
+			    "aboard, T/W is %.2f; flying it needs %.2f.",
+			    p->payload_kg + p->extra_payload_kg, k->value, k->limit);
+		violate(r, k, "parts", "THRUST_MAX_PAYLOAD", fx, msg);
+		fx[2] = f3;
+	}
 
 	/* Ratings of the real parts. */
 	k = feasibility_add_check(o, "Motor current at full throttle", "A",

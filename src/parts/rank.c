@@ -184,9 +184,11 @@ option_limits(const struct parts_ctx *x, const struct parts_option *o)
 	 * a little to spare for the estimate; never below the continuous
 	 * design's mass, which the estimate may undercut. */
 	double growth = o->j > 0.0 ? 1.0 + o->j / 100.0 : 1.0;
-	double weight_n = x->aim.mass_kg * growth * G0_M_S2;
-	if ((double)p->n_rotors * o->full_thrust_n
-	    < PARTS_TW_SPARE * x->aim.tw_required * weight_n)
+	double mass = x->aim.mass_kg * growth;
+	double theta_floor = 1.0 - SIZING_MIN_THRUST_MARGIN;
+	double need_n = fmax(x->aim.tw_required * mass, (mass + p->extra_payload_kg)
+	    * PARTS_TW_TOL / (theta_floor * theta_floor)) * G0_M_S2;
+	if ((double)p->n_rotors * o->full_thrust_n < PARTS_TW_SPARE * need_n)
 		return PARTS_THRUST;
 	if (!locked && o->full_current_a > m->max_current_a)
 		return PARTS_MOTOR_CURRENT;

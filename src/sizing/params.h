@@ -63,6 +63,8 @@ struct sizing_params {
 	double spray_rate_kg_s;      /* 0 = payload / mission time */
 	double downwash_cap_ms;      /* agriculture downwash cap, 0 = none */
 	double payload_kg;
+	double extra_payload_kg;     /* max_payload_kg - payload_kg (>= 0): the
+	                              * structure and motors carry it */
 	/* battery */
 	const struct batt_chem *chem;
 	double e_spec_wh_kg;         /* may override the chemistry */

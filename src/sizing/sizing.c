@@ -46,6 +46,7 @@ struct eval {
 	struct mission_power peak;
 	double throttle;                /* hover throttle target */
 	double t_hover_n, t_peak_n;     /* per rotor */
+	double design_mass_kg;          /* M plus the payload beyond the mission's */
 	double rps_hover, rps_peak;
 	double fom_inst, k_int;
 	double overlap_limit_m;
@@ -215,12 +216,18 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 	    AERO_TIP_CLEARANCE);
 	double d = p->prop_locked ? p->prop_diameter_m : e->overlap_limit_m;
 
-	/* Thrust targets: T/W = 1 / θ² (paper §II-E). */
-	e->throttle = 1.0 - p->thrust_margin;
-	if (e->throttle < MIN_THROTTLE)
-		e->throttle = MIN_THROTTLE;
+	/* Thrust targets: T/W = 1 / θ² at the mission's mass (paper §II-E),
+	 * and at least the relaxation floor's T/W with the largest payload
+	 * aboard: the load case motors and structure are built for. */
+	double theta = 1.0 - p->thrust_margin;
+	if (theta < MIN_THROTTLE)
+		theta = MIN_THROTTLE;
+	double theta_floor = 1.0 - SIZING_MIN_THRUST_MARGIN;
+	e->design_mass_kg = mass_kg + p->extra_payload_kg;
 	e->t_hover_n = mass_kg * G0_M_S2 / (double)nr;
-	e->t_peak_n = e->t_hover_n / (e->throttle * e->throttle);
+	e->t_peak_n = fmax(e->t_hover_n / (theta * theta), e->design_mass_kg
+	    * G0_M_S2 / (double)nr / (theta_floor * theta_floor));
+	e->throttle = sqrt(e->t_hover_n / e->t_peak_n);
 	e->rps_hover = aero_rps_for_thrust(e->t_hover_n, p->ct, air->rho_kg_m3, d);
 	e->rps_peak = e->rps_hover / e->throttle;
 
@@ -334,7 +341,7 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 	e->mass.prop_kg = prop_each * (double)nr;
 
 	/* Arms, frame, body, harness and avionics for these loads. */
-	struct airframe_loads al = { mass_kg, e->t_peak_n,
+	struct airframe_loads al = { e->design_mass_kg, e->t_peak_n,
 		motor_total / (double)nr + prop_each, e->peak_current_a,
 		e->mass.battery_kg };
 	struct airframe_masses am;
