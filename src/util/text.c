@@ -100,3 +100,24 @@ text_distance(const char *a, const char *b)
 	}
 	return d[na][nb];
 }
+
+size_t
+text_typo_limit(size_t len)
+{
+	return len / 3 > 3 ? 3 : (len / 3 < 1 ? 1 : len / 3);
+}
+
+const char *
+text_nearest(const char *word, const char *const *list)
+{
+	size_t best_d = text_typo_limit(strlen(word)) + 1;
+	const char *best = NULL;
+	for (; *list != NULL; list++) {
+		size_t d = text_distance(word, *list);
+		if (d < best_d) {
+			best_d = d;
+			best = *list;
+		}
+	}
+	return best;
+}

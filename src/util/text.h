@@ -31,4 +31,13 @@ void text_line_col(const char *buf, size_t len, size_t off, int *line,
  * ((size_t)-1 / 2). */
 size_t text_distance(const char *a, const char *b);
 
+/* The word of the NULL-terminated list closest to word by text_distance(),
+ * when it is close enough to be a likely typo (about one edit per three
+ * characters of word, at least one and at most three), else NULL.  The
+ * rule behind every "did you mean" of the readers. */
+const char *text_nearest(const char *word, const char *const *list);
+
+/* The edit budget text_nearest() allows for a word of len bytes. */
+size_t text_typo_limit(size_t len);
+
 #endif
