@@ -18,21 +18,6 @@
 static const char *const data_files[] = { "chemistries.json", "roles.json",
 	"airframes.json", "calibration.json", "requirements.json", NULL };
 
-static void
-copy_file(const char *from, const char *to)
-{
-	FILE *in = fopen(from, "rb");
-	FILE *out = fopen(to, "wb");
-	assert_non_null(in);
-	assert_non_null(out);
-	char buf[4096];
-	size_t n;
-	while ((n = fread(buf, 1, sizeof buf, in)) > 0)
-		assert_int_equal(fwrite(buf, 1, n, out), n);
-	fclose(in);
-	assert_int_equal(fclose(out), 0);
-}
-
 /* A temporary copy of data/ in dir (mkdtemp template), with `file` taken
  * from tests/fixtures/model/<fixture>/ (fixture NULL: none) or left out
  * (omit != NULL). */
@@ -50,7 +35,7 @@ make_data_dir(char *dir, const char *fixture, const char *file, const char *omit
 		else
 			snprintf(from, sizeof from, "data/%s", data_files[i]);
 		snprintf(to, sizeof to, "%s/%s", dir, data_files[i]);
-		copy_file(from, to);
+		assert_true(test_copy_file(from, to));
 	}
 }
 

@@ -18,6 +18,7 @@
 #include "core/catalog.h"
 #include "cli/cli.h"
 #include "core/diag.h"
+#include "input/catalog_io.h"
 #include "engine/engine.h"
 #include "input/mission_io.h"
 #include "parts/optim.h"
@@ -66,9 +67,11 @@ fixture_target(struct optim_target *t)
 static int
 setup_fixture(void **state)
 {
-	int n_err = 0;
-	*state = catalog_load(FIXTURE_DIR, NULL, stderr, &n_err);
-	return *state != NULL && n_err == 0 ? 0 : -1;
+	struct diag *dg = diag_alloc(stderr);
+	*state = catalog_io_load(FIXTURE_DIR, NULL, dg);
+	diag_flush(dg);
+	diag_free(dg);
+	return *state != NULL ? 0 : -1;
 }
 
 static int

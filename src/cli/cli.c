@@ -8,7 +8,10 @@
 #include <unistd.h>
 
 #include "core/catalog.h"
+#include "core/diag.h"
 #include "output/fsout.h"
+#include "input/catalog_io.h"
+#include "input/json_in.h"
 #include "input/model_io.h"
 #include "util/sha256.h"
 #include "util/file.h"
@@ -56,21 +59,25 @@ cli_data_dir(char *out, size_t n)
 }
 
 /* SHA-256 over the catalogue files (name, NUL, length, bytes each), so a
- * dossier names exactly the catalogue it was built from. */
+ * dossier names exactly the catalogue it was built from.  An optional file
+ * that is absent adds nothing, so a directory of the four required files
+ * hashes as it always did. */
 static void
 catalogue_hash(const char *db_dir, char out[65])
 {
-	static const char *const files[] = { "motors.json", "propellers.json",
-		"batteries.json", "escs.json", NULL };
+	const char *const *files = catalog_io_files;
 	struct sha256_ctx c;
 	unsigned char digest[SHA256_DIGEST_LEN];
 	sha256_init(&c);
-	for (int i = 0; files[i] != NULL; i++) {
+	for (int i = 0; i < CATALOG_N_CATEGORIES; i++) {
 		char path[4400], err[256];
 		unsigned char *buf = NULL;
 		size_t n = 0;
+		struct stat st;
 		snprintf(path, sizeof path, "%s/%s", db_dir, files[i]);
-		if (file_read(path, 64u << 20, &buf, &n, err, sizeof err) != 0)
+		if (!catalog_io_required((enum catalog_category)i) && stat(path, &st) != 0)
+			continue;
+		if (file_read(path, JSON_IN_CATALOG_MAX, &buf, &n, err, sizeof err) != 0)
 			n = 0;
 		sha256_update(&c, files[i], strlen(files[i]) + 1);
 		unsigned char len8[8];
@@ -98,8 +105,10 @@ cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
 	if (model_io_load(env->data_dir, &env->model, err) != 0)
 		return 2;
 	if (want_catalog) {
-		int n_err = 0;
-		env->cat = catalog_load(env->db_dir, env->model.chem_names, err, &n_err);
+		struct diag *dg = diag_alloc(err);
+		env->cat = catalog_io_load(env->db_dir, env->model.chem_names, dg);
+		diag_flush(dg);
+		diag_free(dg);
 		if (env->cat == NULL)
 			return 2;
 		catalogue_hash(env->db_dir, env->catalogue_sha256);

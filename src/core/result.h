@@ -23,6 +23,7 @@
 #define RES_MAX_RATIONALE  48
 #define RES_MAX_BOM        16
 #define RES_MAX_CANDIDATES 256  /* motors scored for the crosshair figure */
+#define RES_ID_MAX         128  /* a catalogue id, NUL included (CATALOG_ID_MAX) */
 #define RES_TEXT           256
 
 /* Mission phases, in the order they are flown. */
@@ -216,7 +217,7 @@ struct res_run {
 /* A catalogue part chosen by the optimizer. */
 struct res_part {
 	bool chosen;
-	char id[64];
+	char id[RES_ID_MAX];
 	char manufacturer[64];
 	char part_number[128];
 	char description[160];
@@ -238,12 +239,12 @@ struct res_bom_line {
 	double total_mass_kg;
 	double unit_price_usd;    /* 0 = unknown */
 	double total_price_usd;
-	char catalogue_id[64];    /* "" for custom lines */
+	char catalogue_id[RES_ID_MAX]; /* "" for custom lines */
 };
 
 /* A motor scored by the optimizer (crosshair figure). */
 struct res_candidate {
-	char id[64];
+	char id[RES_ID_MAX];
 	double kv;
 	double mass_kg;
 	double j_score;           /* 1e9 when pruned */

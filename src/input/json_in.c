@@ -212,17 +212,24 @@ ji_report_at(struct json_in *ji, enum diag_kind kind, const struct diag_loc *loc
 }
 
 void
-json_in_report(struct json_in *ji, enum diag_kind kind, const cJSON *item,
-               enum json_in_at at, const char *path, const char *fmt, ...)
+json_in_vreport(struct json_in *ji, enum diag_kind kind, const cJSON *item,
+                enum json_in_at at, const char *path, const char *fmt, va_list ap)
 {
 	/* The position is looked up only for a line that will be shown. */
 	struct diag_loc loc = { ji->file, 0, 0 };
 	bool error = diag_kind_severity(kind) == DIAG_ERROR;
 	if (json_in_showing(ji) && (error || ji->last_shown))
 		loc = json_in_loc(ji, item, item != NULL ? at : JSON_IN_FILE);
+	ji_vreport(ji, kind, &loc, path, fmt, ap);
+}
+
+void
+json_in_report(struct json_in *ji, enum diag_kind kind, const cJSON *item,
+               enum json_in_at at, const char *path, const char *fmt, ...)
+{
 	va_list ap;
 	va_start(ap, fmt);
-	ji_vreport(ji, kind, &loc, path, fmt, ap);
+	json_in_vreport(ji, kind, item, at, path, fmt, ap);
 	va_end(ap);
 }
 

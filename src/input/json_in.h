@@ -29,6 +29,7 @@
 #ifndef AEROEVAL_JSON_IN_H
 #define AEROEVAL_JSON_IN_H
 
+#include <stdarg.h>
 #include <stdbool.h>
 #include <stddef.h>
 
@@ -111,6 +112,11 @@ bool json_in_showing(const struct json_in *ji);
 void json_in_report(struct json_in *ji, enum diag_kind kind, const cJSON *item,
                     enum json_in_at at, const char *path, const char *fmt, ...)
 	__attribute__((format(printf, 6, 7)));
+
+/* The same with a va_list (consumed), for a loader's own wrapper. */
+void json_in_vreport(struct json_in *ji, enum diag_kind kind, const cJSON *item,
+                     enum json_in_at at, const char *path, const char *fmt, va_list ap)
+	__attribute__((format(printf, 6, 0)));
 
 /* Paths: "parent.key" ("key" when parent is ""), "parent[i]". */
 void json_in_path(char *buf, size_t n, const char *parent, const char *key);

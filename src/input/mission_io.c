@@ -16,6 +16,7 @@
 #include <stdint.h>
 
 #include "input/json_in.h"
+#include "util/text.h"
 #include "util/xalloc.h"
 
 /* Longest path we build: a group name, a dot and a key (user keys may be
@@ -51,20 +52,6 @@ mio_expected(enum spec_type t)
 		return "a date string \"YYYY-MM-DD\"";
 	}
 	return "a value";
-}
-
-/* "a, b, c" from a NULL-terminated list. */
-static void
-mio_join(const char *const *list, char *buf, size_t n)
-{
-	size_t o = 0;
-	buf[0] = '\0';
-	for (size_t i = 0; list[i] != NULL && o < n; i++) {
-		int w = snprintf(buf + o, n - o, "%s%s", i > 0 ? ", " : "", list[i]);
-		if (w < 0)
-			break;
-		o += (size_t)w;
-	}
 }
 
 /* ---- value checks -------------------------------------------------------- */
@@ -185,7 +172,7 @@ mio_field(struct mio *m, const struct spec_field_info *f, const cJSON *item,
 		int v = spec_enum_index(f->enums, s);
 		if (v < 0) {
 			diag_quote(s, strlen(s), 40, q, sizeof q);
-			mio_join(f->enums, list, sizeof list);
+			text_join(f->enums, list, sizeof list);
 			const char *hint = NULL;
 			for (size_t i = 0; f->enums[i] != NULL; i++)
 				if (strcasecmp(f->enums[i], s) == 0)
@@ -215,7 +202,7 @@ mio_field(struct mio *m, const struct spec_field_info *f, const cJSON *item,
 		if (f->id == SPECF_BATTERY_CHEMISTRY && m->chemistries != NULL &&
 		    spec_enum_index(m->chemistries, s) < 0) {
 			diag_quote(s, strlen(s), 40, q, sizeof q);
-			mio_join(m->chemistries, list, sizeof list);
+			text_join(m->chemistries, list, sizeof list);
 			json_in_report(m->ji, DIAG_BAD_CHEMISTRY, item, JSON_IN_VALUE, path,
 			               " %s (known: %s)", q, list);
 			return false;

@@ -2,6 +2,7 @@
 #include "util/text.h"
 
 #include <ctype.h>
+#include <stdio.h>
 #include <string.h>
 
 size_t
@@ -120,4 +121,17 @@ text_nearest(const char *word, const char *const *list)
 		}
 	}
 	return best;
+}
+
+void
+text_join(const char *const *list, char *buf, size_t n)
+{
+	size_t o = 0;
+	buf[0] = '\0';
+	for (size_t i = 0; list[i] != NULL && o < n; i++) {
+		int w = snprintf(buf + o, n - o, "%s%s", i > 0 ? ", " : "", list[i]);
+		if (w < 0)
+			break;
+		o += (size_t)w;
+	}
 }

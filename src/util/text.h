@@ -37,6 +37,10 @@ size_t text_distance(const char *a, const char *b);
  * rule behind every "did you mean" of the readers. */
 const char *text_nearest(const char *word, const char *const *list);
 
+/* "a, b, c" from the NULL-terminated list into buf (size n, always
+ * NUL-terminated; cut short when it does not fit), for "allowed: ..." texts. */
+void text_join(const char *const *list, char *buf, size_t n);
+
 /* The edit budget text_nearest() allows for a word of len bytes. */
 size_t text_typo_limit(size_t len);
 

@@ -1,6 +1,6 @@
 /* fuzz_catalog.c — libFuzzer harness: a supplier's catalogue file.
  *
- * catalog_load() reads files, so the first input byte picks which of the
+ * catalog_io_load() reads files, so the first input byte picks which of the
  * four catalogue files the rest of the input replaces, in a scratch copy of
  * the shipped catalogue (data/catalog, or $AEROEVAL_DATA/catalog) cut to
  * its first three entries per file.  The
@@ -16,6 +16,8 @@
 #include <cjson/cJSON.h>
 
 #include "core/catalog.h"
+#include "core/diag.h"
+#include "input/catalog_io.h"
 #include "output/fsout.h"
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);
@@ -112,10 +114,10 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		abort();
 	fclose(f);
 
-	int n_err = 0;
-	FILE *devnull = fopen("/dev/null", "w");
-	struct catalog *c = catalog_load(dirs[k], NULL, devnull, &n_err);
-	fclose(devnull);
+	struct diag *dg = diag_alloc(NULL);
+	struct catalog *c = catalog_io_load(dirs[k], NULL, dg);
+	int n_err = diag_n_errors(dg);
+	diag_free(dg);
 	if ((c == NULL) != (n_err > 0))
 		abort(); /* NULL exactly when an error was reported */
 	if (c == NULL)
