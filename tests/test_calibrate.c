@@ -7,6 +7,7 @@
 
 #include "util/lsq.h"
 #include "input/cohort.h"
+#include "core/diag.h"
 #include "input/model_io.h"
 #include "study/validate.h"
 
@@ -16,7 +17,11 @@ static int
 setup(void **state)
 {
 	(void)state;
-	return model_io_load("data", &md, stderr) == 0 ? 0 : -1;
+	struct diag *dg = diag_alloc(stderr);
+	int n_err = model_io_load("data", &md, dg);
+	diag_flush(dg);
+	diag_free(dg);
+	return n_err == 0 ? 0 : -1;
 }
 
 static void

@@ -10,6 +10,7 @@
 #include <cjson/cJSON.h>
 
 #include "input/mission_io.h"
+#include "core/diag.h"
 #include "input/model_io.h"
 #include "util/xalloc.h"
 
@@ -21,7 +22,11 @@ static int
 setup(void **state)
 {
 	(void)state;
-	return model_io_load("data", &md, stderr) == 0 ? 0 : -1;
+	struct diag *dg = diag_alloc(stderr);
+	int n_err = model_io_load("data", &md, dg);
+	diag_flush(dg);
+	diag_free(dg);
+	return n_err == 0 ? 0 : -1;
 }
 
 static void

@@ -102,17 +102,19 @@ cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
 		snprintf(env->db_dir, sizeof env->db_dir, "%s", db_dir);
 	else
 		snprintf(env->db_dir, sizeof env->db_dir, "%s/catalog", env->data_dir);
-	if (model_io_load(env->data_dir, &env->model, err) != 0)
-		return 2;
-	if (want_catalog) {
-		struct diag *dg = diag_alloc(err);
+	struct diag *dg = diag_alloc(err);
+	int n_err = model_io_load(env->data_dir, &env->model, dg);
+	diag_flush(dg);
+	if (n_err == 0 && want_catalog) {
 		env->cat = catalog_io_load(env->db_dir, env->model.chem_names, dg);
 		diag_flush(dg);
-		diag_free(dg);
-		if (env->cat == NULL)
-			return 2;
-		catalogue_hash(env->db_dir, env->catalogue_sha256);
+		n_err = env->cat == NULL;
 	}
+	diag_free(dg);
+	if (n_err != 0)
+		return 2;
+	if (want_catalog)
+		catalogue_hash(env->db_dir, env->catalogue_sha256);
 	return 0;
 }
 

@@ -51,6 +51,7 @@ X(BAD_UTF8,     DIAG_ERROR, 2, "string is not valid UTF-8") \
 X(NUL_IN_STRING, DIAG_ERROR, 2, "string contains a NUL character") \
 X(BAD_DATE,     DIAG_ERROR, 2, "invalid date") \
 X(MISSING,      DIAG_ERROR, 2, "missing field") \
+X(MISSING_ENTRY, DIAG_ERROR, 2, "missing entry") \
 X(CONTROL_CHAR, DIAG_ERROR, 2, "string contains a control character") \
 X(FORMULA,      DIAG_ERROR, 2, "text starts like a spreadsheet formula") \
 X(INCONSISTENT, DIAG_ERROR, 2, "inconsistent values") \
