@@ -9,10 +9,13 @@
 
 #include "core/catalog.h"
 #include "core/diag.h"
+#include "core/template.h"
+#include "output/assets.h"
 #include "output/fsout.h"
 #include "input/catalog_io.h"
 #include "input/json_in.h"
 #include "input/model_io.h"
+#include "input/template_io.h"
 #include "util/sha256.h"
 #include "util/file.h"
 #include "util/xalloc.h"
@@ -123,4 +126,16 @@ cli_env_free(struct cli_env *env)
 {
 	catalog_free(env->cat);
 	env->cat = NULL;
+}
+
+struct template *
+cli_template_load(const char *path, FILE *err)
+{
+	if (path == NULL)
+		return template_default();
+	struct diag *dg = diag_alloc(err);
+	struct template *t = template_io_load(path, assets_check, dg);
+	diag_flush(dg);
+	diag_free(dg);
+	return t;
 }

@@ -31,4 +31,12 @@ int cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
 
 void cli_env_free(struct cli_env *env);
 
+struct template;
+
+/* The dossier template: the built-in one when path is NULL, else the file,
+ * its fonts and logo checked now (output/assets.h), before any mission is
+ * solved.  Errors go to err; NULL when there was any.  Free with
+ * template_free(). */
+struct template *cli_template_load(const char *path, FILE *err);
+
 #endif

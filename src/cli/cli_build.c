@@ -653,7 +653,7 @@ cli_build(int argc, char **argv)
 	if (rc == 0 && cli_env_load(b.env, db, 1, stderr) != 0)
 		rc = 2;
 	if (rc == 0) {
-		b.tpl = tpl_path ? template_load(tpl_path, stderr) : template_default();
+		b.tpl = cli_template_load(tpl_path, stderr);
 		if (b.tpl == NULL)
 			rc = 2;
 	}

@@ -42,6 +42,19 @@ struct json_in {
 
 /* ---- reading ------------------------------------------------------------- */
 
+/* The reason in file_read's message msg about path: its text starts
+ * "PATH: " and may say "cannot open: "; a diagnostic says both already. */
+static const char *
+ji_read_reason(const char *path, const char *msg)
+{
+	size_t lp = strlen(path);
+	if (strncmp(msg, path, lp) == 0 && strncmp(msg + lp, ": ", 2) == 0)
+		msg += lp + 2;
+	if (strncmp(msg, "cannot open: ", 13) == 0)
+		msg += 13;
+	return msg;
+}
+
 int
 json_in_read(const char *path, size_t max_bytes, struct diag *dg,
              unsigned char **out, size_t *n)
@@ -49,16 +62,20 @@ json_in_read(const char *path, size_t max_bytes, struct diag *dg,
 	char msg[512];
 	if (file_read(path, max_bytes, out, n, msg, sizeof msg) == 0)
 		return 0;
-	/* file_read's text starts "PATH: " and may say "cannot open: "; the
-	 * diagnostic names the file and says that already. */
-	const char *reason = msg;
-	size_t lp = strlen(path);
-	if (strncmp(reason, path, lp) == 0 && strncmp(reason + lp, ": ", 2) == 0)
-		reason += lp + 2;
-	if (strncmp(reason, "cannot open: ", 13) == 0)
-		reason += 13;
 	struct diag_loc loc = { path, 0, 0 };
-	diag_report(dg, DIAG_IO, &loc, NULL, ": %s", reason);
+	diag_report(dg, DIAG_IO, &loc, NULL, ": %s", ji_read_reason(path, msg));
+	return -1;
+}
+
+int
+json_in_read_named(struct json_in *ji, const cJSON *item, const char *jpath,
+                   const char *path, size_t max_bytes, unsigned char **out, size_t *n)
+{
+	char msg[512];
+	if (file_read(path, max_bytes, out, n, msg, sizeof msg) == 0)
+		return 0;
+	json_in_report(ji, DIAG_IO, item, JSON_IN_VALUE, jpath, ": %s: %s", path,
+	               ji_read_reason(path, msg));
 	return -1;
 }
 

@@ -80,6 +80,13 @@ int json_in_n_errors(const struct json_in *ji);
  * bound the reader's work by counting them (util/hash.h). */
 size_t json_in_probes(const struct json_in *ji);
 
+/* json_in_read() of a file that item (at jpath) of ji names, a font in a
+ * template say: a failure is an error at item, "FILE:line:col: error:
+ * jpath: cannot read file: path: reason". */
+int json_in_read_named(struct json_in *ji, const cJSON *item, const char *jpath,
+                       const char *path, size_t max_bytes, unsigned char **out,
+                       size_t *n);
+
 /* ---- positions ----------------------------------------------------------- */
 
 enum json_in_at {
