@@ -5,6 +5,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "util/xalloc.h"
+
 size_t
 text_utf8_seq(const char *s, size_t left)
 {
@@ -134,4 +136,25 @@ text_join(const char *const *list, char *buf, size_t n)
 			break;
 		o += (size_t)w;
 	}
+}
+
+char *
+text_utf8_copy(const char *s)
+{
+	size_t len = strlen(s), o = 0;
+	char *out = xmalloc(3 * len + 1);   /* a bad byte becomes 3 bytes */
+	for (size_t i = 0; i < len;) {
+		size_t seq = text_utf8_seq(s + i, len - i);
+		if (seq == 0) {
+			memcpy(out + o, "\xef\xbf\xbd", 3);
+			o += 3;
+			i++;
+			continue;
+		}
+		memcpy(out + o, s + i, seq);
+		o += seq;
+		i += seq;
+	}
+	out[o] = '\0';
+	return out;
 }

@@ -41,6 +41,11 @@ const char *text_nearest(const char *word, const char *const *list);
  * NUL-terminated; cut short when it does not fit), for "allowed: ..." texts. */
 void text_join(const char *const *list, char *buf, size_t n);
 
+/* A copy of s in which every byte that is not part of valid UTF-8 is
+ * replaced by U+FFFD, for text that must be UTF-8 (JSON) but comes from
+ * outside (a file name).  Ownership: free(). */
+char *text_utf8_copy(const char *s);
+
 /* The edit budget text_nearest() allows for a word of len bytes. */
 size_t text_typo_limit(size_t len);
 
