@@ -18,7 +18,7 @@
 #include "core/catalog.h"
 #include "core/diag.h"
 #include "input/catalog_io.h"
-#include "output/fsout.h"
+#include "util/file.h"
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -38,7 +38,7 @@ copy_trimmed(const char *from, const char *to, const char *key)
 	unsigned char *text = NULL;
 	size_t n = 0;
 	char msg[512];
-	if (fsout_read_file(from, 16u << 20, &text, &n, msg, sizeof msg) != 0) {
+	if (file_read(from, 16u << 20, &text, &n, msg, sizeof msg) != 0) {
 		fprintf(stderr, "fuzz_catalog: %s\n", msg);
 		exit(1);
 	}
