@@ -30,22 +30,32 @@ run() {
 good='"payload_kg": 1.5, "max_diameter_m": 0.7, "t_hover_s": 600'
 printf '{%s}\n' "$good" >m/good.json
 
+# fails NAME WANT ARGS...: `aeroeval ARGS...` exits 2, no crash or hang,
+# WANT in stderr, nothing written to out/.
+fails() {
+	name=$1
+	want=$2
+	shift 2
+	rm -rf out
+	run "$@"
+	if [ "$rc" -ge 124 ]; then
+		notok "$name" "exit $rc (crash or timeout)"
+	elif [ "$rc" -ne 2 ]; then
+		notok "$name" "exit $rc, want 2"; sed 's/^/# /' err.txt | head -3
+	elif ! grep -qF -- "$want" err.txt; then
+		notok "$name" "stderr lacks: $want"; sed 's/^/# /' err.txt | head -3
+	elif [ -n "$(find out -type f 2>/dev/null)" ]; then
+		notok "$name" "wrote output"
+	else
+		ok "$name"
+	fi
+}
+
 # rejected NAME FILE [CMD]: `aeroeval CMD FILE` (default build) exits 2 with
 # a diagnostic that names FILE, writes nothing to out/, and nothing else.
 rejected() {
-	rm -rf out
-	if [ "${3:-build}" = build ]; then run build -o out "$2"; else run "$3" "$2"; fi
-	if [ "$rc" -ge 124 ]; then
-		notok "$1" "exit $rc (crash or timeout)"
-	elif [ "$rc" -ne 2 ]; then
-		notok "$1" "exit $rc, want 2"
-	elif ! grep -qF -- "$2" err.txt; then
-		notok "$1" "stderr does not name the file"; sed 's/^/# /' err.txt | head -3
-	elif [ -n "$(find out -type f 2>/dev/null)" ]; then
-		notok "$1" "wrote output for a rejected mission"
-	else
-		ok "$1"
-	fi
+	if [ "${3:-build}" = build ]; then fails "$1" "$2" build -o out "$2"
+	else fails "$1" "$2" "$3" "$2"; fi
 }
 
 # safe NAME FILE: `build` exits 0 or 1, result.json has no NaN/Infinity.
@@ -592,6 +602,96 @@ else
 	notok catalogue_over_64_mib_is_hashed_whole "exit $rc"
 fi
 rm -rf bigdb big
+
+# ---- size: linear work, capped output --------------------------------------
+# 150 000 unknown keys: reported, counted, and quick (the reader indexes
+# every key instead of scanning the ones before it: this took over 60 s).
+mkdir -p big
+awk 'BEGIN { printf "{"; for (i = 0; i < 150000; i++) printf "%s\"unknown_%d\": 1", (i ? ", " : ""), i; print "}" }' >big/unknown.json
+timeout 20 "$bin" check big/unknown.json >out.txt 2>err.txt
+rc=$?
+if [ "$rc" -ne 2 ]; then notok unknown_keys_150000_checked_quickly "exit $rc"
+elif [ "$(wc -l <err.txt)" -gt 51 ]; then notok unknown_keys_150000_checked_quickly "$(wc -l <err.txt) lines"
+elif ! grep -q 'note: more errors not shown: 149950' err.txt; then notok unknown_keys_150000_checked_quickly "no summary line"
+else ok unknown_keys_150000_checked_quickly; fi
+# 100 000 repeats of one key printed 199 998 lines; now the cap and a summary.
+awk 'BEGIN { printf "{"; for (i = 0; i < 100000; i++) printf "%s\"payload_kg\": 1", (i ? ", " : ""); print "}" }' >big/dup.json
+timeout 20 "$bin" check big/dup.json >out.txt 2>err.txt
+rc=$?
+if [ "$rc" -eq 2 ] && [ "$(wc -l <err.txt)" -le 51 ] && grep -q 'more errors not shown' err.txt; then
+	ok duplicate_keys_100000_capped
+else
+	notok duplicate_keys_100000_capped "exit $rc, $(wc -l <err.txt) lines"
+fi
+
+# ---- the other inputs: catalogue, template, cohort --------------------------
+# A catalogue directory made from the test fixtures, one file changed.
+# db_with FILE SED-SCRIPT
+db_with() {
+	rm -rf db && mkdir db && cp "$root"/tests/fixtures/catalog/good/*.json db/
+	sed "$2" "$root/tests/fixtures/catalog/good/$1" >"db/$1"
+}
+db_with motors.json 's/x/x/'
+rm db/motors.json && mkfifo db/motors.json 2>/dev/null &&
+	fails fifo_as_catalogue_file "db/motors.json: error: cannot read file: not a regular file" \
+	    build -o out --db db m/good.json
+db_with propellers.json 's/"FX18x6.1"/"=HYPERLINK(\\"http:\/\/x.example\\",\\"buy\\")"/'
+fails formula_in_catalogue_text "db/propellers.json:2:63: error: propellers[0].part_number: text starts like a spreadsheet formula" \
+    build -o out --db db m/good.json
+db_with propellers.json "s/\"Fixture\"/\"Fixtur$(printf '\351')\"/"
+fails latin1_in_catalogue_text "db/propellers.json:2:37: error: propellers[0].manufacturer: string is not valid UTF-8" \
+    solve --db db m/good.json
+db_with propellers.json 's/"source": "fixture"/"source": "fix\\u0000ture"/'
+fails nul_in_catalogue_text "propellers[0].source: string contains a NUL character" \
+    solve --db db m/good.json
+db_with escs.json 's/"channels": 4/"channels": 4, "channels": 1/'
+fails duplicate_key_in_catalogue "escs[0].channels: duplicate field" solve --db db m/good.json
+rm -rf db
+
+# Templates: what they name is judged when they load, before any solve.
+mkdir -p tpl
+printf '\211PNG\r\n\032\n\0\0\0\rIHDR\0\0\0\020\0\0\0\020\010\002\0\0\0\220\221h6\0\0\0\012IDATxxxxxxxxxx\0\0\0\0' >tpl/logo.png
+printf '{"logo": "logo.png"}' >tpl/logo.json
+fails corrupt_png_logo_at_template_load "tpl/logo.json:1:10: error: logo: not a usable PNG image: tpl/logo.png" \
+    build -o out --template tpl/logo.json m/good.json
+printf '{"fonts": {"regular": "logo.json"}}' >tpl/font.json
+fails non_font_at_template_load "tpl/font.json:1:23: error: fonts.regular: not a usable TrueType font: tpl/logo.json" \
+    build -o out --template tpl/font.json m/good.json
+printf '{"fonts": {"bold": "/dev/zero"}}' >tpl/zero.json
+fails dev_zero_as_font "fonts.bold: cannot read file: /dev/zero: not a regular file" \
+    build -o out --template tpl/zero.json m/good.json
+[ -c /dev/zero ] && fails dev_zero_as_template "/dev/zero: error: cannot read file: not a regular file" \
+    build -o out --template /dev/zero m/good.json
+fails directory_as_template "tpl: error: cannot read file: not a regular file" \
+    sensitivity -o out --template tpl m/good.json
+mkdir -p emptydir
+fails empty_directory_build_names_it "emptydir: error: no mission file (*.json) in this directory" \
+    build -o out emptydir
+
+# Cohorts: valid JSON out whatever the names, a clear end when nothing validates.
+{ cat "$root/tests/fixtures/validate/tiny.csv"; printf 'Caf\351 racer,0.6,4,0,220,5,5,MicroAIO,inspection,0.1,\n'; } >latin1.csv
+run validate --json latin1.csv
+if [ "$rc" -ne 0 ]; then
+	notok validate_json_with_a_latin1_row "exit $rc"
+elif ! grep -q 'latin1.csv:[0-9]*: error: name: not valid UTF-8' err.txt; then
+	notok validate_json_with_a_latin1_row "the row is not named"
+elif ! iconv -f UTF-8 -t UTF-8 out.txt >/dev/null 2>&1; then
+	notok validate_json_with_a_latin1_row "stdout is not UTF-8"
+elif [ "$(grep -c '^	"rows":' out.txt)" -ne 1 ] || ! grep -q '^	"n_rows":' out.txt; then
+	notok validate_json_with_a_latin1_row "a key appears twice"
+else
+	ok validate_json_with_a_latin1_row
+fi
+printf 'name,takeoff_mass_kg\nA,2.5\nB,3.1\n' >nothing.csv
+fails validate_with_no_usable_row "nothing.csv: error: no row could be validated (2 rows; 2 skipped: payload of the takeoff figure unknown)" \
+    validate nothing.csv
+AEROEVAL_PROGRESS_S=0 timeout 60 "$bin" calibrate "$root/tests/fixtures/cohort/calibration.csv" >out.txt 2>err.txt
+rc=$?
+if [ "$rc" -eq 0 ] && grep -q '^calibrate: fitting, pass [0-9]*, row [0-9]* of [0-9]*, [0-9]* solves' err.txt; then
+	ok calibrate_shows_progress
+else
+	notok calibrate_shows_progress "exit $rc"
+fi
 
 # ---- valgrind: a whole build of one example, no memory error, no leak -----
 # (skipped where valgrind is not installed; ASan covers the unit suite)

@@ -7,6 +7,7 @@
 
 #include "util/lsq.h"
 #include "input/cohort.h"
+#include "core/diag.h"
 #include "input/model_io.h"
 #include "study/validate.h"
 
@@ -16,7 +17,11 @@ static int
 setup(void **state)
 {
 	(void)state;
-	return model_io_load("data", &md, stderr) == 0 ? 0 : -1;
+	struct diag *dg = diag_alloc(stderr);
+	int n_err = model_io_load("data", &md, dg);
+	diag_flush(dg);
+	diag_free(dg);
+	return n_err == 0 ? 0 : -1;
 }
 
 static void
@@ -41,6 +46,25 @@ theta_should_round_trip_and_keep_the_small_wiring_ratio(void **state)
 		assert_rel(calibrate_prior[j], paper[j], 1e-15);
 }
 
+/* What a progress callback saw. */
+struct seen {
+	size_t calls, last_solves, max_pass, first_pass_rows;
+};
+
+static void
+count_progress(void *ctx, size_t pass, size_t row, size_t n_rows, size_t n_solves)
+{
+	struct seen *s = ctx;
+	assert_true(row >= 1 && row <= n_rows);
+	assert_int_equal(n_solves, s->last_solves + 1);   /* one call per solve */
+	if (pass == 0)
+		s->first_pass_rows = n_rows;
+	if (pass > s->max_pass)
+		s->max_pass = pass;
+	s->calls++;
+	s->last_solves = n_solves;
+}
+
 /* data/calibration.json is the frozen fit: calibrating the calibration
  * cohort again from the paper's values lands on the shipped numbers, and
  * the classes with fewer than CALIBRATE_MIN_ROWS rows keep the paper's. */
@@ -53,7 +77,13 @@ shipped_calibration_should_be_the_fit_on_the_calibration_cohort(void **state)
 	struct model_data start = md;
 	calibrate_apply(calibrate_prior, &md.cal, &start.cal);
 	struct calibrate_result r;
-	assert_int_equal(calibrate_fit(&c, &start, &r), 0);
+	struct seen seen = { 0 };
+	struct calibrate_progress pg = { count_progress, &seen };
+	assert_int_equal(calibrate_fit(&c, &start, &pg, &r), 0);
+	/* Progress came once per solve, through the first pass and the fit. */
+	assert_int_equal(seen.calls, r.n_solves);
+	assert_true(seen.first_pass_rows >= r.n_rows);
+	assert_true(seen.max_pass > r.n_iter);
 	double shipped[CAL_N_PARAMS];
 	calibrate_theta(&md.cal, shipped);
 	for (int j = 0; j < CAL_N_PARAMS; j++) {
@@ -183,7 +213,7 @@ fit_should_refuse_a_cohort_without_usable_rows(void **state)
 	struct cohort c;
 	memset(&c, 0, sizeof c);
 	struct calibrate_result r;
-	assert_int_equal(calibrate_fit(&c, &md, &r), -1);
+	assert_int_equal(calibrate_fit(&c, &md, NULL, &r), -1);
 	assert_int_equal(r.n_rows, 0);
 }
 

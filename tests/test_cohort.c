@@ -212,6 +212,26 @@ cohort_should_refuse_numbers_strtod_would_bend(void **state)
 	}
 }
 
+/* A Latin-1 name made `validate --json` print invalid JSON: such a row is
+ * refused with the byte named, the others kept; line breaks stay allowed
+ * in the free-text notes. */
+static void
+cohort_should_refuse_text_that_is_not_utf8_or_holds_control_characters(void **state)
+{
+	(void)state;
+	struct cohort c;
+	assert_int_equal(parse("name,takeoff_mass_kg,notes\nCaf\xe9 one,1.2,\n"
+	                       "Tab\tbed,2.3,\nGood \xc3\xa9,3.4,\"two\nlines\"\n", &c), -1);
+	assert_int_equal(c.n_rows, 1);
+	assert_string_equal(c.rows[0].name, "Good \xc3\xa9");
+	assert_string_equal(c.rows[0].notes, "two\nlines");
+	assert_int_equal(c.n_errors, 2);
+	assert_string_equal(c.errors[0], "t.csv:2: error: name: not valid UTF-8 (byte 0xe9 at "
+	                                 "offset 3); save the file as UTF-8");
+	assert_string_equal(c.errors[1], "t.csv:3: error: name: control character 0x09 at offset 3");
+	cohort_free(&c);
+}
+
 static void
 cohort_should_read_coaxial_spellings_and_counts(void **state)
 {
@@ -263,6 +283,7 @@ main(void)
 		cmocka_unit_test(cohort_should_require_name_and_takeoff_mass_columns),
 		cmocka_unit_test(cohort_should_treat_empty_cells_as_unknown_but_not_required_ones),
 		cmocka_unit_test(cohort_should_refuse_numbers_strtod_would_bend),
+		cmocka_unit_test(cohort_should_refuse_text_that_is_not_utf8_or_holds_control_characters),
 		cmocka_unit_test(cohort_should_read_coaxial_spellings_and_counts),
 		cmocka_unit_test(cohort_load_should_report_an_unreadable_file),
 	};

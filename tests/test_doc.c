@@ -10,6 +10,7 @@
 
 #include "output/doc.h"
 #include "output/plot.h"
+#include "cli/cli.h"
 #include "core/template.h"
 
 #define DEMO_PAGES 8   /* pages of the demo document, checked by eye */
@@ -313,7 +314,7 @@ static void
 doc_letter_template_should_build(void **state)
 {
 	(void)state;
-	struct template *tpl = template_load("templates/letter.json", stderr);
+	struct template *tpl = cli_template_load("templates/letter.json", stderr);
 	assert_non_null(tpl);
 	unsigned char *a = NULL;
 	size_t na = 0;

@@ -1,16 +1,18 @@
-/* test_json_pos.c — the path -> line:col index and offset conversion. */
+/* test_json_pos.c — the position index, its lexical notes, and offset
+ * conversion. */
 #include "test_util.h"
 #include "input/json_pos.h"
 #include "util/text.h"
 
 #include <string.h>
 
+/* Entry i in document order (pre-order), which must exist. */
 static const struct json_pos_entry *
-find(const struct json_pos *jp, const char *path, int nth)
+at(const struct json_pos *jp, size_t i)
 {
-	const struct json_pos_entry *e = json_pos_find(jp, path, nth);
+	const struct json_pos_entry *e = json_pos_entry_at(jp, i);
 	if (e == NULL)
-		fail_msg("no entry for %s #%d", path, nth);
+		fail_msg("no entry %zu", i);
 	return e;
 }
 
@@ -27,46 +29,49 @@ json_pos_should_index_keys_and_values_of_nested_objects(void **state)
 		"  }\n"
 		"}\n";
 	struct json_pos *jp = json_pos_alloc(t, strlen(t));
-	const struct json_pos_entry *e = find(jp, "", 0);
+	const struct json_pos_entry *e = at(jp, 0);      /* the root */
 	assert_int_equal(e->val_line, 1);
 	assert_int_equal(e->val_col, 1);
 	assert_int_equal(e->key_line, 0);
-	e = find(jp, "payload_kg", 0);
+	e = at(jp, 1);                                   /* payload_kg */
 	assert_int_equal(e->key_line, 2);
 	assert_int_equal(e->key_col, 3);
 	assert_int_equal(e->val_line, 2);
 	assert_int_equal(e->val_col, 17);
 	assert_int_equal(e->val_end - e->val_off, 5);
 	assert_memory_equal(t + e->val_off, "2.385", 5);
-	e = find(jp, "locks.locked_kv", 0);
+	e = at(jp, 4);                                   /* locks.locked_kv */
 	assert_int_equal(e->key_line, 5);
 	assert_int_equal(e->key_col, 5);
 	assert_int_equal(e->val_line, 5);
 	assert_int_equal(e->val_col, 24);
-	e = find(jp, "locks", 0);
+	e = at(jp, 2);                                   /* locks */
 	assert_int_equal(e->val_line, 3);
 	assert_int_equal(e->val_col, 12);
 	assert_int_equal(t[e->val_end - 1], '}');
 	assert_int_equal(json_pos_count(jp), 5);
-	assert_string_equal(json_pos_entry_at(jp, 2)->path, "locks");
 	assert_null(json_pos_entry_at(jp, 5));
-	assert_null(json_pos_find(jp, "locked_kv", 0));
+	assert_true(json_pos_complete(jp));
+	assert_int_equal(json_pos_n_problems(jp), 0);
+	assert_int_equal(json_pos_all_flags(jp), 0);
 	json_pos_free(jp);
 }
 
 static void
-json_pos_should_name_array_elements_by_index(void **state)
+json_pos_should_index_array_elements_in_document_order(void **state)
 {
 	(void)state;
 	const char *t = "{\"a\": [10, {\"b\": [true, null]}, \"s\", [], {}, -1e3]}";
 	struct json_pos *jp = json_pos_alloc(t, strlen(t));
-	assert_int_equal(find(jp, "a[0]", 0)->val_col, 8);
-	assert_int_equal(find(jp, "a[1].b[1]", 0)->val_col, 25);
-	assert_int_equal(find(jp, "a[2]", 0)->val_col, 33);
-	const struct json_pos_entry *e = find(jp, "a[5]", 0);
+	/* root, a, a[0], a[1], a[1].b, b[0], b[1], a[2], a[3], a[4], a[5] */
+	assert_int_equal(json_pos_count(jp), 11);
+	assert_int_equal(at(jp, 2)->val_col, 8);
+	assert_int_equal(at(jp, 6)->val_col, 25);
+	assert_int_equal(at(jp, 7)->val_col, 33);
+	const struct json_pos_entry *e = at(jp, 10);
 	assert_int_equal(e->val_col, 46);
 	assert_memory_equal(t + e->val_off, "-1e3", e->val_end - e->val_off);
-	assert_int_equal(find(jp, "a[3]", 0)->key_line, 0);
+	assert_int_equal(at(jp, 8)->key_line, 0);
 	json_pos_free(jp);
 }
 
@@ -77,8 +82,8 @@ json_pos_should_count_characters_not_bytes(void **state)
 	/* "é" and "°" are two bytes each, "€" three: one column each. */
 	const char *t = "{\"t\": \"\xc3\xa9\xc2\xb0\xe2\x82\xac\", \"x\": 1}";
 	struct json_pos *jp = json_pos_alloc(t, strlen(t));
-	assert_int_equal(find(jp, "x", 0)->key_col, 14);
-	assert_int_equal(find(jp, "x", 0)->val_col, 19);
+	assert_int_equal(at(jp, 2)->key_col, 14);
+	assert_int_equal(at(jp, 2)->val_col, 19);
 	int line, col;
 	text_line_col(t, strlen(t), (size_t)(strstr(t, "1}") - t), &line, &col);
 	assert_int_equal(line, 1);
@@ -92,23 +97,23 @@ json_pos_should_keep_every_duplicate_in_order(void **state)
 	(void)state;
 	const char *t = "{\"k\": 1,\n \"k\": 2,\n  \"k\": 3}";
 	struct json_pos *jp = json_pos_alloc(t, strlen(t));
-	assert_int_equal(find(jp, "k", 0)->key_line, 1);
-	assert_int_equal(find(jp, "k", 1)->key_line, 2);
-	assert_int_equal(find(jp, "k", 1)->key_col, 2);
-	assert_int_equal(find(jp, "k", 2)->key_col, 3);
-	assert_null(json_pos_find(jp, "k", 3));
+	assert_int_equal(json_pos_count(jp), 4);
+	assert_int_equal(at(jp, 1)->key_line, 1);
+	assert_int_equal(at(jp, 2)->key_line, 2);
+	assert_int_equal(at(jp, 2)->key_col, 2);
+	assert_int_equal(at(jp, 3)->key_col, 3);
 	json_pos_free(jp);
 }
 
 static void
-json_pos_should_decode_escaped_keys_like_cjson(void **state)
+json_pos_should_step_over_escapes_in_keys_and_strings(void **state)
 {
 	(void)state;
 	const char *t = "{\"a\\u00e9\\\"b\\n\": 1, \"\\ud83d\\ude00\": 2, \"q\": \"x\\\"}y\"}";
 	struct json_pos *jp = json_pos_alloc(t, strlen(t));
-	assert_non_null(json_pos_find(jp, "a\xc3\xa9\"b\n", 0));
-	assert_non_null(json_pos_find(jp, "\xf0\x9f\x98\x80", 0));
-	const struct json_pos_entry *e = find(jp, "q", 0);
+	assert_int_equal(json_pos_count(jp), 4);
+	assert_true(json_pos_complete(jp));
+	const struct json_pos_entry *e = at(jp, 3);
 	assert_int_equal(e->val_end - e->val_off, 7); /* "x\"}y" */
 	json_pos_free(jp);
 }
@@ -119,8 +124,8 @@ json_pos_should_skip_a_byte_order_mark(void **state)
 	(void)state;
 	const char *t = "\xef\xbb\xbf{\"a\": 1}";
 	struct json_pos *jp = json_pos_alloc(t, strlen(t));
-	assert_int_equal(find(jp, "", 0)->val_col, 1);
-	assert_int_equal(find(jp, "a", 0)->key_col, 2);
+	assert_int_equal(at(jp, 0)->val_col, 1);
+	assert_int_equal(at(jp, 1)->key_col, 2);
 	int line, col;
 	text_line_col(t, strlen(t), 4, &line, &col);
 	assert_int_equal(col, 2);
@@ -135,14 +140,63 @@ json_pos_should_stop_quietly_on_malformed_text(void **state)
 	for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
 		struct json_pos *jp = json_pos_alloc(bad[i], strlen(bad[i]));
 		assert_non_null(jp);
+		assert_false(json_pos_complete(jp));
 		json_pos_free(jp);
 	}
 	/* The part before the error is indexed. */
 	const char *t = "{\"a\": 1, \"b\": [2, }";
 	struct json_pos *jp = json_pos_alloc(t, strlen(t));
-	assert_non_null(json_pos_find(jp, "b[0]", 0));
+	assert_true(json_pos_count(jp) >= 4);   /* root, a, b, b[0] */
+	assert_int_equal(at(jp, 3)->val_col, 16);
+	assert_false(json_pos_complete(jp));
 	json_pos_free(jp);
 	json_pos_free(NULL);
+}
+
+static void
+json_pos_should_note_control_characters_and_non_json_numbers(void **state)
+{
+	(void)state;
+	const char *t = "{\"a\tb\": 1,\n \"n\": [012, 1., -0, 2.385e-3, -.5],\n \"s\": \"x\ny\"}";
+	struct json_pos *jp = json_pos_alloc(t, strlen(t));
+	assert_true(json_pos_complete(jp));
+	assert_int_equal(json_pos_n_problems(jp), 5);
+	const struct json_pos_problem *p = json_pos_problem_at(jp, 0);
+	assert_int_equal(p->kind, JSON_POS_CONTROL);  /* the TAB in a key */
+	assert_int_equal(p->entry, 1);
+	assert_int_equal(p->line, 1);
+	assert_int_equal(p->col, 4);
+	assert_int_equal(p->byte, '\t');
+	assert_true(at(jp, 1)->flags & JSON_POS_BAD);
+	p = json_pos_problem_at(jp, 1);
+	assert_int_equal(p->kind, JSON_POS_NUMBER);   /* 012 */
+	assert_int_equal(p->entry, 3);
+	assert_int_equal(p->line, 2);
+	assert_int_equal(p->col, 8);
+	assert_int_equal(json_pos_problem_at(jp, 2)->entry, 4);   /* 1. */
+	assert_int_equal(json_pos_problem_at(jp, 3)->entry, 7);   /* -.5 */
+	assert_false(at(jp, 5)->flags & JSON_POS_BAD);            /* -0 is JSON */
+	assert_false(at(jp, 6)->flags & JSON_POS_BAD);            /* 2.385e-3 too */
+	p = json_pos_problem_at(jp, 4);
+	assert_int_equal(p->kind, JSON_POS_CONTROL);  /* the newline in "x\ny" */
+	assert_int_equal(p->line, 3);
+	assert_int_equal(p->col, 9);
+	assert_null(json_pos_problem_at(jp, 5));
+	json_pos_free(jp);
+}
+
+static void
+json_pos_should_flag_an_escaped_nul_in_keys_and_strings(void **state)
+{
+	(void)state;
+	const char *t = "{\"k\\u0000x\": 1, \"s\": \"a\\u0000\", \"t\": \"a\\\\u0000\"}";
+	struct json_pos *jp = json_pos_alloc(t, strlen(t));
+	assert_int_equal(at(jp, 1)->flags, JSON_POS_KEY_NUL);
+	assert_int_equal(at(jp, 2)->flags, JSON_POS_VAL_NUL);
+	assert_int_equal(at(jp, 3)->flags, 0);   /* an escaped backslash, then text */
+	assert_int_equal(json_pos_all_flags(jp), JSON_POS_KEY_NUL | JSON_POS_VAL_NUL);
+	assert_int_equal(json_pos_n_problems(jp), 0);
+	json_pos_free(jp);
 }
 
 static void
@@ -189,12 +243,14 @@ main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(json_pos_should_index_keys_and_values_of_nested_objects),
-		cmocka_unit_test(json_pos_should_name_array_elements_by_index),
+		cmocka_unit_test(json_pos_should_index_array_elements_in_document_order),
 		cmocka_unit_test(json_pos_should_count_characters_not_bytes),
 		cmocka_unit_test(json_pos_should_keep_every_duplicate_in_order),
-		cmocka_unit_test(json_pos_should_decode_escaped_keys_like_cjson),
+		cmocka_unit_test(json_pos_should_step_over_escapes_in_keys_and_strings),
 		cmocka_unit_test(json_pos_should_skip_a_byte_order_mark),
 		cmocka_unit_test(json_pos_should_stop_quietly_on_malformed_text),
+		cmocka_unit_test(json_pos_should_note_control_characters_and_non_json_numbers),
+		cmocka_unit_test(json_pos_should_flag_an_escaped_nul_in_keys_and_strings),
 		cmocka_unit_test(text_line_col_should_follow_newlines_and_clamp),
 		cmocka_unit_test(text_utf8_seq_should_reject_invalid_sequences),
 	};

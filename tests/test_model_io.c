@@ -8,6 +8,7 @@
  * from the repository root.
  */
 #include "test_util.h"
+#include "core/diag.h"
 #include "input/model_io.h"
 #include "util/xalloc.h"
 
@@ -17,21 +18,6 @@
 
 static const char *const data_files[] = { "chemistries.json", "roles.json",
 	"airframes.json", "calibration.json", "requirements.json", NULL };
-
-static void
-copy_file(const char *from, const char *to)
-{
-	FILE *in = fopen(from, "rb");
-	FILE *out = fopen(to, "wb");
-	assert_non_null(in);
-	assert_non_null(out);
-	char buf[4096];
-	size_t n;
-	while ((n = fread(buf, 1, sizeof buf, in)) > 0)
-		assert_int_equal(fwrite(buf, 1, n, out), n);
-	fclose(in);
-	assert_int_equal(fclose(out), 0);
-}
 
 /* A temporary copy of data/ in dir (mkdtemp template), with `file` taken
  * from tests/fixtures/model/<fixture>/ (fixture NULL: none) or left out
@@ -50,7 +36,7 @@ make_data_dir(char *dir, const char *fixture, const char *file, const char *omit
 		else
 			snprintf(from, sizeof from, "data/%s", data_files[i]);
 		snprintf(to, sizeof to, "%s/%s", dir, data_files[i]);
-		copy_file(from, to);
+		assert_true(test_copy_file(from, to));
 	}
 }
 
@@ -70,12 +56,12 @@ remove_data_dir(const char *dir)
 static int
 load_capture(const char *dir, struct model_data *m, char **msg)
 {
-	size_t len = 0;
-	*msg = NULL;
-	FILE *err = open_memstream(msg, &len);
-	assert_non_null(err);
-	int n = model_io_load(dir, m, err);
-	fclose(err);
+	struct diag *dg = diag_alloc(NULL);
+	int n = model_io_load(dir, m, dg);
+	assert_int_equal(n, diag_n_errors(dg));
+	assert_int_equal(diag_exit_status(dg), n > 0 ? 2 : 0);
+	*msg = xstrdup(diag_text(dg));
+	diag_free(dg);
 	return n;
 }
 
@@ -235,7 +221,9 @@ model_io_calibration_json_should_load_back_unchanged(void **state)
 	assert_int_equal(write(fd, txt, strlen(txt)), (ssize_t)strlen(txt));
 	close(fd);
 	free(txt);
-	assert_int_equal(model_io_load_calibration(path, &b, stderr), 0);
+	struct diag *dg = diag_alloc(stderr);
+	assert_int_equal(model_io_load_calibration(path, &b, dg), 0);
+	diag_free(dg);
 	unlink(path);
 	assert_memory_equal(&a, &b, sizeof a);
 }
@@ -247,7 +235,7 @@ model_io_should_name_a_missing_file(void **state)
 {
 	(void)state;
 	expect_bad_also(NULL, NULL, "calibration.json", "calibration.json: error: ",
-	    "cannot open (No such file or directory)");
+	    "cannot read file: No such file or directory");
 }
 
 static void
@@ -261,7 +249,7 @@ model_io_missing_file_message_should_not_print_an_empty_field(void **state)
 	 * be an object".  Expected: "DIR/calibration.json: error: cannot open
 	 * (No such file or directory)".  (Fixed; kept as a regression test.) */
 	expect_bad(NULL, NULL, "calibration.json",
-	    "calibration.json: error: cannot open (No such file or directory)");
+	    "calibration.json: error: cannot read file: No such file or directory\n");
 }
 
 static void
@@ -270,7 +258,7 @@ model_io_should_locate_malformed_json(void **state)
 	(void)state;
 	/* the missing comma: line 6, column 7 ("load_factor") */
 	expect_bad("malformed", "roles.json", NULL,
-	    "roles.json:6:7: error: malformed JSON near here");
+	    "roles.json:6:7: error: malformed JSON near \"\\\"load_factor\\\": 1...\"");
 }
 
 static void
@@ -278,9 +266,9 @@ model_io_should_refuse_an_unknown_key(void **state)
 {
 	(void)state;
 	expect_bad("unknown_key", "airframes.json", NULL,
-	    "airframes.json: error: classes[1] \"ConsumerFolding\".kapa: unknown field");
+	    "airframes.json:18:7: error: classes[1].kapa: unknown field; did you mean \"kappa\"?\n");
 	expect_bad("unknown_key", "airframes.json", NULL,
-	    "airframes.json: error: classes[1] \"ConsumerFolding\".kappa: missing");
+	    "airframes.json:16:5: error: classes[1].kappa: missing field (a number from 1 to 3)\n");
 }
 
 static void
@@ -288,8 +276,8 @@ model_io_should_refuse_an_out_of_range_value(void **state)
 {
 	(void)state;
 	expect_bad("out_of_range", "calibration.json", NULL,
-	    "calibration.json: error: battery_packaging_base: out of range "
-	    "(got 3.85, allowed [0.8, 2])");
+	    "calibration.json:10:29: error: battery_packaging_base: out of range: 3.85 "
+	    "(allowed 0.8 to 2)");
 }
 
 static void
@@ -297,7 +285,8 @@ model_io_should_refuse_a_duplicate_chemistry(void **state)
 {
 	(void)state;
 	expect_bad("duplicate_chemistry", "chemistries.json", NULL,
-	    "chemistries.json: error: chemistries[5] \"LiPo\".name: duplicate chemistry");
+	    "chemistries.json:75:15: error: chemistries[5].name: duplicate id \"LiPo\" "
+	    "(first given by chemistries[0])");
 }
 
 static void
@@ -305,7 +294,7 @@ model_io_should_refuse_a_missing_role(void **state)
 {
 	(void)state;
 	expect_bad("missing_role", "roles.json", NULL,
-	    "roles.json: error: roles: role \"mapping\" is missing");
+	    "roles.json:3:12: error: roles: missing entry \"mapping\"");
 }
 
 int

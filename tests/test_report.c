@@ -277,7 +277,7 @@ report_letter_template_should_render(void **state)
 	unsigned char *bytes;
 	size_t n;
 	struct solve_result *r = solve(fx, "lidar_mapping_quad", -1, &bytes, &n);
-	struct template *letter = template_load("templates/letter.json", stderr);
+	struct template *letter = cli_template_load("templates/letter.json", stderr);
 	assert_non_null(letter);
 	struct template *a4 = fx->tpl;
 	fx->tpl = letter;

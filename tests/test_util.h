@@ -5,6 +5,7 @@
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -56,6 +57,24 @@ assert_golden(const char *path, const char *text)
 		         path, i, got, n);
 	}
 	free(want);
+}
+
+/* Copies the file src to dst; false when src cannot be opened. */
+static inline bool
+test_copy_file(const char *src, const char *dst)
+{
+	FILE *in = fopen(src, "rb");
+	if (in == NULL)
+		return false;
+	FILE *out = fopen(dst, "wb");
+	assert_non_null(out);
+	char buf[4096];
+	size_t n;
+	while ((n = fread(buf, 1, sizeof buf, in)) > 0)
+		assert_int_equal(fwrite(buf, 1, n, out), n);
+	fclose(in);
+	assert_int_equal(fclose(out), 0);
+	return true;
 }
 
 #endif

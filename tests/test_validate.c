@@ -10,6 +10,7 @@
 #include <cjson/cJSON.h>
 
 #include "input/mission_io.h"
+#include "core/diag.h"
 #include "input/model_io.h"
 #include "util/xalloc.h"
 
@@ -21,7 +22,11 @@ static int
 setup(void **state)
 {
 	(void)state;
-	return model_io_load("data", &md, stderr) == 0 ? 0 : -1;
+	struct diag *dg = diag_alloc(stderr);
+	int n_err = model_io_load("data", &md, dg);
+	diag_flush(dg);
+	diag_free(dg);
+	return n_err == 0 ? 0 : -1;
 }
 
 static void
@@ -298,6 +303,34 @@ cohort_should_solve_each_row_and_count_only_converged_rows(void **state)
 	cohort_free(&c);
 }
 
+/* A row whose fact the mission format cannot hold is skipped, and the
+ * reason names the fact, the field and the contract's range. */
+static void
+rule_should_name_the_fact_outside_the_mission_range(void **state)
+{
+	(void)state;
+	struct cohort c;
+	load(FIX "rules.csv", &c);
+	struct cohort_row r = c.rows[0];
+	struct mission_spec s;
+	struct validate_fact f;
+	unsigned notes;
+	char text[256];
+	r.rotor_count = 2;
+	assert_int_equal(validate_mission_explained(&r, &md, &s, &notes, &f), VALIDATE_SKIP_RANGE);
+	validate_fact_text(&f, text, sizeof text);
+	assert_string_equal(text, "rotor_count 2 gives num_rotors 2, outside the mission "
+	                          "contract's range (3 to 16)");
+	r = c.rows[0];
+	r.has_hover_time_min = true;
+	r.hover_time_min = 1e6;
+	assert_int_equal(validate_mission_explained(&r, &md, &s, &notes, &f), VALIDATE_SKIP_RANGE);
+	validate_fact_text(&f, text, sizeof text);
+	assert_non_null(strstr(text, "hover_time_min 1e+06 gives t_hover_s 5e+07, outside the "
+	                             "mission contract's range ("));
+	cohort_free(&c);
+}
+
 /* A 5-inch racer row: the racing role's default T/W 25 cannot close, so
  * the row is sized at the relaxed target and says so. */
 static void
@@ -336,6 +369,7 @@ main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(rule_should_take_every_fact_of_a_full_row),
+		cmocka_unit_test(rule_should_name_the_fact_outside_the_mission_range),
 		cmocka_unit_test(rule_should_turn_shedding_off_for_the_roles_that_shed),
 		cmocka_unit_test(rule_should_derive_the_wheelbase_from_the_overlap_limit),
 		cmocka_unit_test(rule_should_not_lock_a_propeller_the_wheelbase_cannot_hold),

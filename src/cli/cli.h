@@ -41,4 +41,12 @@ struct sha256_ctx;
  * holds "PATH: why". */
 int cli_hash_file(struct sha256_ctx *c, const char *path, char *err, size_t errlen);
 
+struct template;
+
+/* The dossier template: the built-in one when path is NULL, else the file,
+ * its fonts and logo checked now (output/assets.h), before any mission is
+ * solved.  Errors go to err; NULL when there was any.  Free with
+ * template_free(). */
+struct template *cli_template_load(const char *path, FILE *err);
+
 #endif

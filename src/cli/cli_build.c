@@ -111,24 +111,31 @@ list_json(const char *dir, struct path_list *l)
 		list_add(l, p);
 	}
 	closedir(d);
-	qsort(l->v + first, l->n - first, sizeof *l->v, cmp_str);
+	/* An empty directory adds nothing: l->v may still be NULL, which qsort
+	 * must not be given (UBSan). */
+	if (l->n - first > 1)
+		qsort(l->v + first, l->n - first, sizeof *l->v, cmp_str);
 	return 0;
 }
 
-/* A directory contributes its *.json files; a file is taken as given. */
+/* A directory contributes its *.json files (one without any is noted in
+ * empty); a file is taken as given. */
 static int
-expand(const char *arg, struct path_list *l)
+expand(const char *arg, struct path_list *l, struct path_list *empty)
 {
 	struct stat st;
 	if (stat(arg, &st) != 0) {
 		fprintf(stderr, "%s: error: %s\n", arg, strerror(errno));
 		return -1;
 	}
+	size_t before = l->n;
 	if (S_ISDIR(st.st_mode) && list_json(arg, l) != 0) {
 		fprintf(stderr, "%s: error: cannot read the directory: %s\n", arg,
 		    strerror(errno));
 		return -1;
 	}
+	if (S_ISDIR(st.st_mode) && l->n == before && empty != NULL)
+		list_add(empty, arg);
 	if (!S_ISDIR(st.st_mode))
 		list_add(l, arg);
 	return 0;
@@ -517,6 +524,7 @@ cli_build(int argc, char **argv)
 {
 	double t0 = batch_now_s();
 	struct build b = { 0 };
+	struct path_list empty_dirs = { 0 };   /* directories without a mission */
 	const char *db = NULL, *tpl_path = NULL;
 	long n_cpu = sysconf(_SC_NPROCESSORS_ONLN);
 	int n_workers = n_cpu >= 1 && n_cpu <= BUILD_MAX_JOBS ? (int)n_cpu : 1;
@@ -526,13 +534,14 @@ cli_build(int argc, char **argv)
 		const char *a = argv[i];
 		int has_val = i + 1 < argc;
 		if (opts_done || a[0] != '-' || a[1] == '\0') {
-			if (expand(a, &b.missions) != 0)
+			if (expand(a, &b.missions, &empty_dirs) != 0)
 				rc = 2;
 		} else if (strcmp(a, "--") == 0) {
 			opts_done = 1;
 		} else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
 			cli_help_command("build", stdout);
 			list_free(&b.missions);
+			list_free(&empty_dirs);
 			return 0;
 		} else if (strcmp(a, "-q") == 0) {
 			b.quiet = 1;
@@ -555,13 +564,20 @@ cli_build(int argc, char **argv)
 			fprintf(stderr, "aeroeval build: unknown option or missing value: %s\n%s",
 			    a, BUILD_USAGE);
 			list_free(&b.missions);
+			list_free(&empty_dirs);
 			return 2;
 		}
 	}
-	if (b.missions.n == 0 && rc == 0) {
+	if (b.missions.n == 0 && rc == 0 && empty_dirs.n > 0) {
+		for (size_t i = 0; i < empty_dirs.n; i++)
+			fprintf(stderr, "%s: error: no mission file (*.json) in this directory\n",
+			    empty_dirs.v[i]);
+		rc = 2;
+	} else if (b.missions.n == 0 && rc == 0) {
 		fprintf(stderr, "aeroeval build: no mission given\n%s", BUILD_USAGE);
 		rc = 2;
 	}
+	list_free(&empty_dirs);
 	b.names = xcalloc(b.missions.n + 1, sizeof *b.names);
 	b.fp = xcalloc(b.missions.n + 1, sizeof *b.fp);
 	b.env = xcalloc(1, sizeof *b.env);
@@ -572,7 +588,7 @@ cli_build(int argc, char **argv)
 	if (rc == 0 && cli_env_load(b.env, db, 1, stderr) != 0)
 		rc = 2;
 	if (rc == 0) {
-		b.tpl = tpl_path ? template_load(tpl_path, stderr) : template_default();
+		b.tpl = cli_template_load(tpl_path, stderr);
 		if (b.tpl == NULL)
 			rc = 2;
 	}

@@ -71,8 +71,7 @@ run_suite(const struct cli_env *env, const char *path, const char *dir_opt,
 		fprintf(stderr, "%s: error: %s\n", path, err);
 		return 2;
 	}
-	struct template *tpl = tpl_path ? template_load(tpl_path, stderr)
-	    : template_default();
+	struct template *tpl = cli_template_load(tpl_path, stderr);
 	if (tpl == NULL)
 		return 2;
 

@@ -6,10 +6,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <cjson/cJSON.h>
 
 #include "study/calibrate.h"
+#include "cli/batch.h"
 #include "cli/cli.h"
 #include "input/cohort.h"
 #include "output/doc.h"
@@ -18,6 +20,7 @@
 #include "input/model_io.h"
 #include "study/validate.h"
 #include "study/valreport.h"
+#include "util/text.h"
 #include "util/xalloc.h"
 
 #define VALIDATE_USAGE "usage: aeroeval validate [--report FILE.pdf] [--json] [--missions DIR] COHORT.csv\n"
@@ -39,6 +42,16 @@ load_inputs(const char *path, struct cli_env *env, struct cohort *c)
 		return 2;
 	}
 	return 0;
+}
+
+/* Why a row was skipped, naming the fact when one was out of range. */
+static void
+skip_line(const struct validate_row *vr, char *buf, size_t n)
+{
+	if (vr->skip == VALIDATE_SKIP_RANGE)
+		validate_fact_text(&vr->fact, buf, n);
+	else
+		snprintf(buf, n, "%s", validate_skip_text(vr->skip));
 }
 
 /* The notes of a row as "a; b; c" into buf. */
@@ -93,9 +106,10 @@ print_table(FILE *out, const struct cohort *c, const struct validate_report *v)
 			continue;
 		if (!header++)
 			fprintf(out, "\nNot in the statistics:\n");
+		char why[256];
+		skip_line(vr, why, sizeof why);
 		if (vr->status == VALIDATE_ROW_SKIPPED)
-			fprintf(out, "  %-28.28s skipped: %s\n", c->rows[i].name,
-			    validate_skip_text(vr->skip));
+			fprintf(out, "  %-28.28s skipped: %s\n", c->rows[i].name, why);
 		else if (vr->status == VALIDATE_ROW_NOT_CONVERGED)
 			fprintf(out, "  %-28.28s not converged (last mass %.3f kg)\n",
 			    c->rows[i].name, vr->predicted_kg);
@@ -127,6 +141,30 @@ print_table(FILE *out, const struct cohort *c, const struct validate_report *v)
 	}
 }
 
+/* Every row ran into a skip, a loop that did not converge or the gate:
+ * say so with the count of each, rather than print a MAPE of no row. */
+static void
+no_row_validated(const char *path, const struct validate_report *v)
+{
+	size_t n_skip[VALIDATE_SKIP_MAX] = { 0 }, n_status[VALIDATE_ROW_STATUS_MAX] = { 0 };
+	for (size_t i = 0; i < v->n_rows; i++) {
+		n_status[v->rows[i].status]++;
+		if (v->rows[i].status == VALIDATE_ROW_SKIPPED)
+			n_skip[v->rows[i].skip]++;
+	}
+	fprintf(stderr, "%s: error: no row could be validated (%zu rows", path, v->n_rows);
+	for (int k = 1; k < VALIDATE_SKIP_MAX; k++)
+		if (n_skip[k] > 0)
+			fprintf(stderr, "; %zu skipped: %s", n_skip[k],
+			        validate_skip_text((enum validate_skip)k));
+	if (n_status[VALIDATE_ROW_NOT_CONVERGED] > 0)
+		fprintf(stderr, "; %zu did not converge", n_status[VALIDATE_ROW_NOT_CONVERGED]);
+	if (n_status[VALIDATE_ROW_NOT_RUN] > 0)
+		fprintf(stderr, "; %zu rejected by the feasibility gate",
+		        n_status[VALIDATE_ROW_NOT_RUN]);
+	fprintf(stderr, ")\n");
+}
+
 static cJSON *
 summary_json(const struct stats_summary *s)
 {
@@ -144,8 +182,11 @@ static char *
 report_json(const char *path, const struct cohort *c, const struct validate_report *v)
 {
 	cJSON *root = cJSON_CreateObject();
-	cJSON_AddStringToObject(root, "cohort", path);
-	cJSON_AddNumberToObject(root, "rows", (double)v->n_rows);
+	char *path_utf8 = text_utf8_copy(path);   /* a file name need not be UTF-8 */
+	cJSON_AddStringToObject(root, "cohort", path_utf8);
+	free(path_utf8);
+	/* "n_rows": "rows" is the array of rows below (it was both). */
+	cJSON_AddNumberToObject(root, "n_rows", (double)v->n_rows);
 	cJSON *mt = summary_json(&v->mtow);
 	cJSON_AddNumberToObject(mt, "ci95_lo_pct", v->ci_lo_pct);
 	cJSON_AddNumberToObject(mt, "ci95_hi_pct", v->ci_hi_pct);
@@ -170,8 +211,11 @@ report_json(const char *path, const struct cohort *c, const struct validate_repo
 		cJSON_AddNumberToObject(o, "line", (double)row->line);
 		cJSON_AddStringToObject(o, "class", validate_class_key(row));
 		cJSON_AddStringToObject(o, "status", validate_status_text(vr->status));
-		if (vr->status == VALIDATE_ROW_SKIPPED)
-			cJSON_AddStringToObject(o, "skip_reason", validate_skip_text(vr->skip));
+		if (vr->status == VALIDATE_ROW_SKIPPED) {
+			char why[256];
+			skip_line(vr, why, sizeof why);
+			cJSON_AddStringToObject(o, "skip_reason", why);
+		}
 		cJSON_AddNumberToObject(o, "actual_kg", vr->actual_kg);
 		if (vr->status == VALIDATE_ROW_OK || vr->status == VALIDATE_ROW_NOT_CONVERGED)
 			cJSON_AddNumberToObject(o, "predicted_kg", vr->predicted_kg);
@@ -339,6 +383,10 @@ cli_validate(int argc, char **argv)
 		fprintf(stderr, "%s: internal error: statistics refused the predictions\n", path);
 		rc = 3;
 	}
+	if (rc == 0 && v.n_ok == 0) {
+		no_row_validated(path, &v);
+		rc = 2;
+	}
 	if (rc == 0) {
 		if (json) {
 			char *txt = report_json(path, &c, &v);
@@ -357,6 +405,43 @@ cli_validate(int argc, char **argv)
 	cli_env_free(env);
 	free(env);
 	return rc;
+}
+
+/* Progress of `calibrate` on stderr, at most once a second
+ * (AEROEVAL_PROGRESS_S overrides the interval; tests use 0): redrawn in
+ * place on a terminal, one line each time otherwise (a log). */
+struct progress_line {
+	double t0, last;    /* start, last line (batch_now_s) */
+	double every_s;     /* the interval */
+	int tty;            /* stderr is a terminal */
+	int shown;          /* a line is on screen (tty) */
+};
+
+static void
+progress_init(struct progress_line *pl)
+{
+	const char *env = getenv("AEROEVAL_PROGRESS_S");
+	char *end;
+	pl->t0 = pl->last = batch_now_s();
+	pl->every_s = env != NULL ? strtod(env, &end) : 1.0;
+	if (env == NULL || *end != '\0' || !(pl->every_s >= 0.0))
+		pl->every_s = 1.0;
+	pl->tty = isatty(STDERR_FILENO);
+	pl->shown = 0;
+}
+
+static void
+show_progress(void *ctx, size_t pass, size_t row, size_t n_rows, size_t n_solves)
+{
+	struct progress_line *pl = ctx;
+	double now = batch_now_s();
+	if (now - pl->last < pl->every_s)
+		return;
+	pl->last = now;
+	fprintf(stderr, "%scalibrate: %s pass %zu, row %zu of %zu, %zu solves, %.0f s%s",
+	        pl->tty ? "\r\033[K" : "", pass == 0 ? "picking rows," : "fitting,", pass,
+	        row, n_rows, n_solves, now - pl->t0, pl->tty ? "" : "\n");
+	pl->shown = pl->tty;
 }
 
 int
@@ -382,7 +467,12 @@ cli_calibrate(int argc, char **argv)
 	int rc = load_inputs(path, env, &c);
 	struct calibrate_result cr;
 	if (rc == 0) {
-		int st = calibrate_fit(&c, &env->model, &cr);
+		struct progress_line pl;
+		progress_init(&pl);
+		struct calibrate_progress pg = { show_progress, &pl };
+		int st = calibrate_fit(&c, &env->model, &pg, &cr);
+		if (pl.shown)
+			fputs("\r\033[K", stderr);
 		if (st == -1) {
 			fprintf(stderr, "%s: error: no row gives a converged mission to fit on\n", path);
 			rc = 2;

@@ -20,8 +20,6 @@
 #include "util/strbuf.h"
 #include "util/xalloc.h"
 
-#define MISSION_MAX_BYTES (4u << 20) /* a mission file above 4 MiB is refused */
-
 int
 pipeline_name(const char *path, char *out, size_t n)
 {
@@ -35,12 +33,14 @@ pipeline_solve(const struct cli_env *env, const char *path,
 {
 	unsigned char *buf = NULL;
 	size_t n = 0;
-	char msg[512];
-	if (file_read(path, MISSION_MAX_BYTES, &buf, &n, msg, sizeof msg) != 0) {
-		fprintf(err, "%s: error: %s\n", path, msg);
+	struct diag *dg = diag_alloc(err);
+	/* Read here rather than by mission_io_load: the bytes are hashed and
+	 * attached to the dossier too. */
+	if (json_in_read(path, MISSION_IO_MAX_BYTES, dg, &buf, &n) != 0) {
+		diag_flush(dg);
+		diag_free(dg);
 		return PIPE_REJECTED;
 	}
-	struct diag *dg = diag_alloc(err);
 	struct mission_spec spec;
 	int n_err = mission_io_parse(path, (const char *)buf, n,
 	    env->model.chem_names, dg, &spec);

@@ -135,6 +135,16 @@ void
 diag_report(struct diag *dg, enum diag_kind kind, const struct diag_loc *loc,
             const char *path, const char *fmt, ...)
 {
+	va_list ap;
+	va_start(ap, fmt);
+	diag_vreport(dg, kind, loc, path, fmt, ap);
+	va_end(ap);
+}
+
+void
+diag_vreport(struct diag *dg, enum diag_kind kind, const struct diag_loc *loc,
+             const char *path, const char *fmt, va_list ap)
+{
 	const struct diag_kind_info *k = &diag_kinds[kind];
 
 	if (loc != NULL && loc->line > 0)
@@ -151,17 +161,21 @@ diag_report(struct diag *dg, enum diag_kind kind, const struct diag_loc *loc,
 		diag_append(dg, "%s: ", q + 1);
 	}
 	diag_append(dg, "%s", k->summary);
-	if (fmt != NULL) {
-		va_list ap;
-		va_start(ap, fmt);
+	if (fmt != NULL)
 		diag_vappend(dg, fmt, ap);
-		va_end(ap);
-	}
 	diag_append(dg, "\n");
 
 	if (k->sev == DIAG_ERROR)
 		dg->n_errors++;
 	diag_raise_status(dg, k->status);
+}
+
+void
+diag_count(struct diag *dg, enum diag_kind kind)
+{
+	if (diag_kinds[kind].sev == DIAG_ERROR)
+		dg->n_errors++;
+	diag_raise_status(dg, diag_kinds[kind].status);
 }
 
 void

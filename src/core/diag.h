@@ -19,6 +19,7 @@
 #ifndef AEROEVAL_DIAG_H
 #define AEROEVAL_DIAG_H
 
+#include <stdarg.h>
 #include <stdio.h>
 
 enum diag_severity {
@@ -49,6 +50,18 @@ X(TOO_LONG,     DIAG_ERROR, 2, "string too long") \
 X(BAD_UTF8,     DIAG_ERROR, 2, "string is not valid UTF-8") \
 X(NUL_IN_STRING, DIAG_ERROR, 2, "string contains a NUL character") \
 X(BAD_DATE,     DIAG_ERROR, 2, "invalid date") \
+X(MISSING,      DIAG_ERROR, 2, "missing field") \
+X(MISSING_ENTRY, DIAG_ERROR, 2, "missing entry") \
+X(CONTROL_CHAR, DIAG_ERROR, 2, "string contains a control character") \
+X(FORMULA,      DIAG_ERROR, 2, "text starts like a spreadsheet formula") \
+X(INCONSISTENT, DIAG_ERROR, 2, "inconsistent values") \
+X(BAD_ID,       DIAG_ERROR, 2, "invalid id") \
+X(DUPLICATE_ID, DIAG_ERROR, 2, "duplicate id") \
+X(TOO_MANY,     DIAG_ERROR, 2, "too many entries") \
+X(BAD_FONT,     DIAG_ERROR, 2, "not a usable TrueType font") \
+X(BAD_IMAGE,    DIAG_ERROR, 2, "not a usable PNG image") \
+X(NO_INPUT,     DIAG_ERROR, 2, "nothing to read") \
+X(MORE,         DIAG_NOTE,  0, "more errors not shown") \
 X(INTERNAL,     DIAG_ERROR, 3, "internal error")
 
 enum diag_kind {
@@ -79,6 +92,17 @@ void diag_report(struct diag *dg, enum diag_kind kind,
                  const struct diag_loc *loc, const char *path,
                  const char *fmt, ...)
 	__attribute__((format(printf, 5, 6)));
+
+/* The same with a va_list (consumed), for wrappers such as json_in. */
+void diag_vreport(struct diag *dg, enum diag_kind kind,
+                  const struct diag_loc *loc, const char *path,
+                  const char *fmt, va_list ap)
+	__attribute__((format(printf, 5, 0)));
+
+/* Count one diagnostic of this kind without recording its text: for a
+ * reader that shows only the first errors of a file (json_in.h).  The error
+ * count and the exit status change as if it had been reported. */
+void diag_count(struct diag *dg, enum diag_kind kind);
 
 /* Write the buffered lines to out in one write, then forget them. */
 void diag_flush(struct diag *dg);

@@ -23,6 +23,7 @@
 #define RES_MAX_RATIONALE  48
 #define RES_MAX_BOM        32
 #define RES_MAX_CANDIDATES 512  /* motors scored for the crosshair figure */
+#define RES_ID_MAX         128  /* a catalogue id, NUL included (CATALOG_ID_MAX) */
 #define RES_TEXT           256
 
 /* Mission phases, in the order they are flown. */
@@ -268,7 +269,7 @@ struct res_run {
 /* A catalogue part chosen by the optimizer. */
 struct res_part {
 	bool chosen;
-	char id[64];
+	char id[RES_ID_MAX];
 	char manufacturer[64];
 	char part_number[128];
 	char description[160];
@@ -294,12 +295,12 @@ struct res_bom_line {
 	double total_price_usd;
 	char price_date[12];      /* of the price snapshot, "" unknown */
 	char source_url[160];     /* the maker's page, "" for custom lines */
-	char catalogue_id[64];    /* "" for custom lines */
+	char catalogue_id[RES_ID_MAX]; /* "" for custom lines */
 };
 
 /* A motor scored by the optimizer (crosshair figure). */
 struct res_candidate {
-	char id[64];
+	char id[RES_ID_MAX];
 	double kv;
 	double mass_kg;
 	double j_score;           /* 1e9 when pruned */

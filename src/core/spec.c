@@ -145,8 +145,7 @@ spec_suggest(const char *path, char *out, size_t n)
 	const char *key = spec_split(path, group, sizeof group);
 	size_t klen = strlen(key);
 	/* Close enough: about one edit per three characters, at least one. */
-	size_t limit = klen / 3 > 3 ? 3 : (klen / 3 < 1 ? 1 : klen / 3);
-	size_t best_d = limit + 1;
+	size_t best_d = text_typo_limit(klen) + 1;
 	const char *best = NULL;
 	size_t best_len = 0;
 

@@ -1,12 +1,8 @@
 /* template.h — the dossier template: page, margins, fonts, colours, sections.
  *
- * A template is a plain value struct loaded from templates/NAME.json (or built
- * by template_default()).  It says how the dossier looks and which sections
- * it contains, never what it says.  Loading is strict like the rest of
- * aeroeval: an unknown key, a wrong type, a bad colour, an unknown section id
- * or a font file that does not exist is printed as
- *     FILE: error: PATH: MESSAGE
- * (every such error in one pass) and the load fails.
+ * A template is a plain value struct loaded from templates/NAME.json by
+ * input/template_io.c (or built by template_default()).  It says how the
+ * dossier looks and which sections it contains, never what it says.
  *
  * Template JSON (every key optional; what is absent keeps the A4 default):
  *   {
@@ -26,12 +22,11 @@
  * else the system's DejaVu.  "sections" replaces the whole list: its order is the dossier's
  * order, an id missing from it is disabled, a repeated id is an error.
  *
- * Who may include it: the output layer (doc, plot, report) and the CLI.
+ * Who may include it: the input layer (template_io), the output layer (doc,
+ * plot, report, assets) and the CLI.
  */
 #ifndef AEROEVAL_TEMPLATE_H
 #define AEROEVAL_TEMPLATE_H
-
-#include <stdio.h>
 
 #define TEMPLATE_PATH_MAX 1024   /* longest font/logo path we keep */
 #define TEMPLATE_TITLE_MAX 96    /* longest section title, bytes incl. NUL */
@@ -95,20 +90,27 @@ struct template {
 	int n_sections;                       /* used entries of sections[] */
 };
 
+/* The files a template names, checked when it loads (template_io.h). */
+enum template_asset {
+	TEMPLATE_ASSET_FONT,   /* a TrueType font */
+	TEMPLATE_ASSET_LOGO    /* a PNG image */
+};
+
 /* The built-in A4 template (DejaVu fonts, every section but sensitivity).
  * Ownership: free with template_free(). Never NULL. */
 struct template *template_default(void);
-
-/* Loads and validates a template file; errors go to err (may be NULL) as
- * "path: error: json.path: message".  Returns NULL when any error was found.
- * Ownership: free with template_free(). */
-struct template *template_load(const char *path, FILE *err);
 
 /* Frees a template; NULL is a no-op. */
 void template_free(struct template *t);
 
 /* The JSON id of a section ("cover", ...), or NULL for an invalid id. */
 const char *template_section_name(enum template_section_id id);
+
+/* The section whose JSON id is name, or -1. */
+int template_section_id(const char *name);
+
+/* The default title of a section ("Bill of materials"), NULL if invalid. */
+const char *template_section_title(enum template_section_id id);
 
 /* The entry for a section, or NULL if the template does not list it. */
 const struct template_section *template_section_get(const struct template *t,

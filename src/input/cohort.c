@@ -12,6 +12,7 @@
 #include "util/csv.h"
 #include "util/strbuf.h"
 #include "util/file.h"
+#include "util/text.h"
 #include "util/xalloc.h"
 
 /* Largest cohort file accepted: the real ones are a few kB. */
@@ -246,6 +247,34 @@ read_cell(struct cohort *c, const char *file, size_t line, const struct col *cl,
 	return 0;
 }
 
+/* Text cells end up in reports, JSON and file names: valid UTF-8 (a
+ * Latin-1 "é" made `validate --json` print invalid JSON) and no control
+ * character, except line breaks and tabs in the free-text columns.
+ * Returns 0, or -1 after adding an error. */
+static int
+check_text(struct cohort *c, const char *file, size_t line, const struct col *cl,
+           const char *s)
+{
+	bool free_text = strcmp(cl->name, "notes") == 0 || strcmp(cl->name, "source") == 0;
+	size_t len = strlen(s);
+	for (size_t i = 0; i < len;) {
+		size_t seq = text_utf8_seq(s + i, len - i);
+		unsigned char ch = (unsigned char)s[i];
+		if (seq == 0) {
+			add_error(c, file, line, cl->name, "not valid UTF-8 (byte 0x%02x at "
+			          "offset %zu); save the file as UTF-8", ch, i);
+			return -1;
+		}
+		if ((ch < 0x20 || ch == 0x7f) && !(free_text && strchr("\t\r\n", ch) != NULL)) {
+			add_error(c, file, line, cl->name, "control character 0x%02x at offset %zu",
+			          ch, i);
+			return -1;
+		}
+		i += seq;
+	}
+	return 0;
+}
+
 static void
 free_row(struct cohort_row *row)
 {
@@ -273,6 +302,10 @@ read_row(struct cohort *c, const char *file, const struct csv_record *rec,
 		if (cl->kind == K_TEXT) {
 			/* Text is kept verbatim: quoting already delimits it. */
 			char **slot = (char **)((char *)row + cl->off);
+			if (check_text(c, file, rec->line, cl, rec->fields[i]) < 0) {
+				n_bad++;
+				continue;
+			}
 			free(*slot);
 			*slot = xstrdup(rec->fields[i]);
 			if (cl->required && trimmed(tmp, rec->fields[i])[0] == '\0') {

@@ -7,7 +7,8 @@
  * and text fields are "" (never NULL).
  *
  * A malformed row (bad number, unknown class or role, negative mass, wrong
- * number of cells, broken quoting) is reported as
+ * number of cells, broken quoting, text that is not valid UTF-8 or holds a
+ * control character) is reported as
  *	FILE:LINE: error: COLUMN: message
  * and left out, while the other rows are kept.  Row-level problems use the
  * column name "row".  Nothing here prints: messages are collected in

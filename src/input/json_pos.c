@@ -1,6 +1,6 @@
 /* json_pos.c — a position-recording JSON scanner (see json_pos.h).
  *
- * It does not build values, only paths and positions.  It trusts cJSON to
+ * It does not build values, only positions and flags.  It trusts cJSON to
  * have judged the syntax; where the text is malformed it simply stops.
  */
 #include "input/json_pos.h"
@@ -17,16 +17,12 @@
 #define JSON_POS_MAX_DEPTH 1000
 
 struct json_pos {
-	struct json_pos_entry *v;  /* entries in document order */
-	size_t n;                  /* entries used */
-	size_t cap;                /* entries allocated */
-};
-
-/* A growable NUL-terminated string (the current path, a decoded key). */
-struct jp_str {
-	char *s;
-	size_t len;
-	size_t cap;
+	struct json_pos_entry *v;      /* entries in document order */
+	size_t n, cap;                 /* used, allocated */
+	struct json_pos_problem *p;    /* lexical problems in document order */
+	size_t n_p, cap_p;
+	unsigned all_flags;            /* OR of the entries' flags */
+	bool complete;                 /* the first value was scanned whole */
 };
 
 struct jp_scan {
@@ -36,34 +32,8 @@ struct jp_scan {
 	int line, col;         /* position of b[pos] */
 	int depth;             /* open objects and arrays */
 	bool failed;           /* malformed text met: stop */
-	struct jp_str path;    /* path of the value being scanned */
-	struct jp_str key;     /* scratch: the last decoded key */
 	struct json_pos *jp;   /* the index being built */
 };
-
-static void
-jp_str_put(struct jp_str *t, const char *s, size_t n)
-{
-	if (t->len + n + 1 > t->cap) {
-		while (t->len + n + 1 > t->cap)
-			t->cap = t->cap ? 2 * t->cap : 64;
-		t->s = xrealloc(t->s, t->cap);
-	}
-	memcpy(t->s + t->len, s, n);
-	t->len += n;
-	t->s[t->len] = '\0';
-}
-
-static void
-jp_str_truncate(struct jp_str *t, size_t len)
-{
-	t->len = len;
-	if (t->s != NULL)
-		t->s[len] = '\0';
-}
-
-
-
 
 /* Consume one byte, keeping line:col of the next one. */
 static void
@@ -84,123 +54,129 @@ jp_at(const struct jp_scan *s, char c)
 	return s->pos < s->len && s->b[s->pos] == c;
 }
 
+static bool
+jp_is_ws(char c)
+{
+	return c == ' ' || c == '\t' || c == '\r' || c == '\n';
+}
+
 static void
 jp_skip_ws(struct jp_scan *s)
 {
-	while (s->pos < s->len && strchr(" \t\r\n", s->b[s->pos]) != NULL &&
-	       s->b[s->pos] != '\0')
+	while (s->pos < s->len && jp_is_ws(s->b[s->pos]))
 		jp_adv(s);
 }
 
-static int
-jp_hex4(const char *p)
+static bool
+jp_is_hex(char c)
 {
-	int v = 0;
-	for (int i = 0; i < 4; i++) {
-		char c = p[i];
-		v <<= 4;
-		if (c >= '0' && c <= '9')
-			v |= c - '0';
-		else if (c >= 'a' && c <= 'f')
-			v |= c - 'a' + 10;
-		else if (c >= 'A' && c <= 'F')
-			v |= c - 'A' + 10;
-		else
-			return -1;
-	}
-	return v;
+	return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
 }
 
-/* Append code point cp to t as UTF-8. */
+/* Record a problem of the entry with index `entry` (which may not exist
+ * yet: a key is scanned before its value's entry is added). */
 static void
-jp_put_utf8(struct jp_str *t, unsigned long cp)
+jp_problem(struct jp_scan *s, enum json_pos_problem_kind kind, size_t entry,
+           int line, int col, unsigned char byte)
 {
-	char o[4];
-	size_t n;
-	if (cp < 0x80) {
-		o[0] = (char)cp;
-		n = 1;
-	} else if (cp < 0x800) {
-		o[0] = (char)(0xc0 | (cp >> 6));
-		o[1] = (char)(0x80 | (cp & 0x3f));
-		n = 2;
-	} else if (cp < 0x10000) {
-		o[0] = (char)(0xe0 | (cp >> 12));
-		o[1] = (char)(0x80 | ((cp >> 6) & 0x3f));
-		o[2] = (char)(0x80 | (cp & 0x3f));
-		n = 3;
-	} else {
-		o[0] = (char)(0xf0 | (cp >> 18));
-		o[1] = (char)(0x80 | ((cp >> 12) & 0x3f));
-		o[2] = (char)(0x80 | ((cp >> 6) & 0x3f));
-		o[3] = (char)(0x80 | (cp & 0x3f));
-		n = 4;
+	struct json_pos *jp = s->jp;
+	if (jp->n_p == jp->cap_p) {
+		jp->cap_p = jp->cap_p ? 2 * jp->cap_p : 8;
+		jp->p = xrealloc(jp->p, jp->cap_p * sizeof *jp->p);
 	}
-	jp_str_put(t, o, n);
+	jp->p[jp->n_p++] = (struct json_pos_problem){ kind, entry, line, col, byte };
 }
 
-/* Scan a string at s->pos (the opening quote).  When out is not NULL the
- * decoded text goes there, decoded as cJSON decodes it, so that a key's
- * path matches the cJSON item's ->string. */
-static void
-jp_string(struct jp_scan *s, struct jp_str *out)
+/* Scan a string at s->pos (the opening quote).  Returns JSON_POS_BAD when
+ * it holds a raw control character (the first one is recorded as a problem
+ * of entry `entry`), plus `nul_flag` when it spells \u0000. */
+static unsigned
+jp_string(struct jp_scan *s, size_t entry, unsigned nul_flag)
 {
-	if (out != NULL)
-		jp_str_truncate(out, 0);
+	unsigned flags = 0;
 	jp_adv(s); /* '"' */
 	while (s->pos < s->len && s->b[s->pos] != '"') {
-		char c = s->b[s->pos];
+		unsigned char c = (unsigned char)s->b[s->pos];
+		if (c < 0x20 && !(flags & JSON_POS_BAD)) {
+			jp_problem(s, JSON_POS_CONTROL, entry, s->line, s->col, c);
+			flags |= JSON_POS_BAD;
+		}
 		if (c != '\\') {
-			if (out != NULL)
-				jp_str_put(out, &c, 1);
 			jp_adv(s);
 			continue;
 		}
 		jp_adv(s);
 		if (s->pos >= s->len)
 			break;
-		c = s->b[s->pos];
-		if (c == 'u') {
-			int hi = s->pos + 5 <= s->len ? jp_hex4(s->b + s->pos + 1) : -1;
-			if (hi < 0) {
+		if (s->b[s->pos] == 'u') {
+			if (s->pos + 5 > s->len) {
 				s->failed = true;
-				return;
+				return flags;
 			}
+			for (int i = 1; i <= 4; i++)
+				if (!jp_is_hex(s->b[s->pos + i])) {
+					s->failed = true;
+					return flags;
+				}
+			if (memcmp(s->b + s->pos, "u0000", 5) == 0)
+				flags |= nul_flag;
 			for (int i = 0; i < 5; i++)
 				jp_adv(s);
-			unsigned long cp = (unsigned long)hi;
-			if (hi >= 0xd800 && hi <= 0xdbff && s->pos + 6 <= s->len &&
-			    s->b[s->pos] == '\\' && s->b[s->pos + 1] == 'u') {
-				int lo = jp_hex4(s->b + s->pos + 2);
-				if (lo >= 0xdc00 && lo <= 0xdfff) {
-					cp = 0x10000 + (((unsigned long)hi - 0xd800) << 10) +
-					     ((unsigned long)lo - 0xdc00);
-					for (int i = 0; i < 6; i++)
-						jp_adv(s);
-				}
-			}
-			if (out != NULL)
-				jp_put_utf8(out, cp);
 			continue;
 		}
-		const char *esc = strchr("\"\"\\\\//b\bf\fn\nr\rt\t", c);
-		if (esc == NULL || c == '\0') {
+		if (strchr("\"\\/bfnrt", s->b[s->pos]) == NULL || s->b[s->pos] == '\0') {
 			s->failed = true;
-			return;
+			return flags;
 		}
-		if (out != NULL)
-			jp_str_put(out, esc + 1, 1);
 		jp_adv(s);
 	}
 	if (!jp_at(s, '"')) {
 		s->failed = true;
-		return;
+		return flags;
 	}
 	jp_adv(s);
+	return flags;
+}
+
+/* True when b[0..n) is a number as JSON spells it:
+ * -?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?.  cJSON also takes "012",
+ * "1." and "-.5" (STACK.md §7); a strict reader does not. */
+static bool
+jp_number_ok(const char *b, size_t n)
+{
+	size_t i = 0;
+#define DIGIT(k) ((k) < n && b[k] >= '0' && b[k] <= '9')
+	if (i < n && b[i] == '-')
+		i++;
+	if (i < n && b[i] == '0')
+		i++;
+	else if (DIGIT(i) && b[i] != '0')
+		while (DIGIT(i))
+			i++;
+	else
+		return false;
+	if (i < n && b[i] == '.') {
+		i++;
+		if (!DIGIT(i))
+			return false;
+		while (DIGIT(i))
+			i++;
+	}
+	if (i < n && (b[i] == 'e' || b[i] == 'E')) {
+		i++;
+		if (i < n && (b[i] == '+' || b[i] == '-'))
+			i++;
+		if (!DIGIT(i))
+			return false;
+		while (DIGIT(i))
+			i++;
+	}
+#undef DIGIT
+	return i == n;
 }
 
 static size_t
-jp_add_entry(struct jp_scan *s, int key_line, int key_col)
+jp_add_entry(struct jp_scan *s, int key_line, int key_col, unsigned key_flags)
 {
 	struct json_pos *jp = s->jp;
 	if (jp->n == jp->cap) {
@@ -208,17 +184,17 @@ jp_add_entry(struct jp_scan *s, int key_line, int key_col)
 		jp->v = xrealloc(jp->v, jp->cap * sizeof *jp->v);
 	}
 	struct json_pos_entry *e = &jp->v[jp->n];
-	e->path = xstrdup(s->path.s != NULL ? s->path.s : "");
 	e->key_line = key_line;
 	e->key_col = key_col;
 	e->val_line = s->line;
 	e->val_col = s->col;
-	e->val_off = s->pos;
-	e->val_end = s->pos;
+	e->val_off = (uint32_t)s->pos;
+	e->val_end = (uint32_t)s->pos;
+	e->flags = (uint8_t)key_flags;
 	return jp->n++;
 }
 
-static void jp_value(struct jp_scan *s, int key_line, int key_col);
+static void jp_value(struct jp_scan *s, int key_line, int key_col, unsigned key_flags);
 
 /* After a member or element: consume a comma and return true (another one
  * follows), or consume the closing bracket and return false.  Anything else
@@ -242,7 +218,6 @@ jp_next(struct jp_scan *s, char close)
 static void
 jp_object(struct jp_scan *s)
 {
-	size_t base = s->path.len;
 	jp_adv(s); /* '{' */
 	jp_skip_ws(s);
 	if (jp_at(s, '}')) {
@@ -255,7 +230,8 @@ jp_object(struct jp_scan *s)
 			return;
 		}
 		int kl = s->line, kc = s->col;
-		jp_string(s, &s->key);
+		/* The key belongs to the entry its value is about to get. */
+		unsigned kf = jp_string(s, s->jp->n, JSON_POS_KEY_NUL);
 		jp_skip_ws(s);
 		if (s->failed || !jp_at(s, ':')) {
 			s->failed = true;
@@ -263,11 +239,7 @@ jp_object(struct jp_scan *s)
 		}
 		jp_adv(s);
 		jp_skip_ws(s);
-		if (base > 0)
-			jp_str_put(&s->path, ".", 1);
-		jp_str_put(&s->path, s->key.s != NULL ? s->key.s : "", s->key.len);
-		jp_value(s, kl, kc);
-		jp_str_truncate(&s->path, base);
+		jp_value(s, kl, kc, kf);
 		if (!jp_next(s, '}'))
 			return;
 	}
@@ -276,33 +248,29 @@ jp_object(struct jp_scan *s)
 static void
 jp_array(struct jp_scan *s)
 {
-	size_t base = s->path.len;
 	jp_adv(s); /* '[' */
 	jp_skip_ws(s);
 	if (jp_at(s, ']')) {
 		jp_adv(s);
 		return;
 	}
-	for (size_t i = 0; !s->failed; i++) {
-		char idx[32];
-		int n = snprintf(idx, sizeof idx, "[%zu]", i);
-		jp_str_put(&s->path, idx, (size_t)n);
-		jp_value(s, 0, 0);
-		jp_str_truncate(&s->path, base);
+	while (!s->failed) {
+		jp_value(s, 0, 0, 0);
 		if (!jp_next(s, ']'))
 			return;
 	}
 }
 
 static void
-jp_value(struct jp_scan *s, int key_line, int key_col)
+jp_value(struct jp_scan *s, int key_line, int key_col, unsigned key_flags)
 {
 	if (s->pos >= s->len) {
 		s->failed = true;
 		return;
 	}
-	size_t i = jp_add_entry(s, key_line, key_col);
+	size_t i = jp_add_entry(s, key_line, key_col, key_flags);
 	char c = s->b[s->pos];
+	unsigned flags = 0;
 	if (c == '{' || c == '[') {
 		if (++s->depth > JSON_POS_MAX_DEPTH) {
 			s->failed = true;
@@ -314,15 +282,25 @@ jp_value(struct jp_scan *s, int key_line, int key_col)
 			jp_array(s);
 		s->depth--;
 	} else if (c == '"') {
-		jp_string(s, NULL);
+		flags = jp_string(s, i, JSON_POS_VAL_NUL);
 	} else {
 		/* number or literal: up to the next delimiter */
+		size_t start = s->pos;
+		int line = s->line, col = s->col;
 		while (s->pos < s->len && strchr(",]} \t\r\n", s->b[s->pos]) == NULL)
 			jp_adv(s);
 		if (s->pos < s->len && s->b[s->pos] == '\0')
 			s->failed = true;
+		if ((c == '-' || (c >= '0' && c <= '9')) &&
+		    !jp_number_ok(s->b + start, s->pos - start)) {
+			jp_problem(s, JSON_POS_NUMBER, i, line, col, 0);
+			flags = JSON_POS_BAD;
+		}
 	}
-	s->jp->v[i].val_end = s->pos;
+	struct json_pos_entry *e = &s->jp->v[i];
+	e->val_end = (uint32_t)s->pos;
+	e->flags |= (uint8_t)flags;
+	s->jp->all_flags |= e->flags;
 }
 
 struct json_pos *
@@ -330,12 +308,12 @@ json_pos_alloc(const char *buf, size_t len)
 {
 	struct jp_scan s = { .b = buf, .len = len, .line = 1, .col = 1 };
 	s.jp = xcalloc(1, sizeof *s.jp);
+	if (len >= UINT32_MAX)
+		return s.jp;   /* offsets would not fit: no positions */
 	s.pos = text_bom(buf, len);
-	jp_str_put(&s.path, "", 0);
 	jp_skip_ws(&s);
-	jp_value(&s, 0, 0);
-	free(s.path.s);
-	free(s.key.s);
+	jp_value(&s, 0, 0, 0);
+	s.jp->complete = !s.failed;
 	return s.jp;
 }
 
@@ -344,19 +322,9 @@ json_pos_free(struct json_pos *jp)
 {
 	if (jp == NULL)
 		return;
-	for (size_t i = 0; i < jp->n; i++)
-		free(jp->v[i].path);
 	free(jp->v);
+	free(jp->p);
 	free(jp);
-}
-
-const struct json_pos_entry *
-json_pos_find(const struct json_pos *jp, const char *path, int nth)
-{
-	for (size_t i = 0; i < jp->n; i++)
-		if (strcmp(jp->v[i].path, path) == 0 && nth-- == 0)
-			return &jp->v[i];
-	return NULL;
 }
 
 size_t
@@ -369,4 +337,28 @@ const struct json_pos_entry *
 json_pos_entry_at(const struct json_pos *jp, size_t i)
 {
 	return i < jp->n ? &jp->v[i] : NULL;
+}
+
+int
+json_pos_complete(const struct json_pos *jp)
+{
+	return jp->complete;
+}
+
+size_t
+json_pos_n_problems(const struct json_pos *jp)
+{
+	return jp->n_p;
+}
+
+const struct json_pos_problem *
+json_pos_problem_at(const struct json_pos *jp, size_t i)
+{
+	return i < jp->n_p ? &jp->p[i] : NULL;
+}
+
+unsigned
+json_pos_all_flags(const struct json_pos *jp)
+{
+	return jp->all_flags;
 }

@@ -23,6 +23,7 @@
 
 #include "core/diag.h"
 #include "core/spec.h"
+#include "input/json_in.h"
 
 /* Parse the mission text buf[0..len) (need not be NUL-terminated) named file
  * in diagnostics.  *out starts from spec_defaults(); each field present and
@@ -35,7 +36,7 @@ int mission_io_parse(const char *file, const char *buf, size_t len,
                      struct mission_spec *out);
 
 /* A mission file above this size is refused (PRODUCT: > 4 MiB). */
-#define MISSION_IO_MAX_BYTES (4u << 20)
+#define MISSION_IO_MAX_BYTES JSON_IN_MISSION_MAX
 
 /* Read the file at path and parse it as above.  An unreadable file (also a
  * directory, FIFO or device, or one above MISSION_IO_MAX_BYTES) is one

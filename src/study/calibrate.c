@@ -69,7 +69,18 @@ struct fit_ctx {
 	double full[CAL_N_PARAMS];     /* every coefficient; held ones fixed */
 	int free_idx[CAL_N_PARAMS];    /* the fitted ones' places in full[] */
 	size_t n_free;
+	const struct calibrate_progress *progress; /* may be NULL */
+	size_t pass;                   /* passes over the rows so far */
 };
+
+/* One solve done: row i of a pass over n rows. */
+static void
+tick(struct fit_ctx *cx, size_t i, size_t n)
+{
+	cx->n_solves++;
+	if (cx->progress != NULL && cx->progress->fn != NULL)
+		cx->progress->fn(cx->progress->ctx, cx->pass, i + 1, n, cx->n_solves);
+}
 
 /* The whole coefficient vector from the fitted subset. */
 static void
@@ -85,11 +96,12 @@ static int
 predict_all(struct fit_ctx *cx, const double *theta, double *pred)
 {
 	calibrate_apply(theta, &cx->base, &cx->md.cal);
+	cx->pass++;
 	for (size_t i = 0; i < cx->n; i++) {
 		struct validate_row vr;
 		memset(&vr, 0, sizeof vr);
 		validate_solve_row(&cx->specs[i], &cx->md, cx->work, &vr);
-		cx->n_solves++;
+		tick(cx, i, cx->n);
 		if (vr.status != VALIDATE_ROW_OK)
 			return -1;
 		pred[i] = vr.predicted_kg;
@@ -117,10 +129,10 @@ mape_of(const double *actual, const double *pred, size_t n)
 	return stats_summarize(actual, pred, n, &s) == 0 ? s.mape_pct : 0.0;
 }
 
-int
-calibrate_fit_missions(const struct mission_spec *specs, const double *actual_kg,
-                       size_t n, const struct model_data *md, double mu,
-                       struct calibrate_result *out)
+static int
+fit_missions(const struct mission_spec *specs, const double *actual_kg, size_t n,
+             const struct model_data *md, double mu,
+             const struct calibrate_progress *progress, struct calibrate_result *out)
 {
 	memset(out, 0, sizeof *out);
 	out->before = md->cal;
@@ -128,6 +140,7 @@ calibrate_fit_missions(const struct mission_spec *specs, const double *actual_kg
 	calibrate_theta(&md->cal, out->theta);
 
 	struct fit_ctx *cx = xcalloc(1, sizeof *cx);
+	cx->progress = progress;
 	cx->md = *md;
 	cx->base = md->cal;
 	cx->work = xmalloc(sizeof *cx->work);
@@ -144,7 +157,7 @@ calibrate_fit_missions(const struct mission_spec *specs, const double *actual_kg
 		struct validate_row vr;
 		memset(&vr, 0, sizeof vr);
 		validate_solve_row(&specs[i], &cx->md, cx->work, &vr);
-		cx->n_solves++;
+		tick(cx, i, n);
 		if (vr.status != VALIDATE_ROW_OK)
 			continue;
 		keep[m] = specs[i];
@@ -230,8 +243,16 @@ done:
 }
 
 int
+calibrate_fit_missions(const struct mission_spec *specs, const double *actual_kg,
+                       size_t n, const struct model_data *md, double mu,
+                       struct calibrate_result *out)
+{
+	return fit_missions(specs, actual_kg, n, md, mu, NULL, out);
+}
+
+int
 calibrate_fit(const struct cohort *c, const struct model_data *md,
-              struct calibrate_result *out)
+              const struct calibrate_progress *progress, struct calibrate_result *out)
 {
 	size_t cap = c->n_rows ? c->n_rows : 1;
 	struct mission_spec *specs = xmalloc(cap * sizeof *specs);
@@ -244,7 +265,7 @@ calibrate_fit(const struct cohort *c, const struct model_data *md,
 			continue;
 		act[n++] = c->rows[i].takeoff_mass_kg;
 	}
-	int rc = calibrate_fit_missions(specs, act, n, md, CALIBRATE_MU, out);
+	int rc = fit_missions(specs, act, n, md, CALIBRATE_MU, progress, out);
 	free(specs);
 	free(act);
 	return rc;

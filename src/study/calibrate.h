@@ -66,10 +66,23 @@ struct calibrate_result {
 	size_t n_solves;                  /* engine solves spent */
 };
 
-/* Fits on cohort c starting from md->cal, with priors calibrate_prior.
- * Returns 0 with *out filled, -1 when no row of c yields a converged
- * mission (out->n_rows 0), -2 when the minimiser failed (bad start). */
+/* Progress of a fit, for a command that shows it (a large cohort takes
+ * minutes: every step of the minimiser re-solves every row).  fn is called
+ * after each solve with the pass over the rows it belongs to (0: the first
+ * pass that picks the rows that converge), the row within the pass, the
+ * rows in the pass and the solves so far.  This layer prints nothing: the
+ * command decides how often to show it. */
+struct calibrate_progress {
+	void (*fn)(void *ctx, size_t pass, size_t row, size_t n_rows, size_t n_solves);
+	void *ctx;
+};
+
+/* Fits on cohort c starting from md->cal, with priors calibrate_prior,
+ * reporting progress through progress (may be NULL).  Returns 0 with *out
+ * filled, -1 when no row of c yields a converged mission (out->n_rows 0),
+ * -2 when the minimiser failed (bad start). */
 int calibrate_fit(const struct cohort *c, const struct model_data *md,
+                  const struct calibrate_progress *progress,
                   struct calibrate_result *out);
 
 /* The fit on explicit missions (the rows validate_mission_from_row built)

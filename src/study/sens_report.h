@@ -16,6 +16,7 @@
 #define AEROEVAL_SENS_REPORT_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "output/doc.h"
 #include "study/sens.h"

@@ -93,14 +93,49 @@ set_chem(struct mission_spec *s, const char *name)
 	s->given[SPECF_BATTERY_CHEMISTRY] = true;
 }
 
+/* The fact of a row that puts a mission field out of the contract's
+ * range, for the skip message; returns VALIDATE_SKIP_RANGE. */
+static enum validate_skip
+out_of_range(struct validate_fact *fact, const char *column, double value,
+             enum spec_field field, double field_value)
+{
+	if (fact != NULL)
+		*fact = (struct validate_fact){ column, value, field, field_value };
+	return VALIDATE_SKIP_RANGE;
+}
+
+void
+validate_fact_text(const struct validate_fact *f, char *buf, size_t n)
+{
+	char range[128];
+	if (f->column == NULL) {
+		snprintf(buf, n, "%s", validate_skip_text(VALIDATE_SKIP_RANGE));
+		return;
+	}
+	const struct spec_field_info *fi = &spec_fields[f->field];
+	spec_range_text(fi, range, sizeof range);
+	snprintf(buf, n, "%s %.6g gives %s %.6g, outside the mission contract's range (%s)",
+	         f->column, f->value, fi->path, f->field_value, range);
+}
+
 enum validate_skip
 validate_mission_from_row(const struct cohort_row *row, const struct model_data *md,
                           struct mission_spec *out, unsigned *notes)
+{
+	return validate_mission_explained(row, md, out, notes, NULL);
+}
+
+enum validate_skip
+validate_mission_explained(const struct cohort_row *row, const struct model_data *md,
+                           struct mission_spec *out, unsigned *notes,
+                           struct validate_fact *fact)
 {
 	struct mission_spec *s = out;
 	unsigned nt = 0;
 	spec_defaults(s);
 	*notes = 0;
+	if (fact != NULL)
+		memset(fact, 0, sizeof *fact);
 
 	if (!row->has_payload_kg)
 		return VALIDATE_SKIP_PAYLOAD;
@@ -138,15 +173,19 @@ validate_mission_from_row(const struct cohort_row *row, const struct model_data 
 		s->payload_role.mass_shedding = false;
 		s->given[SPECF_ROLE_MASS_SHEDDING] = true;
 	}
-	if (!in_range(SPECF_NUM_ROTORS, row->rotor_count) ||
-	    !in_range(SPECF_PAYLOAD_KG, s->payload_kg))
-		return VALIDATE_SKIP_RANGE;
+	if (!in_range(SPECF_NUM_ROTORS, row->rotor_count))
+		return out_of_range(fact, "rotor_count", row->rotor_count, SPECF_NUM_ROTORS,
+		                    row->rotor_count);
+	if (!in_range(SPECF_PAYLOAD_KG, s->payload_kg))
+		return out_of_range(fact, "payload_kg", row->payload_kg, SPECF_PAYLOAD_KG,
+		                    s->payload_kg);
 
 	/* Wheelbase: the row's, else the smallest one whose overlap limit
 	 * admits its propeller (the inverse of paper eq. overlap). */
 	int arms = s->coaxial_layout ? s->num_rotors / 2 : s->num_rotors;
-	if (arms < 2)
-		return VALIDATE_SKIP_RANGE;
+	if (arms < 2)   /* a coaxial layout of 3 rotors: one arm */
+		return out_of_range(fact, "rotor_count", row->rotor_count, SPECF_NUM_ROTORS,
+		                    2.0 * arms);
 	double sin_arm = sin(M_PI / (double)arms);
 	double d_m = row->has_prop_diameter_in ? in_to_m(row->prop_diameter_in) : 0.0;
 	if (row->has_diagonal_wheelbase_mm) {
@@ -157,7 +196,11 @@ validate_mission_from_row(const struct cohort_row *row, const struct model_data 
 	}
 	s->given[SPECF_MAX_DIAMETER_M] = true;
 	if (!in_range(SPECF_MAX_DIAMETER_M, s->max_diameter_m))
-		return VALIDATE_SKIP_RANGE;
+		return row->has_diagonal_wheelbase_mm ?
+		    out_of_range(fact, "diagonal_wheelbase_mm", row->diagonal_wheelbase_mm,
+		                 SPECF_MAX_DIAMETER_M, s->max_diameter_m) :
+		    out_of_range(fact, "prop_diameter_in", row->prop_diameter_in,
+		                 SPECF_MAX_DIAMETER_M, s->max_diameter_m);
 
 	/* Propeller: locked at the row's diameter when the model's geometry
 	 * admits it.  The 1e-9 keeps the derived-wheelbase case (limit equal
@@ -172,9 +215,14 @@ validate_mission_from_row(const struct cohort_row *row, const struct model_data 
 			s->given[SPECF_LOCK_PROP] = true;
 			s->given[SPECF_LOCK_DIAMETER_IN] = true;
 			s->given[SPECF_LOCK_PITCH_IN] = true;
-			if (!in_range(SPECF_LOCK_DIAMETER_IN, s->locks.locked_diameter_in) ||
-			    !in_range(SPECF_LOCK_PITCH_IN, s->locks.locked_pitch_in))
-				return VALIDATE_SKIP_RANGE;
+			if (!in_range(SPECF_LOCK_DIAMETER_IN, s->locks.locked_diameter_in))
+				return out_of_range(fact, "prop_diameter_in", row->prop_diameter_in,
+				                    SPECF_LOCK_DIAMETER_IN, s->locks.locked_diameter_in);
+			if (!in_range(SPECF_LOCK_PITCH_IN, s->locks.locked_pitch_in))
+				return out_of_range(fact, row->has_prop_pitch_in ? "prop_pitch_in"
+				                    : "prop_diameter_in", row->has_prop_pitch_in ?
+				                    row->prop_pitch_in : row->prop_diameter_in,
+				                    SPECF_LOCK_PITCH_IN, s->locks.locked_pitch_in);
 		} else {
 			nt |= VALIDATE_NOTE_PROP_OVER;
 		}
@@ -197,13 +245,15 @@ validate_mission_from_row(const struct cohort_row *row, const struct model_data 
 		s->battery_pack_count = row->battery_pack_count;
 		s->given[SPECF_BATTERY_PACK_COUNT] = true;
 		if (!in_range(SPECF_BATTERY_PACK_COUNT, row->battery_pack_count))
-			return VALIDATE_SKIP_RANGE;
+			return out_of_range(fact, "battery_pack_count", row->battery_pack_count,
+			                    SPECF_BATTERY_PACK_COUNT, row->battery_pack_count);
 	}
 	if (row->has_cell_count) {
 		s->nominal_cell_count = row->cell_count;
 		s->given[SPECF_NOMINAL_CELL_COUNT] = true;
 		if (!in_range(SPECF_NOMINAL_CELL_COUNT, row->cell_count))
-			return VALIDATE_SKIP_RANGE;
+			return out_of_range(fact, "cell_count", row->cell_count,
+			                    SPECF_NOMINAL_CELL_COUNT, row->cell_count);
 	}
 
 	/* Endurance: one hover phase, the manufacturer's to-empty time brought
@@ -219,7 +269,10 @@ validate_mission_from_row(const struct cohort_row *row, const struct model_data 
 	s->given[SPECF_T_CLIMB_S] = true;
 	s->given[SPECF_T_FORWARD_S] = true;
 	if (!in_range(SPECF_T_HOVER_S, s->t_hover_s))
-		return VALIDATE_SKIP_RANGE;
+		return out_of_range(fact, row->has_hover_time_min ? "hover_time_min"
+		                    : "max_flight_time_min", row->has_hover_time_min ?
+		                    row->hover_time_min : row->max_flight_time_min,
+		                    SPECF_T_HOVER_S, s->t_hover_s);
 
 	*notes = nt;
 	return VALIDATE_SKIP_NONE;
@@ -275,7 +328,7 @@ validate_cohort(const struct cohort *c, const struct model_data *md,
 		const struct cohort_row *row = &c->rows[i];
 		vr->index = i;
 		vr->actual_kg = row->takeoff_mass_kg;
-		vr->skip = validate_mission_from_row(row, md, &vr->spec, &vr->notes);
+		vr->skip = validate_mission_explained(row, md, &vr->spec, &vr->notes, &vr->fact);
 		if (vr->skip != VALIDATE_SKIP_NONE) {
 			vr->status = VALIDATE_ROW_SKIPPED;
 			continue;

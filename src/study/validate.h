@@ -116,6 +116,19 @@ const char *validate_skip_text(enum validate_skip s);
 /* The status word ("ok", "skipped", "not converged", "not run"). */
 const char *validate_status_text(enum validate_status s);
 
+/* Which fact of a row put a mission field outside the contract's range
+ * (VALIDATE_SKIP_RANGE). */
+struct validate_fact {
+	const char *column;        /* the cohort column ("rotor_count"), NULL if none */
+	double value;              /* its value in the row */
+	enum spec_field field;     /* the mission field it sets */
+	double field_value;        /* the value the field would take */
+};
+
+/* "hover_time_min 900 gives t_hover_s 45000, outside the mission
+ * contract's range (0 to 36000 s)" into buf. */
+void validate_fact_text(const struct validate_fact *f, char *buf, size_t n);
+
 /* Builds the mission for a row by the rule above into *out (every field it
  * sets is marked given[]).  md supplies the chemistry names.  *notes gets
  * the OR of the enum validate_note flags used.  Returns VALIDATE_SKIP_NONE,
@@ -125,11 +138,20 @@ enum validate_skip validate_mission_from_row(const struct cohort_row *row,
                                              struct mission_spec *out,
                                              unsigned *notes);
 
+/* The same, naming in *fact (may be NULL) the fact behind a
+ * VALIDATE_SKIP_RANGE. */
+enum validate_skip validate_mission_explained(const struct cohort_row *row,
+                                              const struct model_data *md,
+                                              struct mission_spec *out,
+                                              unsigned *notes,
+                                              struct validate_fact *fact);
+
 /* One row's result. */
 struct validate_row {
 	size_t index;              /* row in the cohort */
 	enum validate_status status;
 	enum validate_skip skip;   /* when status is SKIPPED */
+	struct validate_fact fact; /* when skip is VALIDATE_SKIP_RANGE */
 	unsigned notes;            /* enum validate_note flags */
 	struct mission_spec spec;  /* the mission the rule built (unresolved) */
 	double actual_kg;          /* takeoff_mass_kg */

@@ -2,7 +2,10 @@
 #include "util/text.h"
 
 #include <ctype.h>
+#include <stdio.h>
 #include <string.h>
+
+#include "util/xalloc.h"
 
 size_t
 text_utf8_seq(const char *s, size_t left)
@@ -99,4 +102,59 @@ text_distance(const char *a, const char *b)
 		}
 	}
 	return d[na][nb];
+}
+
+size_t
+text_typo_limit(size_t len)
+{
+	return len / 3 > 3 ? 3 : (len / 3 < 1 ? 1 : len / 3);
+}
+
+const char *
+text_nearest(const char *word, const char *const *list)
+{
+	size_t best_d = text_typo_limit(strlen(word)) + 1;
+	const char *best = NULL;
+	for (; *list != NULL; list++) {
+		size_t d = text_distance(word, *list);
+		if (d < best_d) {
+			best_d = d;
+			best = *list;
+		}
+	}
+	return best;
+}
+
+void
+text_join(const char *const *list, char *buf, size_t n)
+{
+	size_t o = 0;
+	buf[0] = '\0';
+	for (size_t i = 0; list[i] != NULL && o < n; i++) {
+		int w = snprintf(buf + o, n - o, "%s%s", i > 0 ? ", " : "", list[i]);
+		if (w < 0)
+			break;
+		o += (size_t)w;
+	}
+}
+
+char *
+text_utf8_copy(const char *s)
+{
+	size_t len = strlen(s), o = 0;
+	char *out = xmalloc(3 * len + 1);   /* a bad byte becomes 3 bytes */
+	for (size_t i = 0; i < len;) {
+		size_t seq = text_utf8_seq(s + i, len - i);
+		if (seq == 0) {
+			memcpy(out + o, "\xef\xbf\xbd", 3);
+			o += 3;
+			i++;
+			continue;
+		}
+		memcpy(out + o, s + i, seq);
+		o += seq;
+		i += seq;
+	}
+	out[o] = '\0';
+	return out;
 }

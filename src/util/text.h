@@ -31,4 +31,22 @@ void text_line_col(const char *buf, size_t len, size_t off, int *line,
  * ((size_t)-1 / 2). */
 size_t text_distance(const char *a, const char *b);
 
+/* The word of the NULL-terminated list closest to word by text_distance(),
+ * when it is close enough to be a likely typo (about one edit per three
+ * characters of word, at least one and at most three), else NULL.  The
+ * rule behind every "did you mean" of the readers. */
+const char *text_nearest(const char *word, const char *const *list);
+
+/* "a, b, c" from the NULL-terminated list into buf (size n, always
+ * NUL-terminated; cut short when it does not fit), for "allowed: ..." texts. */
+void text_join(const char *const *list, char *buf, size_t n);
+
+/* A copy of s in which every byte that is not part of valid UTF-8 is
+ * replaced by U+FFFD, for text that must be UTF-8 (JSON) but comes from
+ * outside (a file name).  Ownership: free(). */
+char *text_utf8_copy(const char *s);
+
+/* The edit budget text_nearest() allows for a word of len bytes. */
+size_t text_typo_limit(size_t len);
+
 #endif

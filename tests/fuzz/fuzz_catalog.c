@@ -1,6 +1,6 @@
 /* fuzz_catalog.c — libFuzzer harness: a supplier's catalogue file.
  *
- * catalog_load() reads files, so the first input byte picks which of the
+ * catalog_io_load() reads files, so the first input byte picks which of the
  * four catalogue files the rest of the input replaces, in a scratch copy of
  * the shipped catalogue (data/catalog, or $AEROEVAL_DATA/catalog) cut to
  * its first three entries per file.  The
@@ -16,7 +16,9 @@
 #include <cjson/cJSON.h>
 
 #include "core/catalog.h"
-#include "output/fsout.h"
+#include "core/diag.h"
+#include "input/catalog_io.h"
+#include "util/file.h"
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -36,7 +38,7 @@ copy_trimmed(const char *from, const char *to, const char *key)
 	unsigned char *text = NULL;
 	size_t n = 0;
 	char msg[512];
-	if (fsout_read_file(from, 16u << 20, &text, &n, msg, sizeof msg) != 0) {
+	if (file_read(from, 16u << 20, &text, &n, msg, sizeof msg) != 0) {
 		fprintf(stderr, "fuzz_catalog: %s\n", msg);
 		exit(1);
 	}
@@ -112,10 +114,10 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 		abort();
 	fclose(f);
 
-	int n_err = 0;
-	FILE *devnull = fopen("/dev/null", "w");
-	struct catalog *c = catalog_load(dirs[k], NULL, devnull, &n_err);
-	fclose(devnull);
+	struct diag *dg = diag_alloc(NULL);
+	struct catalog *c = catalog_io_load(dirs[k], NULL, dg);
+	int n_err = diag_n_errors(dg);
+	diag_free(dg);
 	if ((c == NULL) != (n_err > 0))
 		abort(); /* NULL exactly when an error was reported */
 	if (c == NULL)
