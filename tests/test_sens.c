@@ -103,7 +103,8 @@ sens_fd_should_agree_with_direct_two_point_solve(void **state)
 	}
 }
 
-/* Payload costs mass and hover time; altitude costs mass. */
+/* Payload and altitude cost mass; the resized aircraft still flies the
+ * mission, so its hover time moves by little (under 5 % per kg). */
 static void
 sens_signs_should_be_physical(void **state)
 {
@@ -113,7 +114,8 @@ sens_signs_should_be_physical(void **state)
 	struct sens_curve *c = xmalloc(sizeof *c);
 	sens_sweep(&s, &env->model, SENS_PAYLOAD, 0, 0, 0, c, NULL);
 	assert_true(c->d_mtow > 1.0);        /* more than the payload itself */
-	assert_true(c->d_hover_min < 0.0);
+	assert_true(fabs(c->d_hover_min)
+	    < 0.05 * c->nominal.hover_endurance_s / 60.0);
 	sens_sweep(&s, &env->model, SENS_ALTITUDE, 0, 0, 0, c, NULL);
 	assert_true(c->d_mtow > 0.0);
 	free(c);

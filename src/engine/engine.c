@@ -23,10 +23,12 @@ static const double body_f_scale[BODY_CLASS_MAX] = { 0.004, 0.012, 0.05 };
 static const double arm_interference_c[ARM_CONFIG_MAX] = { 0.6, 0.0, 1.5 };
 
 /* Blade mass coefficient kg / m^2.2 per propeller material: one blade pair
- * of diameter D weighs k D^2.2 (5 in ≈ 4 g, 10 in ≈ 20 g, 28 in ≈ 190 g for
- * plastic; carbon is lighter for its stiffness, wood heavier).  Index by
- * enum prop_class; PROP_AUTO is resolved before use. */
-static const double prop_k[PROP_CLASS_MAX] = { 0.0, 0.40, 0.32, 0.45 };
+ * of diameter D weighs k D^2.2, fitted to the catalogue's two-blade
+ * propellers of 4 in and up (glass-filled nylon, "plastic": 0.33 over 166
+ * of them, 10 in ≈ 16 g; carbon 0.25 over 16, 28 in ≈ 130 g; wood keeps
+ * 0.45, none published).  Index by enum prop_class; PROP_AUTO is resolved
+ * before use. */
+static const double prop_k[PROP_CLASS_MAX] = { 0.0, 0.33, 0.25, 0.45 };
 #define PROP_AUTO_CARBON_ABOVE_M 0.30 /* auto: carbon above 12 in */
 
 

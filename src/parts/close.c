@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "parts/parts_int.h"
+#include "parts/screen.h"
 #include "physics/aero.h"
 #include "physics/mission.h"
 #include "physics/therm.h"
@@ -60,6 +61,9 @@ pack_allowed(const struct parts_ctx *x, const struct catalog_battery *b)
 		return false;
 	if (x->lock_battery != NULL)
 		return b == x->lock_battery;
+	char why[256];
+	if (screen_battery(b, why, sizeof why) != NULL)
+		return false;
 	if (x->spec->given[SPECF_BATTERY_CHEMISTRY]
 	    && strcmp(chem_family(b->chemistry),
 	    chem_family(x->spec->battery_chemistry)) != 0)
@@ -158,6 +162,9 @@ parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
 		if (!e->usable || (x->lock_esc != NULL && e != x->lock_esc))
 			continue;
 		bool locked = e == x->lock_esc;
+		char why[256];
+		if (!locked && screen_esc(e, why, sizeof why) != NULL)
+			continue;
 		if (!locked && (e->continuous_current_a < need_a
 		    || o->cells > esc_max_cells(e)
 		    || (e->cells_min > 0 && o->cells < e->cells_min)))

@@ -44,6 +44,7 @@ enum parts_reason {
 	PARTS_NO_ESC,          /* no ESC set carries it on this bus */
 	PARTS_NO_BATTERY,      /* no pack arrangement builds the bus */
 	PARTS_LOCK,            /* excluded by a lock */
+	PARTS_IMPLAUSIBLE,     /* its catalogue entry fails a screen (screen.h) */
 	PARTS_REASON_MAX
 };
 extern const char *const parts_reason_text[PARTS_REASON_MAX];

@@ -28,6 +28,7 @@
 #include <string.h>
 
 #include "parts/parts_int.h"
+#include "parts/screen.h"
 #include "physics/aero.h"
 #include "physics/mission.h"
 #include "util/units.h"
@@ -57,6 +58,7 @@ const char *const parts_reason_text[PARTS_REASON_MAX] = {
 	"no ESC for the current",
 	"no pack for the bus",
 	"lock",
+	"implausible catalogue entry",
 };
 
 void
@@ -339,6 +341,11 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 			x->n_census[PARTS_LOCK]++;
 			continue;
 		}
+		char why[256];
+		if (m != x->lock_motor && screen_motor(m, why, sizeof why) != NULL) {
+			x->n_census[PARTS_IMPLAUSIBLE]++;
+			continue;
+		}
 		mv[n_m++] = m;
 	}
 	qsort(mv, (size_t)n_m, sizeof *mv, cmp_kv);
@@ -381,6 +388,11 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 			}
 			if (prop_locked_out(x, pr)) {
 				x->n_census[PARTS_LOCK]++;
+				continue;
+			}
+			char why[256];
+			if (pr != x->lock_prop && screen_prop(pr, why, sizeof why) != NULL) {
+				x->n_census[PARTS_IMPLAUSIBLE]++;
 				continue;
 			}
 			/* The KV whose loaded full-throttle speed gives the thrust. */

@@ -42,27 +42,22 @@
 #define SIZING_FINAL_STEPS   60
 _Static_assert(SIZING_FINAL_STEPS + 13 <= RES_MAX_TRACE, "trace buffer too small");
 
-/* Continuous component laws.  The paper's motor and ESC laws
- * (0.00035 kg per N or A) are ten times lighter than any datasheet, so
- * aeroeval fits them to the published specifications of the parts
- * catalogue instead — component facts, not aircraft facts — by least
- * squares in log space.  Motor mass follows the maximum power and the
- * speed it is delivered at (an electric motor's size is set by its torque,
- * P / ω, so at equal power a faster motor is lighter).  Fit over the 97
- * single-channel non-racing motors (KV < 1500 rpm/V) with a published
- * mass, maximum power, maximum current and KV (ω_max = KV × P_max /
- * I_max): m = 0.00182 P^0.857 ω^-0.174 (kg, W, rad/s), log-sd 0.19 (power
- * alone: 0.20).  ESC mass is linear in current (FETs and copper in
- * parallel): the median mass per amp of the 17 single ESCs, 1.25 g/A (a
- * power-law fit, driven by the 200 A units, extrapolates unphysically
- * beyond them).  The paper's racing factors (C_motor 0.25, C_esc 0.10)
- * then scale them for racing hardware: the catalogue's 13 racing motors
- * (KV >= 1500) weigh 0.22 × the law (median; 0.17-0.40). */
-#define SIZING_MOTOR_K          0.00182 /* kg / (W^0.857 (rad/s)^-0.174) */
-#define SIZING_MOTOR_EXP_P      0.857   /* motor mass ~ P_max^0.857 */
-#define SIZING_MOTOR_EXP_W      0.174   /* ... × ω_max^-0.174 */
+/* Continuous component laws, fitted to the published specifications of
+ * the parts catalogue (component facts, not aircraft facts; least squares
+ * in log space; docs/model.md).  Motor mass follows the maximum power and
+ * the speed it is delivered at (an electric motor's size is set by its
+ * torque, P / ω): over the 153 single-channel motors below 1500 KV with a
+ * published mass, maximum power, current and KV (ω_max = KV × P_max /
+ * I_max), m = 0.0961 P^0.762 ω^-0.667 (kg, W, rad/s), log-sd 0.28 — close
+ * to m ∝ torque^0.7.  The catalogue's 57 racing motors (KV >= 1500) weigh
+ * 0.54 of the law (median), the racing factor C_motor of data/roles.json.
+ * ESC mass is linear in current (FETs and copper in parallel): the median
+ * of the 101 single ESCs with a plausible mass per amp, 1.10 g/A. */
+#define SIZING_MOTOR_K          0.0961  /* kg / (W^0.762 (rad/s)^-0.667) */
+#define SIZING_MOTOR_EXP_P      0.762   /* motor mass ~ P_max^0.762 */
+#define SIZING_MOTOR_EXP_W      0.667   /* ... × ω_max^-0.667 */
 #define SIZING_MOTOR_MIN_KG     0.008   /* paper's floor on total motor mass */
-#define SIZING_ESC_KG_PER_A     0.00125 /* ESC mass per amp of rating, kg/A */
+#define SIZING_ESC_KG_PER_A     0.00110 /* ESC mass per amp of rating, kg/A */
 #define SIZING_ESC_MIN_A        15.0    /* paper: I_ESC,rotor >= 15 A */
 #define SIZING_ESC_RATING       1.2     /* ESC rating over the peak current */
 #define SIZING_PROP_EXPONENT    2.2    /* blade mass ~ D^2.2 */
