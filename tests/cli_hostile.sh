@@ -121,7 +121,7 @@ printf '{"payload_kg": 1e-320, "max_diameter_m": 0.7, "t_hover_s": 600}' >m/n_su
 either number_subnormal_payload m/n_subnormal.json
 printf '{"payload_kg": -0, "max_diameter_m": 0.7, "t_hover_s": 600, "ambient_temp_c": -0.0}' >m/n_negzero.json
 safe number_negative_zero m/n_negzero.json
-grep -q -- '-0[,. ]' out/n_negzero/result.json 2>/dev/null && notok negative_zero_printed_as_minus_zero
+grep -Eq -- '-0(\.0*)?([,} ]|$)' out/n_negzero/result.json 2>/dev/null && notok negative_zero_printed_as_minus_zero
 printf '{"payload_kg": 1, "max_diameter_m": 1e-320, "t_hover_s": 600}' >m/n_tiny_wheelbase.json
 rejected tiny_wheelbase_below_range m/n_tiny_wheelbase.json
 printf '{"payload_kg": 1, "max_diameter_m": 0.7, "t_hover_s": 1e-320}' >m/n_tiny_time.json
@@ -258,7 +258,9 @@ fi
 # ---- the file system (issue 25): never write outside, never mix, never hang
 # A mission's outputs are one set: whole old or whole new after any fault.
 mkdir -p fs
-cp "$root/examples/delivery_quad.json" fs/zz_fs25.json
+# A feasible mission of its own, so these tests do not hang on an example's
+# verdict.
+printf '{"name": "File-system probe", "payload_kg": 1.5, "max_diameter_m": 0.7, "t_hover_s": 600, "payload_role": {"type": "delivery"}}\n' >fs/zz_fs25.json
 sed 's/"t_hover_s": [0-9]*/"t_hover_s": 95/' fs/zz_fs25.json >fs/new.json
 # set_of DIR: the digests of a set's three outputs, "" if one is missing.
 set_of() {
@@ -685,9 +687,10 @@ fi
 printf 'name,takeoff_mass_kg\nA,2.5\nB,3.1\n' >nothing.csv
 fails validate_with_no_usable_row "nothing.csv: error: no row could be validated (2 rows; 2 skipped: payload of the takeoff figure unknown)" \
     validate nothing.csv
-AEROEVAL_PROGRESS_S=0 timeout 60 "$bin" calibrate "$root/tests/fixtures/cohort/calibration.csv" >out.txt 2>err.txt
+AEROEVAL_PROGRESS_S=0 timeout 120 "$bin" calibrate "$root/tests/fixtures/cohort/calibration.csv" >out.txt 2>err.txt
 rc=$?
-if [ "$rc" -eq 0 ] && grep -q '^calibrate: fitting, pass [0-9]*, row [0-9]* of [0-9]*, [0-9]* solves' err.txt; then
+if [ "$rc" -eq 0 ] && grep -q '^calibrate: fit on [0-9]* rows, [0-9]* sized, [0-9]* solves' err.txt \
+    && grep -q '^calibrate: leave-one-out [0-9]* of [0-9]*, [0-9]* solves' err.txt; then
 	ok calibrate_shows_progress
 else
 	notok calibrate_shows_progress "exit $rc"

@@ -217,105 +217,57 @@ batt_current_should_be_p_over_v_for_an_ideal_source(void **state)
 	assert_rel(i, 37.30176464, 1e-9);
 }
 
-/* ---- packaging factor (paper §VI-D) ------------------------------------ */
+/* ---- pack-level specific energy (data/chemistries.json) ---------------- */
 
-static void
-batt_packaging_should_be_the_base_for_a_plain_lipo(void **state)
+static struct batt_chem
+fixture_pack_lipo(void)
 {
-	(void)state;
 	struct batt_chem c = fixture_lipo();
-	/* 6S, 5385 mAh, one pack, 650 mm: no term applies → 1.04 */
-	assert_rel(batt_packaging_factor(&c, 1.04, 6, 5385.0, 1, 0.65, false, false),
-	    1.04, 1e-15);
+	c.pack_wh_kg_100 = 151.0;   /* the LiPo fit of the catalogue's packs */
+	c.pack_exponent = 0.073;
+	return c;
 }
 
 static void
-batt_packaging_should_add_0_012_per_cell_above_6s(void **state)
+batt_pack_wh_kg_should_follow_the_power_law_of_pack_energy(void **state)
 {
 	(void)state;
-	struct batt_chem c = fixture_lipo();
-	/* 12S: 1.04 + 0.012 · (12 - 6) = 1.04 + 0.072 = 1.112 */
-	assert_rel(batt_packaging_factor(&c, 1.04, 12, 5385.0, 1, 0.65, false, false),
-	    1.112, 1e-12);
+	struct batt_chem c = fixture_pack_lipo();
+	/* 100 Wh: e_100 itself. */
+	assert_rel(batt_pack_wh_kg(&c, 100.0), 151.0, 1e-15);
+	/* 1000 Wh: 151 · 10^0.073 = 151 · 1.183041556 = 178.6392750 Wh/kg */
+	assert_rel(batt_pack_wh_kg(&c, 1000.0), 178.6392750, 1e-9);
+	/* 10 Wh: 151 / 1.183041556 = 127.6371056 Wh/kg */
+	assert_rel(batt_pack_wh_kg(&c, 10.0), 127.6371056, 1e-9);
+	/* Below 1 Wh the law is held at its 1 Wh value. */
+	assert_rel(batt_pack_wh_kg(&c, 0.2), batt_pack_wh_kg(&c, 1.0), 1e-15);
 }
 
 static void
-batt_packaging_should_add_0_06_per_extra_pack(void **state)
+batt_pack_mass_should_split_the_energy_between_packs(void **state)
 {
 	(void)state;
-	struct batt_chem c = fixture_lipo();
-	/* 3 packs: 1.04 + 0.06 · 2 = 1.16 */
-	assert_rel(batt_packaging_factor(&c, 1.04, 6, 5385.0, 3, 0.65, false, false),
-	    1.16, 1e-12);
+	struct batt_chem c = fixture_pack_lipo();
+	/* One 1000 Wh pack: 1000 / 178.6392750 = 5.597873 kg. */
+	assert_rel(batt_pack_mass_kg(&c, 1000.0, 1, 0.0), 5.597873, 1e-6);
+	/* Ten 100 Wh packs weigh more: 1000 / 151 = 6.622517 kg. */
+	assert_rel(batt_pack_mass_kg(&c, 1000.0, 10, 0.0), 6.622517, 1e-6);
+	/* The mission's pack specific energy is taken as given. */
+	assert_rel(batt_pack_mass_kg(&c, 1000.0, 1, 250.0), 4.0, 1e-15);
 }
 
 static void
-batt_packaging_should_penalise_small_cells(void **state)
+batt_pack_energy_should_invert_the_pack_mass(void **state)
 {
 	(void)state;
-	struct batt_chem c = fixture_lipo();
-	/* 2385 mAh: 1.04 + 0.28 (1 - 2385/4000) = 1.04 + 0.28 · 0.40375 = 1.15305 */
-	double full = batt_packaging_factor(&c, 1.04, 6, 2385.0, 1, 0.65, false, false);
-	assert_rel(full, 1.15305, 1e-12);
-	/* Consumer/micro: "reduced" (paper); aeroeval halves it (batt.c):
-	 * 1.04 + 0.5 · 0.11305 = 1.096525 */
-	double reduced = batt_packaging_factor(&c, 1.04, 6, 2385.0, 1, 0.65, true, false);
-	assert_true(reduced > 1.04 && reduced < full);
-	assert_rel(reduced, 1.096525, 1e-12);
-	/* 4000 mAh and above: no penalty */
-	assert_rel(batt_packaging_factor(&c, 1.04, 6, 4000.0, 1, 0.65, false, false),
-	    1.04, 1e-15);
-}
-
-static void
-batt_packaging_should_add_0_12_below_250_mm(void **state)
-{
-	(void)state;
-	struct batt_chem c = fixture_lipo();
-	/* 238.5 mm frame: 1.04 + 0.12 = 1.16 */
-	assert_rel(batt_packaging_factor(&c, 1.04, 6, 5385.0, 1, 0.2385, false, false),
-	    1.16, 1e-12);
-}
-
-static void
-batt_packaging_should_add_0_10_for_enterprise_below_14s(void **state)
-{
-	(void)state;
-	struct batt_chem c = fixture_lipo();
-	/* 12S enterprise: 1.04 + 0.072 + 0.10 = 1.212 */
-	assert_rel(batt_packaging_factor(&c, 1.04, 12, 5385.0, 1, 0.65, false, true),
-	    1.212, 1e-12);
-}
-
-static void
-batt_packaging_should_be_1_03_for_enterprise_at_14s_and_above(void **state)
-{
-	(void)state;
-	struct batt_chem c = fixture_lipo();
-	assert_rel(batt_packaging_factor(&c, 1.04, 14, 16000.0, 1, 1.2, false, true),
-	    1.03, 1e-15);
-	assert_rel(batt_packaging_factor(&c, 1.04, 18, 2385.0, 2, 1.2, false, true),
-	    1.03, 1e-15);
-}
-
-static void
-batt_packaging_should_be_1_15_for_cylindrical_cells(void **state)
-{
-	(void)state;
-	struct batt_chem c = fixture_lipo();
-	c.pouch = false;
-	assert_rel(batt_packaging_factor(&c, 1.04, 6, 5385.0, 1, 0.65, false, false),
-	    1.15, 1e-15);
-	assert_rel(batt_packaging_factor(&c, 1.04, 12, 2385.0, 3, 0.2385, true, true),
-	    1.15, 1e-15);
-}
-
-static void
-batt_mass_should_be_energy_over_specific_energy_times_packaging(void **state)
-{
-	(void)state;
-	/* 238.5 Wh / 180 Wh/kg · 1.112 = 1.325 · 1.112 = 1.4734 kg */
-	assert_rel(batt_mass_kg(238.5, 180.0, 1.112), 1.4734, 1e-12);
+	struct batt_chem c = fixture_pack_lipo();
+	const double e_wh[] = { 5.0, 77.7, 100.0, 1234.5 };
+	for (int n = 1; n <= 3; n++)
+		for (size_t i = 0; i < sizeof e_wh / sizeof e_wh[0]; i++) {
+			double m = batt_pack_mass_kg(&c, e_wh[i], n, 0.0);
+			assert_rel(batt_pack_energy_wh(&c, m, n, 0.0), e_wh[i], 1e-12);
+		}
+	assert_rel(batt_pack_energy_wh(&c, 4.0, 1, 250.0), 1000.0, 1e-15);
 }
 
 int
@@ -336,15 +288,9 @@ main(void)
 		cmocka_unit_test(batt_current_should_detect_voltage_collapse),
 		cmocka_unit_test(batt_current_should_refuse_power_above_the_1e7_w_guard),
 		cmocka_unit_test(batt_current_should_be_p_over_v_for_an_ideal_source),
-		cmocka_unit_test(batt_packaging_should_be_the_base_for_a_plain_lipo),
-		cmocka_unit_test(batt_packaging_should_add_0_012_per_cell_above_6s),
-		cmocka_unit_test(batt_packaging_should_add_0_06_per_extra_pack),
-		cmocka_unit_test(batt_packaging_should_penalise_small_cells),
-		cmocka_unit_test(batt_packaging_should_add_0_12_below_250_mm),
-		cmocka_unit_test(batt_packaging_should_add_0_10_for_enterprise_below_14s),
-		cmocka_unit_test(batt_packaging_should_be_1_03_for_enterprise_at_14s_and_above),
-		cmocka_unit_test(batt_packaging_should_be_1_15_for_cylindrical_cells),
-		cmocka_unit_test(batt_mass_should_be_energy_over_specific_energy_times_packaging),
+		cmocka_unit_test(batt_pack_wh_kg_should_follow_the_power_law_of_pack_energy),
+		cmocka_unit_test(batt_pack_mass_should_split_the_energy_between_packs),
+		cmocka_unit_test(batt_pack_energy_should_invert_the_pack_mass),
 		cmocka_unit_test(batt_r_sys_at_should_equal_batt_r_sys_ohm_at_every_temperature),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);

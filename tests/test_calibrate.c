@@ -34,64 +34,106 @@ theta_should_round_trip_and_keep_the_small_wiring_ratio(void **state)
 	calibrate_apply(th, &md.cal, &out);
 	for (int i = 0; i < LAMBDA_MAX; i++)
 		assert_rel(out.lambda[i], md.cal.lambda[i], 1e-15);
-	assert_rel(out.packaging_base, md.cal.packaging_base, 1e-15);
+	for (int k = 0; k < AF_CLASS_MAX; k++) {
+		assert_rel(out.equip_kg[k], md.cal.equip_kg[k], 1e-15);
+		assert_rel(out.kappa[k], md.cal.kappa[k], 1e-15);
+	}
+	assert_rel(out.equip_exponent, md.cal.equip_exponent, 1e-15);
 	assert_rel(out.wire_coef_small, md.cal.wire_coef_small, 1e-12);
 	th[CAL_WIRE_COEF] *= 2;
 	calibrate_apply(th, &md.cal, &out);
 	assert_rel(out.wire_coef, 2 * md.cal.wire_coef, 1e-15);
 	assert_rel(out.wire_coef_small, 2 * md.cal.wire_coef_small, 1e-12);
-	/* The prior is the paper's: eq. (lambda), packaging base, C_wire. */
-	const double paper[CAL_N_PARAMS] = { 1.50, 1.08, 0.95, 0.80, 1.00, 1.04, 0.0015 };
-	for (int j = 0; j < CAL_N_PARAMS; j++)
-		assert_rel(calibrate_prior[j], paper[j], 1e-15);
+	/* The priors of the paper's coefficients are the paper's: eq.
+	 * (lambda), Table classes (κ), §V-C (C_wire). */
+	const double lambda[LAMBDA_MAX] = { 1.50, 1.08, 0.95, 0.80, 1.00 };
+	const double kappa[AF_CLASS_MAX] = { 1.30, 1.20, 1.25, 1.46 };
+	for (int j = 0; j < LAMBDA_MAX; j++)
+		assert_rel(calibrate_prior[CAL_LAMBDA_MICRO + j], lambda[j], 1e-15);
+	for (int k = 0; k < AF_CLASS_MAX; k++)
+		assert_rel(calibrate_prior[CAL_KAPPA_MICRO + k], kappa[k], 1e-15);
+	assert_rel(calibrate_prior[CAL_WIRE_COEF], 0.0015, 1e-15);
+}
+
+/* Split conformal: with n residuals, the floor((n+1)·0.05)-th smallest and
+ * the ceil((n+1)·0.95)-th smallest bound a 90 % interval. */
+static void
+conformal_should_pick_the_order_statistics_of_the_level(void **state)
+{
+	(void)state;
+	double r[39];
+	/* -0.38 .. +0.38 in steps of 0.02, shuffled by a stride. */
+	for (int i = 0; i < 39; i++)
+		r[(i * 7) % 39] = -0.38 + 0.02 * i;
+	double lo, hi;
+	/* n = 39: k_lo = floor(40 · 0.05) = 2, k_hi = ceil(40 · 0.95) = 38. */
+	assert_true(calibrate_conformal(r, 39, 0.90, &lo, &hi));
+	assert_rel(lo, -0.36, 1e-12);
+	assert_rel(hi, 0.36, 1e-12);
+	/* n = 19 is the smallest with finite bounds: the extremes. */
+	for (int i = 0; i < 19; i++)
+		r[i] = 0.01 * (double)(i + 1);
+	assert_true(calibrate_conformal(r, 19, 0.90, &lo, &hi));
+	assert_rel(hi, 0.19, 1e-12);
+	assert_true(lo == 0.0);   /* the interval always holds the prediction */
+	assert_false(calibrate_conformal(r, 18, 0.90, &lo, &hi));
+	assert_false(calibrate_conformal(r, 0, 0.90, &lo, &hi));
 }
 
 /* What a progress callback saw. */
 struct seen {
-	size_t calls, last_solves, max_pass, first_pass_rows;
+	size_t calls, last_solves, max_stage;
 };
 
 static void
-count_progress(void *ctx, size_t pass, size_t row, size_t n_rows, size_t n_solves)
+count_progress(void *ctx, size_t stage, size_t done, size_t n_rows, size_t n_solves)
 {
 	struct seen *s = ctx;
-	assert_true(row >= 1 && row <= n_rows);
-	assert_int_equal(n_solves, s->last_solves + 1);   /* one call per solve */
-	if (pass == 0)
-		s->first_pass_rows = n_rows;
-	if (pass > s->max_pass)
-		s->max_pass = pass;
+	assert_true(done <= n_rows);
+	assert_true(n_solves >= s->last_solves);
+	if (stage > s->max_stage)
+		s->max_stage = stage;
 	s->calls++;
 	s->last_solves = n_solves;
 }
 
-/* data/calibration.json is the frozen fit: calibrating the calibration
- * cohort again from the paper's values lands on the shipped numbers, and
- * the classes with fewer than CALIBRATE_MIN_ROWS rows keep the paper's. */
+/* data/calibration.json is the frozen fit: calibrating the project's
+ * calibration cohort again from the priors lands on the shipped numbers,
+ * coefficients with fewer than CALIBRATE_MIN_ROWS rows (and the fixed
+ * ones: λ, the equipment exponent) keep their priors, and the shipped file
+ * carries the leave-one-out accuracy of both battery bases. */
 static void
 shipped_calibration_should_be_the_fit_on_the_calibration_cohort(void **state)
 {
 	(void)state;
 	struct cohort c;
-	assert_int_equal(cohort_load("tests/fixtures/cohort/calibration.csv", &c), 0);
+	assert_int_equal(cohort_load("data/cohorts/calibration.csv", &c), 0);
 	struct model_data start = md;
 	calibrate_apply(calibrate_prior, &md.cal, &start.cal);
 	struct calibrate_result r;
 	struct seen seen = { 0 };
 	struct calibrate_progress pg = { count_progress, &seen };
-	assert_int_equal(calibrate_fit(&c, &start, &pg, &r), 0);
-	/* Progress came once per solve, through the first pass and the fit. */
-	assert_int_equal(seen.calls, r.n_solves);
-	assert_true(seen.first_pass_rows >= r.n_rows);
-	assert_true(seen.max_pass > r.n_iter);
+	assert_int_equal(calibrate_fit(&c, &start, false, &pg, &r), 0);
+	assert_true(seen.calls > r.n_iter);
+	assert_int_equal(seen.max_stage, 0);   /* no leave-one-out asked */
+	assert_null(r.loo);
 	double shipped[CAL_N_PARAMS];
 	calibrate_theta(&md.cal, shipped);
 	for (int j = 0; j < CAL_N_PARAMS; j++) {
 		assert_rel(r.theta[j], shipped[j], 1e-3);
-		if (r.n_per_param[j] < CALIBRATE_MIN_ROWS)
+		if (r.n_per_param[j] < CALIBRATE_MIN_ROWS || calibrate_lo[j] == calibrate_hi[j])
 			assert_rel(r.theta[j], calibrate_prior[j], 1e-12);
 	}
-	assert_true(r.mape_after_pct < r.mape_before_pct);
+	assert_true(r.open_after_pct < r.open_before_pct);
+	assert_true(r.n_rows >= 30);
+	for (int b = 0; b < MODEL_BASIS_MAX; b++) {
+		const struct model_accuracy *a = &md.cal.accuracy[b];
+		assert_true(a->valid);
+		assert_true(a->n_rows >= 19 && (size_t)a->n_rows <= r.n_rows);
+		assert_true(a->pooled.log_lo <= 0.0 && a->pooled.log_hi >= 0.0);
+		assert_true(a->coverage >= a->level);
+	}
+	calibrate_result_free(&r);
 	cohort_free(&c);
 }
 
@@ -116,9 +158,12 @@ mission(struct mission_spec *s, int cls, int rotors, double wheelbase_m,
 
 enum { N_SYN = 8 };
 
+/* Eight rows: "real" aircraft sized by tables truth, so each real mass is
+ * a fixed point of truth, with their battery masses published. */
 static void
-synthetic(struct mission_spec *s)
+synthetic(const struct model_data *truth, struct calibrate_row *rows)
 {
+	struct mission_spec s[N_SYN];
 	mission(&s[0], AF_CONSUMER_FOLDING, 4, 0.30, 0.2, 20, ROLE_IMAGING);
 	mission(&s[1], AF_CONSUMER_FOLDING, 4, 0.45, 0.6, 12, ROLE_IMAGING);
 	mission(&s[2], AF_CONSUMER_FOLDING, 4, 0.50, 1.0, 12, ROLE_IMAGING);
@@ -127,83 +172,76 @@ synthetic(struct mission_spec *s)
 	mission(&s[5], AF_ENTERPRISE_RUGGED, 6, 1.00, 5.0, 20, ROLE_MAPPING);
 	mission(&s[6], AF_ENTERPRISE_RUGGED, 8, 1.20, 5.0, 15, ROLE_IMAGING);
 	mission(&s[7], AF_MICRO_AIO, 4, 0.25, 0.15, 8, ROLE_IMAGING);
-}
-
-/* actual[i] = scale x the prediction of mission i with tables m. */
-static void
-predict(const struct mission_spec *s, const struct model_data *m, double scale,
-        double *actual)
-{
 	struct solve_result *work = malloc(sizeof *work);
 	for (int i = 0; i < N_SYN; i++) {
 		struct validate_row vr;
 		memset(&vr, 0, sizeof vr);
-		validate_solve_row(&s[i], m, work, &vr);
-		if (vr.status != VALIDATE_ROW_OK)
-			print_error("row %d: %s, %g kg: %s\n", i, validate_status_text(vr.status),
-			    vr.predicted_kg, work->custom.termination);
+		validate_solve_row(&s[i], truth, work, &vr);
 		assert_int_equal(vr.status, VALIDATE_ROW_OK);
-		actual[i] = scale * vr.predicted_kg;
+		rows[i].spec = s[i];
+		rows[i].pack_spec = s[i];
+		rows[i].actual_kg = vr.predicted_kg;
+		rows[i].battery_kg = vr.battery_pred_kg;
 	}
 	free(work);
 }
 
-/* Predictions made with known coefficients serve as the "actual" masses;
- * the fit, started from the paper's values, must find them again. */
+/* Rows sized with known coefficients serve as the real aircraft; the
+ * open-loop fit, started from the priors, finds those coefficients again
+ * (only the four consumer rows inform the consumer ones). */
 static void
 fit_should_recover_known_coefficients_from_a_synthetic_cohort(void **state)
 {
 	(void)state;
-	struct mission_spec s[N_SYN];
-	synthetic(s);
 	struct model_data truth = md;
-	truth.cal.lambda[LAMBDA_CONSUMER] = 1.2;
-	truth.cal.packaging_base = 1.06;
-	double actual[N_SYN];
-	predict(s, &truth, 1.0, actual);
+	calibrate_apply(calibrate_prior, &md.cal, &truth.cal);
+	truth.cal.equip_kg[AF_CONSUMER_FOLDING] = 0.20;
+	truth.cal.kappa[AF_CONSUMER_FOLDING] = 1.30;
+	struct calibrate_row rows[N_SYN];
+	synthetic(&truth, rows);
 
+	struct model_data start = md;
+	calibrate_apply(calibrate_prior, &md.cal, &start.cal);
 	struct calibrate_result r;
 	/* A negligible prior, so the data alone decide. */
-	assert_int_equal(calibrate_fit_missions(s, actual, N_SYN, &md, 1e-6, &r), 0);
+	assert_int_equal(calibrate_fit_rows(rows, N_SYN, &start, 1e-8, &r), 0);
 	assert_int_equal(r.n_rows, N_SYN);
-	assert_true(r.lsq_status == LSQ_OK || r.lsq_status == LSQ_MAXITER);
-	assert_rel(r.theta[CAL_LAMBDA_CONSUMER], 1.2, 0.03);
-	assert_rel(r.theta[CAL_PACKAGING_BASE], 1.06, 0.01);
-	assert_rel(r.after.lambda[LAMBDA_CONSUMER], 1.2, 0.03);
-	assert_true(r.mape_before_pct > 1.0);
-	assert_true(r.mape_after_pct < 0.2);
-	assert_int_equal(r.n_per_param[CAL_LAMBDA_CONSUMER], 4);
-	assert_int_equal(r.n_per_param[CAL_LAMBDA_ENT_QUAD], 1);
-	assert_int_equal(r.n_per_param[CAL_LAMBDA_ENT_MULTI], 2);
-	assert_int_equal(r.n_per_param[CAL_LAMBDA_AGRI], 0);
-	/* One and two rows are too few (CALIBRATE_MIN_ROWS): held exactly. */
-	assert_true(r.theta[CAL_LAMBDA_ENT_QUAD] == md.cal.lambda[LAMBDA_ENTERPRISE_QUAD]);
-	assert_true(r.theta[CAL_LAMBDA_ENT_MULTI] == md.cal.lambda[LAMBDA_ENTERPRISE_MULTI]);
-	assert_true(r.theta[CAL_LAMBDA_MICRO] == md.cal.lambda[LAMBDA_MICRO]);
-	/* No Agricultural row: its lambda has no data and stays put. */
-	assert_rel(r.theta[CAL_LAMBDA_AGRI], calibrate_prior[CAL_LAMBDA_AGRI], 1e-9);
+	assert_rel(r.theta[CAL_EQUIP_CONSUMER], 0.20, 0.01);
+	assert_rel(r.theta[CAL_KAPPA_CONSUMER], 1.30, 0.01);
+	assert_rel(r.after.equip_kg[AF_CONSUMER_FOLDING], 0.20, 0.01);
+	assert_true(r.open_after_pct < 0.1 * r.open_before_pct);
+	assert_int_equal(r.n_per_param[CAL_EQUIP_CONSUMER], 4);
+	assert_int_equal(r.n_per_param[CAL_EQUIP_ENTERPRISE], 3);
+	assert_int_equal(r.n_per_param[CAL_EQUIP_MICRO], 1);
+	assert_int_equal(r.n_per_param[CAL_EQUIP_AGRI], 0);
+	/* One row is too few: held exactly; no row: the prior. */
+	assert_true(r.theta[CAL_EQUIP_MICRO] == start.cal.equip_kg[AF_MICRO_AIO]);
+	assert_rel(r.theta[CAL_EQUIP_AGRI], calibrate_prior[CAL_EQUIP_AGRI], 1e-12);
+	calibrate_result_free(&r);
 }
 
-/* With the production prior weight, a class absent from the cohort keeps
- * the paper's value, and every coefficient stays inside its bounds. */
+/* With the production prior weight every coefficient stays in its bounds,
+ * even when the "real" aircraft are three times the model's. */
 static void
-fit_should_keep_absent_classes_at_the_prior_and_respect_bounds(void **state)
+fit_should_respect_bounds(void **state)
 {
 	(void)state;
-	struct mission_spec s[N_SYN];
-	synthetic(s);
-	/* Everything three times heavier than the model: the fit must stop at
-	 * the bounds, not beyond. */
-	double actual[N_SYN];
-	predict(s, &md, 3.0, actual);
+	struct model_data start = md;
+	calibrate_apply(calibrate_prior, &md.cal, &start.cal);
+	struct calibrate_row rows[N_SYN];
+	synthetic(&start, rows);
+	for (int i = 0; i < N_SYN; i++) {
+		rows[i].actual_kg *= 3.0;
+		rows[i].battery_kg = 0.0;
+	}
 	struct calibrate_result r;
-	assert_int_equal(calibrate_fit_missions(s, actual, N_SYN, &md, CALIBRATE_MU, &r), 0);
-	assert_rel(r.theta[CAL_LAMBDA_AGRI], 1.0, 1e-9);
+	assert_int_equal(calibrate_fit_rows(rows, N_SYN, &start, CALIBRATE_MU, &r), 0);
 	for (int j = 0; j < CAL_N_PARAMS; j++) {
 		assert_true(r.theta[j] >= calibrate_lo[j]);
 		assert_true(r.theta[j] <= calibrate_hi[j]);
 	}
-	assert_true(r.mape_after_pct < r.mape_before_pct);
+	assert_true(r.open_after_pct <= r.open_before_pct);
+	calibrate_result_free(&r);
 }
 
 static void
@@ -213,8 +251,9 @@ fit_should_refuse_a_cohort_without_usable_rows(void **state)
 	struct cohort c;
 	memset(&c, 0, sizeof c);
 	struct calibrate_result r;
-	assert_int_equal(calibrate_fit(&c, &md, NULL, &r), -1);
+	assert_int_equal(calibrate_fit(&c, &md, false, NULL, &r), -1);
 	assert_int_equal(r.n_rows, 0);
+	calibrate_result_free(&r);
 }
 
 int
@@ -222,9 +261,10 @@ main(void)
 {
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(theta_should_round_trip_and_keep_the_small_wiring_ratio),
+		cmocka_unit_test(conformal_should_pick_the_order_statistics_of_the_level),
 		cmocka_unit_test(shipped_calibration_should_be_the_fit_on_the_calibration_cohort),
 		cmocka_unit_test(fit_should_recover_known_coefficients_from_a_synthetic_cohort),
-		cmocka_unit_test(fit_should_keep_absent_classes_at_the_prior_and_respect_bounds),
+		cmocka_unit_test(fit_should_respect_bounds),
 		cmocka_unit_test(fit_should_refuse_a_cohort_without_usable_rows),
 	};
 	return cmocka_run_group_tests(tests, setup, NULL);

@@ -179,21 +179,26 @@ model_io_roles_classes_and_calibration_should_match_the_paper(void **state)
 	assert_rel(m->role[ROLE_RACING].h_conv_w_m2k, 120.0, 1e-12);
 	assert_int_equal(m->role[ROLE_DELIVERY].shedding, SHED_DROP);
 	assert_int_equal(m->role[ROLE_AGRICULTURE].shedding, SHED_SPRAY);
-	/* κ per class (paper §IV-F), γ (paper §V-A) */
-	assert_rel(m->cls[AF_CONSUMER_FOLDING].kappa, 1.20, 1e-12);
-	assert_rel(m->cls[AF_ENTERPRISE_RUGGED].kappa, 1.25, 1e-12);
-	assert_rel(m->cls[AF_MICRO_AIO].kappa, 1.30, 1e-12);
-	assert_rel(m->cls[AF_AGRICULTURAL].kappa, 1.46, 1e-12);
+	/* γ (paper §V-A); κ is calibrated (test_calibrate.c checks its
+	 * prior is the paper's) */
 	assert_rel(m->cls[AF_CONSUMER_FOLDING].gamma, 0.15, 1e-12);
 	assert_rel(m->cls[AF_ENTERPRISE_RUGGED].gamma, 0.50, 1e-12);
 	assert_rel(m->cls[AF_AGRICULTURAL].gamma, 1.20, 1e-12);
-	/* eq. (lambda): the classes the calibration cohort cannot fit (fewer
-	 * than three usable rows) keep the paper's values; the fitted ones
-	 * are checked against a re-fit in test_calibrate.c. */
+	/* eq. (lambda): held at the paper's values (the equipment law carries
+	 * what the cohort says about the rest of the dry mass). */
 	assert_rel(m->cal.lambda[LAMBDA_MICRO], 1.50, 1e-12);
+	assert_rel(m->cal.lambda[LAMBDA_CONSUMER], 1.08, 1e-12);
 	assert_rel(m->cal.lambda[LAMBDA_ENTERPRISE_QUAD], 0.95, 1e-12);
 	assert_rel(m->cal.lambda[LAMBDA_ENTERPRISE_MULTI], 0.80, 1e-12);
 	assert_rel(m->cal.lambda[LAMBDA_AGRI], 1.00, 1e-12);
+	/* Pack-level laws: LiPo from 245 catalogue packs, LiHV from 57. */
+	assert_rel(model_chem(m, "LiPo")->pack_wh_kg_100, 151.0, 1e-12);
+	assert_rel(model_chem(m, "LiHV")->pack_wh_kg_100, 186.0, 1e-12);
+	/* The equipment exponent is the surface law's 2/3; the shipped file
+	 * carries the accuracy of both battery bases. */
+	assert_rel(m->cal.equip_exponent, 2.0 / 3.0, 1e-12);
+	assert_true(m->cal.accuracy[MODEL_FROM_ENDURANCE].valid);
+	assert_true(m->cal.accuracy[MODEL_PACK_LOCKED].valid);
 	/* The small-platform wiring coefficient keeps the paper's 1:5 ratio. */
 	assert_rel(m->cal.wire_coef_small / m->cal.wire_coef, 0.0003 / 0.0015, 1e-9);
 	free(m);
@@ -211,9 +216,29 @@ model_io_calibration_json_should_load_back_unchanged(void **state)
 	a.lambda[LAMBDA_ENTERPRISE_QUAD] = 0.9385;
 	a.lambda[LAMBDA_ENTERPRISE_MULTI] = 0.7915;
 	a.lambda[LAMBDA_AGRI] = 1.2385;
-	a.packaging_base = 1.0385;
 	a.wire_coef = 0.00145;
 	a.wire_coef_small = 0.000285;
+	for (int k = 0; k < AF_CLASS_MAX; k++) {
+		a.equip_kg[k] = 0.125 + 0.0625 * k;   /* exact in binary */
+		a.kappa[k] = 1.25 + 0.125 * k;
+	}
+	a.equip_exponent = 0.6875;
+	struct model_accuracy *acc = &a.accuracy[MODEL_PACK_LOCKED];
+	acc->valid = true;
+	acc->n_rows = 37;
+	acc->loo_mape_pct = 27.25;
+	acc->n_battery = 23;
+	acc->loo_battery_mape_pct = 15.5;
+	acc->level = 0.9;
+	acc->coverage = 0.9375;
+	/* Field by field: a compound literal need not zero the padding that
+	 * the memory comparison below reads. */
+	acc->pooled.n = 37;
+	acc->pooled.log_lo = -0.75;
+	acc->pooled.log_hi = 0.625;
+	acc->cls[AF_CONSUMER_FOLDING].n = 19;
+	acc->cls[AF_CONSUMER_FOLDING].log_lo = -0.5;
+	acc->cls[AF_CONSUMER_FOLDING].log_hi = 0.25;
 	char *txt = model_io_calibration_json(&a);
 	char path[] = "/tmp/aeroeval-cal-XXXXXX";
 	int fd = mkstemp(path);
@@ -266,9 +291,9 @@ model_io_should_refuse_an_unknown_key(void **state)
 {
 	(void)state;
 	expect_bad("unknown_key", "airframes.json", NULL,
-	    "airframes.json:18:7: error: classes[1].kapa: unknown field; did you mean \"kappa\"?\n");
+	    "airframes.json:15:7: error: classes[1].gama: unknown field; did you mean \"gamma\"?\n");
 	expect_bad("unknown_key", "airframes.json", NULL,
-	    "airframes.json:16:5: error: classes[1].kappa: missing field (a number from 1 to 3)\n");
+	    "airframes.json:13:5: error: classes[1].gamma: missing field (a number from 0 to 5)\n");
 }
 
 static void
@@ -276,8 +301,8 @@ model_io_should_refuse_an_out_of_range_value(void **state)
 {
 	(void)state;
 	expect_bad("out_of_range", "calibration.json", NULL,
-	    "calibration.json:10:29: error: battery_packaging_base: out of range: 3.85 "
-	    "(allowed 0.8 to 2)");
+	    "calibration.json:10:35: error: wiring_coefficient_kg_per_a_m: out of range: 3.85 "
+	    "(allowed 0 to 0.1)");
 }
 
 static void
@@ -285,7 +310,7 @@ model_io_should_refuse_a_duplicate_chemistry(void **state)
 {
 	(void)state;
 	expect_bad("duplicate_chemistry", "chemistries.json", NULL,
-	    "chemistries.json:75:15: error: chemistries[5].name: duplicate id \"LiPo\" "
+	    "chemistries.json:90:15: error: chemistries[5].name: duplicate id \"LiPo\" "
 	    "(first given by chemistries[0])");
 }
 

@@ -132,20 +132,23 @@ breakdown_sum(const struct res_mass *m)
 	    + m->avionics_kg + m->role_aux_kg + m->other_kg;
 }
 
-/* Hand-worked: 0.2 kg pack and 0.12 kg avionics fill (0.2/2200 +
- * 0.12/1000)/0.5 = 4.21818e-4 m³, a cube of 0.0750 m; the box is 1.2 × 6
- * faces = 0.040498 m².  Four moulded arms of 0.175 m at c = 0.1 add
- * 4 × 4 × 0.1 × 0.175² = 0.049 m². */
+/* The equipment law e (M / 1 kg)^β, hand-worked at e = 0.25 kg, β = 2/3:
+ * 8 kg gives 0.25 × 4 = 1 kg; the avionics share splits it; nothing is
+ * left at zero mass (no floor). */
 static void
-sizing_shell_should_add_moulded_arm_fairings_to_the_body_box(void **state)
+sizing_equipment_should_follow_the_calibrated_law_without_a_floor(void **state)
 {
 	(void)state;
-	double box = airframe_shell_area_m2(0.2, 0.12, 4, 0.175, 0.0);
-	assert_rel(box, 7.2 * pow(4.21818181818e-4, 2.0 / 3.0), 1e-9);
-	assert_rel(box, 0.040498, 1e-4);
-	assert_rel(airframe_shell_area_m2(0.2, 0.12, 4, 0.175, 0.1) - box, 0.049, 1e-12);
-	/* A hexacopter moulds six arms. */
-	assert_rel(airframe_shell_area_m2(0.2, 0.12, 6, 0.175, 0.1) - box, 0.0735, 1e-12);
+	struct sizing_params p;
+	memset(&p, 0, sizeof p);
+	p.equip_kg = 0.25;
+	p.equip_exponent = 2.0 / 3.0;
+	assert_rel(airframe_equipment_kg(&p, 8.0), 1.0, 1e-12);
+	assert_rel(airframe_equipment_kg(&p, 1.0), 0.25, 1e-15);
+	assert_true(airframe_equipment_kg(&p, 0.0) == 0.0);
+	/* 249 g: 0.25 × 0.249^(2/3) = 0.0988 kg, under half the aircraft. */
+	assert_rel(airframe_equipment_kg(&p, 0.249), 0.25 * pow(0.249, 2.0 / 3.0), 1e-12);
+	assert_true(airframe_equipment_kg(&p, 0.249) < 0.5 * 0.249);
 }
 
 static void
@@ -376,7 +379,7 @@ main(void)
 		cmocka_unit_test_setup_teardown(sizing_run_should_not_relax_a_thrust_margin_the_mission_asked_for, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_run_should_keep_a_thrust_target_that_closes, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_run_should_not_stop_on_a_pack_the_fine_discharge_cannot_fly, setup, teardown),
-		cmocka_unit_test(sizing_shell_should_add_moulded_arm_fairings_to_the_body_box),
+		cmocka_unit_test(sizing_equipment_should_follow_the_calibrated_law_without_a_floor),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

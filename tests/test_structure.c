@@ -119,6 +119,9 @@ structure_resonance_margin_should_fail_a_mode_inside_the_band(void **state)
 	assert_rel(structure_resonance_margin(618.0, 123.85, 412.0), 0.0, 1e-12);
 	assert_true(structure_resonance_margin(618.0, 123.85, 412.0) >= -1e-15);
 	assert_true(structure_resonance_margin(0.0, 123.85, 412.0) < 0.0);
+	/* A rotor that never reaches hover has no band: a finite failure. */
+	assert_rel(structure_resonance_margin(250.0, 0.0, 0.0), -1.0, 1e-15);
+	assert_rel(structure_resonance_margin(250.0, 123.85, 0.0), -1.0, 1e-15);
 }
 
 static void

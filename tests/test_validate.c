@@ -96,6 +96,44 @@ rule_should_turn_shedding_off_for_the_roles_that_shed(void **state)
 	cohort_free(&c);
 }
 
+/* The pack rule locks a published pack (cells, capacity x packs) and
+ * keeps the endurance as the mission; the default rule sizes it; a row
+ * that names no pack is sized under both.  The largest payload becomes
+ * the load case. */
+static void
+rule_should_lock_the_published_pack_only_under_the_pack_rule(void **state)
+{
+	(void)state;
+	struct cohort c;
+	load(FIX "rules.csv", &c);
+	struct mission_spec s;
+	unsigned notes;
+	struct cohort_row r = c.rows[0];
+	r.has_cell_count = r.has_battery_capacity_mah = r.has_battery_pack_count = true;
+	r.cell_count = 6;
+	r.battery_capacity_mah = 4500.0;
+	r.battery_pack_count = 2;
+	r.has_max_payload_kg = true;
+	r.max_payload_kg = r.payload_kg + 1.25;
+	assert_int_equal(validate_mission_explained(&r, &md, VALIDATE_PACK_LOCKED, &s,
+	    &notes, NULL), VALIDATE_SKIP_NONE);
+	assert_true(s.locks.is_battery_locked);
+	assert_int_equal(s.locks.locked_cell_count, 6);
+	assert_rel(s.locks.locked_capacity_mah, 9000.0, 1e-15);
+	assert_true(notes & VALIDATE_NOTE_PACK_LOCKED);
+	assert_true(s.t_hover_s > 0.0);
+	assert_rel(s.max_payload_kg, r.payload_kg + 1.25, 1e-15);
+	assert_int_equal(validate_mission_explained(&r, &md, VALIDATE_FROM_ENDURANCE, &s,
+	    &notes, NULL), VALIDATE_SKIP_NONE);
+	assert_false(s.locks.is_battery_locked);
+	assert_false(notes & VALIDATE_NOTE_PACK_LOCKED);
+	r.has_battery_capacity_mah = false;
+	assert_int_equal(validate_mission_explained(&r, &md, VALIDATE_PACK_LOCKED, &s,
+	    &notes, NULL), VALIDATE_SKIP_NONE);
+	assert_false(s.locks.is_battery_locked);
+	cohort_free(&c);
+}
+
 static void
 rule_should_derive_the_wheelbase_from_the_overlap_limit(void **state)
 {
@@ -269,7 +307,7 @@ cohort_should_solve_each_row_and_count_only_converged_rows(void **state)
 	struct cohort c;
 	load(FIX "tiny.csv", &c);
 	struct validate_report v;
-	assert_int_equal(validate_cohort(&c, &md, &v), 0);
+	assert_int_equal(validate_cohort(&c, &md, VALIDATE_FROM_ENDURANCE, &v), 0);
 	assert_int_equal(v.n_rows, 5);
 	assert_int_equal(v.rows[4].status, VALIDATE_ROW_SKIPPED);
 	assert_int_equal(v.rows[4].skip, VALIDATE_SKIP_ROTORS);
@@ -293,7 +331,7 @@ cohort_should_solve_each_row_and_count_only_converged_rows(void **state)
 
 	/* Solving twice gives the same numbers (no hidden state). */
 	struct validate_report w;
-	assert_int_equal(validate_cohort(&c, &md, &w), 0);
+	assert_int_equal(validate_cohort(&c, &md, VALIDATE_FROM_ENDURANCE, &w), 0);
 	for (size_t i = 0; i < 5; i++)
 		assert_true(v.rows[i].predicted_kg == w.rows[i].predicted_kg);
 	assert_true(v.mtow.mape_pct == w.mtow.mape_pct);
@@ -317,14 +355,14 @@ rule_should_name_the_fact_outside_the_mission_range(void **state)
 	unsigned notes;
 	char text[256];
 	r.rotor_count = 2;
-	assert_int_equal(validate_mission_explained(&r, &md, &s, &notes, &f), VALIDATE_SKIP_RANGE);
+	assert_int_equal(validate_mission_explained(&r, &md, VALIDATE_FROM_ENDURANCE, &s, &notes, &f), VALIDATE_SKIP_RANGE);
 	validate_fact_text(&f, text, sizeof text);
 	assert_string_equal(text, "rotor_count 2 gives num_rotors 2, outside the mission "
 	                          "contract's range (3 to 16)");
 	r = c.rows[0];
 	r.has_hover_time_min = true;
 	r.hover_time_min = 1e6;
-	assert_int_equal(validate_mission_explained(&r, &md, &s, &notes, &f), VALIDATE_SKIP_RANGE);
+	assert_int_equal(validate_mission_explained(&r, &md, VALIDATE_FROM_ENDURANCE, &s, &notes, &f), VALIDATE_SKIP_RANGE);
 	validate_fact_text(&f, text, sizeof text);
 	assert_non_null(strstr(text, "hover_time_min 1e+06 gives t_hover_s 5e+07, outside the "
 	                             "mission contract's range ("));
@@ -371,6 +409,7 @@ main(void)
 		cmocka_unit_test(rule_should_take_every_fact_of_a_full_row),
 		cmocka_unit_test(rule_should_name_the_fact_outside_the_mission_range),
 		cmocka_unit_test(rule_should_turn_shedding_off_for_the_roles_that_shed),
+		cmocka_unit_test(rule_should_lock_the_published_pack_only_under_the_pack_rule),
 		cmocka_unit_test(rule_should_derive_the_wheelbase_from_the_overlap_limit),
 		cmocka_unit_test(rule_should_not_lock_a_propeller_the_wheelbase_cannot_hold),
 		cmocka_unit_test(rule_should_skip_rows_without_a_needed_fact),

@@ -23,7 +23,7 @@
 #include "util/text.h"
 #include "util/xalloc.h"
 
-#define VALIDATE_USAGE "usage: aeroeval validate [--report FILE.pdf] [--json] [--missions DIR] COHORT.csv\n"
+#define VALIDATE_USAGE "usage: aeroeval validate [--pack] [--report FILE.pdf] [--json] [--missions DIR] COHORT.csv\n"
 #define CALIBRATE_USAGE "usage: aeroeval calibrate [--write FILE] COHORT.csv\n"
 
 /* Loads the tables and the cohort; prints every cohort problem.  Returns
@@ -99,6 +99,16 @@ print_table(FILE *out, const struct cohort *c, const struct validate_report *v)
 	if (v->battery.n > 0)
 		fprintf(out, "Battery mass over %zu rows: MAPE %.1f %%\n", v->battery.n,
 		    v->battery.mape_pct);
+	if (v->n_open > 0)
+		fprintf(out, "Open loop, the model evaluated at each aircraft's real mass: "
+		    "dry mass (all but battery and payload) mean error %.1f %% and battery "
+		    "%.1f %% over %zu rows with a published battery mass\n",
+		    v->open_dry_mape_pct, v->open_battery_mape_pct, v->n_open);
+	if (v->has_interval)
+		fprintf(out, "Inside the shipped %.0f %% prediction interval: %zu of %zu rows\n",
+		    100.0 * v->interval_level, v->n_inside, v->n_ok);
+	else
+		fprintf(out, "The shipped calibration carries no prediction interval for this rule\n");
 	int header = 0;
 	for (size_t i = 0; i < v->n_rows; i++) {
 		const struct validate_row *vr = &v->rows[i];
@@ -194,6 +204,18 @@ report_json(const char *path, const struct cohort *c, const struct validate_repo
 	cJSON_AddNumberToObject(mt, "bootstrap_seed", VALIDATE_BOOT_SEED);
 	cJSON_AddItemToObject(root, "mtow", mt);
 	cJSON_AddItemToObject(root, "battery_mass", summary_json(&v->battery));
+	cJSON_AddStringToObject(root, "rule", v->rule == VALIDATE_PACK_LOCKED
+	    ? "pack_locked" : "from_endurance");
+	cJSON *ol = cJSON_AddObjectToObject(root, "open_loop");
+	cJSON_AddNumberToObject(ol, "n", (double)v->n_open);
+	cJSON_AddNumberToObject(ol, "dry_mape_pct", v->open_dry_mape_pct);
+	cJSON_AddNumberToObject(ol, "battery_mape_pct", v->open_battery_mape_pct);
+	if (v->has_interval) {
+		cJSON *iv = cJSON_AddObjectToObject(root, "interval");
+		cJSON_AddNumberToObject(iv, "level", v->interval_level);
+		cJSON_AddNumberToObject(iv, "n_inside", (double)v->n_inside);
+		cJSON_AddNumberToObject(iv, "n", (double)v->n_ok);
+	}
 	cJSON *cl = cJSON_AddArrayToObject(root, "by_class");
 	for (size_t g = 0; g < v->n_classes; g++) {
 		cJSON *o = cJSON_CreateObject();
@@ -356,6 +378,7 @@ cli_validate(int argc, char **argv)
 {
 	const char *report = NULL, *missions = NULL, *path = NULL;
 	int json = 0;
+	enum validate_rule rule = VALIDATE_FROM_ENDURANCE;
 	for (int i = 1; i < argc; i++) {
 		if (strcmp(argv[i], "--report") == 0 && i + 1 < argc)
 			report = argv[++i];
@@ -363,6 +386,8 @@ cli_validate(int argc, char **argv)
 			missions = argv[++i];
 		else if (strcmp(argv[i], "--json") == 0)
 			json = 1;
+		else if (strcmp(argv[i], "--pack") == 0)
+			rule = VALIDATE_PACK_LOCKED;
 		else if (argv[i][0] == '-' || path != NULL) {
 			fputs(VALIDATE_USAGE, stderr);
 			return 2;
@@ -379,7 +404,7 @@ cli_validate(int argc, char **argv)
 	int rc = load_inputs(path, env, &c);
 	struct validate_report v;
 	memset(&v, 0, sizeof v);
-	if (rc == 0 && validate_cohort(&c, &env->model, &v) != 0) {
+	if (rc == 0 && validate_cohort(&c, &env->model, rule, &v) != 0) {
 		fprintf(stderr, "%s: internal error: statistics refused the predictions\n", path);
 		rc = 3;
 	}
@@ -431,16 +456,21 @@ progress_init(struct progress_line *pl)
 }
 
 static void
-show_progress(void *ctx, size_t pass, size_t row, size_t n_rows, size_t n_solves)
+show_progress(void *ctx, size_t stage, size_t row, size_t n_rows, size_t n_solves)
 {
 	struct progress_line *pl = ctx;
 	double now = batch_now_s();
 	if (now - pl->last < pl->every_s)
 		return;
 	pl->last = now;
-	fprintf(stderr, "%scalibrate: %s pass %zu, row %zu of %zu, %zu solves, %.0f s%s",
-	        pl->tty ? "\r\033[K" : "", pass == 0 ? "picking rows," : "fitting,", pass,
-	        row, n_rows, n_solves, now - pl->t0, pl->tty ? "" : "\n");
+	if (stage == 0)
+		fprintf(stderr, "%scalibrate: fit on %zu rows, %zu sized, %zu solves, %.0f s%s",
+		        pl->tty ? "\r\033[K" : "", n_rows, row, n_solves, now - pl->t0,
+		        pl->tty ? "" : "\n");
+	else
+		fprintf(stderr, "%scalibrate: leave-one-out %zu of %zu, %zu solves, %.0f s%s",
+		        pl->tty ? "\r\033[K" : "", stage, n_rows + 1, n_solves,
+		        now - pl->t0, pl->tty ? "" : "\n");
 	pl->shown = pl->tty;
 }
 
@@ -466,11 +496,12 @@ cli_calibrate(int argc, char **argv)
 	memset(&c, 0, sizeof c);
 	int rc = load_inputs(path, env, &c);
 	struct calibrate_result cr;
+	memset(&cr, 0, sizeof cr);
 	if (rc == 0) {
 		struct progress_line pl;
 		progress_init(&pl);
 		struct calibrate_progress pg = { show_progress, &pl };
-		int st = calibrate_fit(&c, &env->model, &pg, &cr);
+		int st = calibrate_fit(&c, &env->model, true, &pg, &cr);
 		if (pl.shown)
 			fputs("\r\033[K", stderr);
 		if (st == -1) {
@@ -486,16 +517,38 @@ cli_calibrate(int argc, char **argv)
 		double before[CAL_N_PARAMS];
 		calibrate_theta(&cr.before, before);
 		printf("Calibration on %s: %zu of %zu rows (the validate rule; rows it skips "
-		    "or that do not converge are left out)\n", path, cr.n_rows, c.n_rows);
+		    "or that the model cannot fly at their real mass are left out)\n", path,
+		    cr.n_rows, c.n_rows);
 		printf("%-34s %10s %10s %10s %5s\n", "coefficient", "prior", "before", "after", "rows");
 		for (int j = 0; j < CAL_N_PARAMS; j++)
 			printf("%-34s %10.4g %10.4g %10.4g %5zu\n", calibrate_param_name(j),
 			    calibrate_prior[j], before[j], cr.theta[j], cr.n_per_param[j]);
 		printf("small-platform wiring coefficient: %.4g -> %.4g kg/(A m)\n",
 		    cr.before.wire_coef_small, cr.after.wire_coef_small);
-		printf("MTOW MAPE on the fitted rows: %.1f %% before, %.1f %% after "
-		    "(%zu LM iterations, %zu solves, mu %.2g)\n", cr.mape_before_pct,
-		    cr.mape_after_pct, cr.n_iter, cr.n_solves, CALIBRATE_MU);
+		printf("Open loop (dry mass, or the closure at the real mass): mean error "
+		    "%.1f %% before, %.1f %% after (%zu LM iterations, %zu evaluations, mu %.2g)\n",
+		    cr.open_before_pct, cr.open_after_pct, cr.n_iter, cr.n_evals, CALIBRATE_MU);
+		printf("Closed loop, in sample: MTOW MAPE %.1f %% over %zu rows sized\n",
+		    cr.mtow_mape_pct, cr.n_sized);
+		for (int b = 0; b < MODEL_BASIS_MAX; b++) {
+		const struct model_accuracy *a = &cr.after.accuracy[b];
+		printf("Leave-one-out, %s: MTOW MAPE %.1f %% over %d rows sized, battery "
+		    "mass MAPE %.1f %% over %d rows\n", b == MODEL_PACK_LOCKED
+		    ? "published packs locked" : "batteries sized from the endurance",
+		    a->loo_mape_pct, a->n_rows, a->loo_battery_mape_pct, a->n_battery);
+		if (a->valid) {
+			printf("%.0f %% prediction interval on the takeoff mass (split conformal): "
+			    "x%.3f to x%.3f pooled (%d rows)", 100.0 * a->level,
+			    exp(a->pooled.log_lo), exp(a->pooled.log_hi), a->pooled.n);
+			for (int k = 0; k < AF_CLASS_MAX; k++)
+				if (a->cls[k].n > 0)
+					printf("; %s x%.3f to x%.3f (%d rows)", spec_enum_airframe[k],
+					    exp(a->cls[k].log_lo), exp(a->cls[k].log_hi), a->cls[k].n);
+			printf("; %.0f %% of the rows inside\n", 100.0 * a->coverage);
+		} else {
+			printf("Too few rows sized for a %.0f %% interval\n", 100.0 * a->level);
+		}
+		}
 		if (write != NULL) {
 			char *txt = model_io_calibration_json(&cr.after);
 			char err[512];
@@ -508,6 +561,7 @@ cli_calibrate(int argc, char **argv)
 			free(txt);
 		}
 	}
+	calibrate_result_free(&cr);
 	cohort_free(&c);
 	cli_env_free(env);
 	free(env);

@@ -27,3 +27,12 @@ model_lambda_index(int airframe_class, int n_rotors)
 		return n_rotors > 4 ? LAMBDA_ENTERPRISE_MULTI : LAMBDA_ENTERPRISE_QUAD;
 	}
 }
+
+const struct model_interval *
+model_interval_for(const struct model_accuracy *a, int airframe_class)
+{
+	if (airframe_class >= 0 && airframe_class < AF_CLASS_MAX
+	    && a->cls[airframe_class].n > 0)
+		return &a->cls[airframe_class];
+	return &a->pooled;
+}

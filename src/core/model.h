@@ -23,6 +23,8 @@ struct batt_chem {
 	double b;                   /* Tremblay exponential-zone constant B */
 	double k;                   /* Tremblay polarisation constant K, V */
 	bool pouch;                 /* pouch (LiPo family) vs cylindrical/exotic packaging */
+	double pack_wh_kg_100;      /* pack specific energy of a 100 Wh pack, Wh/kg */
+	double pack_exponent;       /* its growth with pack energy (batt_pack_wh_kg) */
 };
 
 #define MODEL_MAX_CHEM 32
@@ -46,26 +48,58 @@ struct model_role {
 
 /* One row of data/airframes.json. */
 struct model_class {
-	double kappa;           /* installed-FoM penalty */
 	double gamma;           /* body overhead on spar mass */
-	double avionics_kg;     /* avionics mass */
-	double shell_kg_m2;     /* body-shell areal mass (gauge × density) */
-	double fairing_section_frac; /* moulded arm fairing side / arm length */
+	double avionics_share;  /* share of the equipment mass shown as avionics */
 	int cells_min;          /* series-cell range searched */
 	int cells_max;
 	bool small_platform;    /* racing/small wiring and ESC factors */
 };
 
-/* data/calibration.json: the three calibrated coefficients. */
+/* How well a calibration predicts the cohort it was fitted on, by
+ * leave-one-out (calibrate.c), and the split-conformal interval built from
+ * those errors: ln(actual / predicted) lies in [log_lo, log_hi] for the
+ * nominal share `level` of aircraft like the cohort's. */
+struct model_interval {
+	int n;                  /* leave-one-out residuals behind it */
+	double log_lo, log_hi;  /* bounds on ln(actual / predicted) */
+};
+
+/* The two ways a design's battery comes about, each with its own
+ * accuracy: sized from the mission's endurance, or a locked pack. */
+enum model_basis { MODEL_FROM_ENDURANCE, MODEL_PACK_LOCKED, MODEL_BASIS_MAX };
+
+struct model_accuracy {
+	bool valid;                        /* calibration.json carries it */
+	int n_rows;                        /* cohort rows sized */
+	double loo_mape_pct;               /* leave-one-out MTOW MAPE */
+	int n_battery;                     /* rows with a published battery mass */
+	double loo_battery_mape_pct;       /* leave-one-out battery-mass MAPE */
+	double level;                      /* nominal coverage, e.g. 0.90 */
+	double coverage;                   /* share of the rows inside (LOO) */
+	struct model_interval pooled;      /* every class together */
+	struct model_interval cls[AF_CLASS_MAX]; /* n = 0: the pooled one serves */
+};
+
+/* data/calibration.json: the calibrated coefficients. */
 enum model_lambda { LAMBDA_MICRO, LAMBDA_CONSUMER, LAMBDA_ENTERPRISE_QUAD,
 	LAMBDA_ENTERPRISE_MULTI, LAMBDA_AGRI, LAMBDA_MAX };
 
 struct model_calibration {
 	double lambda[LAMBDA_MAX];      /* per-class structural multiplier */
-	double packaging_base;          /* LiPo packaging base */
 	double wire_coef;               /* C_wire, kg/(A m) */
 	double wire_coef_small;         /* C_wire for racing/small platforms */
+	/* Equipment (avionics, body shell, landing gear, gimbal and mounts):
+	 * e_class (M_design / 1 kg)^exponent, kg (airframe.h). */
+	double equip_kg[AF_CLASS_MAX];
+	double equip_exponent;
+	double kappa[AF_CLASS_MAX];     /* installed-FoM penalty per class (paper) */
+	struct model_accuracy accuracy[MODEL_BASIS_MAX]; /* of this calibration */
 };
+
+/* The interval of a class: its own when the cohort had enough rows of it,
+ * else the pooled one. */
+const struct model_interval *model_interval_for(const struct model_accuracy *a,
+                                                int airframe_class);
 
 struct model_preset { double payload_kg; int role; char label[64]; };
 struct model_transport { double max_wheelbase_m; int airframe_class; char label[64]; };

@@ -312,12 +312,17 @@ struct res_candidate {
  * puts on a takeoff mass: for the dossier's cover and its assumptions. */
 struct res_accuracy {
 	bool valid;               /* the calibration carries these figures */
+	bool pack_locked;         /* measured with the packs locked (a mission
+	                           * whose battery is locked), else sized from
+	                           * the endurance */
 	int n_rows;               /* cohort rows the figures come from */
 	double mape;              /* leave-one-out takeoff-mass MAPE, fraction */
 	double battery_mape;      /* leave-one-out battery-mass MAPE, fraction */
 	double level;             /* the interval's nominal coverage, e.g. 0.90 */
-	double ratio_lo, ratio_hi; /* actual/predicted quantiles of that level */
-	double coverage;          /* the share of cohort rows inside it (LOO) */
+	double ratio_lo, ratio_hi; /* actual/predicted bounds at that level, for
+	                            * this mission's class */
+	int interval_rows;        /* leave-one-out residuals behind them */
+	double coverage;          /* the share of cohort rows inside (LOO) */
 };
 
 /* A prediction interval on a takeoff mass. */

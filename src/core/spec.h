@@ -165,7 +165,7 @@ X(BATTERY_PACK_COUNT, "battery_pack_count", SPEC_INT, battery_pack_count, "packs
 X(BATTERY_CYCLE_COUNT, "battery_cycle_count", SPEC_INT, battery_cycle_count, "cycles", 0, 0, 3000, 0, NULL, \
   "Charge cycles already on the pack (ageing raises resistance)") \
 X(BATTERY_SPECIFIC_ENERGY_WH_KG, "battery_specific_energy_wh_kg", SPEC_NUM, battery_specific_energy_wh_kg, "Wh/kg", 0, 0, 700, SPEC_F_ZERO_AUTO, NULL, \
-  "Cell specific energy override (0 = chemistry profile)") \
+  "Pack specific energy override, whole pack (0 = the chemistry's pack law)") \
 \
 X(LOCK_BATTERY, "locks.is_battery_locked", SPEC_BOOL, locks.is_battery_locked, "", 0, 0, 1, 0, NULL, \
   "Battery capacity and cell count are fixed") \

@@ -226,8 +226,7 @@ engine_params(const struct mission_spec *s, const struct model_data *md,
 	p->chem = model_chem(md, s->battery_chemistry);
 	if (p->chem == NULL)
 		p->chem = &md->chem[0]; /* the parser has already refused unknown names */
-	p->e_spec_wh_kg = s->battery_specific_energy_wh_kg > 0.0
-	    ? s->battery_specific_energy_wh_kg : p->chem->e_spec_wh_kg;
+	p->e_pack_override_wh_kg = s->battery_specific_energy_wh_kg;
 	p->cells_fixed = lk->is_battery_locked ? lk->locked_cell_count
 	    : lk->is_voltage_locked ? lk->locked_series_cells
 	    : s->nominal_cell_count;
@@ -256,7 +255,7 @@ engine_params(const struct mission_spec *s, const struct model_data *md,
 	p->fom_override = ao->figure_of_merit;
 	p->fom_isolated = ao->figure_of_merit_isolated;
 	p->fom_isolated_mode = ao->figure_of_merit_mode == FOM_ISOLATED;
-	p->kappa = cls->kappa;
+	p->kappa = md->cal.kappa[s->airframe_class];
 	p->interference_c = arm_interference_c[so->arm_config];
 	p->eta_drive = ao->propulsive_efficiency;
 	p->cd_h = ao->cd_horizontal;
@@ -270,15 +269,11 @@ engine_params(const struct mission_spec *s, const struct model_data *md,
 	p->gamma = so->body_mass_multiplier;
 	p->lambda = md->cal.lambda[model_lambda_index(s->airframe_class, s->num_rotors)];
 	p->fixed_frame_kg = s->fixed_airframe_mass_kg;
-	p->avionics_kg = cls->avionics_kg;
-	p->shell_kg_m2 = cls->shell_kg_m2;
-	p->fairing_section_frac = cls->fairing_section_frac;
+	p->equip_kg = md->cal.equip_kg[s->airframe_class];
+	p->equip_exponent = md->cal.equip_exponent;
+	p->avionics_share = cls->avionics_share;
 
-	p->packaging_base = md->cal.packaging_base;
 	p->wire_coef = p->small_platform ? md->cal.wire_coef_small : md->cal.wire_coef;
-	p->consumer_or_micro = s->airframe_class == AF_MICRO_AIO
-	    || s->airframe_class == AF_CONSUMER_FOLDING;
-	p->enterprise = s->airframe_class == AF_ENTERPRISE_RUGGED;
 
 	p->marketing = !baseline && s->evaluate_marketing_limits;
 	p->max_iter = SIZING_MAX_ITER;
@@ -483,6 +478,41 @@ role_overhead(struct solve_result *r)
 	    r->custom.mass.total_kg);
 }
 
+/* The model's calibrated accuracy for a mission like this one (its class,
+ * its battery sized or locked) and the interval it puts around the takeoff
+ * mass of record. */
+static void
+accuracy(struct solve_result *r, const struct model_data *md)
+{
+	const struct mission_spec *s = &r->mission;
+	bool locked = s->locks.is_battery_locked;
+	const struct model_accuracy *a = &md->cal.accuracy[locked ? MODEL_PACK_LOCKED
+	    : MODEL_FROM_ENDURANCE];
+	struct res_accuracy *o = &r->accuracy;
+	memset(o, 0, sizeof *o);
+	memset(&r->mtow_interval, 0, sizeof r->mtow_interval);
+	if (!a->valid)
+		return;
+	const struct model_interval *iv = model_interval_for(a, s->airframe_class);
+	o->valid = true;
+	o->pack_locked = locked;
+	o->n_rows = a->n_rows;
+	o->mape = a->loo_mape_pct / 100.0;
+	o->battery_mape = a->loo_battery_mape_pct / 100.0;
+	o->level = a->level;
+	o->ratio_lo = exp(iv->log_lo);
+	o->ratio_hi = exp(iv->log_hi);
+	o->interval_rows = iv->n;
+	o->coverage = a->coverage;
+	const struct res_run *rec = res_record(r, NULL);
+	if (rec == NULL || !rec->ran || !(rec->mass.total_kg > 0.0))
+		return;
+	r->mtow_interval.valid = true;
+	r->mtow_interval.level = a->level;
+	r->mtow_interval.lo_kg = rec->mass.total_kg * o->ratio_lo;
+	r->mtow_interval.hi_kg = rec->mass.total_kg * o->ratio_hi;
+}
+
 int
 engine_solve(const struct mission_spec *spec, const struct model_data *md,
              const struct catalog *cat, struct solve_result *r)
@@ -508,6 +538,7 @@ engine_solve(const struct mission_spec *spec, const struct model_data *md,
 	    && parts_select(&r->mission, &p, md, cat, r) != 0)
 		rc = 3;
 	r->feasible = r->n_violations == 0 && r->custom.ran && r->custom.feasible;
+	accuracy(r, md);
 	/* Nothing leaves the engine that breaks the physics (invariants.h). */
 	if (rc == 0)
 		rc = invariants_check(r, r->internal_error, sizeof r->internal_error);
@@ -515,6 +546,17 @@ engine_solve(const struct mission_spec *spec, const struct model_data *md,
 		snprintf(r->internal_error, sizeof r->internal_error,
 		    "a non-finite value reached the result");
 	return rc;
+}
+
+bool
+engine_at_mass(const struct mission_spec *spec, const struct model_data *md,
+               double mass_kg, struct sizing_open *out)
+{
+	struct mission_spec s = *spec;
+	engine_resolve(&s, md, NULL);
+	struct sizing_params p;
+	engine_params(&s, md, false, &p);
+	return sizing_at_mass(&p, mass_kg, out);
 }
 
 void

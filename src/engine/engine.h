@@ -34,6 +34,12 @@ int engine_solve(const struct mission_spec *spec, const struct model_data *md,
  * without it. */
 void engine_explore(struct solve_result *r, const struct model_data *md);
 
+/* The custom run's map f evaluated once at mass_kg (sizing_at_mass()):
+ * the open-loop comparison of validate and calibrate, which evaluate the
+ * model at a real aircraft's real takeoff mass. */
+bool engine_at_mass(const struct mission_spec *spec, const struct model_data *md,
+                    double mass_kg, struct sizing_open *out);
+
 /* Resolve the mission into the custom-run parameters (after the
  * requirements layer has been applied to *spec).  Exposed for the
  * sensitivity study and the tests. */

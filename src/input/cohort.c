@@ -55,6 +55,7 @@ static const struct col cols[] = {
 	{ "takeoff_mass_kg", K_POS, offsetof(struct cohort_row, takeoff_mass_kg), NO_FLAG, true },
 	COL(empty_mass_kg, K_POS),
 	COL(payload_kg, K_NONNEG),
+	COL(max_payload_kg, K_NONNEG),
 	COL(rotor_count, K_INT),
 	COL(coaxial, K_BOOL),
 	COL(diagonal_wheelbase_mm, K_POS),

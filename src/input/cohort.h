@@ -40,6 +40,8 @@ struct cohort_row {
 	bool has_empty_mass_kg;
 	double payload_kg;                /* carried beyond empty mass, >= 0 */
 	bool has_payload_kg;
+	double max_payload_kg;            /* largest payload the maker allows, >= 0 */
+	bool has_max_payload_kg;
 	int rotor_count;                  /* rotors (coaxial X8 = 8), >= 1 */
 	bool has_rotor_count;
 	bool coaxial;                     /* coaxial layout */

@@ -172,7 +172,9 @@ load_chemistries(struct rd *r, struct model_data *m)
 {
 	static const char *const keys[] = { "name", "specific_energy_wh_kg",
 		"specific_power_w_kg", "r_cell_mohm", "v_full_v", "v_nominal_v",
-		"v_exp_v", "b", "k_v", "v_cutoff_v", "packaging", "source", NULL };
+		"v_exp_v", "b", "k_v", "v_cutoff_v", "packaging", "source",
+		"pack_specific_energy_wh_kg_at_100wh", "pack_energy_exponent",
+		"pack_source", NULL };
 	static const char *const pack[] = { "pouch", "cylindrical", NULL };
 	const cJSON *a = rd_array(r, "chemistries");
 	if (a == NULL)
@@ -201,6 +203,8 @@ load_chemistries(struct rd *r, struct model_data *m)
 		c->k = rd_num(r, "k_v", 0, 1);
 		c->v_cutoff = rd_num(r, "v_cutoff_v", 0.5, 6);
 		c->pouch = rd_enum(r, "packaging", pack) == 0;
+		c->pack_wh_kg_100 = rd_num(r, "pack_specific_energy_wh_kg_at_100wh", 20, 1000);
+		c->pack_exponent = rd_num(r, "pack_energy_exponent", 0, 0.5);
 		if (c->v_cutoff >= c->v_nom || c->v_nom >= c->v_full)
 			rd_error(r, DIAG_INCONSISTENT, "v_cutoff_v",
 			         ": the voltages must satisfy cutoff < nominal < full");
@@ -275,9 +279,8 @@ load_roles(struct rd *r, struct model_data *m)
 static void
 load_classes(struct rd *r, struct model_data *m)
 {
-	static const char *const keys[] = { "name", "kappa", "gamma", "avionics_kg",
-		"cells_min", "cells_max", "small_platform", "shell_kg_m2",
-		"fairing_section_frac", "note", NULL };
+	static const char *const keys[] = { "name", "gamma", "avionics_share",
+		"cells_min", "cells_max", "small_platform", "note", NULL };
 	bool seen[AF_CLASS_MAX] = { false };
 	const cJSON *a = rd_array(r, "classes");
 	if (a == NULL)
@@ -295,11 +298,8 @@ load_classes(struct rd *r, struct model_data *m)
 			         spec_enum_airframe[k]);
 		seen[k] = true;
 		struct model_class *c = &m->cls[k];
-		c->kappa = rd_num(r, "kappa", 1, 3);
 		c->gamma = rd_num(r, "gamma", 0, 5);
-		c->avionics_kg = rd_num(r, "avionics_kg", 0, 20);
-		c->shell_kg_m2 = rd_num(r, "shell_kg_m2", 0, 50);
-		c->fairing_section_frac = rd_num(r, "fairing_section_frac", 0, 0.5);
+		c->avionics_share = rd_num(r, "avionics_share", 0, 1);
 		c->cells_min = rd_int(r, "cells_min", 1, 24);
 		c->cells_max = rd_int(r, "cells_max", 1, 24);
 		c->small_platform = rd_bool(r, "small_platform");
@@ -314,28 +314,106 @@ static const char *const lambda_keys[LAMBDA_MAX + 1] = { "MicroAIO",
 	"ConsumerFolding", "EnterpriseRugged_quad", "EnterpriseRugged_multi",
 	"Agricultural", NULL };
 
+/* Enter the object at key of the current one (reported when it is not an
+ * object), checking its keys; false when absent or not an object. */
+static bool
+rd_enter(struct rd *r, const char *key, const char *const *keys, bool required)
+{
+	const cJSON *o = cJSON_GetObjectItemCaseSensitive(r->obj, key);
+	if (o == NULL && !required)
+		return false;
+	if (o == NULL)
+		o = rd_get(r, key, "an object");
+	char path[64];
+	json_in_path(path, sizeof path, r->entry, key);
+	if (o == NULL || !json_in_expect(r->ji, o, path, cJSON_Object, "an object"))
+		return false;
+	snprintf(r->entry, sizeof r->entry, "%s", path);
+	r->obj = o;
+	json_in_check_keys(r->ji, o, path, keys, JSON_IN_COMMENTS);
+	return true;
+}
+
+static void
+load_interval(struct rd *r, struct model_interval *iv)
+{
+	iv->n = rd_int(r, "n", 1, 1000000);
+	iv->log_lo = rd_num(r, "log_lo", -5, 0);
+	iv->log_hi = rd_num(r, "log_hi", 0, 5);
+}
+
+static const char *const accuracy_keys[MODEL_BASIS_MAX] = {
+	"accuracy_from_endurance", "accuracy_pack_locked",
+};
+
+/* An optional accuracy block that `calibrate --write` adds. */
+static void
+load_accuracy(struct rd *r, const char *key, struct model_accuracy *a)
+{
+	static const char *const keys[] = { "cohort_rows", "loo_mtow_mape_pct",
+		"battery_rows", "loo_battery_mape_pct", "level", "coverage", "pooled",
+		"by_class", NULL };
+	static const char *const iv_keys[] = { "n", "log_lo", "log_hi", NULL };
+	const cJSON *root = r->obj;
+	if (!rd_enter(r, key, keys, false))
+		return;
+	const cJSON *acc = r->obj;
+	a->valid = true;
+	a->n_rows = rd_int(r, "cohort_rows", 1, 1000000);
+	a->loo_mape_pct = rd_num(r, "loo_mtow_mape_pct", 0, 1000);
+	a->n_battery = rd_int(r, "battery_rows", 0, 1000000);
+	a->loo_battery_mape_pct = rd_num(r, "loo_battery_mape_pct", 0, 1000);
+	a->level = rd_num(r, "level", 0.5, 0.99);
+	a->coverage = rd_num(r, "coverage", 0, 1);
+	if (rd_enter(r, "pooled", iv_keys, true))
+		load_interval(r, &a->pooled);
+	snprintf(r->entry, sizeof r->entry, "%s", key);
+	r->obj = acc;
+	if (rd_enter(r, "by_class", spec_enum_airframe, false)) {
+		const cJSON *bc = r->obj;
+		for (int k = 0; k < AF_CLASS_MAX; k++) {
+			snprintf(r->entry, sizeof r->entry, "%s.by_class", key);
+			r->obj = bc;
+			if (rd_enter(r, spec_enum_airframe[k], iv_keys, false))
+				load_interval(r, &a->cls[k]);
+		}
+	}
+	r->entry[0] = '\0';
+	r->obj = root;
+}
+
 static void
 load_calibration(struct rd *r, struct model_calibration *cal)
 {
-	static const char *const keys[] = { "lambda_class", "battery_packaging_base",
-		"wiring_coefficient_kg_per_a_m", "small_wiring_coefficient_kg_per_a_m", NULL };
+	static const char *const keys[] = { "lambda_class",
+		"wiring_coefficient_kg_per_a_m", "small_wiring_coefficient_kg_per_a_m",
+		"equipment_kg_at_1kg", "equipment_exponent", "kappa_class",
+		"accuracy_from_endurance", "accuracy_pack_locked", NULL };
 	const cJSON *root = json_in_root(r->ji);
+	memset(cal, 0, sizeof *cal);
 	r->entry[0] = '\0';
 	r->obj = root;
 	json_in_check_keys(r->ji, root, "", keys, JSON_IN_COMMENTS);
-	const cJSON *l = rd_get(r, "lambda_class", "an object");
-	if (l != NULL && json_in_expect(r->ji, l, "lambda_class", cJSON_Object, "an object")) {
-		snprintf(r->entry, sizeof r->entry, "lambda_class");
-		r->obj = l;
-		json_in_check_keys(r->ji, l, "lambda_class", lambda_keys, JSON_IN_COMMENTS);
+	if (rd_enter(r, "lambda_class", lambda_keys, true))
 		for (int k = 0; k < LAMBDA_MAX; k++)
 			cal->lambda[k] = rd_num(r, lambda_keys[k], 0.2, 5);
-		r->entry[0] = '\0';
-		r->obj = root;
-	}
-	cal->packaging_base = rd_num(r, "battery_packaging_base", 0.8, 2);
+	r->entry[0] = '\0';
+	r->obj = root;
+	if (rd_enter(r, "equipment_kg_at_1kg", spec_enum_airframe, true))
+		for (int k = 0; k < AF_CLASS_MAX; k++)
+			cal->equip_kg[k] = rd_num(r, spec_enum_airframe[k], 0, 2);
+	r->entry[0] = '\0';
+	r->obj = root;
+	cal->equip_exponent = rd_num(r, "equipment_exponent", 0.3, 1.5);
+	if (rd_enter(r, "kappa_class", spec_enum_airframe, true))
+		for (int k = 0; k < AF_CLASS_MAX; k++)
+			cal->kappa[k] = rd_num(r, spec_enum_airframe[k], 1, 3);
+	r->entry[0] = '\0';
+	r->obj = root;
 	cal->wire_coef = rd_num(r, "wiring_coefficient_kg_per_a_m", 0, 0.1);
 	cal->wire_coef_small = rd_num(r, "small_wiring_coefficient_kg_per_a_m", 0, 0.1);
+	for (int b = 0; b < MODEL_BASIS_MAX; b++)
+		load_accuracy(r, accuracy_keys[b], &cal->accuracy[b]);
 }
 
 static void
@@ -449,22 +527,59 @@ model_io_load_calibration(const char *path, struct model_calibration *cal,
 	return diag_n_errors(dg) - before;
 }
 
+static void
+add_interval(cJSON *parent, const char *key, const struct model_interval *iv)
+{
+	cJSON *o = cJSON_AddObjectToObject(parent, key);
+	cJSON_AddNumberToObject(o, "n", iv->n);
+	cJSON_AddNumberToObject(o, "log_lo", iv->log_lo);
+	cJSON_AddNumberToObject(o, "log_hi", iv->log_hi);
+}
+
 char *
 model_io_calibration_json(const struct model_calibration *cal)
 {
 	cJSON *root = cJSON_CreateObject();
 	cJSON_AddStringToObject(root, "_comment",
-	    "The three calibrated coefficients (paper Sec. VII-A), fitted by "
-	    "`aeroeval calibrate` on the calibration cohort only, then frozen.");
+	    "The calibrated coefficients, fitted by `aeroeval calibrate --write` "
+	    "on the calibration cohort only, then frozen: the structural "
+	    "multiplier lambda and the installed-FoM penalty kappa per class "
+	    "(paper eq. lambda, Table classes), the wiring "
+	    "coefficient (paper Sec. V-C) and the equipment law "
+	    "e_class (M_design / 1 kg)^exponent (docs/model.md).  The accuracy "
+	    "blocks are the leave-one-out error on that cohort, sized from the "
+	    "endurance or with the published pack locked, and the "
+	    "split-conformal interval on ln(actual / predicted) built from it.");
 	cJSON *l = cJSON_AddObjectToObject(root, "lambda_class");
 	for (int k = 0; k < LAMBDA_MAX; k++)
 		cJSON_AddNumberToObject(l, lambda_keys[k], cal->lambda[k]);
-	cJSON_AddNumberToObject(root, "battery_packaging_base", cal->packaging_base);
 	cJSON_AddNumberToObject(root, "wiring_coefficient_kg_per_a_m", cal->wire_coef);
 	cJSON_AddNumberToObject(root, "small_wiring_coefficient_kg_per_a_m", cal->wire_coef_small);
+	cJSON *e = cJSON_AddObjectToObject(root, "equipment_kg_at_1kg");
+	for (int k = 0; k < AF_CLASS_MAX; k++)
+		cJSON_AddNumberToObject(e, spec_enum_airframe[k], cal->equip_kg[k]);
+	cJSON_AddNumberToObject(root, "equipment_exponent", cal->equip_exponent);
+	cJSON *kc = cJSON_AddObjectToObject(root, "kappa_class");
+	for (int k = 0; k < AF_CLASS_MAX; k++)
+		cJSON_AddNumberToObject(kc, spec_enum_airframe[k], cal->kappa[k]);
+	for (int b = 0; b < MODEL_BASIS_MAX; b++) {
+		const struct model_accuracy *a = &cal->accuracy[b];
+		if (!a->valid)
+			continue;
+		cJSON *o = cJSON_AddObjectToObject(root, accuracy_keys[b]);
+		cJSON_AddNumberToObject(o, "cohort_rows", a->n_rows);
+		cJSON_AddNumberToObject(o, "loo_mtow_mape_pct", a->loo_mape_pct);
+		cJSON_AddNumberToObject(o, "battery_rows", a->n_battery);
+		cJSON_AddNumberToObject(o, "loo_battery_mape_pct", a->loo_battery_mape_pct);
+		cJSON_AddNumberToObject(o, "level", a->level);
+		cJSON_AddNumberToObject(o, "coverage", a->coverage);
+		add_interval(o, "pooled", &a->pooled);
+		cJSON *bc = cJSON_AddObjectToObject(o, "by_class");
+		for (int k = 0; k < AF_CLASS_MAX; k++)
+			if (a->cls[k].n > 0)
+				add_interval(bc, spec_enum_airframe[k], &a->cls[k]);
+	}
 	char *txt = cJSON_Print(root);
 	cJSON_Delete(root);
-	char *copy = xstrdup(txt);
-	free(txt);
-	return copy;
+	return txt;
 }

@@ -856,6 +856,38 @@ put_candidates(struct jw *w, const struct solve_result *r)
 	jw_close(w);
 }
 
+/* The prediction interval on the takeoff mass of record and the accuracy
+ * behind it (null when the calibration carries none). */
+static void
+put_accuracy(struct jw *w, const struct solve_result *r)
+{
+	const struct res_interval *iv = &r->mtow_interval;
+	if (iv->valid) {
+		jw_obj(w, "mtow_interval");
+		jw_num(w, "level", iv->level);
+		jw_num(w, "lo_kg", iv->lo_kg);
+		jw_num(w, "hi_kg", iv->hi_kg);
+		jw_close(w);
+	} else {
+		jw_null(w, "mtow_interval");
+	}
+	const struct res_accuracy *a = &r->accuracy;
+	if (!a->valid) {
+		jw_null(w, "accuracy");
+		return;
+	}
+	jw_obj(w, "accuracy");
+	jw_lit(w, "basis", a->pack_locked ? "pack_locked" : "from_endurance");
+	jw_int(w, "cohort_rows", a->n_rows);
+	jw_num(w, "loo_mtow_mape", a->mape);
+	jw_num(w, "loo_battery_mape", a->battery_mape);
+	jw_num(w, "interval_ratio_lo", a->ratio_lo);
+	jw_num(w, "interval_ratio_hi", a->ratio_hi);
+	jw_int(w, "interval_rows", a->interval_rows);
+	jw_num(w, "coverage", a->coverage);
+	jw_close(w);
+}
+
 /* ---- top level ------------------------------------------------------------- */
 
 static void
@@ -902,6 +934,7 @@ result_json_render_checked(const struct solve_result *r,
 	jw_lit(&w, "eu_open_category", res_eu_class(rec->mass.total_kg));
 	jw_bool(&w, "us_part_107_small_uas", rec->mass.total_kg < RES_US_107_KG);
 	jw_close(&w);
+	put_accuracy(&w, r);
 	put_violations(&w, r);
 	int nr = jw_count(&w, "rationale", r->n_rationale, RES_MAX_RATIONALE);
 	jw_arr(&w, "rationale");

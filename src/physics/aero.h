@@ -24,6 +24,10 @@
 struct atmo_state;
 
 #define AERO_TIP_CLEARANCE   0.05   /* ε of eq. (overlap), - */
+/* A propeller exactly at the overlap limit fits: a wheelbase derived from
+ * the limit (or the limit from the wheelbase) may round either way by a
+ * few ulps, so comparisons against the limit allow this relative slack. */
+#define AERO_OVERLAP_REL_TOL 1e-9
 #define AERO_TIP_MACH_MAX    0.75   /* tip-Mach pruning limit, - */
 #define AERO_SOLIDITY        (0.28 / M_PI) /* σ of the profile-power formula, - */
 #define AERO_FOM_FLOOR       0.38   /* minimum installed FoM, - */

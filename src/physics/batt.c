@@ -4,17 +4,6 @@
 #include <math.h>
 
 /* Packaging terms of paper §VI-D. */
-#define PKG_PER_CELL_ABOVE_6S    0.012 /* per series cell above 6S */
-#define PKG_PER_EXTRA_PACK       0.06  /* per additional parallel pack */
-#define PKG_SMALL_CELL_MAX       0.28  /* small-cell penalty at 0 mAh */
-#define PKG_SMALL_CELL_REF_MAH   4000.0 /* penalty vanishes at this capacity */
-#define PKG_SMALL_CELL_CONSUMER  0.5   /* penalty reduction, consumer/micro */
-#define PKG_SMALL_FRAME          0.12  /* sub-250 mm frames */
-#define PKG_SMALL_FRAME_W_M      0.25
-#define PKG_ENTERPRISE_LOW_S     0.10  /* enterprise packs below 14S */
-#define PKG_ENTERPRISE_HIGH_S    1.03  /* integrated enterprise packs >= 14S */
-#define PKG_ENTERPRISE_S         14
-#define PKG_CYLINDRICAL          1.15  /* Li-ion cells holders, exotic chemistries */
 
 double
 batt_b_eff(double b, double c_rate)
@@ -94,34 +83,35 @@ batt_current_a(double v_oc, double r_ohm, double power_w, double *current_a)
 }
 
 double
-batt_packaging_factor(const struct batt_chem *c, double base, int cells,
-                      double pack_capacity_mah, int n_packs,
-                      double wheelbase_m, bool consumer_or_micro,
-                      bool enterprise)
+batt_pack_wh_kg(const struct batt_chem *c, double pack_wh)
 {
-	if (!c->pouch)
-		return PKG_CYLINDRICAL;
-	if (enterprise && cells >= PKG_ENTERPRISE_S)
-		return PKG_ENTERPRISE_HIGH_S;
-	double eta = base;
-	if (cells > 6)
-		eta += PKG_PER_CELL_ABOVE_6S * (double)(cells - 6);
-	if (n_packs > 1)
-		eta += PKG_PER_EXTRA_PACK * (double)(n_packs - 1);
-	if (pack_capacity_mah < PKG_SMALL_CELL_REF_MAH) {
-		double pen = PKG_SMALL_CELL_MAX
-		    * (1.0 - pack_capacity_mah / PKG_SMALL_CELL_REF_MAH);
-		eta += consumer_or_micro ? PKG_SMALL_CELL_CONSUMER * pen : pen;
-	}
-	if (wheelbase_m < PKG_SMALL_FRAME_W_M)
-		eta += PKG_SMALL_FRAME;
-	if (enterprise)
-		eta += PKG_ENTERPRISE_LOW_S;
-	return eta;
+	/* Below 1 Wh the catalogue has no packs: the law is held there. */
+	double e = pack_wh > 1.0 ? pack_wh : 1.0;
+	return c->pack_wh_kg_100 * pow(e / 100.0, c->pack_exponent);
 }
 
 double
-batt_mass_kg(double energy_wh, double e_spec_wh_kg, double eta_pkg)
+batt_pack_mass_kg(const struct batt_chem *c, double energy_wh, int n_packs,
+                  double e_override_wh_kg)
 {
-	return energy_wh / e_spec_wh_kg * eta_pkg;
+	if (e_override_wh_kg > 0.0)
+		return energy_wh / e_override_wh_kg;
+	int n = n_packs > 0 ? n_packs : 1;
+	return energy_wh / batt_pack_wh_kg(c, energy_wh / (double)n);
+}
+
+double
+batt_pack_energy_wh(const struct batt_chem *c, double mass_kg, int n_packs,
+                    double e_override_wh_kg)
+{
+	if (e_override_wh_kg > 0.0)
+		return mass_kg * e_override_wh_kg;
+	/* m = E / (e_100 (E / (100 n))^b) solved for E; the floor of
+	 * batt_pack_wh_kg() (1 Wh per pack) holds below. */
+	double n = (double)(n_packs > 0 ? n_packs : 1);
+	double b = c->pack_exponent;
+	double e_wh = pow(mass_kg * c->pack_wh_kg_100 / pow(100.0 * n, b), 1.0 / (1.0 - b));
+	if (e_wh / n < 1.0)
+		e_wh = mass_kg * batt_pack_wh_kg(c, 1.0);
+	return e_wh;
 }

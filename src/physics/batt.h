@@ -72,15 +72,20 @@ double batt_rated_cell_ohm(const struct batt_chem *c, double capacity_ah,
 enum batt_status batt_current_a(double v_oc, double r_ohm, double power_w,
                                 double *current_a);
 
-/* Packaging multiplier η_pkg (paper §VI-D).  base is the calibrated LiPo
- * base (1.04 in the paper); consumer_or_micro reduces the small-cell
- * penalty; enterprise marks EnterpriseRugged. */
-double batt_packaging_factor(const struct batt_chem *c, double base, int cells,
-                             double pack_capacity_mah, int n_packs,
-                             double wheelbase_m, bool consumer_or_micro,
-                             bool enterprise);
+/* Pack-level specific energy (the whole pack: cells, wiring, case, BMS)
+ * of one pack storing pack_wh, Wh/kg: e_100 (pack_wh / 100 Wh)^b, the
+ * chemistry's fit to the catalogue's real packs (data/chemistries.json).
+ * Larger packs carry less case and wiring per watt-hour. */
+double batt_pack_wh_kg(const struct batt_chem *c, double pack_wh);
 
-/* Mass of a pack storing energy_wh: E / e_spec · η_pkg, kg (eq. batmass). */
-double batt_mass_kg(double energy_wh, double e_spec_wh_kg, double eta_pkg);
+/* Mass of n_packs equal packs storing energy_wh in all, kg; a positive
+ * e_override_wh_kg (the mission's battery_specific_energy_wh_kg) is the
+ * pack-level specific energy as given. */
+double batt_pack_mass_kg(const struct batt_chem *c, double energy_wh, int n_packs,
+                         double e_override_wh_kg);
+
+/* The inverse: the energy that n_packs packs of mass_kg in all store, Wh. */
+double batt_pack_energy_wh(const struct batt_chem *c, double mass_kg, int n_packs,
+                           double e_override_wh_kg);
 
 #endif

@@ -87,7 +87,9 @@ double
 structure_resonance_margin(double f_nat_hz, double f_bpf_low_hz,
                            double f_bpf_peak_hz)
 {
-	if (!(f_nat_hz > 0.0))
+	/* No arm, or no blade-pass band (a rotor that cannot reach hover):
+	 * nothing is known to be clear of resonance. */
+	if (!(f_nat_hz > 0.0) || !(f_bpf_low_hz > 0.0) || !(f_bpf_peak_hz > 0.0))
 		return -1.0;
 	double stiff = f_nat_hz / (STRUCT_RESONANCE_MARGIN * f_bpf_peak_hz) - 1.0;
 	double soft = (f_bpf_low_hz / STRUCT_RESONANCE_MARGIN) / f_nat_hz - 1.0;

@@ -63,7 +63,7 @@ void structure_size_arm(double force_n, double length_m, double alpha_w,
 /* Resonance check: the arm mode must clear the blade-pass band
  * [f_bpf_low_hz, f_bpf_peak_hz] by the 1.5 margin on either side.  Returns
  * the margin (>= 0 passes): f_nat/(1.5 f_peak) - 1 when stiff, else
- * (f_low/1.5)/f_nat - 1. */
+ * (f_low/1.5)/f_nat - 1; -1 when the arm or the band is unknown (0). */
 double structure_resonance_margin(double f_nat_hz, double f_bpf_low_hz,
                                   double f_bpf_peak_hz);
 

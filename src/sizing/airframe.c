@@ -9,15 +9,10 @@
 #define S_SCALE_MIN       0.25
 
 double
-airframe_shell_area_m2(double battery_kg, double avionics_kg, int n_arms,
-                     double arm_length_m, double fairing_section_frac)
+airframe_equipment_kg(const struct sizing_params *p, double design_mass_kg)
 {
-	double v_body_m3 = (battery_kg / AIRFRAME_PACK_DENSITY_KG_M3
-	    + avionics_kg / AIRFRAME_AVIONICS_DENSITY_KG_M3) / AIRFRAME_BODY_FILL;
-	double box_m2 = AIRFRAME_BODY_SHAPE * 6.0 * pow(v_body_m3, 2.0 / 3.0);
-	double fairings_m2 = (double)n_arms * 4.0 * fairing_section_frac
-	    * arm_length_m * arm_length_m;
-	return box_m2 + fairings_m2;
+	double m = design_mass_kg > 0.0 ? design_mass_kg : 0.0;
+	return p->equip_kg * pow(m, p->equip_exponent);
 }
 
 double
@@ -73,15 +68,9 @@ airframe_masses(const struct sizing_params *p, const struct airframe_loads *in,
 	/* The harness scales with the current it carries (paper §VI-E). */
 	double scale = airframe_s_scale(frame_total + p->payload_kg);
 	out->wiring_kg = p->wire_coef * in->peak_current_a * p->wheelbase_m * scale;
-	out->avionics_kg = p->avionics_kg;
-	/* Body shell around the pack and the electronics, plus the moulded
-	 * arm fairings of classes that have them: each a hollow box of side
-	 * c·L over the arm length L, surface 4c·L² (in other_kg).  λ covers it
-	 * as the paper's "frame and complexity mass". */
-	out->shell_kg = p->shell_kg_m2 * airframe_shell_area_m2(in->battery_kg,
-	    p->avionics_kg, arms, arm_len, p->fairing_section_frac);
-	if (p->fixed_frame_kg <= 0.0)
-		out->shell_kg *= p->lambda;
+	double equip = airframe_equipment_kg(p, in->mass_kg);
+	out->avionics_kg = p->avionics_share * equip;
+	out->shell_kg = equip - out->avionics_kg;
 	out->other_kg += out->shell_kg;
 	out->role_aux_kg = p->role_aux_kg;
 }

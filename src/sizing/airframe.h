@@ -36,7 +36,7 @@ struct airframe_masses {
 	double arm_kg;               /* all arm tubes */
 	double frame_kg;             /* centre plates and spar joints */
 	double other_kg;             /* body, landing gear, mounts and shell */
-	double shell_kg;             /* the shell's share of other_kg */
+	double shell_kg;             /* the equipment's body share, in other_kg */
 	double frame_total_kg;       /* arm + frame + body before the shell */
 	double wiring_kg;            /* power harness */
 	double avionics_kg;          /* flight controller, GNSS, radios */
@@ -48,21 +48,13 @@ void airframe_masses(const struct sizing_params *p,
                      const struct airframe_loads *in,
                      struct airframe_masses *out);
 
-/* Body shell (a mass term the paper leaves open): a minimum-gauge shell
- * enclosing the battery and the electronics.  Volume from the pack and
- * electronics densities at 50 % fill; surface of a box of that volume with
- * a 1.2 shape factor over a cube. */
-#define AIRFRAME_PACK_DENSITY_KG_M3 2200.0 /* LiPo/Li-ion pack incl. case */
-#define AIRFRAME_AVIONICS_DENSITY_KG_M3 1000.0 /* boards, modules, cables */
-#define AIRFRAME_BODY_FILL          0.5    /* fraction of the body that is equipment */
-#define AIRFRAME_BODY_SHAPE         1.2    /* body surface over a cube's */
-
-/* Surface of the body shell: a box around the pack and the electronics
- * (volume from their densities at the fill fraction, surface a shape
- * factor over a cube's) plus the moulded arm fairings of classes that have
- * them, 4 c L² per arm, m². */
-double airframe_shell_area_m2(double battery_kg, double avionics_kg, int n_arms,
-                              double arm_length_m, double fairing_section_frac);
+/* Equipment: avionics, body shell, landing gear, gimbal, sensors and
+ * mounts, everything the physics above does not size, as one law of the
+ * design mass calibrated on the cohort (data/calibration.json):
+ * e_class (M_design / 1 kg)^exponent, kg.  No floor: it vanishes with the
+ * aircraft.  The class's avionics_share of it is shown as avionics, the
+ * rest as body (a display split: both are dead mass at the centre). */
+double airframe_equipment_kg(const struct sizing_params *p, double design_mass_kg);
 
 /* The light-configuration scale S_scale of paper §VI-E at M_ref. */
 double airframe_s_scale(double m_ref_kg);

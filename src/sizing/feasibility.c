@@ -88,7 +88,7 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
 	double limit = arms >= 2 ? aero_overlap_limit_m(p->wheelbase_m, arms,
 	    AERO_TIP_CLEARANCE) : 0.0;
-	if (p->prop_locked && p->prop_diameter_m > limit) {
+	if (p->prop_locked && p->prop_diameter_m > limit * (1.0 + AERO_OVERLAP_REL_TOL)) {
 		double w_need = p->prop_diameter_m / ((1.0 - AERO_TIP_CLEARANCE)
 		    * sin(M_PI / (double)arms));
 		fix_text(r, f1, "Increase max_diameter_m to at least %.3f m", w_need);
@@ -119,7 +119,8 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 	if (p->capacity_locked && !p->allow_relax && arms >= 2 && limit > 0.0) {
 		double v_nom = (double)p->cells_fixed * p->chem->v_nom;
 		double e_avail_wh = p->capacity_locked_ah * v_nom;
-		double m_bat = e_avail_wh / p->e_spec_wh_kg;
+		double m_bat = e_avail_wh / fmax(p->chem->e_spec_wh_kg,
+		    p->e_pack_override_wh_kg); /* bare cells: the lightest */
 		double m_min = p->payload_kg + m_bat;
 		double d = p->prop_locked ? p->prop_diameter_m : limit;
 		double area = 0.25 * M_PI * d * d * (double)arms;
@@ -213,8 +214,10 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 
 	/* The mission, down to the reserve: the pack must land with the state
 	 * of charge the 20 % capacity margin leaves (paper §II-D).  A free
-	 * battery is sized to land on it exactly, within the discharge's
-	 * integration accuracy (SIZING_RESERVE_TOL). */
+	 * battery is sized to land on it exactly; sized or locked, the landing
+	 * state of charge is known to the discharge's integration accuracy
+	 * (SIZING_RESERVE_TOL), so a locked copy of a sized battery passes
+	 * as the sized one does. */
 	double need = 0.0, flown = 0.0;
 	for (int i = 0; i < PHASE_MAX; i++)
 		need += o->approved_time_s[i];
@@ -225,8 +228,7 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	    completed ? 100.0 * o->end_soc : 0.0, 100.0 * o->reserve_soc, false);
 	if (c) {
 		c->sized = sized;
-		if (sized && completed
-		    && o->end_soc >= o->reserve_soc - SIZING_RESERVE_TOL)
+		if (completed && o->end_soc >= o->reserve_soc - SIZING_RESERVE_TOL)
 			c->pass = true;
 	}
 	if (c && !c->pass && st != SIZING_RUNAWAY) {

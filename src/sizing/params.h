@@ -67,7 +67,7 @@ struct sizing_params {
 	                              * structure and motors carry it */
 	/* battery */
 	const struct batt_chem *chem;
-	double e_spec_wh_kg;         /* may override the chemistry */
+	double e_pack_override_wh_kg; /* > 0: pack specific energy given by the mission */
 	int cells_fixed;             /* 0 = auto */
 	int cells_lo, cells_hi;      /* auto range (class table) */
 	int pack_count;
@@ -98,14 +98,11 @@ struct sizing_params {
 	double gamma;
 	double lambda;
 	double fixed_frame_kg;       /* > 0: frame mass given */
-	double avionics_kg;
-	double shell_kg_m2;          /* body-shell areal mass */
-	double fairing_section_frac; /* arm fairing side over arm length; 0: none */
+	double equip_kg;             /* equipment at 1 kg design mass (airframe.h) */
+	double equip_exponent;
+	double avionics_share;       /* of the equipment, shown as avionics */
 	/* calibration */
-	double packaging_base;
 	double wire_coef;
-	bool consumer_or_micro;      /* packaging small-cell reduction */
-	bool enterprise;             /* packaging enterprise terms */
 	/* real parts for the BOM-closed run */
 	struct sizing_parts parts;
 	/* extras of the final evaluation */

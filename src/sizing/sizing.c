@@ -301,12 +301,13 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 		e->capacity_ah = p->parts.capacity_ah;
 	else if (p->capacity_locked)
 		e->capacity_ah = p->capacity_locked_ah;
-	double pack_mah = e->capacity_ah * 1000.0 / (double)p->pack_count;
-	e->eta_pkg = batt_packaging_factor(p->chem, p->packaging_base, e->cells,
-	    pack_mah, p->pack_count, p->wheelbase_m, p->consumer_or_micro,
-	    p->enterprise);
+	/* The pack's mass from the chemistry's pack-level law; eta_pkg is the
+	 * overhead over the bare cells it implies (cell / pack specific
+	 * energy), which also brings the cells' specific power to the pack. */
 	double e_nom_wh = e->capacity_ah * v_nom;
-	double m_energy = batt_mass_kg(e_nom_wh, p->e_spec_wh_kg, e->eta_pkg);
+	double m_energy = batt_pack_mass_kg(p->chem, e_nom_wh, p->pack_count,
+	    p->e_pack_override_wh_kg);
+	e->eta_pkg = p->chem->e_spec_wh_kg * m_energy / e_nom_wh;
 	/* Cells deliver their specific power continuously and about twice it
 	 * in a 10 s burst: the pack must carry the highest sustained phase
 	 * power and the full-throttle burst (the check of feasibility.c). */
@@ -322,7 +323,8 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 	} else if (!p->capacity_locked && m_power > m_energy) {
 		e->power_binds = true;
 		e->mass.battery_kg = m_power;
-		e->capacity_ah = m_power / e->eta_pkg * p->e_spec_wh_kg / v_nom;
+		e->capacity_ah = batt_pack_energy_wh(p->chem, m_power, p->pack_count,
+		    p->e_pack_override_wh_kg) / v_nom;
 	} else {
 		e->mass.battery_kg = m_energy;
 	}
@@ -1176,4 +1178,45 @@ sizing_run(const struct sizing_params *p_in, struct res_run *out)
 		evaluate(p, &ls, m_star, c_star, FINAL_STEPS, out, &fin);
 	record_fixed_point(p, st, &fin, &ls, m_star, c_star, out);
 	return st;
+}
+
+/* Open loop: f at a given M, the capacity re-targeted at that mass until
+ * the mission's charge and the capacity agree (the masses then no longer
+ * change with it).  No fixed point in M is sought. */
+#define OPEN_LOOP_MAX_ITER 60
+bool
+sizing_at_mass(const struct sizing_params *p, double mass_kg,
+               struct sizing_open *out)
+{
+	memset(out, 0, sizeof *out);
+	bool auto_cells = p->cells_fixed <= 0 && !p->kv_locked
+	    && !(p->parts.active && p->parts.cells > 0);
+	struct loop_state ls = { p->cells_fixed > 0 ? p->cells_fixed : 1,
+		0.02 * p->wheelbase_m, 1.0, NULL };
+	if (p->parts.active && p->parts.cells > 0)
+		ls.cells = p->parts.cells;
+	if (auto_cells)
+		seed_cells(p, p->cells_lo, p->cells_hi, mass_kg, &ls);
+	double c = p->capacity_locked ? p->capacity_locked_ah
+	    : battery_fixed(p) ? p->parts.capacity_ah
+	    : seed_capacity_ah(p, &ls, mass_kg);
+	struct eval e;
+	bool settled = false;
+	for (int k = 0; k < OPEN_LOOP_MAX_ITER && !settled; k++) {
+		evaluate(p, &ls, mass_kg, c, LOOP_STEPS, NULL, &e);
+		ls.arm_width_m = e.arm.d_out_m;
+		if (capacity_given(p) || (e.power_binds && e.c_target_ah <= e.capacity_ah)) {
+			settled = k > 0; /* one more pass with this arm width */
+			continue;
+		}
+		settled = fabs(e.c_target_ah - e.capacity_ah) <= 1e-4 * e.capacity_ah;
+		c = e.c_target_ah;
+	}
+	out->mass = e.mass;
+	out->capacity_ah = e.capacity_ah;
+	out->cells = e.cells;
+	out->flown = e.dis.end == DIS_COMPLETED;
+	out->settled = settled;
+	out->dry_kg = e.mass.total_kg - e.mass.payload_kg - e.mass.battery_kg;
+	return settled && out->flown && isfinite(e.mass.total_kg);
 }

@@ -104,6 +104,23 @@ double sizing_reserve_soc(void);
  * design, not part of it: the outputs that show it ask for it. */
 void sizing_explore(const struct sizing_params *p, struct res_run *run);
 
+/* The map f evaluated once at a given takeoff mass (open loop), with the
+ * battery the mission needs at that mass: how the model's parts compare
+ * with a real aircraft's when both fly at its real mass. */
+struct sizing_open {
+	struct res_mass mass;        /* every item of f(M); total_kg = f(M) */
+	double dry_kg;               /* f(M) less payload and battery */
+	double capacity_ah;          /* the battery's capacity */
+	int cells;                   /* its series cells */
+	bool flown;                  /* the mission flew on it */
+	bool settled;                /* capacity and charge agree */
+};
+
+/* Fills *out at mass_kg; true when the capacity settled and the mission
+ * flew (bounded: at most 60 evaluations). */
+bool sizing_at_mass(const struct sizing_params *p, double mass_kg,
+                    struct sizing_open *out);
+
 /* The altitude-corrected seed of eq. (altcorrect), kg. */
 double sizing_seed_kg(double payload_kg, double rho_kg_m3);
 

@@ -22,6 +22,7 @@ static const char *const note_text[VALIDATE_NOTE_COUNT] = {
 	"coaxial unknown: flat layout",
 	"role unknown: none",
 	"endurance from the max flight time",
+	"the published pack locked",
 };
 
 const char *
@@ -122,12 +123,12 @@ enum validate_skip
 validate_mission_from_row(const struct cohort_row *row, const struct model_data *md,
                           struct mission_spec *out, unsigned *notes)
 {
-	return validate_mission_explained(row, md, out, notes, NULL);
+	return validate_mission_explained(row, md, VALIDATE_FROM_ENDURANCE, out, notes, NULL);
 }
 
 enum validate_skip
 validate_mission_explained(const struct cohort_row *row, const struct model_data *md,
-                           struct mission_spec *out, unsigned *notes,
+                           enum validate_rule rule, struct mission_spec *out, unsigned *notes,
                            struct validate_fact *fact)
 {
 	struct mission_spec *s = out;
@@ -153,6 +154,12 @@ validate_mission_explained(const struct cohort_row *row, const struct model_data
 
 	s->payload_kg = row->payload_kg;
 	s->given[SPECF_PAYLOAD_KG] = true;
+	/* The load case the airframe is built for: the maker's largest
+	 * payload, where published, when it exceeds the row's. */
+	if (row->has_max_payload_kg && row->max_payload_kg > row->payload_kg) {
+		s->max_payload_kg = row->max_payload_kg;
+		s->given[SPECF_MAX_PAYLOAD_KG] = true;
+	}
 
 	s->num_rotors = row->rotor_count;
 	s->given[SPECF_NUM_ROTORS] = true;
@@ -179,6 +186,9 @@ validate_mission_explained(const struct cohort_row *row, const struct model_data
 	if (!in_range(SPECF_PAYLOAD_KG, s->payload_kg))
 		return out_of_range(fact, "payload_kg", row->payload_kg, SPECF_PAYLOAD_KG,
 		                    s->payload_kg);
+	if (!in_range(SPECF_MAX_PAYLOAD_KG, s->max_payload_kg))
+		return out_of_range(fact, "max_payload_kg", row->max_payload_kg,
+		                    SPECF_MAX_PAYLOAD_KG, s->max_payload_kg);
 
 	/* Wheelbase: the row's, else the smallest one whose overlap limit
 	 * admits its propeller (the inverse of paper eq. overlap). */
@@ -203,11 +213,11 @@ validate_mission_explained(const struct cohort_row *row, const struct model_data
 		                 SPECF_MAX_DIAMETER_M, s->max_diameter_m);
 
 	/* Propeller: locked at the row's diameter when the model's geometry
-	 * admits it.  The 1e-9 keeps the derived-wheelbase case (limit equal
-	 * to D by construction) on the locked side despite rounding. */
+	 * admits it, with the gate's own slack (a derived wheelbase puts the
+	 * limit at D by construction, to rounding). */
 	if (row->has_prop_diameter_in) {
 		double limit_m = (1.0 - AERO_TIP_CLEARANCE) * s->max_diameter_m * sin_arm;
-		if (d_m <= limit_m * (1.0 + 1e-9)) {
+		if (d_m <= limit_m * (1.0 + AERO_OVERLAP_REL_TOL)) {
 			s->locks.is_prop_locked = true;
 			s->locks.locked_diameter_in = row->prop_diameter_in;
 			s->locks.locked_pitch_in = row->has_prop_pitch_in ? row->prop_pitch_in
@@ -254,6 +264,25 @@ validate_mission_explained(const struct cohort_row *row, const struct model_data
 		if (!in_range(SPECF_NOMINAL_CELL_COUNT, row->cell_count))
 			return out_of_range(fact, "cell_count", row->cell_count,
 			                    SPECF_NOMINAL_CELL_COUNT, row->cell_count);
+	}
+
+	/* The published pack, locked under VALIDATE_PACK_LOCKED. */
+	if (rule == VALIDATE_PACK_LOCKED && row->has_cell_count
+	    && row->has_battery_capacity_mah) {
+		int packs = row->has_battery_pack_count ? row->battery_pack_count : 1;
+		s->locks.is_battery_locked = true;
+		s->locks.locked_cell_count = row->cell_count;
+		s->locks.locked_capacity_mah = row->battery_capacity_mah * packs;
+		s->given[SPECF_LOCK_BATTERY] = true;
+		s->given[SPECF_LOCK_CELL_COUNT] = true;
+		s->given[SPECF_LOCK_CAPACITY_MAH] = true;
+		nt |= VALIDATE_NOTE_PACK_LOCKED;
+		if (!in_range(SPECF_LOCK_CAPACITY_MAH, s->locks.locked_capacity_mah))
+			return out_of_range(fact, "battery_capacity_mah", row->battery_capacity_mah,
+			                    SPECF_LOCK_CAPACITY_MAH, s->locks.locked_capacity_mah);
+		if (!in_range(SPECF_LOCK_CELL_COUNT, row->cell_count))
+			return out_of_range(fact, "cell_count", row->cell_count,
+			                    SPECF_LOCK_CELL_COUNT, row->cell_count);
 	}
 
 	/* Endurance: one hover phase, the manufacturer's to-empty time brought
@@ -317,18 +346,24 @@ validate_report_free(struct validate_report *v)
 
 int
 validate_cohort(const struct cohort *c, const struct model_data *md,
-                struct validate_report *out)
+                enum validate_rule rule, struct validate_report *out)
 {
 	memset(out, 0, sizeof *out);
+	out->rule = rule;
 	out->n_rows = c->n_rows;
 	out->rows = xcalloc(c->n_rows ? c->n_rows : 1, sizeof *out->rows);
 	struct solve_result *work = xmalloc(sizeof *work);
+	const struct model_accuracy *acc = &md->cal.accuracy[rule == VALIDATE_PACK_LOCKED
+	    ? MODEL_PACK_LOCKED : MODEL_FROM_ENDURANCE];
+	out->has_interval = acc->valid;
+	out->interval_level = acc->level;
+	double open_dry = 0.0, open_batt = 0.0;
 	for (size_t i = 0; i < c->n_rows; i++) {
 		struct validate_row *vr = &out->rows[i];
 		const struct cohort_row *row = &c->rows[i];
 		vr->index = i;
 		vr->actual_kg = row->takeoff_mass_kg;
-		vr->skip = validate_mission_explained(row, md, &vr->spec, &vr->notes, &vr->fact);
+		vr->skip = validate_mission_explained(row, md, rule, &vr->spec, &vr->notes, &vr->fact);
 		if (vr->skip != VALIDATE_SKIP_NONE) {
 			vr->status = VALIDATE_ROW_SKIPPED;
 			continue;
@@ -340,6 +375,23 @@ validate_cohort(const struct cohort *c, const struct model_data *md,
 		}
 		vr->err_pct = 100.0 * (vr->predicted_kg - vr->actual_kg) / vr->actual_kg;
 		vr->k = vr->actual_kg / vr->predicted_kg;
+		if (acc->valid) {
+			const struct model_interval *iv = model_interval_for(acc,
+			    vr->spec.airframe_class);
+			double r = log(vr->actual_kg / vr->predicted_kg);
+			vr->inside = r >= iv->log_lo && r <= iv->log_hi;
+			out->n_inside += vr->inside;
+		}
+		/* Open loop at the real mass, where the dry mass is known. */
+		struct sizing_open o;
+		double dry = row->takeoff_mass_kg - row->payload_kg
+		    - (row->has_battery_mass_kg ? row->battery_mass_kg : 0.0);
+		if (row->has_battery_mass_kg && dry > 0.0
+		    && engine_at_mass(&vr->spec, md, row->takeoff_mass_kg, &o)) {
+			open_dry += fabs(o.dry_kg / dry - 1.0);
+			open_batt += fabs(o.mass.battery_kg / row->battery_mass_kg - 1.0);
+			out->n_open++;
+		}
 		if (row->has_battery_mass_kg && vr->battery_pred_kg > 0.0) {
 			vr->has_battery = true;
 			vr->battery_actual_kg = row->battery_mass_kg;
@@ -348,6 +400,10 @@ validate_cohort(const struct cohort *c, const struct model_data *md,
 		}
 	}
 	free(work);
+	if (out->n_open > 0) {
+		out->open_dry_mape_pct = 100.0 * open_dry / (double)out->n_open;
+		out->open_battery_mape_pct = 100.0 * open_batt / (double)out->n_open;
+	}
 	return validate_summarize(c, out);
 }
 

@@ -14,6 +14,10 @@
  *               measure the missing payload), no other fact bounds it, and
  *               empty_mass_kg is off limits (takeoff minus empty is the
  *               answer).
+ *   load case   max_payload_kg, when the row gives one above payload_kg:
+ *               motors, ESCs, propellers and structure are built for it
+ *               (mission field max_payload_kg); the endurance is flown with
+ *               payload_kg, the row's load state.
  *   rotors      rotor_count; unknown -> row skipped (a guess between 4, 6
  *               and 8 would change the prediction by tens of percent).
  *   coaxial     coaxial; unknown -> flat (noted): coaxial aircraft are the
@@ -43,9 +47,17 @@
  *   packs       battery_pack_count; unknown -> 1.
  *   cells       cell_count -> nominal_cell_count (the bus voltage is a fact
  *               of the aircraft); unknown -> chosen by the solver.
- *   capacity    NOT locked.  Sizing the energy is what is being tested (the
- *               paper sizes it too); a locked battery would hand the model
- *               the largest single mass of the aircraft as a given.
+ *   capacity    NOT locked (VALIDATE_FROM_ENDURANCE, the default): sizing
+ *               the energy is what is being tested (the paper sizes it
+ *               too).  Under VALIDATE_PACK_LOCKED (validate --pack), a row
+ *               that publishes its pack (cell_count and capacity; packs
+ *               from battery_pack_count, else 1) has it locked, as a user
+ *               reproducing the aircraft would, and the endurance becomes
+ *               a check: a payload-free aircraft of given geometry sized
+ *               from its endurance alone is ill-posed (dry mass and
+ *               battery both grow with M, the loop's slope at the real
+ *               mass is near or above 1), so the two rules measure
+ *               different things and both are reported (docs/validation.md).
  *   endurance   one hover phase (no climb, no forward flight).  The engine
  *               sizes capacity as 1.2 x the charge the mission draws, while
  *               manufacturer times run the pack to empty, so:
@@ -83,7 +95,8 @@ enum validate_note {
 	VALIDATE_NOTE_COAX_DEFAULT   = 1u << 4, /* coaxial unknown -> flat */
 	VALIDATE_NOTE_ROLE_DEFAULT   = 1u << 5, /* role unknown -> none */
 	VALIDATE_NOTE_MAX_FLIGHT     = 1u << 6, /* endurance from the max flight time */
-	VALIDATE_NOTE_COUNT          = 7
+	VALIDATE_NOTE_PACK_LOCKED    = 1u << 7, /* the published pack locked */
+	VALIDATE_NOTE_COUNT          = 8
 };
 
 /* Why a row was skipped. */
@@ -129,6 +142,13 @@ struct validate_fact {
  * contract's range (0 to 36000 s)" into buf. */
 void validate_fact_text(const struct validate_fact *f, char *buf, size_t n);
 
+/* Which battery the rule gives a row (see "capacity" above). */
+enum validate_rule {
+	VALIDATE_FROM_ENDURANCE,   /* capacity sized from the endurance */
+	VALIDATE_PACK_LOCKED,      /* the published pack locked where given */
+	VALIDATE_RULE_MAX
+};
+
 /* Builds the mission for a row by the rule above into *out (every field it
  * sets is marked given[]).  md supplies the chemistry names.  *notes gets
  * the OR of the enum validate_note flags used.  Returns VALIDATE_SKIP_NONE,
@@ -142,6 +162,7 @@ enum validate_skip validate_mission_from_row(const struct cohort_row *row,
  * VALIDATE_SKIP_RANGE. */
 enum validate_skip validate_mission_explained(const struct cohort_row *row,
                                               const struct model_data *md,
+                                              enum validate_rule rule,
                                               struct mission_spec *out,
                                               unsigned *notes,
                                               struct validate_fact *fact);
@@ -163,6 +184,7 @@ struct validate_row {
 	double battery_actual_kg;
 	double battery_pred_kg;
 	double battery_err_pct;
+	bool inside;               /* actual inside the shipped interval (OK rows) */
 	int cells;                 /* series cells of the design (0 unless run) */
 	double capacity_mah;       /* capacity of the design (0 unless run) */
 	double thrust_to_weight;   /* T/W the design flies (0 unless run) */
@@ -181,6 +203,17 @@ struct validate_report {
 	struct stats_group *by_class; /* MAPE per airframe class name */
 	size_t n_classes;
 	struct stats_summary battery; /* over the OK rows with battery_mass_kg */
+	enum validate_rule rule;   /* the rule the missions were built by */
+	/* Open loop: the model at each aircraft's real takeoff mass, over the
+	 * rows with a published battery mass (dry = takeoff - payload - battery). */
+	size_t n_open;
+	double open_dry_mape_pct;
+	double open_battery_mape_pct;
+	/* The shipped calibration's prediction interval for this rule: the OK
+	 * rows whose actual mass lies inside it. */
+	bool has_interval;
+	double interval_level;
+	size_t n_inside;
 };
 
 /* Solves one mission and fills the prediction fields of *vr (status,
@@ -193,7 +226,7 @@ void validate_solve_row(const struct mission_spec *spec, const struct model_data
  * converged rows.  Returns 0, or -1 if a statistic refused its input (cannot
  * happen for finite positive masses).  Release with validate_report_free. */
 int validate_cohort(const struct cohort *c, const struct model_data *md,
-                    struct validate_report *out);
+                    enum validate_rule rule, struct validate_report *out);
 
 void validate_report_free(struct validate_report *v);
 

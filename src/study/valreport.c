@@ -63,8 +63,10 @@ section_summary(struct doc *d, const struct validate_report *v,
 	    cal->lambda[LAMBDA_MICRO], cal->lambda[LAMBDA_CONSUMER],
 	    cal->lambda[LAMBDA_ENTERPRISE_QUAD], cal->lambda[LAMBDA_ENTERPRISE_MULTI],
 	    cal->lambda[LAMBDA_AGRI]);
-	snprintf(b[7], sizeof b[7], "%.3f, %.4g / %.4g kg/(A m)", cal->packaging_base,
-	    cal->wire_coef, cal->wire_coef_small);
+	snprintf(b[7], sizeof b[7], "%.3f / %.3f / %.3f / %.3f kg, %.3f",
+	    cal->equip_kg[AF_MICRO_AIO], cal->equip_kg[AF_CONSUMER_FOLDING],
+	    cal->equip_kg[AF_ENTERPRISE_RUGGED], cal->equip_kg[AF_AGRICULTURAL],
+	    cal->equip_exponent);
 	const char *kv[] = {
 		"Cohort file", cohort_name,
 		"Rows in the statistics", b[0],
@@ -74,7 +76,7 @@ section_summary(struct doc *d, const struct validate_report *v,
 		"k = actual / predicted", b[4],
 		"Battery mass MAPE", b[5],
 		"λ Micro / Consumer / Ent. quad / Ent. multi / Agri", b[6],
-		"Packaging base, wiring (normal / small)", b[7],
+		"Equipment at 1 kg (Micro / Consumer / Ent. / Agri), exponent", b[7],
 	};
 	doc_kv_table(d, kv, 9);
 	char txt[256];

@@ -18,7 +18,7 @@
 
 #include <stddef.h>
 
-#define LSQ_MAX_PARAMS 8
+#define LSQ_MAX_PARAMS 16
 
 /* Fills r[0..m) with the residuals at theta (model minus data, any sign
  * convention).  Returns 0 on success; non-zero means "the model is not

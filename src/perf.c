@@ -1,0 +1,536 @@
+/* perf.c — a design on real parts, flown (see perf.h). */
+#include "sizing/perf.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "physics/aero.h"
+#include "physics/batt.h"
+#include "physics/discharge.h"
+#include "physics/mission.h"
+#include "physics/therm.h"
+#include "util/strbuf.h"
+#include "util/units.h"
+
+#define TEMP_ITERATIONS   8      /* winding temperature ↔ resistance */
+#define BUS_ITERATIONS    50     /* bisection steps of the full-throttle voltage */
+#define CLIMB_MAX_MS      30.0   /* highest climb rate searched */
+#define GAMMA_BISECT      8      /* goal-relaxation bisection steps */
+#define ENDURANCE_STEPS   60
+
+/* What every evaluation of one aircraft shares. */
+struct perf_ctx {
+	const struct sizing_params *p;
+	const struct perf_craft *c;
+	struct mission_model model;   /* the real drive */
+	struct discharge_pack pack;
+	double v_oc_nom_v;            /* cells × nominal cell voltage */
+	double r_sys_ohm;             /* pack and ESC resistance at ambient */
+	double kq_nm_s2;              /* installed torque factor, Q = kq n² */
+	double hover_temp_c;          /* steady winding temperature at hover */
+};
+
+static int
+n_arms(const struct sizing_params *p)
+{
+	return p->coaxial ? p->n_rotors / 2 : p->n_rotors;
+}
+
+/* The rotor's installed figure of merit: the real propeller's static FoM
+ * with the installation penalty κ and the arm interference of the
+ * continuous model (paper §IV-F), or the mission's override. */
+static double
+installed_fom(const struct sizing_params *p, const struct perf_craft *c,
+              double k_int)
+{
+	double fom = p->fom_override > 0.0 ? p->fom_override
+	    : prop_fom(&c->prop) / (p->fom_isolated_mode ? 1.0 : p->kappa);
+	if (p->fom_override <= 0.0 && fom < AERO_FOM_FLOOR)
+		fom = AERO_FOM_FLOOR;
+	return fom / k_int;
+}
+
+static void
+build(const struct sizing_params *p, const struct perf_craft *c,
+      struct perf_ctx *x)
+{
+	memset(x, 0, sizeof *x);
+	x->p = p;
+	x->c = c;
+	struct mission_model *m = &x->model;
+	m->air = p->air;
+	m->rotor.diameter_m = c->prop_diameter_m;
+	m->rotor.ct = c->prop.ct;
+	m->rotor.n_blades = c->prop_blades;
+	m->rotor.fom = installed_fom(p, c, aero_interference(p->interference_c,
+	    c->arm.d_out_m, c->prop_diameter_m));
+	m->n_rotors = p->n_rotors;
+	m->coaxial = p->coaxial;
+	m->f_scale = p->f_scale;
+	m->added_drag_m2 = p->added_drag_m2;
+	m->fwd_drag_mult = p->fwd_drag_mult;
+	m->cd_h = p->cd_h;
+	m->cd_v = p->cd_v;
+	m->eta_drive = 1.0; /* not read: the motor gives the drive's losses */
+	m->aux_w = p->aux_w;
+	x->v_oc_nom_v = (double)c->cells * p->chem->v_nom;
+	m->bus_voltage_v = x->v_oc_nom_v;
+	m->real_drive = true;
+	m->motor = c->motor;
+	m->motor_temp_c = p->ambient_c;
+	x->pack.chem = p->chem;
+	x->pack.cells = c->cells;
+	x->pack.capacity_ah = c->capacity_ah;
+	x->pack.mass_kg = c->battery_kg;
+	x->pack.cycles = p->cycles;
+	x->pack.n_rotors = p->n_rotors;
+	x->pack.h_conv_w_m2k = p->h_conv_w_m2k;
+	/* A real pack's resistance follows its maker's rating. */
+	if (c->battery_continuous_c > 0.0)
+		x->pack.r_cells_ohm = (double)c->cells * batt_rated_cell_ohm(p->chem,
+		    c->capacity_ah, c->battery_continuous_c);
+	struct batt_r_sys rs;
+	batt_r_sys_init(p->chem, c->cells, c->capacity_ah, p->cycles, p->n_rotors,
+	    &rs);
+	if (x->pack.r_cells_ohm > 0.0)
+		rs.r_cells_ohm = x->pack.r_cells_ohm;
+	x->r_sys_ohm = batt_r_sys_at(&rs, p->ambient_c);
+}
+
+/* Battery current and terminal voltage for a load of power_w on the pack
+ * at its nominal open-circuit voltage (mid-discharge, as eCalc quotes). */
+static bool
+bus_load(const struct perf_ctx *x, double power_w, double *i_a, double *v_v)
+{
+	if (batt_current_a(x->v_oc_nom_v, x->r_sys_ohm, power_w, i_a) != BATT_OK)
+		return false;
+	*v_v = x->v_oc_nom_v - *i_a * x->r_sys_ohm;
+	return true;
+}
+
+static double
+motor_loss_w(const struct motor_point *mp)
+{
+	return mp->copper_loss_w + mp->no_load_loss_w;
+}
+
+/* The hover winding temperature, settled: losses set the temperature, the
+ * temperature the winding's resistance and so the losses. */
+static void
+settle_hover(struct perf_ctx *x, double mass_kg)
+{
+	double rth = motor_thermal_resistance_k_w(x->c->motor.mass_kg);
+	for (int k = 0; k < TEMP_ITERATIONS; k++) {
+		struct mission_power mp;
+		mission_power(&x->model, mass_kg, 0.0, 0.0, &mp);
+		x->model.motor_temp_c = x->p->ambient_c + motor_loss_w(&mp.motor) * rth;
+	}
+	x->hover_temp_c = x->model.motor_temp_c;
+	/* The installed torque the propeller asks at hover, as Q = kq n²: the
+	 * full-throttle point turns the same rotor faster. */
+	struct mission_power mp;
+	mission_power(&x->model, mass_kg, 0.0, 0.0, &mp);
+	double n = mp.rotor.rps;
+	x->kq_nm_s2 = mp.rotor.p_shaft_w / (2.0 * M_PI * n * n * n);
+}
+
+/* One row of the operating-point table from a phase's power. */
+static void
+op_from(const struct perf_ctx *x, const struct mission_power *mp,
+        double winding_c, struct res_op *op)
+{
+	memset(op, 0, sizeof *op);
+	double i_b, v_b;
+	if (!bus_load(x, mp->electrical_w, &i_b, &v_b))
+		return;
+	op->valid = true;
+	op->thrust_n = mp->thrust_per_rotor_n;
+	op->rpm = mp->rotor.rps * S_PER_MIN;
+	op->motor_current_a = mp->motor.current_a;
+	op->motor_voltage_v = mp->motor.voltage_v;
+	op->power_in_w = mp->motor.power_in_w;
+	op->power_shaft_w = mp->motor.power_shaft_w;
+	op->motor_efficiency = mp->motor.efficiency;
+	op->g_per_w = op->power_in_w > 0.0
+	    ? op->thrust_n / G0_M_S2 * 1000.0 / op->power_in_w : 0.0;
+	op->winding_temp_c = winding_c;
+	op->tip_mach = mp->rotor.tip_mach;
+	op->battery_current_a = i_b;
+	op->bus_voltage_v = v_b;
+	op->throttle = v_b > 0.0 ? op->motor_voltage_v / v_b : 0.0;
+	op->c_load = i_b / x->c->capacity_ah;
+	op->electrical_w = mp->electrical_w;
+	/* A point that needs more voltage than the pack gives is not one the
+	 * design can fly: kept for the checks, marked unreachable. */
+	if (op->throttle > 1.0)
+		op->valid = false;
+}
+
+/* A phase's operating point at mass_kg with its steady winding temperature. */
+static void
+phase_op(struct perf_ctx *x, double mass_kg, double v_climb_ms,
+         double v_fwd_ms, struct mission_power *mp, struct res_op *op)
+{
+	mission_power(&x->model, mass_kg, v_climb_ms, v_fwd_ms, mp);
+	double rth = motor_thermal_resistance_k_w(x->c->motor.mass_kg);
+	op_from(x, mp, x->p->ambient_c + motor_loss_w(&mp->motor) * rth, op);
+}
+
+/* Full throttle: the motor on the pack's loaded voltage turns the rotor
+ * until its torque meets the propeller's, and the pack's voltage sags
+ * under the current that draws.  The terminal voltage V solves
+ * V = V_oc - R (N I_motor(V) + P_other / V); the right side falls as V
+ * rises, so the root is unique and bisection finds it.  False when the
+ * motor cannot turn at all. */
+static bool
+full_throttle(const struct perf_ctx *x, struct res_op *op)
+{
+	const struct perf_craft *c = x->c;
+	const struct mission_model *m = &x->model;
+	double n_rot = (double)m->n_rotors;
+	double other_w = 0.5 * MISSION_F_PWM_HZ * MISSION_C_OSS_F
+	    * x->v_oc_nom_v * x->v_oc_nom_v * n_rot + m->aux_w;
+	double lo = 0.0, hi = x->v_oc_nom_v;
+	struct motor_point pt;
+	if (!motor_at_voltage(&c->motor, x->hover_temp_c, hi, x->kq_nm_s2, &pt))
+		return false;
+	for (int k = 0; k < BUS_ITERATIONS; k++) {
+		double v = 0.5 * (lo + hi);
+		double i_b = motor_at_voltage(&c->motor, x->hover_temp_c, v,
+		    x->kq_nm_s2, &pt) ? n_rot * pt.current_a : 0.0;
+		i_b += other_w / v;
+		if (x->v_oc_nom_v - x->r_sys_ohm * i_b > v)
+			lo = v;
+		else
+			hi = v;
+	}
+	double v = lo;
+	if (!motor_at_voltage(&c->motor, x->hover_temp_c, v, x->kq_nm_s2, &pt))
+		return false;
+	double i_b = n_rot * pt.current_a + other_w / v;
+	memset(op, 0, sizeof *op);
+	op->valid = true;
+	op->thrust_n = prop_thrust_n(&c->prop, m->air.rho_kg_m3, pt.rps,
+	    c->prop_diameter_m);
+	op->rpm = pt.rps * S_PER_MIN;
+	op->throttle = 1.0;
+	op->motor_current_a = pt.current_a;
+	op->motor_voltage_v = pt.voltage_v;
+	op->power_in_w = pt.power_in_w;
+	op->power_shaft_w = pt.power_shaft_w;
+	op->motor_efficiency = pt.efficiency;
+	op->g_per_w = op->thrust_n / G0_M_S2 * 1000.0 / pt.power_in_w;
+	op->winding_temp_c = motor_temp_step_c(c->motor.mass_kg, x->hover_temp_c,
+	    x->p->ambient_c, motor_loss_w(&pt), PERF_FULL_THROTTLE_S);
+	op->tip_mach = M_PI * c->prop_diameter_m * pt.rps / m->air.sound_m_s;
+	op->battery_current_a = i_b;
+	op->bus_voltage_v = v;
+	op->c_load = i_b / c->capacity_ah;
+	op->electrical_w = v * i_b;
+	return true;
+}
+
+/* Fly the mission at goal relaxation gamma into run's trace and dis. */
+static void
+fly(const struct perf_ctx *x, double gamma, double v_fwd_ms,
+    struct res_run *run, struct discharge_out *dis)
+{
+	const struct sizing_params *p = x->p;
+	struct discharge_mission dm;
+	dm.model = &x->model;
+	dm.dry_mass_kg = x->c->mass.total_kg - p->payload_kg;
+	sizing_shedding(p, gamma, &dm.shed);
+	sizing_durations(p, gamma, dm.duration_s);
+	dm.speed_ms[PHASE_CLIMB] = p->v_climb_ms;
+	dm.speed_ms[PHASE_FORWARD] = v_fwd_ms;
+	dm.speed_ms[PHASE_HOVER] = 0.0;
+	dm.ambient_c = p->ambient_c;
+	discharge_run(&x->pack, &dm, SIZING_FINAL_STEPS,
+	    run != NULL ? run->trace : NULL, run != NULL ? RES_MAX_TRACE : 0,
+	    run != NULL ? &run->n_trace : NULL, dis);
+}
+
+/* Lands with at least the reserve: the mission is flown. */
+static bool
+landed(const struct discharge_out *dis, double reserve_soc)
+{
+	return dis->end == DIS_COMPLETED && dis->end_soc >= reserve_soc - 1e-9;
+}
+
+/* The largest γ in [γ_min, 1] whose mission lands at the reserve, by
+ * bisection (the mission only gets harder with γ); 0 when none does. */
+static double
+relaxed_gamma(const struct perf_ctx *x, double v_fwd_ms, double reserve_soc)
+{
+	struct discharge_out dis;
+	fly(x, SIZING_GAMMA_MIN, v_fwd_ms, NULL, &dis);
+	if (!landed(&dis, reserve_soc))
+		return 0.0;
+	double lo = SIZING_GAMMA_MIN, hi = 1.0;
+	for (int k = 0; k < GAMMA_BISECT; k++) {
+		double mid = 0.5 * (lo + hi);
+		fly(x, mid, v_fwd_ms, NULL, &dis);
+		if (landed(&dis, reserve_soc))
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return lo;
+}
+
+/* The highest vertical climb rate whose power and thrust full throttle
+ * covers, by bisection on the climb speed. */
+static double
+max_climb_ms(struct perf_ctx *x, double mass_kg, const struct res_op *full)
+{
+	double lo = 0.0, hi = CLIMB_MAX_MS;
+	for (int k = 0; k < 30; k++) {
+		double mid = 0.5 * (lo + hi);
+		struct mission_power mp;
+		mission_power(&x->model, mass_kg, mid, 0.0, &mp);
+		if (mp.thrust_per_rotor_n <= full->thrust_n
+		    && mp.electrical_w <= full->electrical_w)
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return lo;
+}
+
+/* The performance figures beyond the mission. */
+static void
+figures(struct perf_ctx *x, const struct res_run *run, struct res_perf *pf)
+{
+	const struct sizing_params *p = x->p;
+	double mass = x->c->mass.total_kg;
+	double weight_n = mass * G0_M_S2;
+	double n_rot = (double)p->n_rotors;
+	const struct res_op *full = &pf->op[OP_FULL];
+	double reserve = run->reserve_soc;
+
+	pf->hover_time_s = discharge_hover_endurance_steps_s(&x->pack, &x->model,
+	    mass, p->ambient_c, reserve, ENDURANCE_STEPS);
+	pf->full_throttle_time_s = discharge_power_endurance_s(&x->pack,
+	    full->electrical_w, p->ambient_c, reserve, ENDURANCE_STEPS);
+	/* The mission's mix repeated to the reserve: its time scaled by the
+	 * usable charge over the charge it drew. */
+	double used = 1.0 - run->end_soc;
+	pf->mixed_time_s = used > 0.0 && run->flight_time_s > 0.0
+	    ? run->flight_time_s * (1.0 - reserve) / used : 0.0;
+	pf->max_speed_ms = run->v_max_ms;
+	pf->max_climb_ms = max_climb_ms(x, mass, full);
+	double ratio = n_rot * full->thrust_n / weight_n;
+	pf->max_tilt_deg = ratio > 1.0 ? acos(1.0 / ratio) * 180.0 / M_PI : 0.0;
+	/* T/W of the role's thrust target, 1 / θ² (paper §II-E). */
+	double theta = 1.0 - p->thrust_margin;
+	double tw_target = 1.0 / (theta * theta);
+	double spare = n_rot * full->thrust_n / (G0_M_S2 * tw_target) - mass;
+	pf->spare_payload_kg = spare > 0.0 ? spare : 0.0;
+	/* One motor out: the opposite one throttles back to keep yaw and roll
+	 * trimmed, so N - 2 rotors carry the weight (a conservative rule for
+	 * hexa- and octocopters; a quadcopter cannot fly on three). */
+	if (p->n_rotors >= 6) {
+		pf->motor_out_rotors = p->n_rotors - 2;
+		pf->motor_out_ratio = (double)pf->motor_out_rotors * full->thrust_n
+		    / weight_n;
+		pf->motor_out_holds = pf->motor_out_ratio >= 1.0;
+	}
+	pf->landing_soc = run->end_soc;
+}
+
+/* The masses, battery and structure of the craft into run. */
+static void
+record_craft(const struct perf_ctx *x, struct res_run *run)
+{
+	const struct sizing_params *p = x->p;
+	const struct perf_craft *c = x->c;
+	run->mass = c->mass;
+	str_copy(run->chemistry, sizeof run->chemistry, p->chem->name);
+	run->cell_count = c->cells;
+	run->pack_count = 1;
+	run->capacity_mah = c->capacity_ah * 1000.0;
+	run->nominal_voltage_v = x->v_oc_nom_v;
+	run->energy_wh = c->capacity_ah * x->v_oc_nom_v;
+	run->packaging_factor = 0.0;
+	run->reserve_soc = sizing_reserve_soc();
+	run->fom_installed = x->model.rotor.fom;
+	run->interference = aero_interference(p->interference_c, c->arm.d_out_m,
+	    c->prop_diameter_m);
+	double area = 0.25 * M_PI * c->prop_diameter_m * c->prop_diameter_m;
+	run->overlap_limit_in = m_to_in(aero_overlap_limit_m(p->wheelbase_m,
+	    n_arms(p), AERO_TIP_CLEARANCE));
+	run->disk_loading_n_m2 = c->mass.total_kg * G0_M_S2
+	    / ((double)n_arms(p) * area);
+	run->downwash_ms = aero_downwash_ms(c->mass.total_kg, p->air.rho_kg_m3,
+	    n_arms(p), area);
+	run->arm_length_m = c->arm.length_m;
+	run->arm_outer_diameter_mm = c->arm.d_out_m * 1000.0;
+	run->arm_wall_thickness_mm = c->arm.wall_m * 1000.0;
+	run->arm_stress_mpa = c->arm.stress_pa / 1e6;
+	run->arm_stress_allow_mpa = structure_sigma_allow_pa() / 1e6;
+	run->arm_natural_frequency_hz = c->arm.f_nat_hz;
+	run->arm_wall_floor_binds = c->arm.wall_floor_binds;
+	run->arm_tip_mass_kg = (c->mass.motor_kg + c->mass.prop_kg)
+	    / (double)p->n_rotors * (p->coaxial ? 2.0 : 1.0);
+}
+
+/* Each phase: its duration and what the discharge drew, its operating
+ * point at its time-averaged mass (a drop or a spray lightens it along the
+ * phase; the mean power, convex in mass, is then at least that point's). */
+static void
+record_phases(struct perf_ctx *x, double gamma, double v_fwd_ms,
+              const struct discharge_out *dis, struct res_run *run)
+{
+	const struct sizing_params *p = x->p;
+	double d[PHASE_MAX];
+	sizing_durations(p, gamma, d);
+	struct role_shedding shed;
+	sizing_shedding(p, gamma, &shed);
+	double dry = x->c->mass.total_kg - p->payload_kg;
+	double t0 = 0.0;
+	run->flight_time_s = 0.0;
+	for (int i = 0; i < PHASE_MAX; i++) {
+		struct res_phase *ph = &run->phase[i];
+		double v_c = i == PHASE_CLIMB ? p->v_climb_ms : 0.0;
+		double v_f = i == PHASE_FORWARD ? v_fwd_ms : 0.0;
+		struct mission_power mp;
+		struct res_op op;
+		phase_op(x, dry + role_payload_mean(&shed, t0, t0 + d[i]), v_c, v_f,
+		    &mp, &op);
+		run->approved_time_s[i] = d[i];
+		run->flight_time_s += d[i];
+		ph->duration_s = d[i];
+		ph->speed_ms = v_c + v_f;
+		ph->thrust_per_rotor_n = mp.thrust_per_rotor_n;
+		ph->shaft_power_w = mp.shaft_w;
+		ph->power_w = dis->phase_mean_power_w[i] > 0.0
+		    ? dis->phase_mean_power_w[i] : mp.electrical_w;
+		ph->current_a = dis->phase_mean_current_a[i];
+		ph->energy_wh = dis->phase_energy_wh[i];
+		ph->rpm = op.rpm;
+		/* Saturated when out of reach (the checks say so). */
+		ph->throttle = op.throttle < 1.0 ? op.throttle : 1.0;
+		if (d[i] > 0.0 && op.throttle > run->perf.throttle_needed)
+			run->perf.throttle_needed = op.throttle;
+		ph->pitch_deg = mp.pitch_deg;
+		ph->tip_mach = mp.rotor.tip_mach;
+		t0 += d[i];
+	}
+	run->forward_pitch_deg = run->phase[PHASE_FORWARD].pitch_deg;
+}
+
+bool
+perf_fly(const struct sizing_params *p, const struct perf_craft *c,
+         struct res_run *run)
+{
+	struct perf_ctx x;
+	build(p, c, &x);
+	res_run_clear_untraced(run);
+	run->ran = true;
+	run->converged = true;
+	run->thrust_margin = p->thrust_margin;
+	run->thrust_margin_requested = p->thrust_margin;
+	record_craft(&x, run);
+	double mass = c->mass.total_kg;
+	struct res_perf *pf = &run->perf;
+
+	/* Hover settles the winding; full throttle sets what the rotor can do. */
+	settle_hover(&x, mass);
+	struct mission_power mp;
+	phase_op(&x, mass, 0.0, 0.0, &mp, &pf->op[OP_HOVER]);
+	pf->throttle_needed = pf->op[OP_HOVER].throttle;
+	/* A drive that cannot turn on this pack (the voltage collapses under
+	 * the current) gives no full-throttle point: no thrust to spare, which
+	 * the checks then fail. */
+	if (!full_throttle(&x, &pf->op[OP_FULL]))
+		memset(&pf->op[OP_FULL], 0, sizeof pf->op[OP_FULL]);
+	const struct res_op *full = &pf->op[OP_FULL];
+
+	/* Forward speed: the minimum-power speed when "auto"; the sweep is the
+	 * power-vs-speed figure, limited by the real rotor's full thrust. */
+	run->n_sweep = mission_speed_sweep(&x.model, mass, full->thrust_n,
+	    run->sweep_v_ms, run->sweep_power_w, RES_MAX_SWEEP,
+	    &run->v_min_power_ms, &run->v_max_ms);
+	double v_fwd = p->v_auto ? run->v_min_power_ms : p->v_forward_ms;
+	run->optimal_speed_ms = v_fwd;
+	phase_op(&x, mass, p->v_climb_ms > 0.0 ? p->v_climb_ms : 1.0, 0.0, &mp,
+	    &pf->op[OP_CLIMB]);
+	phase_op(&x, mass, 0.0, v_fwd > 0.0 ? v_fwd : 1.0, &mp, &pf->op[OP_CRUISE]);
+
+	/* The mission: whole, or relaxed when the mission allows it. */
+	struct discharge_out dis;
+	double gamma = 1.0;
+	fly(&x, gamma, v_fwd, run, &dis);
+	if (!landed(&dis, run->reserve_soc) && p->allow_relax) {
+		double g = relaxed_gamma(&x, v_fwd, run->reserve_soc);
+		if (g > 0.0) {
+			gamma = g;
+			fly(&x, gamma, v_fwd, run, &dis);
+		}
+	}
+	run->time_scale = gamma;
+	record_phases(&x, gamma, v_fwd, &dis, run);
+	run->max_battery_temp_c = dis.peak_temp_c;
+	run->thermal_margin_c = THERM_RUNAWAY_C - dis.peak_temp_c;
+	run->min_terminal_voltage_v = dis.min_v_term_v;
+	run->voltage_floor_v = (double)c->cells * p->chem->v_cutoff;
+	run->end_soc = dis.end_soc;
+	str_copy(run->termination, sizeof run->termination,
+	    discharge_end_text[dis.end]);
+
+	/* Propulsion summary, as the continuous run states it. */
+	const struct res_op *hov = &pf->op[OP_HOVER];
+	run->thrust_to_weight = (double)p->n_rotors * full->thrust_n
+	    / (mass * G0_M_S2);
+	run->hover_throttle = hov->throttle < 1.0 ? hov->throttle : 1.0;
+	run->rpm_hover = hov->rpm;
+	run->rpm_peak = full->rpm;
+	run->tip_mach_peak = full->tip_mach;
+	run->reynolds_tip = mp.rotor.reynolds_tip;
+	run->peak_power_w = full->electrical_w;
+	run->peak_current_a = full->battery_current_a;
+	run->peak_c_rate = full->c_load;
+	/* The blade-pass band up to full throttle (to hover, without one). */
+	double rpm_top = full->valid ? full->rpm : hov->rpm;
+	run->blade_pass_frequency_hz = (double)c->prop_blades * rpm_top / S_PER_MIN;
+	run->blade_pass_low_hz = (double)c->prop_blades * SIZING_LOW_FLIGHT_RPM
+	    * hov->rpm / S_PER_MIN;
+	run->resonance_margin = structure_resonance_margin(c->arm.f_nat_hz,
+	    run->blade_pass_low_hz, run->blade_pass_frequency_hz);
+	run->winding_temp_c = x.hover_temp_c;
+	run->motor_winding_resistance_ohm = therm_winding_resistance_ohm(
+	    c->motor.resistance_ohm, x.hover_temp_c);
+	struct mission_power hp;
+	mission_power(&x.model, mass, 0.0, 0.0, &hp);
+	run->motor_copper_loss_w = hp.motor.copper_loss_w;
+	run->opt.prop_diameter_in = m_to_in(c->prop_diameter_m);
+	run->opt.prop_pitch_in = m_to_in(c->prop_pitch_m);
+	run->opt.motor_kv = c->motor.kv_rpm_per_v;
+	run->opt.motor_mass_kg = c->motor.mass_kg;
+	run->opt.motor_peak_current_a = full->motor_current_a;
+	run->opt.motor_peak_power_w = full->power_in_w;
+
+	pf->valid = true;
+	pf->motor_resistance_ohm = c->motor.resistance_ohm;
+	pf->motor_no_load_a = c->motor.no_load_current_a;
+	pf->motor_r_estimated = c->motor_r_estimated;
+	pf->prop_ct = c->prop.ct;
+	pf->prop_cp = c->prop.cp;
+	pf->prop_coeffs_measured = c->prop.measured;
+	figures(&x, run, pf);
+
+	/* Every number it produced must be a number. */
+	const double v[] = { run->max_battery_temp_c, run->min_terminal_voltage_v,
+		run->peak_power_w, run->peak_current_a, run->thrust_to_weight,
+		run->hover_throttle, pf->hover_time_s, pf->mixed_time_s,
+		pf->full_throttle_time_s, pf->max_climb_ms, pf->max_tilt_deg,
+		run->end_soc, run->downwash_ms, run->resonance_margin };
+	for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
+		if (!isfinite(v[i]))
+			return false;
+	for (int i = 0; i < OP_MAX; i++)
+		if (!isfinite(pf->op[i].power_in_w) || !isfinite(pf->op[i].throttle))
+			return false;
+	return true;
+}
