@@ -9,6 +9,8 @@
 
 #include <hpdf.h>
 #include <hpdf_namedict.h>   /* internals: the attachment's name tree */
+#include <hpdf_objects.h>    /* internals: the fonts' ToUnicode maps */
+#include <hpdf_streams.h>
 
 #include "util/xalloc.h"
 
@@ -23,6 +25,13 @@
 #define CELL_PAD_Y 2.6
 #define MIN_LINES_AFTER_HEADING 3  /* keep a heading with this many lines */
 
+/* One line of the contents: a level-1 heading and where it is. */
+struct toc_entry {
+	char *text;
+	int page;                   /* index into pages[] */
+	double y;                   /* the heading's top, PDF coordinates */
+};
+
 struct doc {
 	HPDF_Doc pdf;
 	struct template tpl;        /* copy: the caller's may go away */
@@ -35,10 +44,18 @@ struct doc {
 	double left, right, top, bottom; /* text block, PDF coordinates */
 	double y;                   /* cursor: top of the next element */
 	int at_top;                 /* nothing placed on this page yet */
+	int after_heading;          /* the last thing placed is a level-2/3 heading */
 	HPDF_Outline outline_l1;    /* last level-1 bookmark (parent of level 2) */
 	int n_figures;              /* figures placed */
 	char *title, *mission;      /* running header */
 	int saved;                  /* doc_save_mem ran */
+	/* contents (doc_contents): the level-1 headings after it, listed on
+	 * the area it reserved when the document is saved */
+	int toc_on;                 /* headings are being collected */
+	int toc_page, toc_rows;     /* page index of the list, rows reserved */
+	double toc_top;             /* top of the reserved area */
+	struct toc_entry *toc;
+	int n_toc, cap_toc;
 	char err[128];              /* first error, "" if none */
 };
 
@@ -158,6 +175,62 @@ utf8_len(const char *s)
 	return n;
 }
 
+static int
+is_digit(char c)
+{
+	return c >= '0' && c <= '9';
+}
+
+/* A character of a number as printed: digits, the decimal point, the
+ * thousands comma. */
+static int
+is_numeric(char c)
+{
+	return is_digit(c) || c == '.' || c == ',';
+}
+
+/* May the word [s, e) break after its character c?  After a '/' (but not
+ * inside the "//" of "https://") or a '-' that is not a leading minus. */
+static int
+breaks_after(const char *s, const char *c, const char *e)
+{
+	if (*c == '/')
+		return (c + 1 >= e || c[1] != '/') && !(c > s && c[-1] == '/');
+	return *c == '-' && c > s;
+}
+
+/* Where to cut a word [s, e) that is wider than the line: after the last
+ * '/' or '-' that fits (a web address or a part id then breaks where a
+ * reader expects it, never in the middle of a name), else after the last
+ * character that fits, moved back to the start of a number so that digits
+ * stay together.  Always takes at least one character. */
+static const char *
+word_cut(HPDF_Font f, double size, double width, const char *s, const char *e)
+{
+	const char *c = s, *fit = s, *brk = NULL;
+	HPDF_UINT cu = 0;
+	while (c < e) {
+		size_t cl = utf8_len(c);
+		cu += units_of(f, c, cl);
+		if (c != s && to_points(cu, size) > width)
+			break;
+		c += cl;
+		fit = c;
+		if (breaks_after(s, c - 1, e))
+			brk = c;
+	}
+	if (fit >= e)
+		return e;
+	if (brk != NULL && brk < e)
+		return brk;
+	/* A number is never cut: it overflows its cell by a little rather
+	 * than read as two numbers. */
+	const char *cut = fit;
+	while (cut > s && is_numeric(*cut) && is_numeric(cut[-1]))
+		cut--;
+	return cut > s ? cut : is_numeric(*s) ? e : fit;
+}
+
 /* Greedy word wrap of text into lines no wider than width.  Spaces separate
  * words; "\n" forces a break; a word wider than the line is cut between
  * characters (TextRect would stall on it, STACK.md §2f). */
@@ -195,16 +268,7 @@ wrap_text(HPDF_Font f, double size, double width, const char *text, struct lines
 					break;
 				if (end == start && nw > width) {
 					/* First word alone overflows: take what fits of it. */
-					const char *c = start;
-					HPDF_UINT cu = 0;
-					while (c < we) {
-						size_t cl = utf8_len(c);
-						cu += units_of(f, c, cl);
-						if (c != start && to_points(cu, size) > width)
-							break;
-						c += cl;
-					}
-					end = c;
+					end = word_cut(f, size, width, start, we);
 					break;
 				}
 				end = we;
@@ -222,15 +286,26 @@ wrap_text(HPDF_Font f, double size, double width, const char *text, struct lines
 	}
 }
 
-/* Draws len bytes of s at baseline (x, y) (page coordinates). */
+/* Draws len bytes of s at baseline (x, y) (page coordinates).  A
+ * no-break space (U+00A0, which keeps a number with its unit when text is
+ * wrapped) is drawn as a plain space, so that extracted text reads as
+ * typed. */
 static void
 put_text(struct doc *d, HPDF_Font f, double size, double x, double y, const char *s,
          size_t len, struct template_colour k)
 {
 	char small[256];
 	char *buf = len < sizeof small ? small : xmalloc(len + 1);
-	memcpy(buf, s, len);
-	buf[len] = '\0';
+	size_t n = 0;
+	for (size_t i = 0; i < len; i++) {
+		if ((unsigned char)s[i] == 0xc2 && i + 1 < len && (unsigned char)s[i + 1] == 0xa0) {
+			buf[n++] = ' ';
+			i++;
+		} else {
+			buf[n++] = s[i];
+		}
+	}
+	buf[n] = '\0';
 	plot_begin_text(d->page, f, size, k);
 	HPDF_Page_TextOut(d->page, (HPDF_REAL)x, (HPDF_REAL)y, buf);
 	HPDF_Page_EndText(d->page);
@@ -238,7 +313,8 @@ put_text(struct doc *d, HPDF_Font f, double size, double x, double y, const char
 		free(buf);
 }
 
-static void
+/* Draws s aligned between x0 and x1; returns the x it starts at. */
+static double
 put_aligned(struct doc *d, HPDF_Font f, double size, double x0, double x1, double y,
             const char *s, size_t len, enum doc_align al, struct template_colour k)
 {
@@ -248,6 +324,71 @@ put_aligned(struct doc *d, HPDF_Font f, double size, double x0, double x1, doubl
 	else if (al == DOC_ALIGN_CENTER)
 		x = 0.5 * (x0 + x1 - w);
 	put_text(d, f, size, x, y, s, len, k);
+	return x;
+}
+
+/* ---- web addresses -------------------------------------------------------- */
+
+#define URI_MAX 1024
+
+/* The web address that the byte p of text (its start at text) belongs to:
+ * its start and length, or 0 when p is not inside one.  An address is a
+ * run of non-blank characters starting with "http://", "https://" or
+ * "www.". */
+static size_t
+url_around(const char *text, const char *p, const char **start)
+{
+	const char *a = p;
+	while (a > text && a[-1] != ' ' && a[-1] != '\n')
+		a--;
+	if (strncmp(a, "http://", 7) != 0 && strncmp(a, "https://", 8) != 0 &&
+	    strncmp(a, "www.", 4) != 0)
+		return 0;
+	*start = a;
+	return strcspn(a, " \n");
+}
+
+/* Does line [s, s + len) of text lie inside a web address? */
+static int
+line_is_url(const char *text, const char *s, size_t len)
+{
+	const char *a;
+	size_t n = url_around(text, s, &a);
+	return n > 0 && s + len <= a + n;
+}
+
+/* Makes the parts of a drawn line that belong to web addresses clickable:
+ * a URI link annotation (no border) over each, targeting the whole
+ * address even when it wraps over several lines. */
+static void
+link_line(struct doc *d, HPDF_Font f, double size, double x, double y, const char *text,
+          const char *s, size_t len)
+{
+	const char *p = s, *e = s + len;
+	while (p < e) {
+		const char *a;
+		size_t n = url_around(text, p, &a);
+		if (n == 0) {
+			p++;
+			continue;
+		}
+		const char *b = a + n < e ? a + n : e;
+		char uri[URI_MAX];
+		int ascii = n + 9 < sizeof uri;
+		for (size_t i = 0; ascii && i < n; i++)
+			ascii = (unsigned char)a[i] > 0x20 && (unsigned char)a[i] < 0x7f;
+		if (ascii) {
+			snprintf(uri, sizeof uri, "%s%.*s", a[0] == 'w' ? "https://" : "", (int)n, a);
+			double xa = x + width_of(f, size, s, (size_t)(p - s));
+			double xb = xa + width_of(f, size, p, (size_t)(b - p));
+			HPDF_Rect rect = { (HPDF_REAL)xa, (HPDF_REAL)(y - 0.25 * size),
+			                   (HPDF_REAL)xb, (HPDF_REAL)(y + 0.85 * size) };
+			HPDF_Annotation an = HPDF_Page_CreateURILinkAnnot(d->page, rect, uri);
+			if (an != NULL)
+				HPDF_LinkAnnot_SetBorderStyle(an, 0, 0, 0);
+		}
+		p = b;
+	}
 }
 
 static void
@@ -296,6 +437,7 @@ add_page(struct doc *d)
 	d->page = pg;
 	d->y = d->top;
 	d->at_top = 1;
+	d->after_heading = 0;
 }
 
 int
@@ -340,9 +482,59 @@ advance(struct doc *d, double h)
 {
 	d->y -= h;
 	d->at_top = 0;
+	d->after_heading = 0;
 }
 
 /* ---- document -------------------------------------------------------------- */
+
+/* Rewrites the ToUnicode map of a UTF-8 font.  libharu 2.3.0 writes it
+ * with a `begincidrange` block, which is an operator of CID maps, not of
+ * ToUnicode maps: poppler warns on every such font ("Invalid
+ * 'begincidrange' operator in ToUnicode CMap", STACK.md §2d) and other
+ * readers may not extract the text at all.  With the UTF-8 encoder the
+ * code of a glyph is its Unicode value (the CIDToGIDMap does the rest), so
+ * the right map is the identity: one bfrange per high byte (a bfrange may
+ * not cross a change of the first byte, PDF 1.7 §9.10.3), the surrogate
+ * block left out, at most 100 ranges per block. */
+static void
+fix_to_unicode(struct doc *d, HPDF_Font font)
+{
+	HPDF_Dict map = HPDF_Dict_GetItem(font, "ToUnicode", HPDF_OCLASS_DICT);
+	if (map == NULL || map->stream == NULL) {
+		HPDF_ResetError(d->pdf);   /* no map to fix: nothing is wrong */
+		return;
+	}
+	HPDF_Stream s = map->stream;
+	HPDF_MemStream_FreeData(s);
+	HPDF_Stream_WriteStr(s, "/CIDInit /ProcSet findresource begin\n"
+	    "12 dict begin\nbegincmap\n"
+	    "/CIDSystemInfo << /Registry (Adobe) /Ordering (UCS) /Supplement 0 >> def\n"
+	    "/CMapName /Adobe-Identity-UCS def\n/CMapType 2 def\n"
+	    "1 begincodespacerange\n<0000> <FFFF>\nendcodespacerange\n");
+	int hi[256], n = 0;
+	for (int h = 0; h < 256; h++)
+		if (h < 0xd8 || h > 0xdf)
+			hi[n++] = h;
+	char line[48];
+	for (int i = 0; i < n; i += 100) {
+		int m = n - i < 100 ? n - i : 100;
+		snprintf(line, sizeof line, "%d beginbfrange\n", m);
+		HPDF_Stream_WriteStr(s, line);
+		for (int k = i; k < i + m; k++) {
+			snprintf(line, sizeof line, "<%02X00> <%02XFF> <%02X00>\n", hi[k], hi[k], hi[k]);
+			HPDF_Stream_WriteStr(s, line);
+		}
+		HPDF_Stream_WriteStr(s, "endbfrange\n");
+	}
+	HPDF_Stream_WriteStr(s, "endcmap\nCMapName currentdict /CMap defineresource pop\n"
+	    "end\nend\n");
+	/* The map's own dictionary named it a CID map; a ToUnicode stream
+	 * needs none of those keys. */
+	HPDF_Dict_RemoveElement(map, "Type");
+	HPDF_Dict_RemoveElement(map, "CMapName");
+	HPDF_Dict_RemoveElement(map, "CIDSystemInfo");
+	HPDF_Dict_RemoveElement(map, "WMode");
+}
 
 static HPDF_Font
 load_font(struct doc *d, const char *path)
@@ -352,7 +544,10 @@ load_font(struct doc *d, const char *path)
 		doc_fail(d, "cannot load font %s", path);
 		return NULL;
 	}
-	return HPDF_GetFont(d->pdf, name, "UTF-8");
+	HPDF_Font f = HPDF_GetFont(d->pdf, name, "UTF-8");
+	if (f != NULL)
+		fix_to_unicode(d, f);
+	return f;
 }
 
 static HPDF_Font
@@ -451,6 +646,9 @@ doc_free(struct doc *d)
 		return;
 	if (d->pdf != NULL)
 		HPDF_Free(d->pdf);
+	for (int i = 0; i < d->n_toc; i++)
+		free(d->toc[i].text);
+	free(d->toc);
 	free(d->pages);
 	free(d->title);
 	free(d->mission);
@@ -575,6 +773,77 @@ bookmark(struct doc *d, int level, const char *text, double y)
 	HPDF_Outline_SetOpened(o, HPDF_FALSE);
 	if (level == 1)
 		d->outline_l1 = o;
+	if (level == 1 && d->toc_on) {
+		if (d->n_toc == d->cap_toc) {
+			d->cap_toc = d->cap_toc ? 2 * d->cap_toc : 16;
+			d->toc = xrealloc(d->toc, (size_t)d->cap_toc * sizeof *d->toc);
+		}
+		d->toc[d->n_toc++] = (struct toc_entry){ xstrdup(text), d->n_pages - 1, y };
+	}
+}
+
+/* Line height of the contents list. */
+#define TOC_LEADING 1.6
+
+int
+doc_contents(struct doc *d, const char *title, int n_rows)
+{
+	if (failed(d))
+		return -1;
+	if (d->toc_on) {
+		doc_fail(d, "contents placed twice");
+		return -1;
+	}
+	double lh = TOC_LEADING * d->tpl.font_size_pt;
+	double h = n_rows * lh + 3.0 * d->tpl.font_size_pt;
+	if (d->y - h < d->bottom && !d->at_top)
+		add_page(d);
+	doc_heading(d, 2, title != NULL ? title : "Contents");
+	d->toc_page = d->n_pages - 1;
+	d->toc_top = d->y;
+	d->toc_rows = n_rows;
+	d->toc_on = 1;
+	advance(d, fmin(n_rows * lh, d->y - d->bottom));
+	return failed(d) ? -1 : 0;
+}
+
+/* Fills the area doc_contents reserved: each heading, a dotted leader, its
+ * page number, the whole line a link to the heading. */
+static void
+draw_contents(struct doc *d)
+{
+	if (!d->toc_on)
+		return;
+	double size = d->tpl.font_size_pt, lh = TOC_LEADING * size;
+	char num[16];
+	d->page = d->pages[d->toc_page];
+	for (int i = 0; i < d->n_toc && i < d->toc_rows && !failed(d); i++) {
+		const struct toc_entry *e = &d->toc[i];
+		double y = d->toc_top - i * lh - size;
+		snprintf(num, sizeof num, "%d", e->page + 1);
+		double tw = width_of(d->font, size, e->text, strlen(e->text));
+		double nw = width_of(d->font, size, num, strlen(num));
+		put_text(d, d->font, size, d->left + 6.0, y, e->text, strlen(e->text), d->tpl.text);
+		put_text(d, d->font, size, d->right - nw, y, num, strlen(num), d->tpl.text);
+		HPDF_UINT16 dots[2] = { 1, 3 };
+		HPDF_Page_SetRGBStroke(d->page, (HPDF_REAL)d->tpl.muted.r, (HPDF_REAL)d->tpl.muted.g,
+		                       (HPDF_REAL)d->tpl.muted.b);
+		HPDF_Page_SetLineWidth(d->page, 0.6);
+		HPDF_Page_SetDash(d->page, dots, 2, 0);
+		HPDF_Page_MoveTo(d->page, (HPDF_REAL)(d->left + 6.0 + tw + 4.0), (HPDF_REAL)(y + 1.0));
+		HPDF_Page_LineTo(d->page, (HPDF_REAL)(d->right - nw - 4.0), (HPDF_REAL)(y + 1.0));
+		HPDF_Page_Stroke(d->page);
+		HPDF_Page_SetDash(d->page, NULL, 0, 0);
+		HPDF_Destination dst = HPDF_Page_CreateDestination(d->pages[e->page]);
+		if (dst == NULL)
+			continue;
+		HPDF_Destination_SetFitH(dst, (HPDF_REAL)fmin(e->y + 6.0, d->page_h));
+		HPDF_Rect rect = { (HPDF_REAL)d->left, (HPDF_REAL)(y - 0.3 * size),
+		                   (HPDF_REAL)d->right, (HPDF_REAL)(y + 0.9 * size) };
+		HPDF_Annotation an = HPDF_Page_CreateLinkAnnot(d->page, rect, dst);
+		if (an != NULL)
+			HPDF_LinkAnnot_SetBorderStyle(an, 0, 0, 0);
+	}
 }
 
 int
@@ -604,6 +873,7 @@ doc_heading(struct doc *d, int level, const char *text)
 		flow_text(d, d->bold, size, d->left, d->right, text,
 		          level == 2 ? d->tpl.primary : d->tpl.text);
 		d->y -= 0.25 * base;
+		d->after_heading = 1;
 	}
 	return failed(d) ? -1 : 0;
 }
@@ -788,9 +1058,12 @@ row_layout(struct doc *d, const struct tstate *ts, const char *const *cells,
 	return nl * ts->lh + 2 * CELL_PAD_Y;
 }
 
+/* Draws a laid-out row; web addresses in the cells (not the header) are
+ * drawn in the primary colour and made clickable. */
 static void
-row_draw(struct doc *d, const struct tstate *ts, const enum doc_cell *styles,
-         const struct lines *L, double h, const struct template_colour *bg, int header)
+row_draw(struct doc *d, const struct tstate *ts, const char *const *cells,
+         const enum doc_cell *styles, const struct lines *L, double h,
+         const struct template_colour *bg, int header)
 {
 	if (bg != NULL)
 		fill_rect(d, ts->x[0], d->y - h, ts->x[ts->t->n_cols] - ts->x[0], h, *bg);
@@ -799,10 +1072,16 @@ row_draw(struct doc *d, const struct tstate *ts, const enum doc_cell *styles,
 		double size = !header && styles[c] == DOC_CELL_MONO ? 0.92 * ts->size : ts->size;
 		struct template_colour k = header ? (struct template_colour){ 1, 1, 1 }
 		                                  : cell_colour(d, styles[c]);
-		for (int i = 0; i < L[c].n; i++)
-			put_aligned(d, f, size, ts->x[c] + CELL_PAD_X, ts->x[c + 1] - CELL_PAD_X,
-			            d->y - CELL_PAD_Y - i * ts->lh - 0.8 * ts->size - 0.5,
-			            L[c].v[i].s, L[c].v[i].len, ts->t->cols[c].align, k);
+		for (int i = 0; i < L[c].n; i++) {
+			const char *s = L[c].v[i].s;
+			size_t len = L[c].v[i].len;
+			int url = !header && line_is_url(cells[c], s, len);
+			double y = d->y - CELL_PAD_Y - i * ts->lh - 0.8 * ts->size - 0.5;
+			double x = put_aligned(d, f, size, ts->x[c] + CELL_PAD_X, ts->x[c + 1] - CELL_PAD_X,
+			                       y, s, len, ts->t->cols[c].align, url ? d->tpl.primary : k);
+			if (!header)
+				link_line(d, f, size, x, y, cells[c], s, len);
+		}
 	}
 	advance(d, h);
 }
@@ -823,9 +1102,101 @@ static void
 header_draw(struct doc *d, const struct tstate *ts, struct lines *L)
 {
 	enum doc_cell st[64];
+	const char *titles[64];
 	double h = header_layout(d, ts, L, st);
-	row_draw(d, ts, st, L, h, &d->tpl.primary, 1);
+	for (int c = 0; c < ts->t->n_cols; c++)
+		titles[c] = ts->t->cols[c].title != NULL ? ts->t->cols[c].title : "";
+	row_draw(d, ts, titles, st, L, h, &d->tpl.primary, 1);
 }
+
+/* The widest piece of text that cannot be broken, in points: words are
+ * separated by spaces and line breaks (a no-break space joins), and a word
+ * may also break after a '/' or '-' (word_cut), so a web address or a part
+ * id counts by its longest piece. */
+static double
+widest_word(HPDF_Font f, double size, const char *text)
+{
+	double best = 0.0;
+	const char *p = text;
+	while (*p != '\0') {
+		size_t n = strcspn(p, " \n");
+		const char *a = p, *e = p + n;
+		for (const char *c = p; c < e; c++) {
+			if (breaks_after(p, c, e) || c + 1 == e) {
+				best = fmax(best, width_of(f, size, a, (size_t)(c + 1 - a)));
+				a = c + 1;
+			}
+		}
+		p = e;
+		if (*p != '\0')
+			p++;
+	}
+	return best;
+}
+
+/* Column edges: the caller's weights share the text width, then every
+ * column is widened to its widest word (a number with its unit, a part
+ * number) where the others have room to give, so that a number is never
+ * cut across two lines.  A word wider than MAX_WORD_SHARE of the table (a
+ * web address) still wraps, at '/' or '-' (word_cut). */
+#define MAX_WORD_SHARE 0.45
+static void
+column_edges(struct doc *d, struct tstate *ts)
+{
+	const struct doc_table *t = ts->t;
+	double total = d->right - d->left, wsum = 0.0;
+	double w[64], need[64];
+	for (int c = 0; c < t->n_cols; c++)
+		wsum += t->cols[c].weight > 0 ? t->cols[c].weight : 1.0;
+	for (int c = 0; c < t->n_cols; c++) {
+		w[c] = total * (t->cols[c].weight > 0 ? t->cols[c].weight : 1.0) / wsum;
+		need[c] = t->no_header ? 0.0
+		        : widest_word(d->bold, ts->size, t->cols[c].title != NULL ? t->cols[c].title : "");
+	}
+	for (int i = 0; i < t->n_cells; i++) {
+		int c = i % t->n_cols;
+		enum doc_cell st = (enum doc_cell)t->styles[i];
+		if (t->total_row && i >= t->n_cells - t->n_cols && st == DOC_CELL_NORMAL)
+			st = DOC_CELL_BOLD;   /* as doc_table draws it */
+		double size = st == DOC_CELL_MONO ? 0.92 * ts->size : ts->size;
+		need[c] = fmax(need[c], widest_word(cell_font(d, st), size, t->cells[i]));
+	}
+	double short_by = 0.0, spare = 0.0;
+	for (int c = 0; c < t->n_cols; c++) {
+		need[c] = fmin(need[c] + 2 * CELL_PAD_X + 0.5, MAX_WORD_SHARE * total);
+		if (need[c] > w[c])
+			short_by += need[c] - w[c];
+		else
+			spare += w[c] - need[c];
+	}
+	if (short_by > 0.0 && spare > 0.0) {
+		/* Give each short column what it needs, taking it from the
+		 * others in proportion to their room; if the room is not
+		 * enough, the short columns share what there is. */
+		double give = fmin(1.0, spare / short_by), take = fmin(1.0, short_by / spare);
+		for (int c = 0; c < t->n_cols; c++)
+			w[c] += need[c] > w[c] ? give * (need[c] - w[c]) : -take * (w[c] - need[c]);
+	}
+	ts->x[0] = d->left;
+	for (int c = 0; c < t->n_cols; c++)
+		ts->x[c + 1] = ts->x[c] + w[c];
+}
+
+/* Row r's cells and their styles as drawn (a total row in bold). */
+static void
+row_cells(const struct doc_table *t, int r, int n_rows, const char **cells, enum doc_cell *st)
+{
+	int total = t->total_row && r == n_rows - 1;
+	for (int c = 0; c < t->n_cols; c++) {
+		cells[c] = t->cells[r * t->n_cols + c];
+		st[c] = (enum doc_cell)t->styles[r * t->n_cols + c];
+		if (total && st[c] == DOC_CELL_NORMAL)
+			st[c] = DOC_CELL_BOLD;
+	}
+}
+
+/* Tables up to this share of the text block are never split. */
+#define SHORT_TABLE_SHARE 0.3
 
 int
 doc_table(struct doc *d, const struct doc_table *t)
@@ -838,17 +1209,11 @@ doc_table(struct doc *d, const struct doc_table *t)
 	}
 	struct tstate ts = { .t = t, .size = TABLE_SCALE * d->tpl.font_size_pt };
 	ts.lh = ts.size * 1.25;
-	double wsum = 0.0;
-	for (int c = 0; c < t->n_cols; c++)
-		wsum += t->cols[c].weight > 0 ? t->cols[c].weight : 1.0;
-	ts.x[0] = d->left;
-	for (int c = 0; c < t->n_cols; c++)
-		ts.x[c + 1] = ts.x[c] + (d->right - d->left) *
-		              (t->cols[c].weight > 0 ? t->cols[c].weight : 1.0) / wsum;
 	if (t->n_cells % t->n_cols != 0) {
 		doc_fail(d, "table: %d cells do not fill rows of %d columns", t->n_cells, t->n_cols);
 		return -1;
 	}
+	column_edges(d, &ts);
 	struct lines *L = xcalloc((size_t)t->n_cols, sizeof *L);
 	int n_rows = t->n_cells / t->n_cols;
 	enum doc_cell hst[64];
@@ -856,18 +1221,28 @@ doc_table(struct doc *d, const struct doc_table *t)
 	struct template_colour zebra = mix_white(d->tpl.grid, 0.35);
 	const char **cells = xmalloc((size_t)t->n_cols * sizeof *cells);
 	enum doc_cell *st = xmalloc((size_t)t->n_cols * sizeof *st);
+	double *rh = xmalloc((size_t)(n_rows > 0 ? n_rows : 1) * sizeof *rh);
+	double all = hh;
+	for (int r = 0; r < n_rows; r++) {
+		row_cells(t, r, n_rows, cells, st);
+		rh[r] = row_layout(d, &ts, cells, st, L);
+		all += rh[r];
+	}
+	/* A short table is kept whole on the next page rather than split,
+	 * unless a heading on this page announces it (the heading has kept
+	 * room for its first rows, and would be left alone). */
+	if (!d->at_top && !d->after_heading && d->y - all < d->bottom &&
+	    all <= SHORT_TABLE_SHARE * (d->top - d->bottom))
+		add_page(d);
 	int need_header = !t->no_header;
 	for (int r = 0; r < n_rows && !failed(d); r++) {
 		int total = t->total_row && r == n_rows - 1;
-		for (int c = 0; c < t->n_cols; c++) {
-			cells[c] = t->cells[r * t->n_cols + c];
-			st[c] = (enum doc_cell)t->styles[r * t->n_cols + c];
-			if (total && st[c] == DOC_CELL_NORMAL)
-				st[c] = DOC_CELL_BOLD;
-		}
+		row_cells(t, r, n_rows, cells, st);
 		double h = row_layout(d, &ts, cells, st, L);
 		double head = need_header ? hh : 0.0;
-		if (d->y - head - h < d->bottom && !d->at_top) {
+		/* A total row never stands alone: the row before it goes along. */
+		double keep = t->total_row && r == n_rows - 2 ? rh[r + 1] : 0.0;
+		if (d->y - head - h - keep < d->bottom && !d->at_top) {
 			add_page(d);
 			need_header = !t->no_header;   /* repeat the header on the new page */
 		}
@@ -878,7 +1253,7 @@ doc_table(struct doc *d, const struct doc_table *t)
 		}
 		if (total)
 			hrule(d, ts.x[0], ts.x[t->n_cols], d->y, 0.8, d->tpl.text);
-		row_draw(d, &ts, st, L, h, (!t->no_zebra && r % 2 == 1 && !total) ? &zebra : NULL, 0);
+		row_draw(d, &ts, cells, st, L, h, (!t->no_zebra && r % 2 == 1 && !total) ? &zebra : NULL, 0);
 	}
 	if (n_rows == 0 && need_header)
 		header_draw(d, &ts, L);
@@ -889,6 +1264,7 @@ doc_table(struct doc *d, const struct doc_table *t)
 	free(L);
 	free(cells);
 	free(st);
+	free(rh);
 	return failed(d) ? -1 : 0;
 }
 
@@ -1009,6 +1385,7 @@ doc_save_mem(struct doc *d, unsigned char **out, size_t *n)
 	if (failed(d))
 		return -1;
 	d->saved = 1;
+	draw_contents(d);
 	decorate_pages(d);
 	if (failed(d) || HPDF_SaveToStream(d->pdf) != HPDF_OK || failed(d))
 		return -1;
