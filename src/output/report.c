@@ -106,6 +106,21 @@ report_record_name(const struct rep *rp)
 	return rp->buildable ? REP_NAME_RECORD : "Continuous design (not buildable)";
 }
 
+const char *
+report_continuous_name(const struct rep *rp)
+{
+	if (!rp->buildable)
+		return "Continuous design (not buildable)";
+	return rp->rec_ok ? REP_NAME_CONTINUOUS : REP_NAME_CONTINUOUS " (not buildable)";
+}
+
+const char *
+report_continuous_heading(const struct rep *rp, struct strbuf *sb, const char *what)
+{
+	return report_sfmt(sb, "%s (%s%s)", rp->buildable ? REP_NAME_CONTINUOUS : "Continuous design", what,
+	                   rp->rec_ok ? "" : "; not buildable");
+}
+
 double
 report_mtow(const struct rep *rp)
 {
@@ -136,6 +151,15 @@ report_price(const struct rep *rp, struct strbuf *sb)
 		strbuf_printf(sb, "≥" NBSP "%s" NBSP "USD, %d of %d lines unpriced",
 		              report_num(b, sizeof b, r->bom_price_usd, 2), lines - priced, lines);
 	return strbuf_str(sb);
+}
+
+const struct res_check *
+report_find_check(const struct res_run *run, const char *prefix)
+{
+	for (int i = 0; i < run->n_checks && i < RES_MAX_CHECKS; i++)
+		if (strncmp(run->checks[i].name, prefix, strlen(prefix)) == 0)
+			return &run->checks[i];
+	return NULL;
 }
 
 /* ---- headings, lists, small tables ---------------------------------------- */

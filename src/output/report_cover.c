@@ -125,7 +125,7 @@ cover_key_figures(struct rep *rp)
 	report_subheading(rp, "Key figures", REP_KEEP_PT);
 	struct doc_column cols[3] = {
 		{ "", 2.1, DOC_ALIGN_LEFT }, { report_record_name(rp), 1.6, DOC_ALIGN_RIGHT },
-		{ "Continuous optimum", 1.6, DOC_ALIGN_RIGHT },
+		{ report_continuous_name(rp), 1.6, DOC_ALIGN_RIGHT },
 	};
 	struct doc_table t;
 	doc_table_init(&t, cols, rp->buildable ? 3 : 2);
@@ -451,7 +451,7 @@ report_sec_summary(struct rep *rp, const char *title)
 
 	struct doc_column cols[4] = {
 		{ "Quantity", 2.6, DOC_ALIGN_LEFT }, { report_record_name(rp), 1.2, DOC_ALIGN_RIGHT },
-		{ REP_NAME_CONTINUOUS, 1.2, DOC_ALIGN_RIGHT }, { REP_NAME_BASELINE, 1.0, DOC_ALIGN_RIGHT },
+		{ report_continuous_name(rp), 1.2, DOC_ALIGN_RIGHT }, { REP_NAME_BASELINE, 1.0, DOC_ALIGN_RIGHT },
 	};
 	if (!rp->buildable)
 		cols[2] = cols[3];
@@ -490,9 +490,9 @@ report_sec_summary(struct rep *rp, const char *title)
 	if (r->parts_selected) {
 		parts_table(rp);
 		struct strbuf price = STRBUF_INIT;
-		doc_paragraph(rp->d, report_sfmt(&sb, "%s Bill of materials: %s for %s" NBSP "kg of catalogue and "
-		              "custom parts; the payload (%s" NBSP "kg) is furnished by the customer.", REP_J_NOTE,
-		              report_price(rp, &price), report_num(b1, sizeof b1, r->bom_mass_kg, 3),
+		doc_paragraph(rp->d, report_sfmt(&sb, "%s The bill of materials holds %s" NBSP "kg of catalogue and "
+		              "custom parts at %s; the payload (%s" NBSP "kg) is furnished by the customer.",
+		              REP_J_NOTE, report_num(b1, sizeof b1, r->bom_mass_kg, 3), report_price(rp, &price),
 		              report_num(b2, sizeof b2, report_mtow(rp) - r->bom_mass_kg, 3)));
 		strbuf_free(&price);
 	} else {
@@ -505,9 +505,9 @@ report_sec_summary(struct rep *rp, const char *title)
 	report_subheading(rp, "Role overhead (continuous designs)", 240.0);
 	doc_paragraph(rp->d, report_sfmt(&sb, "As in the paper's dual run: what the %s role adds to the "
 	              "continuous optimum over the dead-weight baseline, item by item.", report_role_name(r)));
-	static const struct doc_column ocols[] = {
+	const struct doc_column ocols[] = {
 		{ "Mass item", 2.6, DOC_ALIGN_LEFT }, { REP_NAME_BASELINE, 1.1, DOC_ALIGN_RIGHT },
-		{ REP_NAME_CONTINUOUS, 1.3, DOC_ALIGN_RIGHT }, { "Overhead", 1.0, DOC_ALIGN_RIGHT },
+		{ report_continuous_name(rp), 1.3, DOC_ALIGN_RIGHT }, { "Overhead", 1.0, DOC_ALIGN_RIGHT },
 	};
 	doc_table_init(&t, ocols, 4);
 	for (int i = 0; i < report_n_mass_items; i++) {
@@ -552,14 +552,19 @@ report_sec_rationale(struct rep *rp, const char *title)
 		report_subheading(rp, "Violations", REP_KEEP_PT);
 		report_violations(rp);
 		report_subheading(rp, "Solver decisions", REP_KEEP_PT);
-	} else {
-		doc_paragraph(rp->d, "Each decision the solver took, in the order it took them.");
 	}
+	doc_paragraph(rp->d, "Each decision the solver took, in the order it took them: first the continuous "
+	              "optimum (what the physics asks for), then the catalogue parts that build the design of "
+	              "record.");
 	const char *items[RES_MAX_RATIONALE];
-	int n = r->n_rationale < RES_MAX_RATIONALE ? r->n_rationale : RES_MAX_RATIONALE;
-	for (int i = 0; i < n; i++)
+	int n = r->n_rationale < RES_MAX_RATIONALE ? r->n_rationale : RES_MAX_RATIONALE, has_j = 0;
+	for (int i = 0; i < n; i++) {
 		items[i] = r->rationale[i];
+		has_j |= strstr(items[i], "J = ") != NULL;
+	}
 	if (n == 0)
 		doc_paragraph(rp->d, "The solver recorded no decisions.");
 	report_numbered(rp, items, n, 1);
+	if (has_j)
+		doc_paragraph(rp->d, REP_J_NOTE);
 }

@@ -134,8 +134,7 @@ sweep_figure(struct rep *rp)
 	if (vtop > 0)
 		plot_axis_range(pp, PLOT_X, 0, vtop + 1.0);
 	sweep_line(pp, &r->baseline, REP_NAME_BASELINE, REP_COL_BASELINE);
-	sweep_line(pp, &r->custom, rp->buildable ? REP_NAME_CONTINUOUS : "Continuous design (not buildable)",
-	           REP_COL_CUSTOM);
+	sweep_line(pp, &r->custom, report_continuous_name(rp), REP_COL_CUSTOM);
 	if (rp->buildable)
 		sweep_line(pp, rec, REP_NAME_RECORD, REP_COL_CLOSED);
 	if (rec->v_min_power_ms > 0)
@@ -190,7 +189,7 @@ report_sec_mission(struct rep *rp, const char *title)
 	if (rec->n_sweep > 0 || r->custom.n_sweep > 0 || r->baseline.n_sweep > 0)
 		sweep_figure(rp);
 	if (rp->buildable) {
-		report_subheading(rp, "Continuous optimum (reference)", REP_PHASE_PT);
+		report_subheading(rp, report_continuous_heading(rp, &sb, "reference"), REP_PHASE_PT);
 		phase_table(rp, &r->custom);
 	}
 	report_subheading(rp, "Baseline (dead-weight reference)", REP_PHASE_PT);
@@ -301,7 +300,7 @@ report_sec_thermal(struct rep *rp, const char *title)
 	const struct res_run *rec = rp->rec;
 	const struct res_perf *pf = &rec->perf;
 	struct strbuf sb = STRBUF_INIT, s2 = STRBUF_INIT, s3 = STRBUF_INIT;
-	char b1[48], b2[48], b3[48];
+	char b1[48], b2[48], b3[48], b4[48];
 	report_heading(rp, title);
 	int n = dmin_i(rec->n_trace, RES_MAX_TRACE);
 	char end[RES_TEXT];
@@ -366,9 +365,16 @@ report_sec_thermal(struct rep *rp, const char *title)
 	           report_sfmt(&sb, "%s" NBSP "V", report_num(b1, sizeof b1, rec->min_terminal_voltage_v, 2)),
 	           report_sfmt(&s2, "≥" NBSP "%s" NBSP "V (floor)", report_num(b2, sizeof b2, rec->voltage_floor_v, 2)),
 	           report_sfmt(&s3, "%s" NBSP "V", report_num(b3, sizeof b3, dv, 2)), dv < 0);
+	/* The pack's burst rating, where the parts search checked it. */
+	const struct res_check *burst = report_find_check(rec, "Battery current, full throttle");
 	margin_row(&t, "Full-throttle battery current",
-	           report_sfmt(&sb, "%s" NBSP "A", report_num(b1, sizeof b1, rec->peak_current_a, 1)),
-	           report_sfmt(&s2, "%s" NBSP "C", report_num(b2, sizeof b2, rec->peak_c_rate, 1)), "—", 0);
+	           report_sfmt(&sb, "%s" NBSP "A (%s" NBSP "C)", report_num(b1, sizeof b1, rec->peak_current_a, 1),
+	                       report_num(b2, sizeof b2, rec->peak_c_rate, 1)),
+	           burst != NULL ? report_sfmt(&s2, "≤" NBSP "%s" NBSP "A (burst rating)",
+	                                       report_num(b3, sizeof b3, burst->limit, 0)) : "—",
+	           burst != NULL ? report_sfmt(&s3, "%s" NBSP "A", report_num(b4, sizeof b4,
+	                                       burst->limit - rec->peak_current_a, 0)) : "—",
+	           burst != NULL && !burst->pass);
 	doc_table(rp->d, &t);
 	doc_table_clear(&t);
 	strbuf_free(&sb);
@@ -483,7 +489,7 @@ report_sec_structure(struct rep *rp, const char *title)
 	doc_table_init(&t, cols, 10);
 	arm_row(&t, report_record_name(rp), rec);
 	if (rp->buildable)
-		arm_row(&t, REP_NAME_CONTINUOUS, &r->custom);
+		arm_row(&t, report_continuous_name(rp), &r->custom);
 	arm_row(&t, REP_NAME_BASELINE, &r->baseline);
 	doc_table(rp->d, &t);
 	doc_table_clear(&t);
@@ -559,7 +565,7 @@ report_sec_convergence(struct rep *rp, const char *title)
 	                                    ? r->baseline.n_history : r->custom.n_history);
 	int mk = n_max <= 80;
 	history_series(pp, &r->baseline, REP_NAME_BASELINE, REP_COL_BASELINE, mk ? PLOT_MARKER_CIRCLE : PLOT_MARKER_NONE);
-	history_series(pp, &r->custom, REP_NAME_CONTINUOUS, REP_COL_CUSTOM, mk ? PLOT_MARKER_SQUARE : PLOT_MARKER_NONE);
+	history_series(pp, &r->custom, report_continuous_name(rp), REP_COL_CUSTOM, mk ? PLOT_MARKER_SQUARE : PLOT_MARKER_NONE);
 	if (rp->buildable && rec->mass.total_kg > 0) {
 		plot_hline(pp, rec->mass.total_kg, "design of record (closed on real parts)", REP_COL_CLOSED,
 		           PLOT_DASH_DASHED);
@@ -578,7 +584,7 @@ report_sec_convergence(struct rep *rp, const char *title)
 	struct doc_table t;
 	doc_table_init(&t, cols, 6);
 	conv_row(&t, REP_NAME_BASELINE, &r->baseline);
-	conv_row(&t, rp->buildable ? REP_NAME_CONTINUOUS : "Continuous design", &r->custom);
+	conv_row(&t, report_continuous_name(rp), &r->custom);
 	if (rp->buildable) {
 		doc_table_cell(&t, DOC_CELL_NORMAL, "%s", REP_NAME_RECORD);
 		doc_table_cell(&t, DOC_CELL_MUTED, "—");
@@ -655,7 +661,7 @@ report_sec_endurance(struct rep *rp, const char *title)
 	plot_axis_title(pm, PLOT_X, "Battery capacity scale");
 	plot_axis_title(pm, PLOT_Y, "Takeoff mass (kg)");
 	endurance_series(pt, pm, &r->baseline, REP_NAME_BASELINE, REP_COL_BASELINE);
-	endurance_series(pt, pm, c, REP_NAME_CONTINUOUS, REP_COL_CUSTOM);
+	endurance_series(pt, pm, c, report_continuous_name(rp), REP_COL_CUSTOM);
 	/* The design point as a marker on the curves (its label would collide
 	 * with the inflection line's, which often sits close to 1). */
 	plot_vline(pt, 1.0, NULL, PLOT_COLOUR_ACCENT, PLOT_DASH_DASHED);

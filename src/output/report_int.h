@@ -103,6 +103,17 @@ const char *report_delta(const struct rep *rp, char *buf, size_t n, double kg);
  * record", or "Continuous design (not buildable)" when no parts closed. */
 const char *report_record_name(const struct rep *rp);
 
+/* The name of the continuous optimum where it is shown beside the
+ * record: "Continuous optimum", with "(not buildable)" when the record
+ * fails its checks (no parts build it either), or "Continuous design (not
+ * buildable)" when it stands in for the record. */
+const char *report_continuous_name(const struct rep *rp);
+
+/* A heading for the continuous design, "Continuous optimum (what)", with
+ * "; not buildable" inside the brackets when report_continuous_name()
+ * says so; written into sb, returned. */
+const char *report_continuous_heading(const struct rep *rp, struct strbuf *sb, const char *what);
+
 /* The takeoff mass of record: the bill of materials plus the payload
  * (the engine's invariant makes it the record's takeoff mass), or the
  * continuous design's when nothing is buildable. */
@@ -111,6 +122,9 @@ double report_mtow(const struct rep *rp);
  * USD", "≥ 1199.96 USD, 11 of 12 lines unpriced", or "not known (none of
  * the 12 lines has a price)"; written into sb, returned. */
 const char *report_price(const struct rep *rp, struct strbuf *sb);
+
+/* The check of run whose name starts with prefix, or NULL. */
+const struct res_check *report_find_check(const struct res_run *run, const char *prefix);
 
 /* A label/value table with a narrow label column; values from mono_from
  * on (>= 0) in the monospace font (fingerprints). */

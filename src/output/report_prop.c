@@ -367,16 +367,6 @@ performance(struct rep *rp)
 
 /* ---- feasibility gates ------------------------------------------------------------- */
 
-/* The record's check whose name starts with prefix, or NULL. */
-static const struct res_check *
-find_check(const struct res_run *run, const char *prefix)
-{
-	for (int i = 0; i < run->n_checks && i < RES_MAX_CHECKS; i++)
-		if (strncmp(run->checks[i].name, prefix, strlen(prefix)) == 0)
-			return &run->checks[i];
-	return NULL;
-}
-
 /* The propulsion gates as the record's checks recorded them: rotor
  * overlap, tip Mach, the propeller's speed limit, and downwash only where
  * the role limits it. */
@@ -397,7 +387,7 @@ gate_table(struct rep *rp)
 	struct doc_table t;
 	doc_table_init(&t, cols, 4);
 	for (size_t k = 0; k < sizeof gates / sizeof gates[0]; k++) {
-		const struct res_check *ck = find_check(rp->rec, gates[k][0]);
+		const struct res_check *ck = report_find_check(rp->rec, gates[k][0]);
 		if (ck == NULL)
 			continue;   /* not a limit of this role or these parts */
 		doc_table_cell(&t, DOC_CELL_NORMAL, "%s", gates[k][1]);
@@ -424,7 +414,9 @@ report_sec_propulsion(struct rep *rp, const char *title)
 	} else {
 		doc_callout(rp->d, DOC_CALLOUT_FAIL, "NOT BUILDABLE", report_no_parts_reason(rp));
 	}
-	report_subheading(rp, "Continuous optimum (what the physics asks for)", REP_KEEP_PT);
+	struct strbuf sb = STRBUF_INIT;
+	report_subheading(rp, report_continuous_heading(rp, &sb, "what the physics asks for"), REP_KEEP_PT);
+	strbuf_free(&sb);
 	doc_paragraph(rp->d, "The sizing loop's continuous design; the parts search looks for catalogue parts "
 	              "that close the lightest aircraft around it.");
 	optimum_table(rp);

@@ -35,7 +35,7 @@ report_sec_mass(struct rep *rp, const char *title)
 	report_heading(rp, title);
 	const struct res_run *runs[3] = { b, c, rec };
 	int n_bars = rp->buildable ? 3 : 2;
-	static const char *const bar_labels[3] = { REP_NAME_BASELINE, REP_NAME_CONTINUOUS, REP_NAME_RECORD };
+	const char *const bar_labels[3] = { REP_NAME_BASELINE, report_continuous_name(rp), REP_NAME_RECORD };
 	const char *stack_labels[16];
 	double v[3 * 16];
 	for (int i = 0; i < n_it; i++)
@@ -64,7 +64,7 @@ report_sec_mass(struct rep *rp, const char *title)
 	struct doc_column cols[7] = {
 		{ "Mass item", 2.3, DOC_ALIGN_LEFT },
 		{ report_record_name(rp), 1.1, DOC_ALIGN_RIGHT }, { "%", 0.6, DOC_ALIGN_RIGHT },
-		{ REP_NAME_CONTINUOUS, 1.1, DOC_ALIGN_RIGHT }, { "%", 0.6, DOC_ALIGN_RIGHT },
+		{ report_continuous_name(rp), 1.1, DOC_ALIGN_RIGHT }, { "%", 0.6, DOC_ALIGN_RIGHT },
 		{ REP_NAME_BASELINE, 1.0, DOC_ALIGN_RIGHT }, { "%", 0.6, DOC_ALIGN_RIGHT },
 	};
 	const struct res_run *shown[3] = { rec, c, b };
@@ -349,7 +349,8 @@ report_sec_checks(struct rep *rp, const char *title)
 	              "it holds by construction. Only the limits that apply to this role are checked.");
 	checks_table(rp, rp->rec, 1);
 	if (rp->buildable) {
-		report_subheading(rp, "Continuous optimum (reference: what the physics asks for)", REP_KEEP_PT);
+		report_subheading(rp, report_continuous_heading(rp, &sb, "reference: what the physics asks for"),
+		                  REP_KEEP_PT);
 		checks_table(rp, &r->custom, 1);
 	}
 	report_subheading(rp, "Baseline (reference: the paper's dead-weight run)", REP_KEEP_PT);
