@@ -384,6 +384,28 @@ report_unbuildable_design_should_render_the_continuous_design_as_such(void **sta
 	free(bytes);
 }
 
+/* The calibration's accuracy and the interval on the takeoff mass are
+ * quoted once the engine fills them (cover row, assumptions paragraph). */
+static void
+report_accuracy_and_interval_should_render_when_valid(void **state)
+{
+	struct fixture *fx = *state;
+	unsigned char *bytes;
+	size_t n;
+	struct solve_result *r = solve(fx, "lidar_mapping_quad", -1, &bytes, &n);
+	r->accuracy = (struct res_accuracy){ .valid = true, .n_rows = 37, .mape = 0.1237,
+	                                     .battery_mape = 0.1911, .level = 0.90, .ratio_lo = 0.83,
+	                                     .ratio_hi = 1.21, .coverage = 0.892 };
+	bool buildable;
+	double m = res_record(r, &buildable)->mass.total_kg;
+	r->mtow_interval = (struct res_interval){ .valid = true, .level = 0.90, .lo_kg = 0.83 * m,
+	                                          .hi_kg = 1.21 * m };
+	int pages = render_and_check(fx, r, "lidar_mapping_quad", "accuracy", bytes, n);
+	assert_in_range(pages, MIN_PAGES, MAX_PAGES);
+	free(r);
+	free(bytes);
+}
+
 static void
 res_eu_class_should_follow_the_mass_limits(void **state)
 {
@@ -406,6 +428,7 @@ main(void)
 		cmocka_unit_test(report_mtow_should_be_the_bom_plus_the_payload_and_the_record_mass),
 		cmocka_unit_test(report_price_should_be_a_lower_bound_never_a_zero),
 		cmocka_unit_test(report_unbuildable_design_should_render_the_continuous_design_as_such),
+		cmocka_unit_test(report_accuracy_and_interval_should_render_when_valid),
 		cmocka_unit_test(report_every_example_should_render_reproducibly),
 		cmocka_unit_test(report_infeasible_design_should_still_get_a_full_dossier),
 		cmocka_unit_test(report_selected_parts_should_render),

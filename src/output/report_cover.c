@@ -73,6 +73,9 @@ cover_status(struct rep *rp)
 		            "bill of materials to build from. The figures in this dossier are those of the "
 		            "continuous design: what the physics asks for, which cannot be bought as "
 		            "specified. %s", report_no_parts_reason(rp));
+		if (n_fail > 0)
+			strbuf_printf(&sb, " The continuous design itself fails %d of its %d checks (see the "
+			              "checks section).", n_fail, rec->n_checks);
 		doc_callout(rp->d, DOC_CALLOUT_FAIL, "NOT BUILDABLE", strbuf_str(&sb));
 	} else if (!rec->feasible) {
 		strbuf_reset(&sb);

@@ -427,8 +427,9 @@ report_sec_propulsion(struct rep *rp, const char *title)
 	motor_figure(rp);
 
 	/* The table with its heading and note is about 330 pt: keep it whole. */
-	report_subheading(rp, "Operating points on the real parts", 330.0);
-	if (rp->buildable && rec->perf.valid) {
+	int ops = rp->buildable && rec->perf.valid;
+	report_subheading(rp, "Operating points on the real parts", ops ? 330.0 : REP_KEEP_PT);
+	if (ops) {
 		doc_paragraph(rp->d, "Hover, climb and cruise at the mission's takeoff mass, full throttle on the "
 		              "pack's terminal voltage under load: the motor's own KV, resistance and no-load "
 		              "current on the propeller's own coefficients. Thrust per electrical watt is the "
