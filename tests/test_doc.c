@@ -13,7 +13,7 @@
 #include "cli/cli.h"
 #include "core/template.h"
 
-#define DEMO_PAGES 8   /* pages of the demo document, checked by eye */
+#define DEMO_PAGES 9   /* pages of the demo document, checked by eye */
 
 static const char lorem[] =
 	"The custom run sizes the aircraft with the role applied: the spray "
@@ -198,6 +198,31 @@ fig_degenerate(struct doc *d)
 	plot_free(p);
 }
 
+/* Numbers, units and a web address in columns narrower than their
+ * words: the columns widen to the numbers, a number keeps its unit
+ * (no-break space), the address wraps only after '/' or '-' and is a link. */
+static void
+narrow_table(struct doc *d)
+{
+	static const struct doc_column cols[] = {
+		{ "Part", 1.0, DOC_ALIGN_LEFT }, { "Maker's page", 1.2, DOC_ALIGN_LEFT },
+		{ "Mass", 0.25, DOC_ALIGN_RIGHT }, { "Price (USD)", 0.25, DOC_ALIGN_RIGHT },
+	};
+	struct doc_table t;
+	doc_table_init(&t, cols, 4);
+	for (int i = 0; i < 3; i++) {
+		doc_table_cell(&t, DOC_CELL_NORMAL, "Motor %d with a description long enough to wrap", i + 1);
+		doc_table_cell(&t, DOC_CELL_MUTED, "https://example.com/products/motors/long-name-of-the-motor-%d", i + 1);
+		doc_table_cell(&t, DOC_CELL_NORMAL, "%.2f\xc2\xa0kg", 3340.25 + i);
+		doc_table_cell(&t, DOC_CELL_NORMAL, "\xe2\x89\xa5\xc2\xa0%.2f", 1199.96 + i);
+	}
+	const char *total[] = { "Total", "", "10023.75\xc2\xa0kg", "\xe2\x89\xa5\xc2\xa0" "3602.88" };
+	doc_table_row(&t, total);
+	t.total_row = 1;
+	doc_table(d, &t);
+	doc_table_clear(&t);
+}
+
 /* Builds the demo into memory; returns 0 and the bytes, or -1. */
 static int
 build_demo(const struct template *tpl, unsigned char **pdf, size_t *n, int *pages)
@@ -215,6 +240,7 @@ build_demo(const struct template *tpl, unsigned char **pdf, size_t *n, int *page
 	doc_kv_table(d, kv, 5);
 	doc_callout(d, DOC_CALLOUT_FAIL, "INFEASIBLE", "(demo of the other verdict style)");
 	doc_callout(d, DOC_CALLOUT_WARN, NULL, "A warning callout without a title.");
+	doc_contents(d, "Contents", 4);
 
 	doc_heading(d, 1, "1  Executive summary");
 	doc_paragraph(d, lorem);
@@ -241,6 +267,7 @@ build_demo(const struct template *tpl, unsigned char **pdf, size_t *n, int *page
 	fig_degenerate(d);
 
 	doc_heading(d, 1, "3  Bill of materials");
+	narrow_table(d);
 	static const struct doc_column cols[] = {
 		{ "Item", 0.6, DOC_ALIGN_RIGHT }, { "Part", 3.0, DOC_ALIGN_LEFT },
 		{ "Qty", 0.6, DOC_ALIGN_RIGHT }, { "Mass (g)", 1.1, DOC_ALIGN_RIGHT },

@@ -226,6 +226,45 @@ plot_should_render_bars_and_tornado_with_bad_values(void **state)
 	plot_free(NULL);
 }
 
+/* The thermal page's collisions: the state of charge lands on the reserve
+ * line right where its label would go, the runaway-limit label sits where
+ * the phase labels run down from the top, two phase lines stand close. */
+static void
+plot_labels_should_cover_neither_each_other_nor_the_data(void **state)
+{
+	(void)state;
+	double t[40], soc[40], temp[40];
+	for (int i = 0; i < 40; i++) {
+		t[i] = 40.0 * i;
+		soc[i] = 100.0 - 83.3 * i / 39.0;        /* lands at the reserve */
+		temp[i] = 20.0 + 38.5 * i / 39.0;        /* climbs to the limit */
+	}
+	struct plot *p = plot_alloc(400, 300, 2, 1);
+	struct plot_panel *a = plot_panel(p, 0, 0), *s = plot_panel(p, 1, 0);
+	plot_line(a, t, temp, 40, NULL, 1, PLOT_DASH_SOLID);
+	plot_hline(a, 60.0, "60 °C runaway limit", PLOT_COLOUR_FAIL, PLOT_DASH_DASHED);
+	plot_vline(a, 1500.0, "forward", PLOT_COLOUR_MUTED, PLOT_DASH_DOTTED);
+	plot_vline(a, 1530.0, "hover", PLOT_COLOUR_MUTED, PLOT_DASH_DOTTED);
+	plot_line(s, t, soc, 40, NULL, 1, PLOT_DASH_SOLID);
+	plot_axis_range(s, PLOT_Y, 0, 100);
+	plot_hline(s, 16.7, "reserve 17 %", PLOT_COLOUR_WARN, PLOT_DASH_DASHED);
+	plot_crosshair(s, 1400.0, 30.0, "continuous optimum", PLOT_COLOUR_ACCENT);
+	plot_point_label(s, 1400.0, 30.0, "chosen part (J = -14.1 %)");
+	plot_keep_label_boxes(p);
+	assert_true(render_alone(p) > 0);
+	const struct plot_label_box *b;
+	int n = plot_label_boxes(p, &b);
+	assert_int_equal(n, 6);
+	for (int i = 0; i < n; i++) {
+		assert_int_equal(b[i].overlaps, 0);
+		assert_int_equal(b[i].data_hits, 0);
+		for (int k = 0; k < i; k++)
+			assert_false(b[i].panel == b[k].panel && b[i].x0 < b[k].x1 && b[k].x0 < b[i].x1 &&
+			             b[i].y0 < b[k].y1 && b[k].y0 < b[i].y1);
+	}
+	plot_free(p);
+}
+
 int
 main(void)
 {
@@ -239,6 +278,7 @@ main(void)
 		cmocka_unit_test(scale_should_map_data_to_page),
 		cmocka_unit_test(plot_should_skip_non_finite_points_and_draw_empty_panels),
 		cmocka_unit_test(plot_should_render_bars_and_tornado_with_bad_values),
+		cmocka_unit_test(plot_labels_should_cover_neither_each_other_nor_the_data),
 	};
 	int rc = cmocka_run_group_tests(tests, NULL, NULL);
 	doc_global_cleanup();

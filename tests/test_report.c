@@ -17,7 +17,9 @@
 #include "engine/engine.h"
 #include "input/mission_io.h"
 #include "output/report.h"
+#include "output/report_int.h"
 #include "util/sha256.h"
+#include "util/strbuf.h"
 #include "core/template.h"
 #include "util/xalloc.h"
 
@@ -190,8 +192,9 @@ report_infeasible_design_should_still_get_a_full_dossier(void **state)
 	free(bytes);
 }
 
-/* The optimizer is not merged yet: fake a selection so the parts paths
- * (BOM table, chosen motor, candidates, closed run) are drawn. */
+/* A hand-made selection (one motor, made-up BOM lines and candidates, a
+ * closed run copied from the continuous one) still renders: the parts
+ * paths must not depend on the search's own bookkeeping. */
 static void
 report_selected_parts_should_render(void **state)
 {
@@ -303,6 +306,115 @@ report_bad_input_should_fail_with_a_message(void **state)
 	assert_true(strlen(err) > 0);
 }
 
+/* The render state the sections see, for one solve. */
+static struct rep
+rep_of(const struct report_input *in)
+{
+	struct rep rp = { .in = in, .r = in->r, .tpl = in->tpl, .mass_scale = 1.0, .mass_unit = "kg",
+	                  .mass_dec = 3 };
+	rp.rec = res_record(in->r, &rp.buildable);
+	rp.rec_ok = rp.buildable && rp.rec->feasible;
+	return rp;
+}
+
+static void
+report_mtow_should_be_the_bom_plus_the_payload_and_the_record_mass(void **state)
+{
+	struct fixture *fx = *state;
+	int n_buildable = 0;
+	for (int i = 0; i < N_EXAMPLES; i++) {
+		unsigned char *bytes;
+		size_t n;
+		struct solve_result *r = solve(fx, examples[i], -1, &bytes, &n);
+		struct report_input in = { .r = r, .tpl = fx->tpl, .cat = fx->env.cat };
+		struct rep rp = rep_of(&in);
+		/* An example the parts do not close has no BOM aircraft (the
+		 * unbuildable test below covers how it renders). */
+		if (!rp.buildable) {
+			free(r);
+			free(bytes);
+			continue;
+		}
+		n_buildable++;
+		double payload = 0.0;
+		for (int k = 0; k < r->n_bom; k++)
+			if (strcmp(r->bom[k].category, "payload") == 0)
+				payload += r->bom[k].total_mass_kg;
+		assert_rel(report_mtow(&rp), r->bom_mass_kg + payload, 1e-12);
+		assert_true(fabs(report_mtow(&rp) - r->closed.mass.total_kg) < 1e-3);
+		free(r);
+		free(bytes);
+	}
+	assert_true(n_buildable >= N_EXAMPLES / 2);
+}
+
+static void
+report_price_should_be_a_lower_bound_never_a_zero(void **state)
+{
+	struct fixture *fx = *state;
+	struct solve_result *r = xcalloc(1, sizeof *r);
+	struct report_input in = { .r = r, .tpl = fx->tpl };
+	struct rep rp = rep_of(&in);
+	struct strbuf sb = STRBUF_INIT;
+	r->bom_price_usd = 1199.96;
+	r->bom_parts_lines = 12;
+	r->bom_priced_lines = 1;
+	assert_string_equal(report_price(&rp, &sb), "≥" NBSP "1199.96" NBSP "USD, 11 of 12 lines unpriced");
+	r->bom_priced_lines = 12;
+	assert_string_equal(report_price(&rp, &sb), "1199.96" NBSP "USD");
+	r->bom_price_usd = 0.0;
+	r->bom_priced_lines = 0;
+	assert_string_equal(report_price(&rp, &sb), "not known (none of the 12 lines has a price)");
+	strbuf_free(&sb);
+	free(r);
+}
+
+static void
+report_unbuildable_design_should_render_the_continuous_design_as_such(void **state)
+{
+	struct fixture *fx = *state;
+	unsigned char *bytes;
+	size_t n;
+	struct solve_result *r = solve(fx, "sar_imaging_quad", -1, &bytes, &n);
+	/* No parts: what a build without a catalogue gives. */
+	r->parts_selected = false;
+	r->closed.ran = false;
+	r->n_bom = 0;
+	r->bom_parts_lines = r->bom_priced_lines = 0;
+	struct report_input in = { .r = r, .tpl = fx->tpl };
+	struct rep rp = rep_of(&in);
+	assert_false(rp.buildable);
+	assert_ptr_equal(rp.rec, &r->custom);
+	assert_string_equal(report_record_name(&rp), "Continuous design (not buildable)");
+	assert_rel(report_mtow(&rp), r->custom.mass.total_kg, 1e-12);
+	int pages = render_and_check(fx, r, "sar_imaging_quad", "unbuildable", bytes, n);
+	assert_in_range(pages, MIN_PAGES, MAX_PAGES);
+	free(r);
+	free(bytes);
+}
+
+/* The calibration's accuracy and the interval on the takeoff mass are
+ * quoted once the engine fills them (cover row, assumptions paragraph). */
+static void
+report_accuracy_and_interval_should_render_when_valid(void **state)
+{
+	struct fixture *fx = *state;
+	unsigned char *bytes;
+	size_t n;
+	struct solve_result *r = solve(fx, "lidar_mapping_quad", -1, &bytes, &n);
+	r->accuracy = (struct res_accuracy){ .valid = true, .n_rows = 37, .mape = 0.1237,
+	                                     .battery_mape = 0.1911, .level = 0.90, .ratio_lo = 0.83,
+	                                     .ratio_hi = 1.21, .coverage = 0.892 };
+	bool buildable;
+	double m = res_record(r, &buildable)->mass.total_kg;
+	r->mtow_interval = (struct res_interval){ .valid = true, .level = 0.90, .lo_kg = 0.83 * m,
+	                                          .hi_kg = 1.21 * m };
+	int pages = render_and_check(fx, r, "lidar_mapping_quad", "accuracy", bytes, n);
+	assert_in_range(pages, MIN_PAGES, MAX_PAGES);
+	free(r);
+	free(bytes);
+}
+
 static void
 res_eu_class_should_follow_the_mass_limits(void **state)
 {
@@ -322,6 +434,10 @@ main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(res_eu_class_should_follow_the_mass_limits),
 		cmocka_unit_test(report_bad_input_should_fail_with_a_message),
+		cmocka_unit_test(report_mtow_should_be_the_bom_plus_the_payload_and_the_record_mass),
+		cmocka_unit_test(report_price_should_be_a_lower_bound_never_a_zero),
+		cmocka_unit_test(report_unbuildable_design_should_render_the_continuous_design_as_such),
+		cmocka_unit_test(report_accuracy_and_interval_should_render_when_valid),
 		cmocka_unit_test(report_every_example_should_render_reproducibly),
 		cmocka_unit_test(report_infeasible_design_should_still_get_a_full_dossier),
 		cmocka_unit_test(report_selected_parts_should_render),

@@ -121,6 +121,10 @@ X(REPORT_REVISION, "report.revision", SPEC_STR, report.revision, "", 0, 0, 0, SP
   "Document revision, e.g. \"A\" or \"1.2\"") \
 X(REPORT_DATE, "report.date", SPEC_DATE, report.date, "", 0, 0, 0, SPEC_F_BEYOND, NULL, \
   "Issue date YYYY-MM-DD; else SOURCE_DATE_EPOCH, else the file's mtime") \
+X(REPORT_CHECKED_BY, "report.checked_by", SPEC_STR, report.checked_by, "", 0, 0, 0, SPEC_F_BEYOND, NULL, \
+  "Engineer who checked the dossier (document control; empty leaves the line to sign)") \
+X(REPORT_APPROVED_BY, "report.approved_by", SPEC_STR, report.approved_by, "", 0, 0, 0, SPEC_F_BEYOND, NULL, \
+  "Person who approved the dossier for issue (document control; empty leaves the line to sign)") \
 \
 X(PAYLOAD_KG, "payload_kg", SPEC_NUM, payload_kg, "kg", 1.0, 0.0, 500.0, SPEC_F_DERIVED, NULL, \
   "Payload mass carried at takeoff (requirements.payload_preset may set it)") \
@@ -286,6 +290,8 @@ struct spec_report {
 	char project_id[SPEC_STR_MAX]; /* project identifier */
 	char revision[SPEC_STR_MAX];   /* document revision */
 	char date[SPEC_STR_MAX];       /* YYYY-MM-DD or "" */
+	char checked_by[SPEC_STR_MAX]; /* checker, "" not yet */
+	char approved_by[SPEC_STR_MAX]; /* approver, "" not yet */
 };
 
 struct spec_locks {

@@ -1,4 +1,5 @@
-/* doc.c — the dossier document: flow layout over libharu (see doc.h). */
+/* doc.c — the dossier document: flow layout over libharu (see doc.h); its
+ * tables are in doc_table.c. */
 #include "output/doc.h"
 
 #include <math.h>
@@ -9,7 +10,10 @@
 
 #include <hpdf.h>
 #include <hpdf_namedict.h>   /* internals: the attachment's name tree */
+#include <hpdf_objects.h>    /* internals: the fonts' ToUnicode maps */
+#include <hpdf_streams.h>
 
+#include "output/doc_int.h"
 #include "util/xalloc.h"
 
 #ifndef AEROEVAL_VERSION
@@ -17,38 +21,11 @@
 #endif
 
 #define PT_PER_MM (72.0 / 25.4)
-#define LEADING 1.38          /* line height / font size for body text */
-#define TABLE_SCALE 0.9       /* table text size / body size */
-#define CELL_PAD_X 3.5        /* table cell padding, points */
-#define CELL_PAD_Y 2.6
 #define MIN_LINES_AFTER_HEADING 3  /* keep a heading with this many lines */
-
-struct doc {
-	HPDF_Doc pdf;
-	struct template tpl;        /* copy: the caller's may go away */
-	HPDF_Font font, bold, mono; /* mono loaded on first use */
-	HPDF_Encoder utf8;          /* for outline titles */
-	HPDF_Page *pages;           /* every page, for header/footer at save */
-	int n_pages, cap_pages;
-	HPDF_Page page;             /* current page */
-	double page_w, page_h;      /* points */
-	double left, right, top, bottom; /* text block, PDF coordinates */
-	double y;                   /* cursor: top of the next element */
-	int at_top;                 /* nothing placed on this page yet */
-	HPDF_Outline outline_l1;    /* last level-1 bookmark (parent of level 2) */
-	int n_figures;              /* figures placed */
-	char *title, *mission;      /* running header */
-	int saved;                  /* doc_save_mem ran */
-	char err[128];              /* first error, "" if none */
-};
 
 /* ---- errors ---------------------------------------------------------------- */
 
-static void
-doc_fail(struct doc *d, const char *fmt, ...)
-	__attribute__((format(printf, 2, 3)));
-
-static void
+void
 doc_fail(struct doc *d, const char *fmt, ...)
 {
 	if (d->err[0] != '\0')
@@ -86,8 +63,8 @@ hpdf_free(void *p)
 	free(p);
 }
 
-static int
-failed(const struct doc *d)
+int
+doc_failed(const struct doc *d)
 {
 	return d->err[0] != '\0';
 }
@@ -95,7 +72,7 @@ failed(const struct doc *d)
 const char *
 doc_error(const struct doc *d)
 {
-	return failed(d) ? d->err : NULL;
+	return doc_failed(d) ? d->err : NULL;
 }
 
 /* ---- text measuring and wrapping ------------------------------------------- */
@@ -117,22 +94,11 @@ to_points(HPDF_UINT units, double size)
 	return units * size / 1000.0;
 }
 
-static double
-width_of(HPDF_Font f, double size, const char *s, size_t len)
+double
+doc_width(HPDF_Font f, double size, const char *s, size_t len)
 {
 	return to_points(units_of(f, s, len), size);
 }
-
-/* One output line: a slice of the source text. */
-struct line {
-	const char *s;
-	size_t len;
-};
-
-struct lines {
-	struct line *v;
-	int n, cap;
-};
 
 static void
 lines_push(struct lines *L, const char *s, size_t len)
@@ -158,11 +124,67 @@ utf8_len(const char *s)
 	return n;
 }
 
+static int
+is_digit(char c)
+{
+	return c >= '0' && c <= '9';
+}
+
+/* A character of a number as printed: digits, the decimal point, the
+ * thousands comma. */
+static int
+is_numeric(char c)
+{
+	return is_digit(c) || c == '.' || c == ',';
+}
+
+/* May the word [s, e) break after its character c?  After a '/' (but not
+ * inside the "//" of "https://") or a '-' that is not a leading minus. */
+int
+doc_breaks_after(const char *s, const char *c, const char *e)
+{
+	if (*c == '/')
+		return (c + 1 >= e || c[1] != '/') && !(c > s && c[-1] == '/');
+	return *c == '-' && c > s;
+}
+
+/* Where to cut a word [s, e) that is wider than the line: after the last
+ * '/' or '-' that fits (a web address or a part id then breaks where a
+ * reader expects it, never in the middle of a name), else after the last
+ * character that fits, moved back to the start of a number so that digits
+ * stay together.  Always takes at least one character. */
+static const char *
+word_cut(HPDF_Font f, double size, double width, const char *s, const char *e)
+{
+	const char *c = s, *fit = s, *brk = NULL;
+	HPDF_UINT cu = 0;
+	while (c < e) {
+		size_t cl = utf8_len(c);
+		cu += units_of(f, c, cl);
+		if (c != s && to_points(cu, size) > width)
+			break;
+		c += cl;
+		fit = c;
+		if (doc_breaks_after(s, c - 1, e))
+			brk = c;
+	}
+	if (fit >= e)
+		return e;
+	if (brk != NULL && brk < e)
+		return brk;
+	/* A number is never cut: it overflows its cell by a little rather
+	 * than read as two numbers. */
+	const char *cut = fit;
+	while (cut > s && is_numeric(*cut) && is_numeric(cut[-1]))
+		cut--;
+	return cut > s ? cut : is_numeric(*s) ? e : fit;
+}
+
 /* Greedy word wrap of text into lines no wider than width.  Spaces separate
  * words; "\n" forces a break; a word wider than the line is cut between
  * characters (TextRect would stall on it, STACK.md §2f). */
-static void
-wrap_text(HPDF_Font f, double size, double width, const char *text, struct lines *out)
+void
+doc_wrap(HPDF_Font f, double size, double width, const char *text, struct lines *out)
 {
 	const char *p = text;
 	for (;;) {
@@ -195,16 +217,7 @@ wrap_text(HPDF_Font f, double size, double width, const char *text, struct lines
 					break;
 				if (end == start && nw > width) {
 					/* First word alone overflows: take what fits of it. */
-					const char *c = start;
-					HPDF_UINT cu = 0;
-					while (c < we) {
-						size_t cl = utf8_len(c);
-						cu += units_of(f, c, cl);
-						if (c != start && to_points(cu, size) > width)
-							break;
-						c += cl;
-					}
-					end = c;
+					end = word_cut(f, size, width, start, we);
 					break;
 				}
 				end = we;
@@ -222,15 +235,26 @@ wrap_text(HPDF_Font f, double size, double width, const char *text, struct lines
 	}
 }
 
-/* Draws len bytes of s at baseline (x, y) (page coordinates). */
+/* Draws len bytes of s at baseline (x, y) (page coordinates).  A
+ * no-break space (U+00A0, which keeps a number with its unit when text is
+ * wrapped) is drawn as a plain space, so that extracted text reads as
+ * typed. */
 static void
 put_text(struct doc *d, HPDF_Font f, double size, double x, double y, const char *s,
          size_t len, struct template_colour k)
 {
 	char small[256];
 	char *buf = len < sizeof small ? small : xmalloc(len + 1);
-	memcpy(buf, s, len);
-	buf[len] = '\0';
+	size_t n = 0;
+	for (size_t i = 0; i < len; i++) {
+		if ((unsigned char)s[i] == 0xc2 && i + 1 < len && (unsigned char)s[i + 1] == 0xa0) {
+			buf[n++] = ' ';
+			i++;
+		} else {
+			buf[n++] = s[i];
+		}
+	}
+	buf[n] = '\0';
 	plot_begin_text(d->page, f, size, k);
 	HPDF_Page_TextOut(d->page, (HPDF_REAL)x, (HPDF_REAL)y, buf);
 	HPDF_Page_EndText(d->page);
@@ -238,28 +262,30 @@ put_text(struct doc *d, HPDF_Font f, double size, double x, double y, const char
 		free(buf);
 }
 
-static void
-put_aligned(struct doc *d, HPDF_Font f, double size, double x0, double x1, double y,
+/* Draws s aligned between x0 and x1; returns the x it starts at. */
+double
+doc_put_aligned(struct doc *d, HPDF_Font f, double size, double x0, double x1, double y,
             const char *s, size_t len, enum doc_align al, struct template_colour k)
 {
-	double w = width_of(f, size, s, len), x = x0;
+	double w = doc_width(f, size, s, len), x = x0;
 	if (al == DOC_ALIGN_RIGHT)
 		x = x1 - w;
 	else if (al == DOC_ALIGN_CENTER)
 		x = 0.5 * (x0 + x1 - w);
 	put_text(d, f, size, x, y, s, len, k);
+	return x;
 }
 
-static void
-fill_rect(struct doc *d, double x, double y, double w, double h, struct template_colour k)
+void
+doc_fill_rect(struct doc *d, double x, double y, double w, double h, struct template_colour k)
 {
 	HPDF_Page_SetRGBFill(d->page, (HPDF_REAL)k.r, (HPDF_REAL)k.g, (HPDF_REAL)k.b);
 	HPDF_Page_Rectangle(d->page, (HPDF_REAL)x, (HPDF_REAL)y, (HPDF_REAL)w, (HPDF_REAL)h);
 	HPDF_Page_Fill(d->page);
 }
 
-static void
-hrule(struct doc *d, double x0, double x1, double y, double width, struct template_colour k)
+void
+doc_hrule(struct doc *d, double x0, double x1, double y, double width, struct template_colour k)
 {
 	HPDF_Page_SetRGBStroke(d->page, (HPDF_REAL)k.r, (HPDF_REAL)k.g, (HPDF_REAL)k.b);
 	HPDF_Page_SetLineWidth(d->page, (HPDF_REAL)width);
@@ -269,8 +295,8 @@ hrule(struct doc *d, double x0, double x1, double y, double width, struct templa
 	HPDF_Page_Stroke(d->page);
 }
 
-static struct template_colour
-mix_white(struct template_colour k, double f)
+struct template_colour
+doc_mix_white(struct template_colour k, double f)
 {
 	struct template_colour m = { k.r * f + (1 - f), k.g * f + (1 - f), k.b * f + (1 - f) };
 	return m;
@@ -278,8 +304,8 @@ mix_white(struct template_colour k, double f)
 
 /* ---- pages ----------------------------------------------------------------- */
 
-static void
-add_page(struct doc *d)
+void
+doc_add_page(struct doc *d)
 {
 	HPDF_Page pg = HPDF_AddPage(d->pdf);
 	if (pg == NULL) {
@@ -296,15 +322,16 @@ add_page(struct doc *d)
 	d->page = pg;
 	d->y = d->top;
 	d->at_top = 1;
+	d->after_heading = 0;
 }
 
 int
 doc_new_page(struct doc *d)
 {
-	if (failed(d))
+	if (doc_failed(d))
 		return -1;
-	add_page(d);
-	return failed(d) ? -1 : 0;
+	doc_add_page(d);
+	return doc_failed(d) ? -1 : 0;
 }
 
 double doc_space_left(const struct doc *d) { return d->y - d->bottom; }
@@ -315,34 +342,84 @@ int doc_next_figure_number(const struct doc *d) { return d->n_figures + 1; }
 int
 doc_ensure_space(struct doc *d, double h)
 {
-	if (failed(d))
+	if (doc_failed(d))
 		return -1;
 	if (d->y - h < d->bottom && !d->at_top)
-		add_page(d);
-	return failed(d) ? -1 : 0;
+		doc_add_page(d);
+	return doc_failed(d) ? -1 : 0;
 }
 
 int
 doc_space(struct doc *d, double h)
 {
-	if (failed(d))
+	if (doc_failed(d))
 		return -1;
 	if (d->y - h < d->bottom)
-		add_page(d);
+		doc_add_page(d);
 	else
 		d->y -= h;
-	return failed(d) ? -1 : 0;
+	return doc_failed(d) ? -1 : 0;
 }
 
 /* Moves the cursor down by h after placing something. */
-static void
-advance(struct doc *d, double h)
+void
+doc_advance(struct doc *d, double h)
 {
 	d->y -= h;
 	d->at_top = 0;
+	d->after_heading = 0;
 }
 
 /* ---- document -------------------------------------------------------------- */
+
+/* Rewrites the ToUnicode map of a UTF-8 font.  libharu 2.3.0 writes it
+ * with a `begincidrange` block, which is an operator of CID maps, not of
+ * ToUnicode maps: poppler warns on every such font ("Invalid
+ * 'begincidrange' operator in ToUnicode CMap", STACK.md §2d) and other
+ * readers may not extract the text at all.  With the UTF-8 encoder the
+ * code of a glyph is its Unicode value (the CIDToGIDMap does the rest), so
+ * the right map is the identity: one bfrange per high byte (a bfrange may
+ * not cross a change of the first byte, PDF 1.7 §9.10.3), the surrogate
+ * block left out, at most 100 ranges per block. */
+static void
+fix_to_unicode(struct doc *d, HPDF_Font font)
+{
+	HPDF_Dict map = HPDF_Dict_GetItem(font, "ToUnicode", HPDF_OCLASS_DICT);
+	if (map == NULL || map->stream == NULL) {
+		HPDF_ResetError(d->pdf);   /* no map to fix: nothing is wrong */
+		return;
+	}
+	HPDF_Stream s = map->stream;
+	HPDF_MemStream_FreeData(s);
+	HPDF_Stream_WriteStr(s, "/CIDInit /ProcSet findresource begin\n"
+	    "12 dict begin\nbegincmap\n"
+	    "/CIDSystemInfo << /Registry (Adobe) /Ordering (UCS) /Supplement 0 >> def\n"
+	    "/CMapName /Adobe-Identity-UCS def\n/CMapType 2 def\n"
+	    "1 begincodespacerange\n<0000> <FFFF>\nendcodespacerange\n");
+	int hi[256], n = 0;
+	for (int h = 0; h < 256; h++)
+		if (h < 0xd8 || h > 0xdf)
+			hi[n++] = h;
+	char line[48];
+	for (int i = 0; i < n; i += 100) {
+		int m = n - i < 100 ? n - i : 100;
+		snprintf(line, sizeof line, "%d beginbfrange\n", m);
+		HPDF_Stream_WriteStr(s, line);
+		for (int k = i; k < i + m; k++) {
+			snprintf(line, sizeof line, "<%02X00> <%02XFF> <%02X00>\n", hi[k], hi[k], hi[k]);
+			HPDF_Stream_WriteStr(s, line);
+		}
+		HPDF_Stream_WriteStr(s, "endbfrange\n");
+	}
+	HPDF_Stream_WriteStr(s, "endcmap\nCMapName currentdict /CMap defineresource pop\n"
+	    "end\nend\n");
+	/* The map's own dictionary named it a CID map; a ToUnicode stream
+	 * needs none of those keys. */
+	HPDF_Dict_RemoveElement(map, "Type");
+	HPDF_Dict_RemoveElement(map, "CMapName");
+	HPDF_Dict_RemoveElement(map, "CIDSystemInfo");
+	HPDF_Dict_RemoveElement(map, "WMode");
+}
 
 static HPDF_Font
 load_font(struct doc *d, const char *path)
@@ -352,13 +429,16 @@ load_font(struct doc *d, const char *path)
 		doc_fail(d, "cannot load font %s", path);
 		return NULL;
 	}
-	return HPDF_GetFont(d->pdf, name, "UTF-8");
+	HPDF_Font f = HPDF_GetFont(d->pdf, name, "UTF-8");
+	if (f != NULL)
+		fix_to_unicode(d, f);
+	return f;
 }
 
-static HPDF_Font
-mono_font(struct doc *d)
+HPDF_Font
+doc_mono_font(struct doc *d)
 {
-	if (d->mono == NULL && !failed(d))
+	if (d->mono == NULL && !doc_failed(d))
 		d->mono = load_font(d, d->tpl.font_mono);
 	return d->mono;
 }
@@ -439,8 +519,8 @@ doc_alloc(const struct template *tpl, const struct doc_info *info)
 	d->font = load_font(d, tpl->font_regular);
 	d->bold = load_font(d, tpl->font_bold);
 	set_info(d, info);
-	if (!failed(d))
-		add_page(d);
+	if (!doc_failed(d))
+		doc_add_page(d);
 	return d;
 }
 
@@ -451,6 +531,9 @@ doc_free(struct doc *d)
 		return;
 	if (d->pdf != NULL)
 		HPDF_Free(d->pdf);
+	for (int i = 0; i < d->n_toc; i++)
+		free(d->toc[i].text);
+	free(d->toc);
 	free(d->pages);
 	free(d->title);
 	free(d->mission);
@@ -472,12 +555,12 @@ flow_text(struct doc *d, HPDF_Font f, double size, double x0, double x1, const c
 {
 	struct lines L = { 0 };
 	double lh = size * LEADING;
-	wrap_text(f, size, x1 - x0, text, &L);
-	for (int i = 0; i < L.n && !failed(d); i++) {
+	doc_wrap(f, size, x1 - x0, text, &L);
+	for (int i = 0; i < L.n && !doc_failed(d); i++) {
 		if (d->y - lh < d->bottom)
-			add_page(d);
+			doc_add_page(d);
 		put_text(d, f, size, x0, d->y - size, L.v[i].s, L.v[i].len, k);
-		advance(d, lh);
+		doc_advance(d, lh);
 	}
 	free(L.v);
 }
@@ -485,35 +568,35 @@ flow_text(struct doc *d, HPDF_Font f, double size, double x0, double x1, const c
 int
 doc_paragraph(struct doc *d, const char *text)
 {
-	if (failed(d))
+	if (doc_failed(d))
 		return -1;
 	flow_text(d, d->font, d->tpl.font_size_pt, d->left, d->right, text != NULL ? text : "",
 	          d->tpl.text);
 	if (!d->at_top)
 		d->y -= 0.55 * d->tpl.font_size_pt;
-	return failed(d) ? -1 : 0;
+	return doc_failed(d) ? -1 : 0;
 }
 
 int
 doc_code(struct doc *d, const char *text)
 {
-	HPDF_Font f = mono_font(d);
-	if (failed(d))
+	HPDF_Font f = doc_mono_font(d);
+	if (doc_failed(d))
 		return -1;
 	flow_text(d, f, 0.85 * d->tpl.font_size_pt, d->left + 6.0, d->right,
 	          text != NULL ? text : "", d->tpl.text);
 	if (!d->at_top)
 		d->y -= 0.55 * d->tpl.font_size_pt;
-	return failed(d) ? -1 : 0;
+	return doc_failed(d) ? -1 : 0;
 }
 
 int
 doc_bullets(struct doc *d, const char *const *items, int n)
 {
 	double size = d->tpl.font_size_pt, indent = 13.0;
-	for (int i = 0; i < n && !failed(d); i++) {
+	for (int i = 0; i < n && !doc_failed(d); i++) {
 		if (d->y - size * LEADING < d->bottom)
-			add_page(d);
+			doc_add_page(d);
 		put_text(d, d->font, size, d->left + 3.0, d->y - size, "\xe2\x80\xa2", 3,
 		         d->tpl.primary);
 		flow_text(d, d->font, size, d->left + indent, d->right,
@@ -522,7 +605,7 @@ doc_bullets(struct doc *d, const char *const *items, int n)
 	}
 	if (!d->at_top)
 		d->y -= 0.4 * size;
-	return failed(d) ? -1 : 0;
+	return doc_failed(d) ? -1 : 0;
 }
 
 static void bookmark(struct doc *d, int level, const char *text, double y);
@@ -530,7 +613,7 @@ static void bookmark(struct doc *d, int level, const char *text, double y);
 int
 doc_title(struct doc *d, const char *title, const char *subtitle)
 {
-	if (failed(d))
+	if (doc_failed(d))
 		return -1;
 	/* The cover gets its outline entry too; level-2 headings under it nest. */
 	bookmark(d, 1, title != NULL ? title : "", d->y);
@@ -555,9 +638,9 @@ doc_title(struct doc *d, const char *title, const char *subtitle)
 		          subtitle, d->tpl.muted);
 	}
 	d->y -= 6.0;
-	hrule(d, d->left, d->right, d->y, 1.6, d->tpl.primary);
-	advance(d, 14.0);
-	return failed(d) ? -1 : 0;
+	doc_hrule(d, d->left, d->right, d->y, 1.6, d->tpl.primary);
+	doc_advance(d, 14.0);
+	return doc_failed(d) ? -1 : 0;
 }
 
 static void
@@ -575,22 +658,93 @@ bookmark(struct doc *d, int level, const char *text, double y)
 	HPDF_Outline_SetOpened(o, HPDF_FALSE);
 	if (level == 1)
 		d->outline_l1 = o;
+	if (level == 1 && d->toc_on) {
+		if (d->n_toc == d->cap_toc) {
+			d->cap_toc = d->cap_toc ? 2 * d->cap_toc : 16;
+			d->toc = xrealloc(d->toc, (size_t)d->cap_toc * sizeof *d->toc);
+		}
+		d->toc[d->n_toc++] = (struct toc_entry){ xstrdup(text), d->n_pages - 1, y };
+	}
+}
+
+/* Line height of the contents list. */
+#define TOC_LEADING 1.6
+
+int
+doc_contents(struct doc *d, const char *title, int n_rows)
+{
+	if (doc_failed(d))
+		return -1;
+	if (d->toc_on) {
+		doc_fail(d, "contents placed twice");
+		return -1;
+	}
+	double lh = TOC_LEADING * d->tpl.font_size_pt;
+	double h = n_rows * lh + 3.0 * d->tpl.font_size_pt;
+	if (d->y - h < d->bottom && !d->at_top)
+		doc_add_page(d);
+	doc_heading(d, 2, title != NULL ? title : "Contents");
+	d->toc_page = d->n_pages - 1;
+	d->toc_top = d->y;
+	d->toc_rows = n_rows;
+	d->toc_on = 1;
+	doc_advance(d, fmin(n_rows * lh, d->y - d->bottom));
+	return doc_failed(d) ? -1 : 0;
+}
+
+/* Fills the area doc_contents reserved: each heading, a dotted leader, its
+ * page number, the whole line a link to the heading. */
+static void
+draw_contents(struct doc *d)
+{
+	if (!d->toc_on)
+		return;
+	double size = d->tpl.font_size_pt, lh = TOC_LEADING * size;
+	char num[16];
+	d->page = d->pages[d->toc_page];
+	for (int i = 0; i < d->n_toc && i < d->toc_rows && !doc_failed(d); i++) {
+		const struct toc_entry *e = &d->toc[i];
+		double y = d->toc_top - i * lh - size;
+		snprintf(num, sizeof num, "%d", e->page + 1);
+		double tw = doc_width(d->font, size, e->text, strlen(e->text));
+		double nw = doc_width(d->font, size, num, strlen(num));
+		put_text(d, d->font, size, d->left + 6.0, y, e->text, strlen(e->text), d->tpl.text);
+		put_text(d, d->font, size, d->right - nw, y, num, strlen(num), d->tpl.text);
+		HPDF_UINT16 dots[2] = { 1, 3 };
+		HPDF_Page_SetRGBStroke(d->page, (HPDF_REAL)d->tpl.muted.r, (HPDF_REAL)d->tpl.muted.g,
+		                       (HPDF_REAL)d->tpl.muted.b);
+		HPDF_Page_SetLineWidth(d->page, 0.6);
+		HPDF_Page_SetDash(d->page, dots, 2, 0);
+		HPDF_Page_MoveTo(d->page, (HPDF_REAL)(d->left + 6.0 + tw + 4.0), (HPDF_REAL)(y + 1.0));
+		HPDF_Page_LineTo(d->page, (HPDF_REAL)(d->right - nw - 4.0), (HPDF_REAL)(y + 1.0));
+		HPDF_Page_Stroke(d->page);
+		HPDF_Page_SetDash(d->page, NULL, 0, 0);
+		HPDF_Destination dst = HPDF_Page_CreateDestination(d->pages[e->page]);
+		if (dst == NULL)
+			continue;
+		HPDF_Destination_SetFitH(dst, (HPDF_REAL)fmin(e->y + 6.0, d->page_h));
+		HPDF_Rect rect = { (HPDF_REAL)d->left, (HPDF_REAL)(y - 0.3 * size),
+		                   (HPDF_REAL)d->right, (HPDF_REAL)(y + 0.9 * size) };
+		HPDF_Annotation an = HPDF_Page_CreateLinkAnnot(d->page, rect, dst);
+		if (an != NULL)
+			HPDF_LinkAnnot_SetBorderStyle(an, 0, 0, 0);
+	}
 }
 
 int
 doc_heading(struct doc *d, int level, const char *text)
 {
-	if (failed(d))
+	if (doc_failed(d))
 		return -1;
 	double base = d->tpl.font_size_pt;
 	text = text != NULL ? text : "";
 	if (level <= 1) {
 		if (!d->at_top)
-			add_page(d);
+			doc_add_page(d);
 		double size = 1.75 * base;
 		bookmark(d, 1, text, d->y);
 		flow_text(d, d->bold, size, d->left, d->right, text, d->tpl.primary);
-		hrule(d, d->left, d->right, d->y + 0.04 * size, 0.8, d->tpl.primary);
+		doc_hrule(d, d->left, d->right, d->y + 0.04 * size, 0.8, d->tpl.primary);
 		d->y -= 0.7 * base;
 	} else {
 		double size = level == 2 ? 1.25 * base : 1.05 * base;
@@ -598,20 +752,21 @@ doc_heading(struct doc *d, int level, const char *text)
 		if (!d->at_top)
 			d->y -= 0.5 * base;
 		if (d->y - need < d->bottom && !d->at_top)
-			add_page(d);
+			doc_add_page(d);
 		if (level == 2)
 			bookmark(d, 2, text, d->y);
 		flow_text(d, d->bold, size, d->left, d->right, text,
 		          level == 2 ? d->tpl.primary : d->tpl.text);
 		d->y -= 0.25 * base;
+		d->after_heading = 1;
 	}
-	return failed(d) ? -1 : 0;
+	return doc_failed(d) ? -1 : 0;
 }
 
 int
 doc_callout(struct doc *d, enum doc_callout_style style, const char *title, const char *text)
 {
-	if (failed(d))
+	if (doc_failed(d))
 		return -1;
 	struct template_colour k = style == DOC_CALLOUT_PASS ? d->tpl.pass
 	                         : style == DOC_CALLOUT_FAIL ? d->tpl.fail
@@ -620,17 +775,17 @@ doc_callout(struct doc *d, enum doc_callout_style style, const char *title, cons
 	double x0 = d->left + bar + pad, x1 = d->right - pad;
 	struct lines tl = { 0 }, bl = { 0 };
 	if (title != NULL)
-		wrap_text(d->bold, tsize, x1 - x0, title, &tl);
+		doc_wrap(d->bold, tsize, x1 - x0, title, &tl);
 	if (text != NULL)
-		wrap_text(d->font, base, x1 - x0, text, &bl);
+		doc_wrap(d->font, base, x1 - x0, text, &bl);
 	double h = 2 * pad + tl.n * tsize * 1.2 + bl.n * base * LEADING +
 	           (tl.n > 0 && bl.n > 0 ? 3.0 : 0.0);
 	/* A callout is kept whole unless it is taller than a page. */
 	if (d->y - h < d->bottom && !d->at_top)
-		add_page(d);
+		doc_add_page(d);
 	double y = d->y;
-	fill_rect(d, d->left, y - h, d->right - d->left, h, mix_white(k, 0.12));
-	fill_rect(d, d->left, y - h, bar, h, k);
+	doc_fill_rect(d, d->left, y - h, d->right - d->left, h, doc_mix_white(k, 0.12));
+	doc_fill_rect(d, d->left, y - h, bar, h, k);
 	y -= pad;
 	for (int i = 0; i < tl.n; i++) {
 		put_text(d, d->bold, tsize, x0, y - tsize * 0.95, tl.v[i].s, tl.v[i].len, k);
@@ -644,14 +799,14 @@ doc_callout(struct doc *d, enum doc_callout_style style, const char *title, cons
 	}
 	free(tl.v);
 	free(bl.v);
-	advance(d, h + 0.9 * base);
-	return failed(d) ? -1 : 0;
+	doc_advance(d, h + 0.9 * base);
+	return doc_failed(d) ? -1 : 0;
 }
 
 int
 doc_figure(struct doc *d, const struct plot *p, const char *caption)
 {
-	if (failed(d) || p == NULL)
+	if (doc_failed(d) || p == NULL)
 		return -1;
 	double tw = d->right - d->left;
 	double w = plot_width_pt(p) > 0 ? fmin(plot_width_pt(p), tw) : tw;
@@ -660,253 +815,28 @@ doc_figure(struct doc *d, const struct plot *p, const char *caption)
 	char *cap = xmalloc(strlen(caption != NULL ? caption : "") + 32);
 	sprintf(cap, "Figure %d: %s", d->n_figures + 1, caption != NULL ? caption : "");
 	struct lines L = { 0 };
-	wrap_text(d->font, csize, w, cap, &L);
+	doc_wrap(d->font, csize, w, cap, &L);
 	double need = h + 6.0 + L.n * csize * LEADING;
 	if (d->y - need < d->bottom && !d->at_top)
-		add_page(d);
+		doc_add_page(d);
 	double x = d->left + 0.5 * (tw - w);
 	struct plot_render r = { .pdf = d->pdf, .page = d->page, .font = d->font,
 	                         .bold = d->bold, .tpl = &d->tpl, .x_pt = x,
 	                         .y_top_pt = d->y - 4.0, .width_pt = w };
-	if (!failed(d) && plot_render(p, &r) != 0)
+	if (!doc_failed(d) && plot_render(p, &r) != 0)
 		doc_fail(d, "figure %d: cairo could not build the paths", d->n_figures + 1);
 	d->n_figures++;
-	advance(d, h + 10.0);
-	for (int i = 0; i < L.n && !failed(d); i++) {
+	doc_advance(d, h + 10.0);
+	for (int i = 0; i < L.n && !doc_failed(d); i++) {
 		/* One line is centred under the figure, several are left aligned. */
-		put_aligned(d, d->font, csize, x, x + w, d->y - csize, L.v[i].s, L.v[i].len,
+		doc_put_aligned(d, d->font, csize, x, x + w, d->y - csize, L.v[i].s, L.v[i].len,
 		            L.n == 1 ? DOC_ALIGN_CENTER : DOC_ALIGN_LEFT, d->tpl.muted);
-		advance(d, csize * LEADING);
+		doc_advance(d, csize * LEADING);
 	}
 	d->y -= 0.8 * d->tpl.font_size_pt;
 	free(L.v);
 	free(cap);
-	return failed(d) ? -1 : d->n_figures;
-}
-
-/* ---- tables ------------------------------------------------------------------ */
-
-void
-doc_table_init(struct doc_table *t, const struct doc_column *cols, int n_cols)
-{
-	memset(t, 0, sizeof *t);
-	t->cols = cols;
-	t->n_cols = n_cols;
-}
-
-static void
-table_push(struct doc_table *t, enum doc_cell style, char *s)
-{
-	if (t->n_cells == t->cap_cells) {
-		t->cap_cells = t->cap_cells ? 2 * t->cap_cells : 32;
-		t->cells = xrealloc(t->cells, (size_t)t->cap_cells * sizeof *t->cells);
-		t->styles = xrealloc(t->styles, (size_t)t->cap_cells);
-	}
-	t->cells[t->n_cells] = s;
-	t->styles[t->n_cells] = (unsigned char)style;
-	t->n_cells++;
-}
-
-void
-doc_table_cell(struct doc_table *t, enum doc_cell style, const char *fmt, ...)
-{
-	va_list ap;
-	va_start(ap, fmt);
-	int n = vsnprintf(NULL, 0, fmt, ap);
-	va_end(ap);
-	char *s = xmalloc(n > 0 ? (size_t)n + 1 : 1);
-	s[0] = '\0';
-	if (n > 0) {
-		va_start(ap, fmt);
-		vsnprintf(s, (size_t)n + 1, fmt, ap);
-		va_end(ap);
-	}
-	table_push(t, style, s);
-}
-
-void
-doc_table_row(struct doc_table *t, const char *const *cells)
-{
-	for (int i = 0; i < t->n_cols; i++)
-		table_push(t, DOC_CELL_NORMAL, xstrdup(cells != NULL && cells[i] != NULL ? cells[i] : ""));
-}
-
-void
-doc_table_clear(struct doc_table *t)
-{
-	for (int i = 0; i < t->n_cells; i++)
-		free(t->cells[i]);
-	free(t->cells);
-	free(t->styles);
-	memset(t, 0, sizeof *t);
-}
-
-/* Column edges and cell fonts of a table being drawn. */
-struct tstate {
-	const struct doc_table *t;
-	double x[65];        /* column edges, n_cols + 1 */
-	double size;         /* text size */
-	double lh;           /* line height */
-};
-
-static HPDF_Font
-cell_font(struct doc *d, enum doc_cell s)
-{
-	if (s == DOC_CELL_MONO)
-		return mono_font(d);
-	if (s == DOC_CELL_BOLD || s == DOC_CELL_PASS || s == DOC_CELL_FAIL || s == DOC_CELL_WARN)
-		return d->bold;
-	return d->font;
-}
-
-static struct template_colour
-cell_colour(const struct doc *d, enum doc_cell s)
-{
-	switch (s) {
-	case DOC_CELL_MUTED: return d->tpl.muted;
-	case DOC_CELL_PASS: return d->tpl.pass;
-	case DOC_CELL_FAIL: return d->tpl.fail;
-	case DOC_CELL_WARN: return d->tpl.warn;
-	default: return d->tpl.text;
-	}
-}
-
-/* Wraps every cell of a row; returns the row height. */
-static double
-row_layout(struct doc *d, const struct tstate *ts, const char *const *cells,
-           const enum doc_cell *styles, struct lines *L)
-{
-	int nl = 1;
-	for (int c = 0; c < ts->t->n_cols; c++) {
-		L[c].n = 0;
-		HPDF_Font f = cell_font(d, styles[c]);
-		double size = styles[c] == DOC_CELL_MONO ? 0.92 * ts->size : ts->size;
-		wrap_text(f, size, ts->x[c + 1] - ts->x[c] - 2 * CELL_PAD_X, cells[c], &L[c]);
-		if (L[c].n > nl)
-			nl = L[c].n;
-	}
-	return nl * ts->lh + 2 * CELL_PAD_Y;
-}
-
-static void
-row_draw(struct doc *d, const struct tstate *ts, const enum doc_cell *styles,
-         const struct lines *L, double h, const struct template_colour *bg, int header)
-{
-	if (bg != NULL)
-		fill_rect(d, ts->x[0], d->y - h, ts->x[ts->t->n_cols] - ts->x[0], h, *bg);
-	for (int c = 0; c < ts->t->n_cols; c++) {
-		HPDF_Font f = header ? d->bold : cell_font(d, styles[c]);
-		double size = !header && styles[c] == DOC_CELL_MONO ? 0.92 * ts->size : ts->size;
-		struct template_colour k = header ? (struct template_colour){ 1, 1, 1 }
-		                                  : cell_colour(d, styles[c]);
-		for (int i = 0; i < L[c].n; i++)
-			put_aligned(d, f, size, ts->x[c] + CELL_PAD_X, ts->x[c + 1] - CELL_PAD_X,
-			            d->y - CELL_PAD_Y - i * ts->lh - 0.8 * ts->size - 0.5,
-			            L[c].v[i].s, L[c].v[i].len, ts->t->cols[c].align, k);
-	}
-	advance(d, h);
-}
-
-/* Lays out the header row (column titles, bold); returns its height. */
-static double
-header_layout(struct doc *d, const struct tstate *ts, struct lines *L, enum doc_cell *st)
-{
-	const char *titles[64];
-	for (int c = 0; c < ts->t->n_cols; c++) {
-		titles[c] = ts->t->cols[c].title != NULL ? ts->t->cols[c].title : "";
-		st[c] = DOC_CELL_BOLD;
-	}
-	return row_layout(d, ts, titles, st, L);
-}
-
-static void
-header_draw(struct doc *d, const struct tstate *ts, struct lines *L)
-{
-	enum doc_cell st[64];
-	double h = header_layout(d, ts, L, st);
-	row_draw(d, ts, st, L, h, &d->tpl.primary, 1);
-}
-
-int
-doc_table(struct doc *d, const struct doc_table *t)
-{
-	if (failed(d))
-		return -1;
-	if (t->n_cols < 1 || t->n_cols > 64 || t->cols == NULL) {
-		doc_fail(d, "table with %d columns", t->n_cols);
-		return -1;
-	}
-	struct tstate ts = { .t = t, .size = TABLE_SCALE * d->tpl.font_size_pt };
-	ts.lh = ts.size * 1.25;
-	double wsum = 0.0;
-	for (int c = 0; c < t->n_cols; c++)
-		wsum += t->cols[c].weight > 0 ? t->cols[c].weight : 1.0;
-	ts.x[0] = d->left;
-	for (int c = 0; c < t->n_cols; c++)
-		ts.x[c + 1] = ts.x[c] + (d->right - d->left) *
-		              (t->cols[c].weight > 0 ? t->cols[c].weight : 1.0) / wsum;
-	if (t->n_cells % t->n_cols != 0) {
-		doc_fail(d, "table: %d cells do not fill rows of %d columns", t->n_cells, t->n_cols);
-		return -1;
-	}
-	struct lines *L = xcalloc((size_t)t->n_cols, sizeof *L);
-	int n_rows = t->n_cells / t->n_cols;
-	enum doc_cell hst[64];
-	double hh = t->no_header ? 0.0 : header_layout(d, &ts, L, hst);
-	struct template_colour zebra = mix_white(d->tpl.grid, 0.35);
-	const char **cells = xmalloc((size_t)t->n_cols * sizeof *cells);
-	enum doc_cell *st = xmalloc((size_t)t->n_cols * sizeof *st);
-	int need_header = !t->no_header;
-	for (int r = 0; r < n_rows && !failed(d); r++) {
-		int total = t->total_row && r == n_rows - 1;
-		for (int c = 0; c < t->n_cols; c++) {
-			cells[c] = t->cells[r * t->n_cols + c];
-			st[c] = (enum doc_cell)t->styles[r * t->n_cols + c];
-			if (total && st[c] == DOC_CELL_NORMAL)
-				st[c] = DOC_CELL_BOLD;
-		}
-		double h = row_layout(d, &ts, cells, st, L);
-		double head = need_header ? hh : 0.0;
-		if (d->y - head - h < d->bottom && !d->at_top) {
-			add_page(d);
-			need_header = !t->no_header;   /* repeat the header on the new page */
-		}
-		if (need_header) {
-			header_draw(d, &ts, L);
-			need_header = 0;
-			h = row_layout(d, &ts, cells, st, L);
-		}
-		if (total)
-			hrule(d, ts.x[0], ts.x[t->n_cols], d->y, 0.8, d->tpl.text);
-		row_draw(d, &ts, st, L, h, (!t->no_zebra && r % 2 == 1 && !total) ? &zebra : NULL, 0);
-	}
-	if (n_rows == 0 && need_header)
-		header_draw(d, &ts, L);
-	hrule(d, ts.x[0], ts.x[t->n_cols], d->y, 0.6, d->tpl.grid);
-	d->y -= 0.9 * d->tpl.font_size_pt;
-	for (int c = 0; c < t->n_cols; c++)
-		free(L[c].v);
-	free(L);
-	free(cells);
-	free(st);
-	return failed(d) ? -1 : 0;
-}
-
-int
-doc_kv_table(struct doc *d, const char *const *kv, int n_pairs)
-{
-	static const struct doc_column cols[2] = { { "", 2.0, DOC_ALIGN_LEFT },
-	                                           { "", 3.0, DOC_ALIGN_LEFT } };
-	struct doc_table t;
-	doc_table_init(&t, cols, 2);
-	t.no_header = 1;
-	for (int i = 0; i < n_pairs; i++) {
-		table_push(&t, DOC_CELL_MUTED, xstrdup(kv[2 * i] != NULL ? kv[2 * i] : ""));
-		table_push(&t, DOC_CELL_NORMAL, xstrdup(kv[2 * i + 1] != NULL ? kv[2 * i + 1] : ""));
-	}
-	int rc = doc_table(d, &t);
-	doc_table_clear(&t);
-	return rc;
+	return doc_failed(d) ? -1 : d->n_figures;
 }
 
 /* ---- attachment --------------------------------------------------------------- */
@@ -934,7 +864,7 @@ embedded_files(struct doc *d)
 int
 doc_attach(struct doc *d, const char *name, const void *data, size_t n)
 {
-	if (failed(d))
+	if (doc_failed(d))
 		return -1;
 	/* 255: the longest file name a reader can save the attachment as. */
 	if (name == NULL || name[0] == '\0' || strchr(name, '/') != NULL ||
@@ -972,7 +902,7 @@ doc_attach(struct doc *d, const char *name, const void *data, size_t n)
 	st += HPDF_NameTree_Add(tree, HPDF_String_New(mm, name, NULL), spec);
 	if (st != HPDF_OK)
 		doc_fail(d, "attachment: cannot embed %s", name);
-	return failed(d) ? -1 : 0;
+	return doc_failed(d) ? -1 : 0;
 }
 
 /* ---- save ---------------------------------------------------------------------- */
@@ -985,16 +915,16 @@ decorate_pages(struct doc *d)
 	double size = 0.8 * d->tpl.font_size_pt;
 	double hy = d->top + 12.0, fy = 0.5 * d->bottom;
 	char num[32];
-	for (int i = 0; i < d->n_pages && !failed(d); i++) {
+	for (int i = 0; i < d->n_pages && !doc_failed(d); i++) {
 		d->page = d->pages[i];
 		if (i > 0) {
 			put_text(d, d->font, size, d->left, hy, d->title, strlen(d->title), d->tpl.muted);
-			put_aligned(d, d->font, size, d->left, d->right, hy, d->mission,
+			doc_put_aligned(d, d->font, size, d->left, d->right, hy, d->mission,
 			            strlen(d->mission), DOC_ALIGN_RIGHT, d->tpl.muted);
-			hrule(d, d->left, d->right, hy - 4.0, 0.4, d->tpl.grid);
+			doc_hrule(d, d->left, d->right, hy - 4.0, 0.4, d->tpl.grid);
 		}
 		snprintf(num, sizeof num, "%d / %d", i + 1, d->n_pages);
-		put_aligned(d, d->font, size, d->left, d->right, fy, num, strlen(num),
+		doc_put_aligned(d, d->font, size, d->left, d->right, fy, num, strlen(num),
 		            DOC_ALIGN_CENTER, d->tpl.muted);
 	}
 }
@@ -1004,13 +934,14 @@ doc_save_mem(struct doc *d, unsigned char **out, size_t *n)
 {
 	*out = NULL;
 	*n = 0;
-	if (d->saved && !failed(d))
+	if (d->saved && !doc_failed(d))
 		doc_fail(d, "document saved twice");
-	if (failed(d))
+	if (doc_failed(d))
 		return -1;
 	d->saved = 1;
+	draw_contents(d);
 	decorate_pages(d);
-	if (failed(d) || HPDF_SaveToStream(d->pdf) != HPDF_OK || failed(d))
+	if (doc_failed(d) || HPDF_SaveToStream(d->pdf) != HPDF_OK || doc_failed(d))
 		return -1;
 	HPDF_UINT32 size = HPDF_GetStreamSize(d->pdf);
 	unsigned char *buf = xmalloc(size ? size : 1);
@@ -1029,11 +960,11 @@ doc_save_mem(struct doc *d, unsigned char **out, size_t *n)
 		return -1;
 	}
 	/* Reading to the end may raise HPDF_STREAM_EOF; that is not a failure. */
-	if (failed(d) && HPDF_GetError(d->pdf) == HPDF_STREAM_EOF) {
+	if (doc_failed(d) && HPDF_GetError(d->pdf) == HPDF_STREAM_EOF) {
 		d->err[0] = '\0';
 		HPDF_ResetError(d->pdf);
 	}
-	if (failed(d)) {
+	if (doc_failed(d)) {
 		free(buf);
 		return -1;
 	}

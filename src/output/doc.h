@@ -178,6 +178,11 @@ int doc_callout(struct doc *d, enum doc_callout_style style, const char *title,
 int doc_figure(struct doc *d, const struct plot *p, const char *caption);
 /* The number the next doc_figure will get (for "see Figure 3" ahead). */
 int doc_next_figure_number(const struct doc *d);
+/* A table of contents here: a level-2 heading `title`, then room for
+ * n_rows lines, filled when the document is saved with every level-1
+ * heading placed after this call, each with its page number and a link to
+ * it (headings beyond n_rows are left out).  Once per document. */
+int doc_contents(struct doc *d, const char *title, int n_rows);
 /* Vertical space; new page if fewer than h_pt remain. */
 int doc_space(struct doc *d, double h_pt);
 int doc_ensure_space(struct doc *d, double h_pt);

@@ -82,6 +82,13 @@ struct plot {
 	double width_pt, height_pt;  /* width 0: text width */
 	int n_rows, n_cols;
 	struct plot_panel *panels;   /* row-major */
+	struct label_log *log;       /* NULL, or where render records its labels */
+};
+
+/* The annotation labels of the last render (plot_keep_label_boxes). */
+struct label_log {
+	struct plot_label_box *v;
+	int n, cap;
 };
 
 /* ---- building ----------------------------------------------------------- */
@@ -129,7 +136,24 @@ plot_free(struct plot *p)
 		free(pp->axis_title[1]);
 	}
 	free(p->panels);
+	if (p->log != NULL)
+		free(p->log->v);
+	free(p->log);
 	free(p);
+}
+
+void
+plot_keep_label_boxes(struct plot *p)
+{
+	if (p->log == NULL)
+		p->log = xcalloc(1, sizeof *p->log);
+}
+
+int
+plot_label_boxes(const struct plot *p, const struct plot_label_box **out)
+{
+	*out = p->log != NULL ? p->log->v : NULL;
+	return p->log != NULL ? p->log->n : 0;
 }
 
 double plot_width_pt(const struct plot *p) { return p->width_pt; }
@@ -751,6 +775,8 @@ struct legend_entry {
 };
 
 #define MAX_LEGEND 48
+#define MAX_LABELS 48      /* annotation labels of one panel kept for placing */
+#define LABEL_CLEAR 2.0    /* space kept between a label and the data, pt */
 
 /* Everything computed about a panel before it is drawn. */
 struct layout {
@@ -766,6 +792,9 @@ struct layout {
 	double le_x, le_y;              /* inside/right legend box top-left */
 	int n_cat;                      /* categories of bars/tornado */
 	int has_xtitle;                 /* the x axis has a title */
+	int panel;                      /* index of the panel, row-major */
+	struct plot_label_box placed[MAX_LABELS]; /* annotation labels so far */
+	int n_placed;
 };
 
 static void
@@ -1366,56 +1395,207 @@ label_ground(struct rctx *c, double x0, double y0, double x1, double y1)
 	rp_apply(c, RP_FILL);
 }
 
-/* Labels of annotations (outside the clip so they are never cut). */
-static void
-draw_annotation_text(struct rctx *c, const struct layout *L, const struct item *it)
+/* ---- annotation labels: placed where they cover nothing ------------------ */
+
+static int
+boxes_meet(const struct plot_label_box *a, double x0, double y0, double x1, double y1)
+{
+	return a->x0 < x1 && x0 < a->x1 && a->y0 < y1 && y0 < a->y1;
+}
+
+/* Does the segment (ax, ay)-(bx, by) cross or touch the box?  Clipped
+ * against the box's slabs (Liang-Barsky). */
+static int
+segment_meets_box(double ax, double ay, double bx, double by, double x0, double y0,
+                  double x1, double y1)
+{
+	double t0 = 0.0, t1 = 1.0, dx = bx - ax, dy = by - ay;
+	double p[4] = { -dx, dx, -dy, dy }, q[4] = { ax - x0, x1 - ax, ay - y0, y1 - ay };
+	for (int i = 0; i < 4; i++) {
+		if (p[i] == 0.0) {
+			if (q[i] < 0.0)
+				return 0;
+			continue;
+		}
+		double t = q[i] / p[i];
+		if (p[i] < 0.0)
+			t0 = fmax(t0, t);
+		else
+			t1 = fmin(t1, t);
+		if (t0 > t1)
+			return 0;
+	}
+	return 1;
+}
+
+/* What a label at the box would cover: data lines and markers, other
+ * reference lines, the labels placed before it and the legend.  Two labels
+ * on top of each other, or a label leaving the plot, cost most; a label
+ * over the data costs per segment it hides. */
+static double
+label_cost(const struct plot_panel *pp, const struct layout *L, const struct item *self,
+           double x0, double y0, double x1, double y1, int *data_hits)
+{
+	double cost = 0.0;
+	int hits = 0;
+	/* Data is kept LABEL_CLEAR away from the text, not just off it. */
+	x0 -= LABEL_CLEAR, y0 -= LABEL_CLEAR, x1 += LABEL_CLEAR, y1 += LABEL_CLEAR;
+	double m = 0.5 + LABEL_CLEAR;
+	if (x0 < L->l - m || x1 > L->r + m || y0 < L->t - m || y1 > L->b + m)
+		cost += 500.0;
+	for (int i = 0; i < L->n_placed; i++)
+		if (boxes_meet(&L->placed[i], x0, y0, x1, y1))
+			cost += 1000.0;
+	if (L->le_where == PLOT_LEGEND_AUTO) {
+		struct plot_label_box le = { L->le_x, L->le_y, L->le_x + L->le_w, L->le_y + L->le_h, 0, 0, 0 };
+		if (boxes_meet(&le, x0, y0, x1, y1))
+			cost += 1000.0;
+	}
+	for (int k = 0; k < pp->n_items; k++) {
+		const struct item *it = &pp->items[k];
+		if (it == self)
+			continue;
+		if (it->kind == IT_SERIES) {
+			double qx = NAN, qy = NAN, r = it->marker != PLOT_MARKER_NONE ? 0.5 * it->marker_pt : 0.0;
+			for (size_t i = 0; i < it->n; i++) {
+				double X = plot_scale_map(&L->sx, it->x[i]), Y = plot_scale_map(&L->sy, it->y[i]);
+				if (!isfinite(X) || !isfinite(Y)) {
+					qx = NAN;
+					continue;
+				}
+				if (r > 0.0 && X >= x0 - r && X <= x1 + r && Y >= y0 - r && Y <= y1 + r)
+					hits++;
+				if (it->width_pt > 0 && isfinite(qx) && segment_meets_box(qx, qy, X, Y, x0, y0, x1, y1))
+					hits++;
+				qx = X;
+				qy = Y;
+			}
+		} else if (it->kind == IT_HLINE || it->kind == IT_CROSS) {
+			double Y = plot_scale_map(&L->sy, it->py);
+			cost += isfinite(Y) && Y >= y0 && Y <= y1 ? 20.0 : 0.0;
+		}
+		if (it->kind == IT_VLINE || it->kind == IT_CROSS) {
+			double X = plot_scale_map(&L->sx, it->px);
+			cost += isfinite(X) && X >= x0 && X <= x1 ? 20.0 : 0.0;
+		}
+	}
+	*data_hits = hits;
+	return cost + 30.0 * hits;
+}
+
+/* Candidate places of one label, best first by convention. */
+struct label_spot {
+	double x0, y0, x1, y1;    /* the box the text fills */
+	double tx, ty;            /* where draw_text starts */
+	enum plot_align align;
+	int rot90;
+};
+
+static int
+label_spots(const struct layout *L, const struct item *it, double w, struct label_spot *s)
 {
 	double X = plot_scale_map(&L->sx, it->px), Y = plot_scale_map(&L->sy, it->py);
-	HPDF_Font f = c->r->font;
-	if (it->label == NULL)
-		return;
-	double w = text_width(f, FS_NOTE, it->label);
-	double bx, by;
+	double asc = 0.75 * FS_NOTE, desc = 0.2 * FS_NOTE;
+	int n = 0;
 	switch (it->kind) {
 	case IT_HLINE:
 		if (!isfinite(Y) || Y < L->t - 0.5 || Y > L->b + 0.5)
-			return;
-		/* Above the line at the right end; below it if near the top.  A
-		 * white ground keeps it legible over grid lines and other lines. */
-		by = Y - 3.0 < L->t + FS_NOTE ? Y + FS_NOTE + 2.0 : Y - 3.0;
-		label_ground(c, L->r - 4.0 - w, by - 0.75 * FS_NOTE, L->r - 2.0, by + 0.2 * FS_NOTE);
-		draw_text(c, f, FS_NOTE, L->r - 3.0, by, it->label, PLOT_ALIGN_RIGHT, 0, it->colour);
+			return 0;
+		/* Above the line, then below it; at the right end, then the
+		 * left, then the middle. */
+		for (int side = 0; side < 2; side++) {
+			double by = side == 0 ? Y - 3.0 : Y + FS_NOTE + 2.0;
+			double xs[3] = { L->r - 3.0 - w, L->l + 3.0, 0.5 * (L->l + L->r - w) };
+			for (int k = 0; k < 3; k++)
+				s[n++] = (struct label_spot){ xs[k] - 1.0, by - asc, xs[k] + w + 1.0, by + desc,
+				                              xs[k], by, PLOT_ALIGN_LEFT, 0 };
+		}
 		break;
 	case IT_VLINE:
 		if (!isfinite(X) || X < L->l - 0.5 || X > L->r + 0.5)
-			return;
-		/* Along the line, reading upwards, on its right (left if no room). */
-		bx = X + 2.0 + 0.76 * FS_NOTE > L->r ? X - 2.0 : X + 2.0 + 0.76 * FS_NOTE;
-		label_ground(c, bx - 0.75 * FS_NOTE, L->t + 2.0, bx + 0.2 * FS_NOTE, L->t + 4.0 + w);
-		draw_text(c, f, FS_NOTE, bx, L->t + 3.0, it->label, PLOT_ALIGN_RIGHT, 1, it->colour);
+			return 0;
+		/* Along the line reading upwards: at the top, right of the line
+		 * then left of it; then at the bottom. */
+		for (int end = 0; end < 2; end++) {
+			double y0 = end == 0 ? L->t + 3.0 : L->b - 3.0 - w;
+			for (int side = 0; side < 2; side++) {
+				double bx = side == 0 ? X + 2.0 + asc : X - 2.0 - desc;
+				s[n++] = (struct label_spot){ bx - asc, y0 - 1.0, bx + desc, y0 + w + 1.0,
+				                              bx, y0, PLOT_ALIGN_RIGHT, 1 };
+			}
+		}
 		break;
 	case IT_CROSS:
-	case IT_PLABEL: {
+	case IT_PLABEL:
 		if (!isfinite(X) || !isfinite(Y))
-			return;
-		/* Point labels above the point, crosshair labels below it, so a
-		 * chosen part near the optimum does not write over it; a white
-		 * ground keeps either legible over a dense scatter. */
-		by = it->kind == IT_CROSS ? Y + 4.0 + FS_NOTE : Y - 4.0;
-		int left = X + 5.0 + w > L->r;
-		bx = left ? X - 5.0 : X + 5.0;
-		double x0 = left ? bx - w : bx;
-		label_ground(c, x0 - 1.0, by - 0.75 * FS_NOTE, x0 + w + 1.0, by + 0.2 * FS_NOTE);
-		draw_text(c, f, FS_NOTE, bx, by, it->label,
-		          left ? PLOT_ALIGN_RIGHT : PLOT_ALIGN_LEFT, 0, it->colour);
-		break;
-	}
-	case IT_TEXT:
-		if (isfinite(X) && isfinite(Y))
-			draw_text(c, f, FS_NOTE, X, Y, it->label, it->align, 0, it->colour);
+			return 0;
+		/* Crosshair labels below the point first, point labels above it,
+		 * so that a chosen part near the optimum does not write over it. */
+		for (int v = 0; v < 4; v++) {
+			/* Then the same places one line further out. */
+			int below = (v % 2 == 0) == (it->kind == IT_CROSS);
+			double off = v < 2 ? 4.0 : 4.0 + 1.3 * FS_NOTE;
+			double by = below ? Y + off + FS_NOTE : Y - off;
+			for (int h = 0; h < 2; h++) {
+				double x0 = h == 0 ? X + 5.0 : X - 5.0 - w;
+				s[n++] = (struct label_spot){ x0 - 1.0, by - asc, x0 + w + 1.0, by + desc,
+				                              x0, by, PLOT_ALIGN_LEFT, 0 };
+			}
+		}
 		break;
 	default:
 		break;
+	}
+	return n;
+}
+
+/* Labels of annotations (outside the clip so they are never cut): each in
+ * the candidate place that covers least, on a white ground that keeps it
+ * legible over grid lines. */
+static void
+draw_annotation_text(struct rctx *c, const struct plot_panel *pp, struct layout *L,
+                     const struct item *it, struct label_log *log)
+{
+	HPDF_Font f = c->r->font;
+	if (it->label == NULL)
+		return;
+	if (it->kind == IT_TEXT) {
+		double X = plot_scale_map(&L->sx, it->px), Y = plot_scale_map(&L->sy, it->py);
+		if (isfinite(X) && isfinite(Y))
+			draw_text(c, f, FS_NOTE, X, Y, it->label, it->align, 0, it->colour);
+		return;
+	}
+	double w = text_width(f, FS_NOTE, it->label);
+	struct label_spot spot[12];
+	int n = label_spots(L, it, w, spot), best = -1, best_hits = 0;
+	double best_cost = INFINITY;
+	for (int i = 0; i < n; i++) {
+		int hits;
+		double cost = label_cost(pp, L, it, spot[i].x0, spot[i].y0, spot[i].x1, spot[i].y1, &hits)
+		              + 0.5 * i;
+		if (cost < best_cost) {
+			best_cost = cost;
+			best = i;
+			best_hits = hits;
+		}
+	}
+	if (best < 0)
+		return;
+	const struct label_spot *b = &spot[best];
+	label_ground(c, b->x0, b->y0, b->x1, b->y1);
+	draw_text(c, f, FS_NOTE, b->tx, b->ty, it->label, b->align, b->rot90, it->colour);
+	struct plot_label_box box = { b->x0, b->y0, b->x1, b->y1, L->panel, best_hits, 0 };
+	for (int i = 0; i < L->n_placed; i++)
+		if (boxes_meet(&L->placed[i], b->x0, b->y0, b->x1, b->y1))
+			box.overlaps++;
+	if (L->n_placed < MAX_LABELS)
+		L->placed[L->n_placed++] = box;
+	if (log != NULL) {
+		if (log->n == log->cap) {
+			log->cap = log->cap ? 2 * log->cap : 16;
+			log->v = xrealloc(log->v, (size_t)log->cap * sizeof *log->v);
+		}
+		log->v[log->n++] = box;
 	}
 }
 
@@ -1552,7 +1732,7 @@ draw_axes(struct rctx *c, const struct plot_panel *pp, const struct layout *L)
 }
 
 static void
-draw_panel(struct rctx *c, const struct plot_panel *pp, struct layout *L)
+draw_panel(struct rctx *c, const struct plot_panel *pp, struct layout *L, struct label_log *log)
 {
 	layout_panel(c, pp, L);
 	draw_axes(c, pp, L);
@@ -1586,8 +1766,13 @@ draw_panel(struct rctx *c, const struct plot_panel *pp, struct layout *L)
 		else if (it->kind == IT_TORNADO)
 			draw_tornado(c, L, it);
 	}
-	for (int k = 0; k < pp->n_items; k++)
-		draw_annotation_text(c, L, &pp->items[k]);
+	/* Reference-line labels first (their places are fewest), then the
+	 * labels of points. */
+	static const enum item_kind label_order[] = { IT_HLINE, IT_VLINE, IT_CROSS, IT_PLABEL, IT_TEXT };
+	for (size_t o = 0; o < sizeof label_order / sizeof label_order[0]; o++)
+		for (int k = 0; k < pp->n_items; k++)
+			if (pp->items[k].kind == label_order[o])
+				draw_annotation_text(c, pp, L, &pp->items[k], log);
 	draw_legend(c, L);
 }
 
@@ -1603,6 +1788,8 @@ plot_render(const struct plot *p, const struct plot_render *r)
 	double cw = (w - (p->n_cols - 1) * PANEL_GAP) / p->n_cols;
 	double ch = (h - (p->n_rows - 1) * PANEL_GAP) / p->n_rows;
 	struct layout *L = xmalloc(sizeof *L);
+	if (p->log != NULL)
+		p->log->n = 0;
 	for (int i = 0; !c.failed && i < p->n_rows; i++) {
 		for (int j = 0; j < p->n_cols; j++) {
 			memset(L, 0, sizeof *L);
@@ -1610,7 +1797,8 @@ plot_render(const struct plot *p, const struct plot_render *r)
 			L->cy = i * (ch + PANEL_GAP);
 			L->cw = cw;
 			L->ch = ch;
-			draw_panel(&c, &p->panels[i * p->n_cols + j], L);
+			L->panel = i * p->n_cols + j;
+			draw_panel(&c, &p->panels[i * p->n_cols + j], L, p->log);
 		}
 	}
 	free(L);

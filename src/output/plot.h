@@ -204,6 +204,26 @@ struct plot_scale {
 /* The page coordinate of v; NAN if v is non-finite or <= 0 on a log scale. */
 double plot_scale_map(const struct plot_scale *s, double v);
 
+/* ---- where the labels went (for tests) ---------------------------------- */
+
+/* The box an annotation label (reference line, crosshair, point label)
+ * was drawn in, figure coordinates (points, y down), and what it covers:
+ * data_hits counts the data segments and markers under it, overlaps the
+ * labels drawn before it in its panel that it meets.  The renderer places
+ * each label where it covers least; these let a test check it. */
+struct plot_label_box {
+	double x0, y0, x1, y1;
+	int panel;                /* row-major index */
+	int data_hits;
+	int overlaps;
+};
+
+/* Asks the next plot_render to record its label boxes. */
+void plot_keep_label_boxes(struct plot *p);
+/* The boxes of the last render (valid until the next render or
+ * plot_free); returns how many. */
+int plot_label_boxes(const struct plot *p, const struct plot_label_box **out);
+
 /* ---- drawing (called by doc_figure) ------------------------------------ */
 
 struct plot_render {

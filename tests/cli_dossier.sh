@@ -1,0 +1,163 @@
+#!/bin/sh
+# cli_dossier.sh — every example's dossier read as its client reads it
+# (pdftotext), against its own result.json and bom.csv: one design of
+# record on the cover (its MTOW is the bill of materials plus the payload,
+# its regulatory class follows that mass), nothing from the catalogue's
+# provenance notes, no price of an unknown part printed as zero, no number
+# cut across two lines, no "auto" field printed as 0, the J-score explained
+# wherever it is shown, downwash only where the role limits it, the
+# document control and contents after the cover, clean text extraction;
+# and a design whose parts do not close, or fail a check, says so first.
+# Prints "ok NAME" / "not ok NAME" lines.
+AE=${AEROEVAL:-build/aeroeval}
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+
+ok() { echo "ok $1"; }
+notok() { echo "not ok $1${2:+ # $2}"; }
+check() {
+	name=$1
+	shift
+	if "$@" >/dev/null 2>&1; then ok "$name"; else notok "$name"; fi
+}
+
+SOURCE_DATE_EPOCH=1767225600 "$AE" build -q -o "$T/out" examples/ 2>"$T/err"
+if [ $? -gt 1 ]; then
+	cat "$T/err"
+	notok dossier_build_of_examples
+	exit 1
+fi
+
+# The fields whose 0 means "automatic", as the field table says (schema).
+"$AE" schema | awk '/^  [a-z_.]+  \(/ { f = $1 } /0 = automatic/ { print f }' >"$T/auto_fields"
+check dossier_schema_names_auto_fields test -s "$T/auto_fields"
+
+# The first status callout of a cover text: FEASIBLE, NOT FEASIBLE AS BUILT
+# or NOT BUILDABLE (whichever line comes first).
+first_status() {
+	grep -m 1 -E '^ *(FEASIBLE|NOT FEASIBLE AS BUILT|NOT BUILDABLE)$' "$1" | sed 's/^ *//'
+}
+
+# The bill of materials' mass in kg, parts plus payload, from bom.csv: the
+# total line carries the parts, the payload line the payload (total_mass_g
+# is the fourth field from the end, whatever the quoted descriptions hold).
+bom_plus_payload_kg() {
+	awk -F, '$3 == "total" || $3 == "payload" { g += $(NF - 3) } END { printf "%.4f\n", g / 1000 }' "$1"
+}
+
+for f in examples/*.json; do
+	n=$(basename "$f" .json)
+	d="$T/out/$n"
+	pdf="$d/dossier.pdf"
+	pdftotext -layout "$pdf" "$d/all.txt" 2>"$d/warn.txt"
+	pdftotext -layout -f 1 -l 1 "$pdf" "$d/cover.txt" 2>/dev/null
+	pdftotext -layout -f 2 -l 2 "$pdf" "$d/page2.txt" 2>/dev/null
+
+	check "dossier_${n}_text_extracts_without_tounicode_warning" \
+		sh -c "[ ! -s '$d/warn.txt' ] && ! pdftotext '$pdf' - 2>&1 >/dev/null | grep -q ."
+
+	# One design of record: the cover's MTOW is the BOM plus the payload.
+	# A design the parts do not close has no BOM aircraft: its cover mass
+	# is the continuous design's, which result.json's top level names.
+	cover=$(awk '/^Takeoff mass \(MTOW\)/ { print $4; exit }' "$d/cover.txt")
+	bom=$(bom_plus_payload_kg "$d/bom.csv")
+	rec=$(sed -n 's/^  "takeoff_mass_kg": *\([0-9.e+-]*\),$/\1/p' "$d/result.json" | head -n 1)
+	grep -q '"buildable": false' "$d/result.json" && bom=$rec
+	if [ -n "$cover" ] && awk -v c="$cover" -v b="$bom" -v r="$rec" \
+		'BEGIN { d1 = c - b; d2 = c - r; exit !(d1 < 0.0011 && d1 > -0.0011 && d2 < 0.0006 && d2 > -0.0006) }'; then
+		ok "dossier_${n}_cover_mtow_is_bom_plus_payload"
+	else
+		notok "dossier_${n}_cover_mtow_is_bom_plus_payload" "cover $cover kg, BOM + payload $bom kg, record $rec kg"
+	fi
+
+	# The regulatory class follows the mass of record.
+	eu=$(sed -n 's/^ *"eu_open_category": *"\([^"]*\)".*/\1/p' "$d/result.json" | head -n 1)
+	[ "$eu" = specific ] && eu="specific category"
+	check "dossier_${n}_regulatory_class_follows_the_record" \
+		grep -Eq "^Regulatory class by mass +EU $eu," "$d/cover.txt"
+
+	# Client-safe: the catalogue's provenance notes stay in the catalogue.
+	check "dossier_${n}_has_no_catalogue_notes" \
+		sh -c "! grep -Eiq 'recalled|secondary copy|screening|SwRI|confidence|re-read|transcri|note:' '$d/all.txt'"
+
+	# An unknown price is never printed as zero.
+	check "dossier_${n}_prints_no_zero_price" \
+		sh -c "! grep -Eq '(^|[^0-9.])0\.00 ?USD|USD,? 0\.00' '$d/all.txt' &&
+		       ! awk '/^[0-9]+ +Bill of materials$/ { on = 1 } /^[0-9]+ +Checks$/ { on = 0 }
+		              on && / 0\.00( |$)/ { bad = 1 } END { exit !bad }' '$d/all.txt'"
+
+	check "dossier_${n}_splits_no_number_across_lines" awk -f tests/split_numbers.awk "$d/all.txt"
+
+	# "auto", never 0, for a field whose 0 means automatic.
+	zeros=""
+	while read -r field; do
+		grep -Eq "^ *$field +0( |\$)" "$d/all.txt" && zeros="$zeros $field"
+	done <"$T/auto_fields"
+	if [ -z "$zeros" ]; then ok "dossier_${n}_prints_auto_not_zero"
+	else notok "dossier_${n}_prints_auto_not_zero" "$zeros"; fi
+
+	check "dossier_${n}_explains_j_where_shown" \
+		sh -c "! grep -Eq 'J \(%\)|J = ' '$d/all.txt' ||
+		       grep -q 'J is the estimated takeoff-mass penalty' '$d/all.txt'"
+
+	# Downwash is checked where the role limits it, and only there.
+	if grep -q '"name": *"Downwash' "$d/result.json"; then
+		check "dossier_${n}_checks_downwash_where_limited" \
+			grep -Eq "Downwash \((role|crop and drift) limit\)" "$d/all.txt"
+	else
+		check "dossier_${n}_shows_no_downwash_check_without_a_limit" \
+			sh -c "! grep -Eq 'Downwash \(|Downwash,' '$d/all.txt'"
+	fi
+
+	check "dossier_${n}_has_document_control_and_contents_after_the_cover" \
+		sh -c "grep -q '^Document control' '$d/page2.txt' && grep -q '^Contents' '$d/page2.txt' &&
+		       grep -Eq '^ *1 +Executive summary.* [0-9]+$' '$d/page2.txt' &&
+		       grep -q '^Checked by' '$d/page2.txt' && grep -q '^Approved by' '$d/page2.txt'"
+
+	# The verdict comes first on the cover and matches the record.
+	want=FEASIBLE
+	grep -q '"buildable": false' "$d/result.json" && want="NOT BUILDABLE"
+	if [ "$want" = FEASIBLE ] &&
+		awk '/"design_of_record"/ { on = 1 } on && /"feasible":/ { f = /false/; exit } END { exit !f }' "$d/result.json"; then
+		want="NOT FEASIBLE AS BUILT"
+	fi
+	got=$(first_status "$d/cover.txt")
+	if [ "$got" = "$want" ]; then ok "dossier_${n}_cover_states_the_verdict_first"
+	else notok "dossier_${n}_cover_states_the_verdict_first" "got '$got', want '$want'"; fi
+done
+
+# The FPV racer's parts weigh more than its continuous design: the class on
+# the cover is the record's (C1), the continuous optimum's (C0) beside it.
+# (When the parts do not close the racer, the cover has one class, the
+# continuous design's, and nothing to compare.)
+if grep -q '"buildable": false' "$T/out/fpv_racing_quad/result.json"; then
+	ok "dossier_fpv_class_is_the_records_not_the_continuous # SKIP not buildable"
+else
+	check dossier_fpv_class_is_the_records_not_the_continuous \
+		grep -Eq "^Regulatory class by mass +EU C1, .* EU C0," "$T/out/fpv_racing_quad/cover.txt"
+fi
+
+# A catalogue that closes nothing: the cover says NOT BUILDABLE first, and
+# the continuous design is labelled so wherever it stands for the record.
+"$AE" build -q -o "$T/nb" --db tests/fixtures/catalog/good examples/sar_imaging_quad.json 2>/dev/null
+nb="$T/nb/sar_imaging_quad"
+pdftotext -layout -f 1 -l 1 "$nb/dossier.pdf" "$nb/cover.txt" 2>/dev/null
+pdftotext -layout "$nb/dossier.pdf" "$nb/all.txt" 2>/dev/null
+check dossier_unbuildable_cover_says_so_first sh -c "[ \"\$(grep -m 1 -E '^ *(FEASIBLE|NOT FEASIBLE AS BUILT|NOT BUILDABLE)$' '$nb/cover.txt' | sed 's/^ *//')\" = 'NOT BUILDABLE' ]"
+check dossier_unbuildable_labels_the_continuous_design grep -q "Continuous design (not buildable)" "$nb/all.txt"
+check dossier_unbuildable_prints_no_bom_price sh -c "! grep -q 'Bill of materials price' '$nb/cover.txt'"
+
+# The document control names the checker and the approver the mission gives.
+mkdir -p "$T/m"
+sed 's/"author": *"\([^"]*\)"/"author": "\1", "checked_by": "R. Checker", "approved_by": "A. Approver"/' \
+	examples/sar_imaging_quad.json >"$T/m/signed.json"
+"$AE" build -q -o "$T/signed" "$T/m/signed.json" 2>/dev/null
+pdftotext -layout -f 2 -l 2 "$T/signed/signed/dossier.pdf" "$T/signed.txt" 2>/dev/null
+check dossier_document_control_names_checker_and_approver \
+	sh -c "grep -q '^Checked by *R. Checker' '$T/signed.txt' && grep -q '^Approved by *A. Approver' '$T/signed.txt'"
+
+# Web addresses are links: the BOM's maker page is a URI annotation
+# (libharu writes the slashes of the string as \057).
+check dossier_web_addresses_are_links grep -aq '/URI (https:\\057\\057docs.powerdrives.net\\057products\\057f_series)' \
+	"$T/out/sar_imaging_quad/dossier.pdf"
+exit 0
