@@ -128,7 +128,10 @@ n_many=$(ls "$M" | wc -l)
 "$AE" build -j 2 -o "$T/big" "$M" 2>"$T/big.err"; rc=$?
 [ "$rc" -le 1 ] && summary "$T/big.err" | grep -q "^build: $n_many compiled (.*), 0 up to date (0 infeasible), 0 rejected, 0 internal errors; $n_many missions in "
 check $? "many_missions_compile_in_one_call"
-[ "$(ls "$T/big" | wc -l)" -eq "$n_many" ]; check $? "many_missions_each_have_a_folder"
+[ "$(find "$T/big" -mindepth 1 -maxdepth 1 -type d | wc -l)" -eq "$n_many" ]
+check $? "many_missions_each_have_a_folder"
+# ... and a row each in the table the build keeps (a header line besides).
+[ "$(wc -l <"$T/big/index.csv")" -eq "$((n_many + 1))" ]; check $? "many_missions_each_have_a_row"
 
 # A shell gives background jobs SIGINT ignored; env restores the default so
 # the build sees the signal as from a terminal.
@@ -178,7 +181,7 @@ fi
 "$AE" --version | grep -q '^aeroeval [0-9][0-9.]*$'; check $? "version_prints_name_and_number"
 "$AE" --help >"$T/help.txt"; rc=$?
 ok=$rc
-for c in build solve check schema validate calibrate sensitivity; do
+for c in build solve check schema validate calibrate sensitivity summary; do
 	grep -q "^  $c " "$T/help.txt" || ok=1
 done
 grep -q "man aeroeval" "$T/help.txt" || ok=1

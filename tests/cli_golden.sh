@@ -1,7 +1,9 @@
 #!/bin/sh
-# Golden outputs of every example: result.json, bom.csv and the dossier's
-# text (pdftotext -layout) are pinned under tests/golden/NAME/, so that a
-# changed number is a visible diff in review.
+# Golden outputs of every example: result.json, bom.csv, the dossier's
+# text (pdftotext -layout) and, for a buildable design, the ArduPilot
+# hand-off (vehicle_components.json, ardupilot.param) are pinned under
+# tests/golden/NAME/, so that a changed number is a visible diff in review.
+# A hand-off file must exist in both places or in neither.
 #
 #   sh tests/cli_golden.sh          compare (ok / not ok lines; run_all.sh)
 #   sh tests/cli_golden.sh update   rewrite the pinned files (make golden)
@@ -20,10 +22,14 @@ fi
 for f in examples/*.json; do
 	n=$(basename "$f" .json)
 	pdftotext -layout "$T/out/$n/dossier.pdf" "$T/out/$n/dossier.txt" 2>/dev/null
-	for g in result.json bom.csv dossier.txt; do
+	for g in result.json bom.csv dossier.txt vehicle_components.json ardupilot.param; do
+		if [ ! -e "$T/out/$n/$g" ] && [ ! -e "tests/golden/$n/$g" ]; then
+			continue  # no hand-off for a design that is not buildable
+		fi
 		if [ "$mode" = update ]; then
 			mkdir -p "tests/golden/$n"
-			cp "$T/out/$n/$g" "tests/golden/$n/$g"
+			if [ -e "$T/out/$n/$g" ]; then cp "$T/out/$n/$g" "tests/golden/$n/$g"
+			else rm -f "tests/golden/$n/$g"; fi
 		elif cmp -s "$T/out/$n/$g" "tests/golden/$n/$g"; then
 			echo "ok golden_${n}_$g"
 		else

@@ -22,15 +22,17 @@
 #include "cli/batch.h"
 #include "cli/cli.h"
 #include "cli/cli_help.h"
+#include "cli/cli_summary.h"
 #include "output/fsout.h"
 #include "cli/pipeline.h"
+#include "cli/shard.h"
 #include "util/sha256.h"
 #include "util/strbuf.h"
 #include "core/template.h"
 #include "util/xalloc.h"
 
 #define BUILD_USAGE "usage: aeroeval build [-o DIR] [-j N] [-q] [--force] " \
-	"[--template FILE] [--db DIR] MISSION.json|DIR...\n"
+	"[--shard K/N] [--template FILE] [--db DIR] MISSION.json|DIR...\n"
 
 /* A mission cannot hang (the solver is bounded); this only guards against a
  * bug.  AEROEVAL_BUILD_TIMEOUT_S overrides it (tests use a short one). */
@@ -49,6 +51,8 @@ struct build {
 	char out_dir[4096];        /* -o, without trailing slashes */
 	int quiet;                 /* -q */
 	int force;                 /* --force */
+	struct shard shard;        /* --shard K/N; n == 0: every mission */
+	size_t n_given;            /* missions given, before the shard's pick */
 	int tty;                   /* stderr is a terminal: live progress line */
 	struct path_list missions;
 	char (*names)[256];        /* output folder of each mission, "" if unsafe */
@@ -514,9 +518,49 @@ summary(const struct build *b, int sig, size_t n_started, double seconds)
 	if (sig != 0)
 		strbuf_printf(&s, ", %zu stopped, %zu not started", b->n_stopped,
 		    b->missions.n - n_started);
-	strbuf_printf(&s, "; %zu missions in %.1f s\n", b->missions.n, seconds);
+	strbuf_printf(&s, "; %zu missions", b->missions.n);
+	if (b->shard.n > 0)
+		strbuf_printf(&s, " (shard %u/%u of %zu)", b->shard.k, b->shard.n, b->n_given);
+	strbuf_printf(&s, " in %.1f s\n", seconds);
 	fwrite(s.data, 1, s.len, stderr);
 	strbuf_free(&s);
+}
+
+/* Keeps the missions of this machine's share (shard.h); the others are
+ * other machines'.  A name that cannot name a folder is shared out by its
+ * file's base name, so exactly one machine rejects it. */
+static void
+pick_shard(struct build *b)
+{
+	b->n_given = b->missions.n;
+	if (b->shard.n == 0)
+		return;
+	size_t k = 0;
+	for (size_t i = 0; i < b->missions.n; i++) {
+		char *p = b->missions.v[i], name[256];
+		if (pipeline_name(p, name, sizeof name) != 0) {
+			const char *slash = strrchr(p, '/');
+			str_copy(name, sizeof name, slash ? slash + 1 : p);
+		}
+		if (shard_has(&b->shard, name))
+			b->missions.v[k++] = p;
+		else
+			free(p);
+	}
+	b->missions.n = k;
+}
+
+/* After a run that changed a mission folder (or found the table missing,
+ * or a killed writer's leftovers), the design-space table of the output
+ * folder is rebuilt (cli_summary.h); returns the run's exit status, raised
+ * to the refresh's (2 or 3) when that failed. */
+static int
+refresh_index(const struct build *b, int rc)
+{
+	if (b->n_ok + b->n_inf == 0 && (b->n_utd == 0 || !cli_summary_stale(b->out_dir)))
+		return rc;
+	int irc = cli_summary_refresh(b->out_dir, b->tpl, stderr);
+	return irc > rc ? irc : rc;
 }
 
 int
@@ -553,6 +597,13 @@ cli_build(int argc, char **argv)
 			db = argv[++i];
 		} else if (strcmp(a, "--template") == 0 && has_val) {
 			tpl_path = argv[++i];
+		} else if ((strcmp(a, "--shard") == 0 && has_val) || strncmp(a, "--shard=", 8) == 0) {
+			const char *v = a[7] == '=' ? a + 8 : argv[++i];
+			char msg[160];
+			if (shard_parse(v, &b.shard, msg, sizeof msg) != 0) {
+				fprintf(stderr, "aeroeval build: error: %s\n", msg);
+				rc = 2;
+			}
 		} else if (strncmp(a, "-j", 2) == 0 && (a[2] != '\0' || has_val)) {
 			const char *v = a[2] != '\0' ? a + 2 : argv[++i];
 			if (parse_jobs(v, &n_workers) != 0) {
@@ -578,11 +629,19 @@ cli_build(int argc, char **argv)
 		rc = 2;
 	}
 	list_free(&empty_dirs);
+	pick_shard(&b);
 	b.names = xcalloc(b.missions.n + 1, sizeof *b.names);
 	b.fp = xcalloc(b.missions.n + 1, sizeof *b.fp);
 	b.env = xcalloc(1, sizeof *b.env);
 	if (rc == 0)
 		rc = check_out_dir(out_opt, b.out_dir, sizeof b.out_dir);
+	if (rc == 0 && b.missions.n == 0) {
+		/* Nothing of this machine's: not an error, the others compile. */
+		if (!b.quiet)
+			fprintf(stderr, "build: shard %u/%u holds none of the %zu missions\n",
+			    b.shard.k, b.shard.n, b.n_given);
+		goto out;
+	}
 	if (rc == 0)
 		rc = check_names(&b);
 	if (rc == 0 && cli_env_load(b.env, db, 1, stderr) != 0)
@@ -620,7 +679,10 @@ cli_build(int argc, char **argv)
 			rc = 128 + sig;
 		else
 			rc = b.n_int ? 3 : b.n_rej + b.n_unw ? 2 : b.n_inf + b.n_utd_inf ? 1 : 0;
+		if (sig == 0)
+			rc = refresh_index(&b, rc);
 	}
+out:
 	template_free(b.tpl);
 	cli_env_free(b.env);
 	free(b.env);

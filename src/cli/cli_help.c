@@ -14,7 +14,8 @@ struct help_cmd {
 
 static const struct help_cmd help_cmds[] = {
 	{ "build",
-	  "build [-o DIR] [-j N] [-q] [--force] [--template FILE] [--db DIR] MISSION.json|DIR...",
+	  "build [-o DIR] [-j N] [-q] [--force] [--shard K/N] [--template FILE] [--db DIR] "
+	  "MISSION.json|DIR...",
 	  "compile missions into DIR/<name>/{dossier.pdf,result.json,bom.csv}",
 	  "A directory stands for its *.json files, in name order.  Missions\n"
 	  "compile in parallel worker processes; one failing mission does not\n"
@@ -24,6 +25,7 @@ static const struct help_cmd help_cmds[] = {
 	  "  -j N             compile N missions at once (default: online cores)\n"
 	  "  -q               print errors only\n"
 	  "  --force          recompile missions that are up to date\n"
+	  "  --shard K/N      compile share K of N only (N machines, one shared DIR)\n"
 	  "  --template FILE  dossier template (default: the built-in A4 one)\n"
 	  "  --db DIR         parts catalogue folder (default: data/catalog)\n"
 	  "\n"
@@ -31,6 +33,9 @@ static const struct help_cmd help_cmds[] = {
 	  "are unchanged since its last good compile is skipped (\"up to date\").\n"
 	  "^C stops the run: finished outputs stay, no partial file is left.\n"
 	  "A mission's outputs are replaced as one set: old or new, never a mix.\n"
+	  "A buildable design also gets vehicle_components.json (ArduPilot\n"
+	  "Methodic Configurator) and ardupilot.param.  DIR/index.csv and\n"
+	  "DIR/index.json, the table of every mission in DIR, are kept current.\n"
 	  "Exit status: 0 all feasible, 1 some design infeasible, 2 bad usage,\n"
 	  "input or a file-system problem, 3 internal error, 130/143 interrupted.\n" },
 	{ "solve",
@@ -59,6 +64,23 @@ static const struct help_cmd help_cmds[] = {
 	  "sensitivity [-o DIR] MISSION.json",
 	  "the 14-parameter sensitivity table of one mission",
 	  "  -o DIR   output folder (default: out)\n" },
+	{ "summary",
+	  "summary [-q] [--stdout] [--no-pdf] [--template FILE] DIR",
+	  "tabulate every compiled mission of DIR: index.csv, index.json, overview.pdf",
+	  "One row per DIR/<name>/result.json, by name: verdict, takeoff mass\n"
+	  "(and its prediction interval when given), payload, flight times, cost,\n"
+	  "pack, parts and the tightest check.  Rebuilt from the files each time,\n"
+	  "so a partial or sharded build gives a correct partial table; `build`\n"
+	  "keeps index.csv and index.json current by itself.\n"
+	  "\n"
+	  "  -q               print errors only\n"
+	  "  --stdout         print index.csv on stdout and write nothing\n"
+	  "  --no-pdf         write the tables only, no overview.pdf\n"
+	  "  --template FILE  template of overview.pdf (default: the built-in A4 one)\n"
+	  "\n"
+	  "Exit status: 0 written, 2 bad usage, no compiled mission, a result.json\n"
+	  "that cannot be read (the table is written without it) or a file-system\n"
+	  "problem, 3 internal error.\n" },
 };
 
 #define HELP_N_CMDS (sizeof help_cmds / sizeof help_cmds[0])

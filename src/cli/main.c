@@ -8,6 +8,7 @@
 #include "cli/cli_help.h"
 #include "cli/cli_sens.h"
 #include "cli/cli_solve.h"
+#include "cli/cli_summary.h"
 #include "cli/cli_validate.h"
 #include "output/doc.h"
 #include "util/xalloc.h"
@@ -26,6 +27,7 @@ static const struct command commands[] = {
 	{ "validate", cli_validate },
 	{ "calibrate", cli_calibrate },
 	{ "sensitivity", cli_sensitivity },
+	{ "summary", cli_summary },
 };
 
 static int

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "output/ardupilot.h"
 #include "output/bom_csv.h"
 #include "core/diag.h"
 #include "engine/engine.h"
@@ -69,24 +70,36 @@ pipeline_solve(const struct cli_env *env, const char *path,
 }
 
 /* The files of DIR/<name>/: the outputs in the order they are written,
- * then the stamp that vouches for them. */
+ * then the stamp that vouches for them.  Not every set has every output:
+ * no dossier without a template, no ArduPilot hand-off for a design that
+ * is not buildable (output/ardupilot.h). */
+enum pipeline_output { OUT_BOM, OUT_RESULT, OUT_DOSSIER, OUT_COMPONENTS, OUT_PARAMS,
+	N_OUTPUTS };
 static const char *const pipeline_files[] = { "bom.csv", "result.json",
-	"dossier.pdf", PIPELINE_STAMP, NULL };
-#define N_OUTPUTS 3  /* pipeline_files before the stamp */
+	"dossier.pdf", "vehicle_components.json", "ardupilot.param", PIPELINE_STAMP, NULL };
+_Static_assert(sizeof pipeline_files / sizeof pipeline_files[0] == N_OUTPUTS + 2,
+               "one name per output, the stamp, NULL");
+
+/* One set of outputs; data[i] is NULL for an output not in the set. */
+struct out_set {
+	const void *data[N_OUTPUTS];
+	size_t len[N_OUTPUTS];
+};
 
 /* The stamp's text: the fingerprint of the inputs, the verdict and the
- * SHA-256 of every output, so "up to date" can prove the files are the
- * ones this stamp was written with: the first n_out outputs (no dossier
- * without a template). */
+ * SHA-256 of every output in the set, so "up to date" can prove the files
+ * are the ones this stamp was written with, and that none is missing or
+ * extra. */
 static void
 stamp_text(struct strbuf *sb, const char *fp, int infeasible,
-           char hex[N_OUTPUTS][SHA256_HEX_LEN], int n_out)
+           char hex[N_OUTPUTS][SHA256_HEX_LEN], const bool present[N_OUTPUTS])
 {
 	strbuf_reset(sb);
 	strbuf_printf(sb, "%sfingerprint %s\nstatus %s\n", PIPELINE_STAMP_MAGIC, fp,
 	    infeasible ? "infeasible" : "feasible");
-	for (int i = 0; i < n_out; i++)
-		strbuf_printf(sb, "sha256 %s %s\n", hex[i], pipeline_files[i]);
+	for (int i = 0; i < N_OUTPUTS; i++)
+		if (present[i])
+			strbuf_printf(sb, "sha256 %s %s\n", hex[i], pipeline_files[i]);
 }
 
 int
@@ -94,8 +107,9 @@ pipeline_current(const struct pipeline_opts *o, const char *name, const char *fp
 {
 	struct fsfolder f;
 	char msg[512], stamp[4096], hex[N_OUTPUTS][SHA256_HEX_LEN];
+	bool present[N_OUTPUTS];
 	size_t n = 0;
-	int n_out = o->tpl != NULL ? N_OUTPUTS : N_OUTPUTS - 1, rc = -1;
+	int rc = -1;
 	if (fsfolder_open(&f, o->out_dir, name, pipeline_files, FSFOLDER_NOWAIT, 0.0,
 	    msg, sizeof msg) != 0)
 		goto done;
@@ -103,12 +117,14 @@ pipeline_current(const struct pipeline_opts *o, const char *name, const char *fp
 	if (!fsfolder_exists(&f)
 	    || fsfolder_read(&f, PIPELINE_STAMP, stamp, sizeof stamp, &n) != 0)
 		goto done;
-	for (int i = 0; i < n_out; i++)
-		if (fsfolder_hash(&f, pipeline_files[i], hex[i]) != 0)
-			goto done;
+	/* The outputs found are hashed; the stamp must list exactly those. */
+	for (int i = 0; i < N_OUTPUTS; i++)
+		present[i] = fsfolder_hash(&f, pipeline_files[i], hex[i]) == 0;
+	if (!present[OUT_BOM] || !present[OUT_RESULT] || present[OUT_DOSSIER] != (o->tpl != NULL))
+		goto done;
 	struct strbuf want = STRBUF_INIT;
 	for (int inf = 0; inf < 2 && rc < 0; inf++) {
-		stamp_text(&want, fp, inf, hex, n_out);
+		stamp_text(&want, fp, inf, hex, present);
 		if (want.len == n && memcmp(want.data, stamp, n) == 0)
 			rc = inf;
 	}
@@ -134,26 +150,29 @@ pipeline_clean(const struct pipeline_opts *o, const char *name)
  * as it was. */
 static enum pipeline_status
 write_set(const struct pipeline_opts *o, const char *name, const char *fp,
-          int infeasible, const void *data[N_OUTPUTS], const size_t len[N_OUTPUTS],
-          FILE *err)
+          int infeasible, const struct out_set *set, FILE *err)
 {
 	struct fsfolder f;
 	char msg[5000], hex[N_OUTPUTS][SHA256_HEX_LEN];
-	int n_out = data[N_OUTPUTS - 1] != NULL ? N_OUTPUTS : N_OUTPUTS - 1;
+	bool present[N_OUTPUTS];
 	int bad = fsfolder_open(&f, o->out_dir, name, pipeline_files, 0, o->lock_wait_s,
 	    msg, sizeof msg) != 0;
 	if (!bad) {
 		fsfolder_clean(&f, FSFOLDER_STALE_S);
 		bad = fsfolder_begin(&f, msg, sizeof msg) != 0;
 	}
-	for (int i = 0; i < n_out && !bad; i++) {
-		bad = fsfolder_put(&f, pipeline_files[i], data[i], len[i], 1, msg, sizeof msg) != 0;
-		sha256_hex(data[i], len[i], hex[i]);
+	for (int i = 0; i < N_OUTPUTS; i++) {
+		present[i] = set->data[i] != NULL;
+		if (!present[i] || bad)
+			continue;
+		bad = fsfolder_put(&f, pipeline_files[i], set->data[i], set->len[i], 1, msg,
+		    sizeof msg) != 0;
+		sha256_hex(set->data[i], set->len[i], hex[i]);
 	}
 	if (!bad && fp != NULL && fp[0] != '\0') {
 		/* Not synced: a stamp lost in a power cut costs a recompile only. */
 		struct strbuf sb = STRBUF_INIT;
-		stamp_text(&sb, fp, infeasible, hex, n_out);
+		stamp_text(&sb, fp, infeasible, hex, present);
 		bad = fsfolder_put(&f, PIPELINE_STAMP, sb.data, sb.len, 0, msg, sizeof msg) != 0;
 		strbuf_free(&sb);
 	}
@@ -238,9 +257,19 @@ pipeline_build(const struct cli_env *env, const struct pipeline_opts *o,
 			goto written;
 		}
 	}
-	const void *data[N_OUTPUTS] = { csv, json, pdf };
-	const size_t len[N_OUTPUTS] = { strlen(csv), strlen(json), n_pdf };
-	st = write_set(o, name, fp, st == PIPE_INFEASIBLE, data, len, err);
+	/* The autopilot hand-off, for a design of record that can be built. */
+	struct ardupilot_design ap;
+	char *components = NULL, *params = NULL;
+	if (ardupilot_derive(r, &env->model, env->cat, &ap, msg, sizeof msg) == 0) {
+		components = ardupilot_components(r, &ap, name, AEROEVAL_VERSION);
+		params = ardupilot_params(&ap, name, AEROEVAL_VERSION);
+	}
+	struct out_set set = { { csv, json, pdf, components, params },
+		{ strlen(csv), strlen(json), n_pdf, components ? strlen(components) : 0,
+		  params ? strlen(params) : 0 } };
+	st = write_set(o, name, fp, st == PIPE_INFEASIBLE, &set, err);
+	free(components);
+	free(params);
 written:
 	free(pdf);
 	free(json);

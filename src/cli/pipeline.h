@@ -33,7 +33,7 @@ enum pipeline_status {
 
 /* The stamp file in DIR/<name>/ and its first line. */
 #define PIPELINE_STAMP ".aeroeval-stamp"
-#define PIPELINE_STAMP_MAGIC "aeroeval-stamp 2\n"
+#define PIPELINE_STAMP_MAGIC "aeroeval-stamp 3\n"
 
 struct pipeline_opts {
 	const char *out_dir;          /* DIR of DIR/<name>/; must exist */
@@ -49,7 +49,9 @@ enum pipeline_status pipeline_solve(const struct cli_env *env, const char *path,
                                     struct solve_result *r, FILE *err,
                                     unsigned char **bytes, size_t *n_bytes);
 
-/* Compile path into out_dir/<name>/{result.json,bom.csv,dossier.pdf} and,
+/* Compile path into out_dir/<name>/{result.json,bom.csv,dossier.pdf}, for a
+ * buildable design also vehicle_components.json and ardupilot.param
+ * (output/ardupilot.h), and,
  * when fp is not NULL or "", a stamp vouching for them with fingerprint fp
  * (the caller's digest of every input).  The name is checked before the
  * solve; a file-system problem is one line naming the path, PIPE_UNWRITTEN. */

@@ -533,7 +533,7 @@ json_in_check_string(struct json_in *ji, const cJSON *item, const char *path,
 		               ": %zu bytes (at most %zu)", len, max_bytes);
 		return false;
 	}
-	if ((flags & JSON_IN_NO_FORMULA) && s[0] != '\0' && strchr("=+-@", s[0]) != NULL) {
+	if ((flags & JSON_IN_NO_FORMULA) && text_is_formula(s)) {
 		char q[96];
 		diag_quote(s, len, 24, q, sizeof q);
 		json_in_report(ji, DIAG_FORMULA, item, JSON_IN_VALUE, path,

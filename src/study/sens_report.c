@@ -9,6 +9,7 @@
 
 #include <cjson/cJSON.h>
 
+#include "util/json_print.h"
 #include "util/numfmt.h"
 #include "util/units.h"
 #include "util/xalloc.h"
@@ -237,20 +238,9 @@ sens_report_json(const struct sens_result *s, const char *aeroeval_version)
 	cJSON *arr = cJSON_AddArrayToObject(root, "parameters");
 	for (int i = 0; i < SENS_N_PARAMS; i++)
 		cJSON_AddItemToArray(arr, curve_json(&s->c[i]));
-	char *text = cJSON_Print(root);
+	char *text = json_print_file(root);
 	cJSON_Delete(root);
-	if (text == NULL) {
-		fprintf(stderr, "aeroeval: out of memory\n");
-		exit(3);
-	}
-	/* cJSON_Print ends without a newline; files end with one. */
-	size_t n = strlen(text);
-	char *withnl = xmalloc(n + 2);
-	memcpy(withnl, text, n);
-	withnl[n] = '\n';
-	withnl[n + 1] = '\0';
-	cJSON_free(text);
-	return withnl;
+	return text;
 }
 
 /* ---- PDF ------------------------------------------------------------------- */

@@ -170,3 +170,19 @@ csv_next(struct csv_reader *r, struct csv_record *rec, char *err, size_t errlen)
 	rec->n_fields = n;
 	return CSV_RECORD;
 }
+
+void
+csv_write_field(struct strbuf *sb, const char *s)
+{
+	if (strpbrk(s, ",\"\r\n") == NULL) {
+		strbuf_append_str(sb, s);
+		return;
+	}
+	strbuf_append_char(sb, '"');
+	for (; *s != '\0'; s++) {
+		if (*s == '"')
+			strbuf_append_char(sb, '"');  /* an inner quote is doubled */
+		strbuf_append_char(sb, *s);
+	}
+	strbuf_append_char(sb, '"');
+}

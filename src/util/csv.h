@@ -1,4 +1,5 @@
-/* csv.h — an RFC 4180 CSV reader over a buffer in memory.
+/* csv.h — an RFC 4180 CSV reader over a buffer in memory, and the field
+ * writer of the tables aeroeval writes (index.csv).
  *
  * For input modules (cohort.c); it knows nothing about what the columns
  * mean.  Accepted: fields quoted with '"' holding commas, doubled quotes
@@ -66,5 +67,12 @@ enum csv_status csv_next(struct csv_reader *r, struct csv_record *rec,
 
 /* Releases what the reader allocated.  NULL is a no-op. */
 void csv_free(struct csv_reader *r);
+
+/* ---- writing ------------------------------------------------------------- */
+
+/* Appends s as one RFC 4180 field: as it is, or in double quotes (an inner
+ * quote doubled) when it holds a comma, a double quote, CR or LF.  The
+ * caller writes the separators (",") and record ends ("\r\n"). */
+void csv_write_field(struct strbuf *sb, const char *s);
 
 #endif

@@ -24,20 +24,12 @@ file_err(char *err, size_t errlen, const char *fmt, ...)
 	va_end(ap);
 }
 
-int
-file_read(const char *path, size_t max_n, unsigned char **out,
-                size_t *n, char *err, size_t errlen)
+/* Reads the open file fd (named path in messages) whole, as file_read()
+ * describes, and closes it. */
+static int
+read_fd(int fd, const char *path, size_t max_n, unsigned char **out,
+        size_t *n, char *err, size_t errlen)
 {
-	*out = NULL;
-	*n = 0;
-	/* O_NONBLOCK: opening a FIFO must not wait for a writer (it is then
-	 * refused below as not a regular file); reads of a regular file are
-	 * unaffected. */
-	int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-	if (fd < 0) {
-		file_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
-		return -1;
-	}
 	struct stat st;
 	if (fstat(fd, &st) < 0 || !S_ISREG(st.st_mode)) {
 		file_err(err, errlen, "%s: not a regular file", path);
@@ -83,6 +75,38 @@ fail:
 	close(fd);
 	free(buf);
 	return -1;
+}
+
+int
+file_read(const char *path, size_t max_n, unsigned char **out,
+                size_t *n, char *err, size_t errlen)
+{
+	*out = NULL;
+	*n = 0;
+	/* O_NONBLOCK: opening a FIFO must not wait for a writer (it is then
+	 * refused as not a regular file); reads of a regular file are
+	 * unaffected. */
+	int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+	if (fd < 0) {
+		file_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+		return -1;
+	}
+	return read_fd(fd, path, max_n, out, n, err, errlen);
+}
+
+int
+file_read_at(int dir_fd, const char *name, const char *path, size_t max_n,
+             unsigned char **out, size_t *n, char *err, size_t errlen)
+{
+	*out = NULL;
+	*n = 0;
+	int fd = openat(dir_fd, name, O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOFOLLOW);
+	if (fd < 0) {
+		file_err(err, errlen, "%s: cannot open: %s", path, errno == ELOOP
+		    ? "a symbolic link, which aeroeval does not follow here" : strerror(errno));
+		return -1;
+	}
+	return read_fd(fd, path, max_n, out, n, err, errlen);
 }
 
 static int

@@ -19,6 +19,12 @@
 int file_read(const char *path, size_t max_n, unsigned char **out,
                     size_t *n, char *err, size_t errlen);
 
+/* The same for the entry name of the open directory dir_fd, never
+ * following a symbolic link there (an output folder's files: nothing under
+ * an output folder is followed, fsfolder.h); path names it in messages. */
+int file_read_at(int dir_fd, const char *name, const char *path, size_t max_n,
+                 unsigned char **out, size_t *n, char *err, size_t errlen);
+
 /* Finds the directory `name` (data, templates) that ships with the program:
  * next to the build tree (<program dir>/../name), installed
  * (<program dir>/../share/aeroeval/name), beside the program

@@ -158,3 +158,9 @@ text_utf8_copy(const char *s)
 	out[o] = '\0';
 	return out;
 }
+
+int
+text_is_formula(const char *s)
+{
+	return s[0] != '\0' && strchr("=+-@", s[0]) != NULL;
+}

@@ -49,4 +49,10 @@ char *text_utf8_copy(const char *s);
 /* The edit budget text_nearest() allows for a word of len bytes. */
 size_t text_typo_limit(size_t len);
 
+/* True when s starts like a spreadsheet formula (=, +, - or @), which a
+ * spreadsheet opening a CSV file would evaluate (CSV formula injection).
+ * The readers refuse such text in the catalogue (json_in.h), and the
+ * writers of CSV tables neutralise such cells of text they did not check. */
+int text_is_formula(const char *s);
+
 #endif

@@ -1,0 +1,77 @@
+/* summary.h — the design-space table: one row per compiled mission.
+ *
+ * `aeroeval summary DIR` and `build` (which keeps DIR/index.csv and
+ * DIR/index.json current) read every DIR/<name>/result.json into a row
+ * (input/summary_in.h) and render the rows (output/index.h).  The table is
+ * rebuilt from the per-mission files each time, never updated in place, so
+ * a partial or sharded build gives a correct partial table.
+ *
+ * Units are SI (kg, s) except where the name says otherwise (capacity_mah,
+ * cost_usd).  An unknown value has its has_ flag false (or "" for text):
+ * its cell stays empty.
+ * Who may include it: everyone (plain values, no I/O).
+ */
+#ifndef AEROEVAL_SUMMARY_H
+#define AEROEVAL_SUMMARY_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#define SUMMARY_NAME_MAX 256   /* bytes of a mission name, NUL included */
+#define SUMMARY_TEXT_MAX 200   /* bytes of a part or check name, NUL included */
+
+/* The verdict of a row, worst last. */
+enum summary_status {
+	SUMMARY_FEASIBLE,       /* every check of the design of record passes */
+	SUMMARY_INFEASIBLE,     /* built on real parts, some check fails */
+	SUMMARY_NOT_BUILDABLE,  /* no real parts close: the continuous design */
+	SUMMARY_STATUS_MAX
+};
+
+/* One compiled mission. */
+struct summary_row {
+	char name[SUMMARY_NAME_MAX];     /* output folder name */
+	enum summary_status status;
+	double takeoff_mass_kg;          /* MTOW of record */
+	bool has_interval;               /* result.json carries mtow_interval */
+	double interval_level;           /* its nominal coverage, e.g. 0.9 */
+	double mtow_lo_kg, mtow_hi_kg;   /* its bounds */
+	double payload_kg;               /* payload at takeoff */
+	bool has_flight_time;
+	double flight_time_s;            /* the mission's approved flight time */
+	bool has_endurance;
+	double hover_endurance_s;        /* hover at takeoff mass to the reserve */
+	bool has_cost;
+	double cost_usd;                 /* sum of the known BOM prices */
+	int prices_missing;              /* BOM lines without a price */
+	int cells;                       /* series cells, 0 unknown */
+	double capacity_mah;             /* pack capacity, 0 unknown */
+	char motor[SUMMARY_TEXT_MAX];    /* "maker part", "" without parts */
+	char propeller[SUMMARY_TEXT_MAX];
+	char battery[SUMMARY_TEXT_MAX];
+	char tightest[SUMMARY_TEXT_MAX]; /* binding check, "" when none */
+	double tightest_margin;          /* its margin (negative: it fails) */
+};
+
+/* A growable list of rows.  Plain value: = { 0 }, summary_free(). */
+struct summary {
+	struct summary_row *rows;
+	size_t n, cap;
+};
+
+/* Appends a copy of row. */
+void summary_add(struct summary *s, const struct summary_row *row);
+
+/* Orders the rows by name (bytewise), the table's one order. */
+void summary_sort(struct summary *s);
+
+/* Releases the rows; s is empty and reusable after.  NULL is a no-op. */
+void summary_free(struct summary *s);
+
+/* "feasible", "infeasible", "not buildable". */
+const char *summary_status_name(enum summary_status st);
+
+/* Rows of each status, for the one-line report. */
+void summary_count(const struct summary *s, size_t count[SUMMARY_STATUS_MAX]);
+
+#endif

@@ -1,0 +1,42 @@
+/* index.h — the design-space table as index.csv and index.json.
+ *
+ * One row per compiled mission (core/summary.h), in the order the caller
+ * gives them (summary_sort(): by name).  The same rows give the same bytes:
+ * no date, no path, no machine name, so a sharded build and a single one
+ * produce identical files.
+ *
+ * index.csv (RFC 4180, CRLF after every record, like bom.csv), header:
+ *   name,status,takeoff_mass_kg,mtow_interval_level,mtow_lo_kg,mtow_hi_kg,
+ *   payload_kg,flight_time_s,hover_endurance_s,cost_usd,prices_missing,
+ *   cells,capacity_mah,motor,propeller,battery,tightest_check,
+ *   tightest_margin
+ * Masses in kg with 3 decimals, times in s with 0, cost in USD with 2,
+ * capacity in mAh with 0, the margin (a fraction of its limit, negative
+ * when the check fails) with 3; an unknown value is an empty cell.  status
+ * is "feasible", "infeasible" or "not buildable".  A text cell that starts
+ * like a spreadsheet formula (= + - @: a mission file may be called
+ * "-x.json") gets a leading apostrophe, so a spreadsheet shows it as text
+ * instead of evaluating it.
+ *
+ * index.json: {"aeroeval_version", "counts": {"feasible", "infeasible",
+ * "not_buildable"}, "missions": [{"name", "status", "takeoff_mass_kg",
+ * "mtow_interval": {"level", "lo_kg", "hi_kg"} or null, "payload_kg",
+ * "flight_time_s", "hover_endurance_s", "cost_usd", "prices_missing",
+ * "cell_count", "battery_capacity_mah", "motor", "propeller", "battery",
+ * "tightest_check": {"name", "margin"} or null}]}; unknown values are
+ * null, numbers exact (numfmt_shortest), text as read.
+ *
+ * Output layer: renders text, writes no file.
+ */
+#ifndef AEROEVAL_INDEX_H
+#define AEROEVAL_INDEX_H
+
+#include "core/summary.h"
+
+/* index.csv of the rows.  Ownership: free(). */
+char *index_csv(const struct summary *s);
+
+/* index.json of the rows, naming the writer's version.  Ownership: free(). */
+char *index_json(const struct summary *s, const char *aeroeval_version);
+
+#endif
