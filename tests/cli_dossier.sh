@@ -21,6 +21,15 @@ check() {
 	if "$@" >/dev/null 2>&1; then ok "$name"; else notok "$name"; fi
 }
 
+# The split-number detector itself: a number cut in a table cell is found,
+# a column of lone figure labels is not.
+printf 'Peak power (W)        3340\n                      .2\n' >"$T/cut1.txt"
+printf 'Energy (Wh)   1206\n                 1\n' >"$T/cut2.txt"
+printf '   153\n    21\n    19        177\n    16\n' >"$T/labels.txt"
+check split_numbers_finds_a_cut_decimal sh -c "! awk -f tests/split_numbers.awk '$T/cut1.txt'"
+check split_numbers_finds_a_cut_integer sh -c "! awk -f tests/split_numbers.awk '$T/cut2.txt'"
+check split_numbers_ignores_figure_labels awk -f tests/split_numbers.awk "$T/labels.txt"
+
 SOURCE_DATE_EPOCH=1767225600 "$AE" build -q -o "$T/out" examples/ 2>"$T/err"
 if [ $? -gt 1 ]; then
 	cat "$T/err"

@@ -8,9 +8,10 @@
 #     numbers "1." over "2." are not numbers cut),
 #   - a line's last token, a number, over the next line's first token
 #     starting with a digit (a digit at a cell's line end followed by a
-#     digit at its next line's start), where one of the two lines holds
-#     more than that token: a lone number over a lone number is a column
-#     of figure labels (a stacked bar's segments), not a table cell.
+#     digit at its next line's start), where the first line holds more
+#     than that token (a table row has its other cells): a lone number
+#     over a number is a column of figure labels (a stacked bar's
+#     segments), not a table cell.
 # Table rows of whole numbers never match: the pieces above must overlap
 # in columns and the third rule compares a last token with a first one.
 
@@ -52,7 +53,7 @@ function overlap(a0, a1, b0, b1) {
 					continue
 				cut = (t1[i] ~ /[0-9]$/ && t2[j] ~ /^[.,][0-9]/) ||
 				      (t1[i] ~ /^[0-9][0-9,]*\.$/ && t2[j] ~ /^[0-9]/ && t2[j] !~ /^[0-9]+\.$/) ||
-				      (i == n1 && j == 1 && (n1 > 1 || n2 > 1) &&
+				      (i == n1 && j == 1 && n1 > 1 &&
 				       t1[i] ~ /^[0-9]([0-9.,]*[0-9])?$/ && t2[j] ~ /^[0-9]/)
 				if (cut) {
 					printf "%d: %s | %s\n", NR, t1[i], t2[j]

@@ -205,6 +205,7 @@ engine_params(const struct mission_spec *s, const struct model_data *md,
 	    ? 0.0 : SIZING_MIN_THRUST_MARGIN;
 	p->load_factor = role == ROLE_RACING ? pr->racing_load_factor : ro->load_factor;
 	p->aux_w = baseline ? 0.0 : pr->aux_power_w;
+	p->aux_scaled = !baseline && !s->given[SPECF_ROLE_AUX_POWER_W];
 	p->added_drag_m2 = baseline ? 0.0 : pr->added_drag_m2;
 	p->fwd_drag_mult = baseline ? 1.0 : pr->drag_area_multiplier;
 	p->cg_shift_m = baseline ? 0.0 : pr->cg_shift_m;

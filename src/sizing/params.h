@@ -47,7 +47,10 @@ struct sizing_params {
 	                              * target and may be relaxed down to this
 	                              * value when the loop cannot close */
 	double load_factor;
-	double aux_w;
+	double aux_w;                /* auxiliary power, W (the role's at
+	                              * SIZING_AUX_REF_KG when aux_scaled) */
+	bool aux_scaled;             /* the role's default: scales with the
+	                              * aircraft (sizing_aux_w()) */
 	double added_drag_m2;
 	double fwd_drag_mult;
 	double cg_shift_m;

@@ -73,7 +73,7 @@ build(const struct sizing_params *p, const struct perf_craft *c,
 	m->cd_h = p->cd_h;
 	m->cd_v = p->cd_v;
 	m->eta_drive = 1.0; /* not read: the motor gives the drive's losses */
-	m->aux_w = p->aux_w;
+	m->aux_w = sizing_aux_w(p, c->mass.total_kg + p->extra_payload_kg);
 	x->v_oc_nom_v = (double)c->cells * p->chem->v_nom;
 	m->bus_voltage_v = x->v_oc_nom_v;
 	m->real_drive = true;

@@ -252,7 +252,7 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 	m->cd_h = p->cd_h;
 	m->cd_v = p->cd_v;
 	m->eta_drive = p->eta_drive;
-	m->aux_w = p->aux_w;
+	m->aux_w = sizing_aux_w(p, e->design_mass_kg);
 	m->bus_voltage_v = (double)ls->cells * p->chem->v_nom;
 
 	/* Forward speed: the minimum-power speed when "auto". */
@@ -436,6 +436,14 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 		return;
 	}
 	evaluate_flight(p, ls->gamma_time, steps, rec, e);
+}
+
+double
+sizing_aux_w(const struct sizing_params *p, double design_mass_kg)
+{
+	if (!p->aux_scaled || !(design_mass_kg > 0.0))
+		return p->aux_w;
+	return p->aux_w * pow(design_mass_kg / SIZING_AUX_REF_KG, 2.0 / 3.0);
 }
 
 double

@@ -124,6 +124,15 @@ bool sizing_at_mass(const struct sizing_params *p, double mass_kg,
 /* The altitude-corrected seed of eq. (altcorrect), kg. */
 double sizing_seed_kg(double payload_kg, double rho_kg_m3);
 
+/* Auxiliary power at a design mass: the role's default (paper Table
+ * roles) describes the gimbal, sensors and links of an aircraft of about
+ * SIZING_AUX_REF_KG; the equipment those loads power grows as M^(2/3)
+ * (airframe.h), so a role default scales with it (a 249 g camera drone
+ * draws a few watts, not the 22.5 W of a 5 kg one).  A value the mission
+ * gave is used as is. */
+#define SIZING_AUX_REF_KG 5.0
+double sizing_aux_w(const struct sizing_params *p, double design_mass_kg);
+
 /* Continuous motor mass law (see the constants above), kg per motor. */
 double sizing_motor_kg(double power_max_w, double omega_max_rad_s);
 
