@@ -354,8 +354,9 @@ engine_motor_targets_should_follow_the_continuous_scaling_laws(void **state)
 	assert_sound_run(o);
 	/* paper §V-D: n_peak = n_hover / t_hover (t_hover = 0.55) */
 	assert_rel(o->rpm_peak, o->rpm_hover / 0.55, 1e-12);
-	/* KV = 60 n_peak / (V_full S) = rpm_peak / (4.2 S) for LiPo */
-	assert_rel(o->opt.motor_kv, o->rpm_peak / (4.2 * (double)o->cell_count), 1e-12);
+	/* KV = 60 n_peak / (V_full S) = rpm_peak / (4.35 S) for LiHV, the
+	 * default chemistry */
+	assert_rel(o->opt.motor_kv, o->rpm_peak / (4.35 * (double)o->cell_count), 1e-12);
 	/* blade pass at peak: N_b · RPS_peak = 2 rpm_peak / 60 */
 	assert_rel(o->blade_pass_frequency_hz, 2.0 * o->rpm_peak / 60.0, 1e-12);
 	/* the strength-sized arm sits at σ_all = 192 MPa */
@@ -440,7 +441,7 @@ engine_approved_time_should_fall_as_aux_power_rises_on_a_locked_battery(void **s
 /* ---- variants ---------------------------------------------------------- */
 
 static void
-engine_nmc_and_lipo_should_both_converge_with_different_batteries(void **state)
+engine_nmc_and_lihv_should_both_converge_with_different_batteries(void **state)
 {
 	struct fixture *f = *state;
 	struct mission_spec s;
@@ -451,7 +452,7 @@ engine_nmc_and_lipo_should_both_converge_with_different_batteries(void **state)
 	solve(f, &s, f->b);
 	assert_sound_run(&f->a->custom);
 	assert_sound_run(&f->b->custom);
-	assert_string_equal(f->a->custom.chemistry, "LiPo");
+	assert_string_equal(f->a->custom.chemistry, "LiHV");   /* the default */
 	assert_string_equal(f->b->custom.chemistry, "Li-ion NMC");
 	assert_true(fabs(f->b->custom.mass.battery_kg - f->a->custom.mass.battery_kg) > 1e-3);
 	/* η_pkg reports the cell figure over the pack law's (240 Wh/kg NMC
@@ -664,7 +665,7 @@ main(void)
 		T(engine_mtow_at_5000_m_should_exceed_sea_level),
 		T(engine_peak_battery_temperature_should_rise_with_ambient),
 		T(engine_approved_time_should_fall_as_aux_power_rises_on_a_locked_battery),
-		T(engine_nmc_and_lipo_should_both_converge_with_different_batteries),
+		T(engine_nmc_and_lihv_should_both_converge_with_different_batteries),
 		T(engine_auto_cells_should_not_stop_at_a_runaway_cell_count),
 		T(engine_li_s_should_converge_with_enough_series_cells),
 		T(engine_coaxial_x8_should_converge_with_the_quad_overlap_limit),

@@ -44,7 +44,7 @@ mission_io_should_apply_every_default_when_absent(void **state)
 	assert_memory_equal(&s, &d, sizeof s);
 	for (size_t i = 0; i < SPEC_N_FIELDS; i++)
 		assert_false(s.given[i]);
-	assert_string_equal(s.battery_chemistry, "LiPo");
+	assert_string_equal(s.battery_chemistry, "LiHV");
 	assert_false(s.v_forward_auto);
 }
 
@@ -701,7 +701,7 @@ spec_format_value_should_give_text_with_unit(void **state)
 	spec_format_value(&s, spec_field_by_path("report.title"), buf, sizeof buf);
 	assert_string_equal(buf, "(none)");
 	spec_format_value(&s, spec_field_by_path("battery_chemistry"), buf, sizeof buf);
-	assert_string_equal(buf, "LiPo");
+	assert_string_equal(buf, "LiHV");
 	spec_format_value(&s, spec_field_by_path("ambient_temp_c"), buf, 4);
 	assert_string_equal(buf, "15 ");
 }

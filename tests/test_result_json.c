@@ -675,7 +675,7 @@ result_json_mission_should_spell_auto_enums_and_defaulted(void **state)
 	assert_string_equal(str(m, "airframe_class"), "Agricultural");
 	assert_string_equal(str(get(m, "structural_overrides"), "arm_config"), "under_rotor");
 	assert_string_equal(str(m, "name"), "Survey \"north\" field");
-	assert_string_equal(str(m, "battery_chemistry"), "LiPo");
+	assert_string_equal(str(m, "battery_chemistry"), "LiHV");
 	assert_exact(num(get(m, "locks"), "locked_kv"), 917.25);
 
 	/* defaulted: every path not given, in table order. */

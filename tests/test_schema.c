@@ -175,7 +175,7 @@ schema_json_should_list_exactly_the_table_fields(void **state)
 	}
 	assert_int_equal(n, SPEC_N_FIELDS);
 	assert_string_equal(cJSON_GetObjectItemCaseSensitive(schema_node(root, "battery_chemistry"),
-	                                                     "default")->valuestring, "LiPo");
+	                                                     "default")->valuestring, "LiHV");
 	cJSON_Delete(defaults);
 	cJSON_Delete(root);
 }
@@ -239,7 +239,7 @@ schema_text_should_list_every_field_with_its_range(void **state)
 	                             "allowed 0 to 500 kg\n"));
 	assert_non_null(strstr(text, "allowed above 0.05 up to 5 m"));
 	assert_non_null(strstr(text, "allowed: offset, folding, under_rotor"));
-	assert_non_null(strstr(text, "  battery_chemistry  (string)\n      default LiPo"));
+	assert_non_null(strstr(text, "  battery_chemistry  (string)\n      default LiHV"));
 	/* Each group heading once, the top level first. */
 	const char *top = strstr(text, "\ntop level\n");
 	assert_non_null(top);

@@ -18,7 +18,7 @@ spec_defaults_should_match_the_paper(void **state)
 	(void)state;
 	struct mission_spec s;
 	spec_defaults(&s);
-	assert_string_equal(s.battery_chemistry, "LiPo");
+	assert_string_equal(s.battery_chemistry, "LiHV");  /* not the paper's LiPo: docs/model.md */
 	assert_int_equal(s.num_rotors, 4);
 	assert_rel(s.structural_overrides.wall_thickness_ratio, 0.90, 1e-12);
 	assert_rel(s.structural_overrides.geometry_constant, 1.5, 1e-12);

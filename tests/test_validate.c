@@ -186,7 +186,7 @@ rule_should_not_lock_a_propeller_the_wheelbase_cannot_hold(void **state)
 	    VALIDATE_SKIP_NONE);
 	assert_false(s.locks.is_prop_locked);
 	assert_rel(s.max_diameter_m, 0.35, 1e-15);
-	assert_string_equal(s.battery_chemistry, "LiPo");
+	assert_string_equal(s.battery_chemistry, "LiHV");
 	assert_false(s.coaxial_layout);
 	assert_int_equal(s.payload_role.type, ROLE_NONE);
 	assert_int_equal(notes, VALIDATE_NOTE_PROP_OVER | VALIDATE_NOTE_CHEM_DEFAULT

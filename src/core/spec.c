@@ -85,7 +85,7 @@ spec_defaults(struct mission_spec *s)
 		}
 	}
 	/* The one string with a non-empty default. */
-	strcpy(s->battery_chemistry, "LiPo");
+	strcpy(s->battery_chemistry, "LiHV");
 }
 
 const struct spec_field_info *

@@ -161,7 +161,7 @@ X(AMBIENT_TEMP_C, "ambient_temp_c", SPEC_NUM, ambient_temp_c, "degC", 15, -40, 5
   "Ambient air temperature at the operating altitude (default: ISA temperature there, 15 degC at sea level)") \
 \
 X(BATTERY_CHEMISTRY, "battery_chemistry", SPEC_STR, battery_chemistry, "", 0, 0, 0, SPEC_F_DERIVED, NULL, \
-  "Chemistry profile name from data/chemistries.json (default LiPo)") \
+  "Chemistry profile name from data/chemistries.json (default LiHV: the packs of current camera, enterprise and spraying aircraft)") \
 X(NOMINAL_CELL_COUNT, "nominal_cell_count", SPEC_INT, nominal_cell_count, "cells", 0, 0, 24, SPEC_F_ZERO_AUTO, NULL, \
   "Series cell count (0 = chosen by the solver)") \
 X(BATTERY_PACK_COUNT, "battery_pack_count", SPEC_INT, battery_pack_count, "packs", 1, 1, 8, 0, NULL, \

@@ -18,7 +18,7 @@ static const char *const note_text[VALIDATE_NOTE_COUNT] = {
 	"wheelbase from the propeller's overlap limit",
 	"propeller above the overlap limit: not locked",
 	"chemistry \"Li-ion\" read as Li-ion NMC",
-	"chemistry unknown: LiPo",
+	"chemistry unknown: LiHV",
 	"coaxial unknown: flat layout",
 	"role unknown: none",
 	"endurance from the max flight time",
@@ -247,7 +247,7 @@ validate_mission_explained(const struct cohort_row *row, const struct model_data
 		set_chem(s, chem);
 		nt |= VALIDATE_NOTE_CHEM_FAMILY;
 	} else {
-		set_chem(s, "LiPo");
+		set_chem(s, "LiHV");
 		nt |= VALIDATE_NOTE_CHEM_DEFAULT;
 	}
 

@@ -42,7 +42,7 @@
  *   chemistry   battery_chemistry when it names a loaded profile (case
  *               ignored); the bare family "Li-ion" -> "Li-ion NMC" (of the
  *               two Li-ion profiles the lower specific energy: no fact
- *               picks one, so the conservative one) (noted); else LiPo, the
+ *               picks one, so the conservative one) (noted); else LiHV, the
  *               engine's default (noted).
  *   packs       battery_pack_count; unknown -> 1.
  *   cells       cell_count -> nominal_cell_count (the bus voltage is a fact
@@ -91,7 +91,7 @@ enum validate_note {
 	VALIDATE_NOTE_WHEELBASE_PROP = 1u << 0, /* wheelbase from the prop overlap */
 	VALIDATE_NOTE_PROP_OVER      = 1u << 1, /* prop above the overlap limit, not locked */
 	VALIDATE_NOTE_CHEM_FAMILY    = 1u << 2, /* "Li-ion" -> "Li-ion NMC" */
-	VALIDATE_NOTE_CHEM_DEFAULT   = 1u << 3, /* chemistry unknown -> LiPo */
+	VALIDATE_NOTE_CHEM_DEFAULT   = 1u << 3, /* chemistry unknown -> LiHV */
 	VALIDATE_NOTE_COAX_DEFAULT   = 1u << 4, /* coaxial unknown -> flat */
 	VALIDATE_NOTE_ROLE_DEFAULT   = 1u << 5, /* role unknown -> none */
 	VALIDATE_NOTE_MAX_FLIGHT     = 1u << 6, /* endurance from the max flight time */
