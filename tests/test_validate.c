@@ -322,8 +322,20 @@ cohort_should_solve_each_row_and_count_only_converged_rows(void **state)
 		assert_rel(vr->err_pct, 100 * (vr->predicted_kg - vr->actual_kg)
 		    / vr->actual_kg, 1e-12);
 		assert_true(vr->predicted_kg > c.rows[i].payload_kg);
+		/* The loop's slope at the real mass: positive and finite. */
+		assert_true(vr->slope_at_real > 0.0 && isfinite(vr->slope_at_real));
+		/* Inside the shipped interval exactly when the error is. */
+		const struct model_interval *iv = model_interval_for(
+		    &md.cal.accuracy[MODEL_FROM_ENDURANCE], vr->spec.airframe_class);
+		double r = log(vr->actual_kg / vr->predicted_kg);
+		assert_int_equal(vr->inside, r >= iv->log_lo && r <= iv->log_hi);
 	}
 	assert_true(ok >= 3);
+	assert_true(v.has_interval);
+	size_t inside = 0;
+	for (size_t i = 0; i < v.n_rows; i++)
+		inside += v.rows[i].status == VALIDATE_ROW_OK && v.rows[i].inside;
+	assert_int_equal(v.n_inside, inside);
 	assert_int_equal(v.n_ok, ok);
 	/* Only the first row gives a battery mass. */
 	assert_true(v.battery.n <= 1);

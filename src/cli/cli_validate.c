@@ -149,6 +149,18 @@ print_table(FILE *out, const struct cohort *c, const struct validate_report *v)
 		fprintf(out, "  %-28.28s T/W %.1f\n", c->rows[i].name,
 		    vr->thrust_to_weight);
 	}
+	header = 0;
+	for (size_t i = 0; i < v->n_rows; i++) {
+		const struct validate_row *vr = &v->rows[i];
+		if (vr->status != VALIDATE_ROW_OK || !(vr->slope_at_real >= 1.0))
+			continue;
+		if (!header++)
+			fprintf(out, "\nNot a contraction at the real mass (the loop's slope there is "
+			    "1 or more: the real aircraft is no fixed point the loop can reach; "
+			    "docs/validation.md):\n");
+		fprintf(out, "  %-28.28s slope %.2f, predicted %+.1f%%\n", c->rows[i].name,
+		    vr->slope_at_real, vr->err_pct);
+	}
 }
 
 /* Every row ran into a skip, a loop that did not converge or the gate:
@@ -249,6 +261,7 @@ report_json(const char *path, const struct cohort *c, const struct validate_repo
 			cJSON_AddNumberToObject(o, "capacity_mah", vr->capacity_mah);
 			cJSON_AddNumberToObject(o, "thrust_to_weight", vr->thrust_to_weight);
 			cJSON_AddBoolToObject(o, "thrust_relaxed", vr->thrust_relaxed);
+			cJSON_AddNumberToObject(o, "slope_at_real_mass", vr->slope_at_real);
 		}
 		if (vr->has_battery) {
 			cJSON_AddNumberToObject(o, "battery_actual_kg", vr->battery_actual_kg);
@@ -525,8 +538,8 @@ cli_calibrate(int argc, char **argv)
 			    calibrate_prior[j], before[j], cr.theta[j], cr.n_per_param[j]);
 		printf("small-platform wiring coefficient: %.4g -> %.4g kg/(A m)\n",
 		    cr.before.wire_coef_small, cr.after.wire_coef_small);
-		printf("Open loop (dry mass, or the closure at the real mass): mean error "
-		    "%.1f %% before, %.1f %% after (%zu LM iterations, %zu evaluations, mu %.2g)\n",
+		printf("Open loop, the closure f(M)/M at the real mass: mean error "
+		    "%.1f %% at the priors, %.1f %% fitted (%zu LM iterations, %zu evaluations, mu %.2g)\n",
 		    cr.open_before_pct, cr.open_after_pct, cr.n_iter, cr.n_evals, CALIBRATE_MU);
 		printf("Closed loop, in sample: MTOW MAPE %.1f %% over %zu rows sized\n",
 		    cr.mtow_mape_pct, cr.n_sized);

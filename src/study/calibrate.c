@@ -442,7 +442,13 @@ fit(const struct calibrate_row *rows, size_t n, const struct model_data *md,
 
 	struct fit_ctx *cx = xcalloc(1, sizeof *cx);
 	cx->rows = rows;
+	/* The fit starts from the priors, whatever calibration md carries:
+	 * it is a function of the cohort alone (md->cal only lends the
+	 * small-platform wiring ratio and is reported as "before"). */
+	struct model_calibration prior_cal;
+	calibrate_apply(calibrate_prior, &md->cal, &prior_cal);
 	cx->md = *md;
+	cx->md.cal = prior_cal;
 	cx->base = md->cal;
 	cx->progress = progress;
 	size_t *use = xmalloc((n ? n : 1) * sizeof *use);
@@ -456,7 +462,7 @@ fit(const struct calibrate_row *rows, size_t n, const struct model_data *md,
 		double r[3];
 		if ((size_t)open_residuals(cx, &rows[i], r) != n_residuals(&rows[i]))
 			continue;
-		if (!contracts(cx, &rows[i], &md->cal, work)) {
+		if (!contracts(cx, &rows[i], &prior_cal, work)) {
 			out->n_relaxed++;
 			continue;
 		}
@@ -471,10 +477,8 @@ fit(const struct calibrate_row *rows, size_t n, const struct model_data *md,
 	}
 	cx->use = use;
 	cx->n = m;
-	double start[CAL_N_PARAMS];
-	calibrate_theta(&md->cal, start);
-	out->open_before_pct = open_error_pct(cx, start);
-	out->lsq_status = minimise(cx, start, mu, out->theta, &out->n_iter);
+	out->open_before_pct = open_error_pct(cx, calibrate_prior);
+	out->lsq_status = minimise(cx, calibrate_prior, mu, out->theta, &out->n_iter);
 	if (out->lsq_status != LSQ_OK && out->lsq_status != LSQ_MAXITER
 	    && !(out->lsq_status == LSQ_EBADFUNC && out->n_iter > 0)) {
 		rc = -2;

@@ -116,8 +116,8 @@ struct calibrate_result {
 	size_t n_relaxed;                 /* rows left out: not a contraction at the
 	                                   * role's default thrust target */
 	size_t n_per_param[CAL_N_PARAMS]; /* rows informing each coefficient */
-	double open_before_pct;           /* open-loop mean |error| of the fitted */
-	double open_after_pct;            /* quantities (dry or total), % */
+	double open_before_pct;           /* open-loop mean |closure error| at the */
+	double open_after_pct;            /* priors and at the fit, % */
 	double mtow_mape_pct;             /* closed loop, in sample, after (from
 	                                   * the endurance) */
 	size_t n_sized;                   /* rows the closed loop sized, after */
@@ -137,7 +137,8 @@ struct calibrate_progress {
 	void *ctx;
 };
 
-/* Fits on cohort c starting from md->cal (priors calibrate_prior) and,
+/* Fits on cohort c starting from the priors calibrate_prior (md->cal is
+ * the "before" of the report and lends its wiring ratio) and,
  * when loo, measures the leave-one-out accuracy of both battery bases into
  * out->after.accuracy[].
  * Returns 0 with *out filled, -1 when no row of c yields a usable mission

@@ -382,6 +382,13 @@ validate_cohort(const struct cohort *c, const struct model_data *md,
 			vr->inside = r >= iv->log_lo && r <= iv->log_hi;
 			out->n_inside += vr->inside;
 		}
+		/* The loop's slope at the real mass: whether the real aircraft
+		 * is a fixed point the loop can reach (docs/validation.md). */
+		struct sizing_open lo, hi;
+		double m = row->takeoff_mass_kg;
+		if (engine_at_mass(&vr->spec, md, 0.99 * m, &lo)
+		    && engine_at_mass(&vr->spec, md, 1.01 * m, &hi))
+			vr->slope_at_real = (hi.mass.total_kg - lo.mass.total_kg) / (0.02 * m);
 		/* Open loop at the real mass, where the dry mass is known. */
 		struct sizing_open o;
 		double dry = row->takeoff_mass_kg - row->payload_kg

@@ -185,6 +185,10 @@ struct validate_row {
 	double battery_pred_kg;
 	double battery_err_pct;
 	bool inside;               /* actual inside the shipped interval (OK rows) */
+	double slope_at_real;      /* dF/dM of the model at the real takeoff mass
+	                            * (open loop, capacity re-sized at each side);
+	                            * >= 1: the real aircraft is no stable fixed
+	                            * point of the model, 0 when not evaluated */
 	int cells;                 /* series cells of the design (0 unless run) */
 	double capacity_mah;       /* capacity of the design (0 unless run) */
 	double thrust_to_weight;   /* T/W the design flies (0 unless run) */
