@@ -55,7 +55,7 @@ BIN      := $(BUILD)/aeroeval
 TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps test unit example paper install clean check-layers asan fuzz bench golden fonts
+.PHONY: all deps test unit example paper install clean check-layers asan fuzz bench closure golden fonts
 
 all: $(BIN) aeroeval
 
@@ -132,6 +132,12 @@ fuzz: deps
 # wall time and memory, each beside its target (tests/bench.sh).
 bench: all $(BUILD)/bench
 	sh tests/bench.sh $(BUILD)
+
+# `closure`: the closure report alone (also the first part of `bench`):
+# seeded plausible missions, the share that closes on real parts and the
+# closed-vs-continuous takeoff-mass gap (docs/validation.md).
+closure: all $(BUILD)/bench
+	$(BUILD)/bench closure 1 200 $(BIN) data/catalog
 
 $(BUILD)/bench: tests/bench.c $(LIB)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -Itests -o $@ $< $(LIB) $(PKG_LIBS)

@@ -10,6 +10,18 @@
  *   design still gets its whole dossier, so it costs what a feasible one
  *   does.
  *
+ * usage: build/bench closure SEED N AEROEVAL [DB]
+ *   The closure report: N plausible missions made from SEED (payload
+ *   0.2-25 kg log-uniform, wheelbase 0.25-2 m, 4, 4, 6 or 8 rotors, hover
+ *   600-1800 s, altitude 0-4000 m, one of the roles imaging, delivery,
+ *   inspection, mapping or none; every other field its default), each
+ *   solved by `AEROEVAL solve [--db DB]`.  Prints how many size
+ *   continuously, how many of those close on real parts (a design of
+ *   record with no violation of its own), the closed-vs-continuous takeoff
+ *   mass gap (median, median of its size, worst) and the failures by code.
+ *   With CLOSURE_LIST=1 it also lists every mission that does not close.
+ *   Deterministic: the same lines for the same SEED, binary and catalogue.
+ *
  * usage: build/bench catalog SRC DST FACTOR
  *   Writes into DST every .json catalogue file of SRC with each entry of its
  *   top-level array repeated FACTOR times, the copies' ids suffixed -x2,
@@ -18,7 +30,9 @@
  *   Every other field is kept, so the copies are valid entries.
  */
 #include <dirent.h>
+#include <unistd.h>
 #include <math.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -157,14 +171,214 @@ grow_catalog(const char *src, const char *dst, int factor)
 	return rc;
 }
 
+/* ---- closure report -------------------------------------------------- */
+
+#define CLOSURE_MAX_CODES 32
+
+struct closure {
+	int n_missions, n_continuous, n_closed;
+	double *gap;                  /* closed / continuous - 1, per closure */
+	char code[CLOSURE_MAX_CODES][48];
+	int n_code[CLOSURE_MAX_CODES];
+	int n_codes;
+};
+
+/* One plausible mission of the closure study, the i-th from s. */
+static cJSON *
+closure_mission(uint64_t *s)
+{
+	static const char *const roles[] = { "imaging", "delivery", "inspection",
+		"mapping", "none" };
+	static const int rotors[] = { 4, 4, 6, 8 };
+	cJSON *m = cJSON_CreateObject();
+	cJSON_AddNumberToObject(m, "payload_kg",
+	    round(pow(10.0, uniform(s, -0.7, 1.4)) * 100.0) / 100.0);
+	cJSON_AddNumberToObject(m, "max_diameter_m",
+	    round(uniform(s, 0.25, 2.0) * 100.0) / 100.0);
+	cJSON_AddNumberToObject(m, "num_rotors", rotors[next_u64(s) % 4]);
+	cJSON_AddNumberToObject(m, "t_hover_s", round(uniform(s, 600.0, 1800.0)));
+	cJSON_AddNumberToObject(m, "altitude_m", round(uniform(s, 0.0, 4000.0)));
+	cJSON *role = cJSON_AddObjectToObject(m, "payload_role");
+	cJSON_AddStringToObject(role, "type", roles[next_u64(s) % 5]);
+	return m;
+}
+
+static void
+closure_count(struct closure *c, const char *code)
+{
+	for (int i = 0; i < c->n_codes; i++)
+		if (strcmp(c->code[i], code) == 0) {
+			c->n_code[i]++;
+			return;
+		}
+	if (c->n_codes < CLOSURE_MAX_CODES) {
+		snprintf(c->code[c->n_codes], sizeof c->code[0], "%s", code);
+		c->n_code[c->n_codes++] = 1;
+	}
+}
+
+/* The solve's stdout, whole (caller frees), or NULL. */
+static char *
+closure_solve(const char *cmd)
+{
+	FILE *p = popen(cmd, "r");
+	if (p == NULL)
+		return NULL;
+	size_t cap = 1u << 20, len = 0;
+	char *buf = malloc(cap);
+	size_t got;
+	while (buf != NULL && (got = fread(buf + len, 1, cap - len - 1, p)) > 0) {
+		len += got;
+		if (len + 1 == cap) {
+			char *more = realloc(buf, cap *= 2);
+			if (more == NULL) {
+				free(buf);
+				buf = NULL;
+			}
+			buf = more;
+		}
+	}
+	pclose(p);
+	if (buf != NULL)
+		buf[len] = '\0';
+	return buf;
+}
+
+/* Record one solve's result.json (text) in c; name for the listing. */
+static void
+closure_record(struct closure *c, const char *text, const char *name,
+               const cJSON *mission, bool list)
+{
+	cJSON *r = text != NULL ? cJSON_Parse(text) : NULL;
+	const cJSON *custom = cJSON_GetObjectItemCaseSensitive(r, "custom");
+	if (!cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(custom, "ran"))
+	    || !cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(custom, "converged"))) {
+		if (r == NULL)
+			closure_count(c, "(no result)");
+		cJSON_Delete(r);
+		return;
+	}
+	c->n_continuous++;
+	double m_cont = cJSON_GetNumberValue(
+	    cJSON_GetObjectItemCaseSensitive(custom, "total_mass_kg"));
+	const cJSON *rec = cJSON_GetObjectItemCaseSensitive(r, "design_of_record");
+	double m_rec = cJSON_GetNumberValue(
+	    cJSON_GetObjectItemCaseSensitive(rec, "total_mass_kg"));
+	bool buildable = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(r, "buildable"));
+	int failed = 0;
+	const cJSON *v;
+	cJSON_ArrayForEach(v, cJSON_GetObjectItemCaseSensitive(r, "violations")) {
+		const char *run = cJSON_GetStringValue(
+		    cJSON_GetObjectItemCaseSensitive(v, "run"));
+		const char *code = cJSON_GetStringValue(
+		    cJSON_GetObjectItemCaseSensitive(v, "code"));
+		if (run != NULL && code != NULL && strcmp(run, "closed") == 0) {
+			closure_count(c, code);
+			failed++;
+		}
+	}
+	if (buildable && failed == 0 && m_cont > 0.0) {
+		c->gap[c->n_closed++] = m_rec / m_cont - 1.0;
+	} else if (list) {
+		char *m = cJSON_PrintUnformatted(mission);
+		printf("  open %s %s\n", name, m != NULL ? m : "");
+		free(m);
+	}
+	cJSON_Delete(r);
+}
+
+static int
+cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+static int
+closure_report(uint64_t seed, int n, const char *bin, const char *db)
+{
+	char dir[] = "/tmp/aeroeval-closure-XXXXXX";
+	if (n < 1 || mkdtemp(dir) == NULL) {
+		fprintf(stderr, "bench: closure needs N >= 1 and a temporary folder\n");
+		return 2;
+	}
+	struct closure c;
+	memset(&c, 0, sizeof c);
+	c.gap = calloc((size_t)n, sizeof *c.gap);
+	bool list = getenv("CLOSURE_LIST") != NULL;
+	uint64_t s = seed * 0x9E3779B97F4A7C15u + 1;
+	int rc = 0;
+	for (int i = 0; i < n && rc == 0; i++) {
+		char name[32], path[4200], cmd[8600];
+		snprintf(name, sizeof name, "m%04d", i);
+		snprintf(path, sizeof path, "%s/%s.json", dir, name);
+		cJSON *m = closure_mission(&s);
+		rc = write_json(path, m);
+		if (rc == 0) {
+			snprintf(cmd, sizeof cmd, "'%s' solve %s%s%s '%s' 2>/dev/null",
+			    bin, db != NULL ? "--db '" : "", db != NULL ? db : "",
+			    db != NULL ? "'" : "", path);
+			char *out = closure_solve(cmd);
+			closure_record(&c, out, name, m, list);
+			free(out);
+			c.n_missions++;
+		}
+		remove(path);
+		cJSON_Delete(m);
+	}
+	rmdir(dir);
+	printf("missions %d (seed %llu), sized continuously %d, closed on real "
+	    "parts %d (%.1f %%)\n", c.n_missions, (unsigned long long)seed,
+	    c.n_continuous, c.n_closed, c.n_continuous > 0
+	    ? 100.0 * c.n_closed / c.n_continuous : 0.0);
+	if (c.n_closed > 0) {
+		double *abs_gap = calloc((size_t)c.n_closed, sizeof *abs_gap);
+		double worst = 0.0;
+		for (int i = 0; i < c.n_closed; i++) {
+			abs_gap[i] = fabs(c.gap[i]);
+			if (abs_gap[i] > fabs(worst))
+				worst = c.gap[i];
+		}
+		qsort(c.gap, (size_t)c.n_closed, sizeof *c.gap, cmp_double);
+		qsort(abs_gap, (size_t)c.n_closed, sizeof *abs_gap, cmp_double);
+		int k = c.n_closed;
+		double med = k % 2 ? c.gap[k / 2] : 0.5 * (c.gap[k / 2 - 1] + c.gap[k / 2]);
+		double med_abs = k % 2 ? abs_gap[k / 2]
+		    : 0.5 * (abs_gap[k / 2 - 1] + abs_gap[k / 2]);
+		printf("closed vs continuous takeoff mass: median %+.1f %%, median "
+		    "|gap| %.1f %%, worst %+.1f %%\n", 100.0 * med, 100.0 * med_abs,
+		    100.0 * worst);
+		free(abs_gap);
+	}
+	/* Failures by code, most first (ties by name: deterministic). */
+	printf("failures by code (missions sized continuously but not closed):");
+	for (int done = 0; done < c.n_codes; done++) {
+		int best = -1;
+		for (int i = 0; i < c.n_codes; i++)
+			if (c.n_code[i] > 0 && (best < 0 || c.n_code[i] > c.n_code[best]
+			    || (c.n_code[i] == c.n_code[best]
+			    && strcmp(c.code[i], c.code[best]) < 0)))
+				best = i;
+		printf("%s %s %d", done ? "," : "", c.code[best], c.n_code[best]);
+		c.n_code[best] = -c.n_code[best];
+	}
+	printf("%s\n", c.n_codes ? "" : " none");
+	free(c.gap);
+	return rc;
+}
+
 int
 main(int argc, char **argv)
 {
+	if ((argc == 5 || argc == 6) && strcmp(argv[1], "closure") == 0)
+		return closure_report(strtoull(argv[2], NULL, 10), atoi(argv[3]),
+		    argv[4], argc == 6 ? argv[5] : NULL);
 	if (argc == 5 && strcmp(argv[1], "missions") == 0)
 		return make_missions(strtoull(argv[2], NULL, 10), atoi(argv[3]), argv[4]);
 	if (argc == 5 && strcmp(argv[1], "catalog") == 0 && atoi(argv[4]) >= 1)
 		return grow_catalog(argv[2], argv[3], atoi(argv[4]));
 	fprintf(stderr, "usage: bench missions SEED N DIR\n"
+	                "       bench closure SEED N AEROEVAL [DB]\n"
 	                "       bench catalog SRC DST FACTOR\n");
 	return 2;
 }

@@ -23,14 +23,23 @@
 #   4. with PAPER_ENGINE set (the paper's engine, as a command that takes a
 #      mission file as its last argument), the instructions of that engine on
 #      every example, beside aeroeval solve.
-# Environment: BATCH, SEED, FACTOR, PAPER_ENGINE; NO_BATCH=1 skips part 3.
+#   0. the closure report first (BUILD/bench closure): CLOSURE (200) seeded
+#      plausible missions solved, the share that closes on real parts and
+#      the closed-vs-continuous takeoff-mass gap (docs/validation.md).
+# Environment: BATCH, SEED, FACTOR, CLOSURE, PAPER_ENGINE; NO_BATCH=1 skips
+# part 3.
 build=${1:-build}
 bin="$build/aeroeval"
 BATCH=${BATCH:-1000}
 SEED=${SEED:-1}
 FACTOR=${FACTOR:-4}
+CLOSURE=${CLOSURE:-200}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+
+echo "== closure on real parts ($CLOSURE missions, seed $SEED)"
+"$build/bench" closure "$SEED" "$CLOSURE" "$bin" data/catalog || exit 2
+echo
 
 if ! command -v valgrind >/dev/null 2>&1; then
 	echo "bench: valgrind is needed (apt-get install valgrind)" >&2

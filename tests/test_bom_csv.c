@@ -132,7 +132,7 @@ bom_csv_total_should_sum_mass_and_known_prices(void **state)
 	assert_string_equal(record(text, 6),
 	        "5,4,custom,,,\"CFRP arm tube 22.0 x 20.0 mm, 0.412 m\",43.2,172.8,,,");
 	assert_string_equal(record(text, 8),
-	        ",,total,,,2 of 6 prices unknown: total is the sum of the known prices,,"
+	        ",,total,,,\"≥ 1100.60 USD, 2 of 6 lines unpriced\",,"
 	        "3272.3,,1100.60,");
 	assert_int_equal(bom_csv_missing_prices(r), 2);
 	free(text);

@@ -66,6 +66,31 @@ res_record(const struct solve_result *r, bool *buildable)
 }
 
 const char *
+res_price_text(const struct solve_result *r, char *buf, size_t n)
+{
+	buf[0] = '\0';
+	if (!r->parts_selected)
+		return buf;
+	int lines = 0, priced = 0;
+	int n_bom = r->n_bom < 0 ? 0 : r->n_bom > RES_MAX_BOM ? RES_MAX_BOM : r->n_bom;
+	for (int i = 0; i < n_bom; i++) {
+		if (strcmp(r->bom[i].category, "payload") == 0)
+			continue;
+		lines++;
+		priced += r->bom[i].unit_price_usd > 0.0;
+	}
+	int unpriced = lines - priced;
+	if (priced == 0)
+		snprintf(buf, n, "unpriced (%d lines)", lines);
+	else if (unpriced == 0)
+		snprintf(buf, n, "%.2f USD", r->bom_price_usd);
+	else
+		snprintf(buf, n, "≥ %.2f USD, %d of %d lines unpriced",
+		    r->bom_price_usd, unpriced, lines);
+	return buf;
+}
+
+const char *
 res_eu_class(double mass_kg)
 {
 	if (mass_kg < RES_EU_C0_KG)

@@ -17,7 +17,7 @@
 #define RES_MAX_TRACE      80   /* discharge samples kept (FINAL_STEPS + 13) */
 #define RES_MAX_SWEEP      64   /* power-vs-speed points (1..30 m/s by 0.5) */
 #define RES_MAX_ENDURANCE  32   /* endurance-explorer points */
-#define RES_MAX_CHECKS     24
+#define RES_MAX_CHECKS     32
 #define RES_MAX_VIOLATIONS 24
 #define RES_MAX_FIXES      3
 #define RES_MAX_RATIONALE  48
@@ -156,6 +156,9 @@ struct res_perf {
 	double spare_payload_kg;  /* more payload before T/W falls below the target */
 	double throttle_needed;   /* the highest throttle the mission needs
 	                             (above 1: out of reach) */
+	double sustained_motor_current_a; /* the highest motor current of a
+	                             phase the mission flies (hover, climb,
+	                             cruise), for the continuous rating */
 	int motor_out_rotors;     /* rotors counted with one out (0: a quad) */
 	double motor_out_ratio;   /* their full thrust over the weight */
 	bool motor_out_holds;     /* >= 1: it holds altitude and lands */
@@ -405,5 +408,12 @@ const struct res_run *res_record(const struct solve_result *r, bool *buildable);
  * mark also needs the manufacturer's conformity): "C0" below 250 g, "C1"
  * below 900 g, "C2" below 4 kg, "C3/C4" below 25 kg, else "specific". */
 const char *res_eu_class(double mass_kg);
+
+/* The bill of materials' price as a buyer reads it: "≥ 1234.56 USD, 3 of 17
+ * lines unpriced" (the priced lines' sum is a lower bound), or "1234.56
+ * USD" when every line has a price, or "unpriced" when none has; into buf
+ * (size n, >= 64), which is returned.  The payload line is not a line to
+ * buy.  Empty when no parts were selected. */
+const char *res_price_text(const struct solve_result *r, char *buf, size_t n);
 
 #endif

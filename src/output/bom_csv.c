@@ -165,12 +165,10 @@ bom_csv_render_checked(const struct solve_result *r, int *n_invalid)
 	/* The total record: item, qty empty; category "total"; a note in the
 	 * description column when prices are missing or there is no BOM. */
 	char note[96] = "";
-	int missing = bom_csv_missing_prices(r);
 	if (!r->parts_selected)
 		snprintf(note, sizeof note, "no parts selected");
-	else if (missing > 0)
-		snprintf(note, sizeof note, "%d of %d prices unknown: total is the "
-		         "sum of the known prices", missing, n);
+	else if (bom_csv_missing_prices(r) > 0)
+		res_price_text(r, note, sizeof note);
 	csv_empty(&c);
 	csv_empty(&c);
 	csv_field(&c, "total", 5);

@@ -763,6 +763,20 @@ put_record(struct jw *w, const struct solve_result *r)
 	put_run_fields(w, o, buildable ? r : NULL);
 	if (o->perf.valid)
 		put_perf(w, &o->perf);
+	/* What the bill of materials costs, as far as its prices are known. */
+	if (r->parts_selected) {
+		char text[96];
+		jw_obj(w, "bom_price");
+		jw_num(w, "at_least_usd", r->bom_price_usd);
+		jw_int(w, "lines", r->bom_parts_lines);
+		jw_int(w, "unpriced_lines", r->bom_parts_lines - r->bom_priced_lines);
+		/* (both over the parts' lines, the payload's aside) */
+		res_price_text(r, text, sizeof text);
+		JW_STR(w, "text", text);
+		jw_close(w);
+	} else {
+		jw_null(w, "bom_price");
+	}
 	jw_close(w);
 }
 
@@ -829,6 +843,8 @@ put_bom(struct jw *w, const struct solve_result *r)
 		jw_price(w, "unit_price_usd", b->unit_price_usd);
 		jw_price(w, "total_price_usd", b->unit_price_usd == 0.0 ? 0.0 : b->total_price_usd);
 		JW_STR(w, "catalogue_id", b->catalogue_id);
+		JW_STR(w, "price_date", b->price_date);
+		JW_STR(w, "source", b->source_url);
 		jw_close(w);
 	}
 	jw_close(w);

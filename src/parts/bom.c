@@ -172,6 +172,23 @@ bom_part(struct solve_result *r, const struct res_part *p, int qty,
 	}
 }
 
+/* A catalogue part that is not one of the four chosen ones (frame kit,
+ * avionics, connectors), with its price date and maker's page. */
+static void
+bom_catalogue(struct solve_result *r, int qty, const char *category,
+              const char *id, const char *manufacturer,
+              const char *part_number, const char *description, double unit_kg,
+              double unit_usd, const char *price_date, const char *source)
+{
+	struct res_bom_line *b = bom_add(r, qty, category, manufacturer,
+	    part_number, description, unit_kg, unit_usd, id);
+	if (b == NULL)
+		return;
+	if (unit_usd > 0.0)
+		str_copy(b->price_date, sizeof b->price_date, price_date);
+	source_url(source, b->source_url, sizeof b->source_url);
+}
+
 /* A sized part the catalogue cannot supply (mass from the design of
  * record): made to the dimensions the description gives. */
 static void
@@ -211,7 +228,27 @@ fill_bom(const struct parts_ctx *x, const struct parts_closed *c,
 		    ", CCW (pusher)");
 	}
 	bom_part(r, &r->battery, r->battery.qty, "battery", r->battery.part_number, "");
+	double cells_kg = (double)r->battery.qty * r->battery.unit_mass_kg;
+	if (c->pack.mass_kg > cells_kg) {
+		snprintf(d, sizeof d, "Pack hardware for %d single cells (holders, "
+		    "nickel strip, balance wiring, wrap): 12 %% of the cells",
+		    r->battery.qty);
+		bom_custom(r, 1, "Pack hardware", d, c->pack.mass_kg - cells_kg);
+	}
 	bom_part(r, &r->esc, r->esc.qty, "esc", r->esc.part_number, "");
+	const struct parts_kit *kit = &c->kit;
+	double harness_kg = m->wiring_kg - kit->connector_kg;
+	if (kit->connector != NULL) {
+		snprintf(d, sizeof d, "%s, %d per pack, for the %.0f A each pack "
+		    "carries through the mission", kit->connector->description,
+		    kit->n_connectors / (c->pack.series * c->pack.parallel),
+		    kit->sized_for_a / (double)c->pack.parallel);
+		bom_catalogue(r, kit->n_connectors, "connector",
+		    kit->connector->id,
+		    kit->connector->manufacturer, kit->connector->part_number, d,
+		    kit->connector->mass_kg, kit->connector->price_usd,
+		    kit->connector->price_date, kit->connector->source);
+	}
 	if (c->pack.series > 1) {
 		snprintf(d, sizeof d, "Series lead joining %d packs into %dS, rated "
 		    "for %.0f A (its mass is in the power harness)", c->pack.series,
@@ -219,17 +256,38 @@ fill_bom(const struct parts_ctx *x, const struct parts_closed *c,
 		bom_add(r, 1, "custom", "custom", "Series lead", d, 0.0, 0.0, "");
 	}
 	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
-	snprintf(d, sizeof d, "CFRP arm tube OD %.1f x wall %.2f x length %.0f mm, "
-	    "cut to length", o->arm_outer_diameter_mm, o->arm_wall_thickness_mm,
-	    o->arm_length_m * 1000.0);
-	bom_custom(r, arms > 0 ? arms : 1, "Carbon arm", d, m->arm_kg);
-	bom_custom(r, 1, "Centre frame", "Centre plates and spar joints", m->frame_kg);
+	if (kit->frame != NULL) {
+		const struct catalog_frame *f = kit->frame;
+		snprintf(d, sizeof d, "Frame kit, %d rotors on %.0f mm wheelbase: %s",
+		    f->rotor_count, f->wheelbase_m * 1000.0, f->includes);
+		bom_catalogue(r, 1, "frame", f->id, f->manufacturer,
+		    f->part_number, d, f->mass_kg, f->price_usd, f->price_date,
+		    f->source);
+	} else {
+		snprintf(d, sizeof d, "CFRP arm tube OD %.1f x wall %.2f x length "
+		    "%.0f mm, cut to length (no catalogue frame kit fits)",
+		    o->arm_outer_diameter_mm, o->arm_wall_thickness_mm,
+		    o->arm_length_m * 1000.0);
+		bom_custom(r, arms > 0 ? arms : 1, "Carbon arm", d, m->arm_kg);
+		bom_custom(r, 1, "Centre frame", "Centre plates and spar joints",
+		    m->frame_kg);
+	}
 	bom_custom(r, 1, "Body and landing gear", "Body shell, landing gear and mounts",
 	    m->other_kg);
-	snprintf(d, sizeof d, "Power harness for %.0f A peak: wiring, connectors, "
+	snprintf(d, sizeof d, "Power harness for %.0f A peak: wiring and "
 	    "distribution", o->peak_current_a);
-	bom_custom(r, 1, "Power harness", d, m->wiring_kg);
-	bom_custom(r, 1, "Avionics", "Flight controller, GNSS, radios", m->avionics_kg);
+	bom_custom(r, 1, "Power harness", d, harness_kg);
+	for (int i = 0; i < kit->n_part; i++) {
+		const struct catalog_avionics *a = kit->part[i];
+		bom_catalogue(r, 1, "avionics", a->id, a->manufacturer,
+		    a->part_number, a->description, a->mass_kg, a->price_usd,
+		    a->price_date, a->source);
+	}
+	for (int i = 0; i < kit->n_allowance; i++) {
+		snprintf(d, sizeof d, "%s: allowance of the airframe class (no "
+		    "catalogue part)", kit->allowance_what[i]);
+		bom_custom(r, 1, kit->allowance_what[i], d, kit->allowance_kg[i]);
+	}
 	bom_custom(r, 1, "Role hardware", "Payload mounts and role equipment "
 	    "(release, pump, gimbal)", m->role_aux_kg);
 	r->bom_mass_kg = 0.0;
@@ -292,6 +350,37 @@ parts_explain(const struct parts_ctx *x, const struct parts_closed *c,
 		res_rationale(r, "ESC: %d x %s, %.0f A continuous for the %.0f A "
 		    "each motor draws at full throttle.", c->n_esc, c->esc->id,
 		    c->esc->continuous_current_a, o->perf.op[OP_FULL].motor_current_a);
+	const struct parts_kit *kit = &c->kit;
+	if (kit->frame != NULL)
+		res_rationale(r, "Frame kit %s (%s %s, %.0f g): %d rotors on a "
+		    "%.0f mm wheelbase, the lightest catalogue kit that fits.",
+		    kit->frame->id, kit->frame->manufacturer,
+		    kit->frame->part_number, kit->frame->mass_kg * 1000.0,
+		    kit->frame->rotor_count, kit->frame->wheelbase_m * 1000.0);
+	else
+		res_rationale(r, "No catalogue frame kit fits this wheelbase, "
+		    "rotor count and load: the arms are CFRP tubes cut to length "
+		    "(%.1f x %.2f mm, %.0f mm long).", o->arm_outer_diameter_mm,
+		    o->arm_wall_thickness_mm, o->arm_length_m * 1000.0);
+	double parts_g = 0.0, allow_g = 0.0;
+	for (int i = 0; i < kit->n_part; i++)
+		parts_g += kit->part[i]->mass_kg * 1000.0;
+	for (int i = 0; i < kit->n_allowance; i++)
+		allow_g += kit->allowance_kg[i] * 1000.0;
+	res_rationale(r, "Avionics: %d catalogue parts (%.0f g) and %d "
+	    "allowances of the airframe class for what the catalogue does not "
+	    "sell (%.0f g).", kit->n_part, parts_g, kit->n_allowance, allow_g);
+	if (kit->connector != NULL)
+		res_rationale(r, "Battery connectors: %d x %s, one per pack for the "
+		    "%.0f A each pack carries through the mission (%.0f g).",
+		    kit->n_connectors, kit->connector->id,
+		    kit->sized_for_a / (double)c->pack.parallel,
+		    kit->connector_kg * 1000.0);
+	if (o->thrust_to_weight < x->aim.tw_required)
+		res_rationale(r, "No closing on real parts reaches the continuous "
+		    "design's T/W of %.2f; the design of record flies %.2f, above "
+		    "the %.2f the continuous loop relaxes a role's default target "
+		    "to.", x->aim.tw_required, o->thrust_to_weight, x->aim.tw_floor);
 	if (n_better_failed > 0)
 		res_rationale(r, "%d better-scoring combination%s did not close the "
 		    "mission on real parts.", n_better_failed,

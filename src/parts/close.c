@@ -62,7 +62,8 @@ pack_allowed(const struct parts_ctx *x, const struct catalog_battery *b)
 	if (x->lock_battery != NULL)
 		return b == x->lock_battery;
 	char why[256];
-	if (screen_battery(b, why, sizeof why) != NULL)
+	if (screen_battery(b, why, sizeof why) != NULL
+	    || screen_doubt_battery(b, why, sizeof why) != NULL)
 		return false;
 	if (x->spec->given[SPECF_BATTERY_CHEMISTRY]
 	    && strcmp(chem_family(b->chemistry),
@@ -95,7 +96,10 @@ parts_packs_init(struct parts_ctx *x)
 				pk->series = s;
 				pk->parallel = q;
 				pk->chem = chem;
-				pk->mass_kg = (double)(s * q) * b->mass_kg;
+				/* Single cells need a pack built around them
+				 * (README: 10-15 % for pack hardware). */
+				pk->mass_kg = (double)(s * q) * b->mass_kg
+				    * (b->cells_series == 1 ? PARTS_CELL_PACK_FACTOR : 1.0);
 				pk->capacity_ah = (double)q * b->capacity_ah;
 				pk->energy_wh = (double)cells * chem->v_nom * pk->capacity_ah;
 				pk->max_continuous_a = b->continuous_c * pk->capacity_ah;
@@ -163,7 +167,8 @@ parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
 			continue;
 		bool locked = e == x->lock_esc;
 		char why[256];
-		if (!locked && screen_esc(e, why, sizeof why) != NULL)
+		if (!locked && (screen_esc(e, why, sizeof why) != NULL
+		    || screen_doubt_esc(e, why, sizeof why) != NULL))
 			continue;
 		if (!locked && (e->continuous_current_a < need_a
 		    || o->cells > esc_max_cells(e)
@@ -193,10 +198,10 @@ parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
 /* ---- closing -------------------------------------------------------------- */
 
 /* The craft's masses at takeoff mass mass_kg: the parts' own, the
- * airframe's for the loads they put on it. */
+ * airframe's for the loads they put on it, the kit's (kit.c). */
 static double
-craft_masses(const struct parts_ctx *x, const struct sizing_params *q,
-             const struct parts_option *o, double fixed_kg, double mass_kg,
+craft_masses(const struct sizing_params *q, const struct parts_option *o,
+             const struct parts_kit *kit, double fixed_kg, double mass_kg,
              struct perf_craft *c)
 {
 	double n = (double)q->n_rotors;
@@ -207,24 +212,82 @@ craft_masses(const struct parts_ctx *x, const struct sizing_params *q,
 	airframe_masses(q, &al, &am);
 	c->arm = am.arm;
 	struct res_mass *m = &c->mass;
-	m->arm_kg = am.arm_kg;
-	m->frame_kg = am.frame_kg;
+	/* A frame kit replaces the arm tubes and the centre frame. */
+	m->arm_kg = kit->frame != NULL ? 0.0 : am.arm_kg;
+	m->frame_kg = kit->frame != NULL ? kit->frame->mass_kg : am.frame_kg;
 	m->other_kg = am.other_kg;
-	m->wiring_kg = am.wiring_kg;
-	m->avionics_kg = am.avionics_kg;
+	m->wiring_kg = am.wiring_kg + kit->connector_kg;
+	m->avionics_kg = kit->avionics_kg;
 	m->role_aux_kg = am.role_aux_kg;
 	m->payload_kg = q->payload_kg;
-	(void)x;
-	return fixed_kg + q->payload_kg + am.arm_kg + am.frame_kg + am.other_kg
-	    + am.wiring_kg + am.avionics_kg + am.role_aux_kg;
+	return fixed_kg + q->payload_kg + m->arm_kg + m->frame_kg + m->other_kg
+	    + m->wiring_kg + m->avionics_kg + m->role_aux_kg;
+}
+
+/* The takeoff mass with the real parts: the airframe follows the mass it
+ * carries (the CG thrust of its arms), a contraction far below 1.  False
+ * on a runaway. */
+static bool
+close_mass(const struct sizing_params *q, const struct parts_option *o,
+           const struct parts_kit *kit, double fixed_kg, double start_kg,
+           struct perf_craft *c, double *mass_kg, bool *converged)
+{
+	double mass = start_kg;
+	*converged = false;
+	for (int k = 0; k < CLOSE_MAX_ITER && !*converged; k++) {
+		double next = craft_masses(q, o, kit, fixed_kg, mass, c);
+		*converged = fabs(next - mass) < CLOSE_TOL_KG;
+		mass = next;
+		if (!isfinite(mass) || mass > SIZING_RUNAWAY_KG)
+			return false;
+	}
+	craft_masses(q, o, kit, fixed_kg, mass, c);
+	*mass_kg = mass;
+	return true;
+}
+
+/* The mass loop with the kit: custom arms first; then the lightest frame
+ * kit that fits the aircraft they give, kept if it still fits the mass
+ * it closes at. */
+static bool
+close_with_kit(const struct parts_ctx *x, const struct sizing_params *q,
+               const struct parts_option *o, struct parts_kit *kit,
+               double fixed_kg, struct perf_craft *c, bool *converged)
+{
+	double mass;
+	kit->frame = NULL;
+	if (!close_mass(q, o, kit, fixed_kg, x->aim.mass_kg, c, &mass, converged))
+		return false;
+	double prop_in = m_to_in(c->prop_diameter_m);
+	double custom_kg = c->mass.arm_kg + c->mass.frame_kg;
+	kit->frame = parts_kit_frame(x, prop_in, mass, c->arm.d_out_m, custom_kg);
+	if (kit->frame == NULL)
+		return true;
+	double with_kit;
+	if (close_mass(q, o, kit, fixed_kg, mass, c, &with_kit, converged)
+	    && parts_kit_frame_fits(x, kit->frame, prop_in, with_kit,
+	    c->arm.d_out_m, custom_kg))
+		return true;
+	kit->frame = NULL;
+	return close_mass(q, o, kit, fixed_kg, mass, c, &mass, converged);
+}
+
+/* The highest current of a phase the mission flies, at the pack. */
+static double
+sustained_battery_a(const struct res_run *o)
+{
+	double a = 0.0;
+	for (int i = 0; i < PHASE_MAX; i++)
+		if (o->phase[i].duration_s > 0.0 && o->phase[i].current_a > a)
+			a = o->phase[i].current_a;
+	return a;
 }
 
 bool
 parts_close(const struct parts_ctx *x, const struct parts_option *o,
             const struct parts_pack *pk, const struct catalog_esc *esc,
-            int n_esc, bool full, struct parts_closed *out)
+            int n_esc, struct parts_closed *out)
 {
-	(void)full;
 	struct sizing_params q = *x->p;
 	q.chem = pk->chem;
 	out->o = *o;
@@ -249,26 +312,35 @@ parts_close(const struct parts_ctx *x, const struct parts_option *o,
 	double fixed = c->mass.motor_kg + c->mass.prop_kg + c->mass.esc_kg
 	    + c->mass.battery_kg;
 
-	/* The takeoff mass with the real parts: the airframe follows the mass
-	 * it carries (the CG thrust of its arms), a contraction far below 1. */
-	double mass = x->aim.mass_kg;
-	bool converged = false;
-	for (int k = 0; k < CLOSE_MAX_ITER && !converged; k++) {
-		double next = craft_masses(x, &q, o, fixed, mass, c);
-		converged = fabs(next - mass) < CLOSE_TOL_KG;
-		mass = next;
-		if (!isfinite(mass) || mass > SIZING_RUNAWAY_KG)
-			return false;
-	}
-	craft_masses(x, &q, o, fixed, mass, c);
-	struct res_mass *m = &c->mass;
-	m->total_kg = m->payload_kg + m->battery_kg + m->frame_kg + m->arm_kg
-	    + m->motor_kg + m->prop_kg + m->esc_kg + m->wiring_kg
-	    + m->avionics_kg + m->role_aux_kg + m->other_kg;
-
+	/* The power module and connectors carry the sustained current: first
+	 * the ranking's hover estimate, then, if they differ, what the flown
+	 * mission drew. */
+	double v_bus = (double)o->cells * q.chem->v_nom;
+	double sustained = o->hover_power_w / v_bus;
 	struct solve_result *r = out->r;
-	r->n_violations = 0;
-	out->finite = perf_fly(&q, c, &r->closed);
+	bool converged = false;
+	for (int pass = 0; pass < 2; pass++) {
+		parts_kit_pick(x, o, pk, sustained, &out->kit);
+		if (!close_with_kit(x, &q, o, &out->kit, fixed, c, &converged))
+			return false;
+		struct res_mass *m = &c->mass;
+		m->total_kg = m->payload_kg + m->battery_kg + m->frame_kg + m->arm_kg
+		    + m->motor_kg + m->prop_kg + m->esc_kg + m->wiring_kg
+		    + m->avionics_kg + m->role_aux_kg + m->other_kg;
+		r->n_violations = 0;
+		out->finite = perf_fly(&q, c, &r->closed);
+		double flown = sustained_battery_a(&r->closed);
+		struct parts_kit again;
+		parts_kit_pick(x, o, pk, flown, &again);
+		bool same = again.connector == out->kit.connector
+		    && again.n_connectors == out->kit.n_connectors
+		    && again.n_part == out->kit.n_part
+		    && memcmp(again.part, out->kit.part, sizeof again.part) == 0;
+		out->kit.sized_for_a = flown;
+		if (same || !out->finite)
+			break;
+		sustained = flown;
+	}
 	r->closed.converged = converged;
 	parts_record_checks(x, out, r);
 	out->failed = 0;
@@ -300,6 +372,27 @@ violate(struct solve_result *r, const struct res_check *c, const char *stage,
 	feasibility_violation(r, "closed", stage, code, fx, "%s", message);
 }
 
+/* A motor current against the rating its maker's basis allows. */
+static void
+motor_current(struct solve_result *r, const char *name, const char *code,
+              const char *when, const char *fix2, double value_a,
+              double limit_a, const char *rating)
+{
+	char f1[FIX_LEN] = "", f2[FIX_LEN] = "", f3[FIX_LEN] = "", msg[RES_TEXT] = "";
+	const char *fx[4] = { f1, f2, f3, NULL };
+	struct res_check *k = feasibility_add_check(&r->closed, name, "A",
+	    value_a, limit_a, true);
+	if (k == NULL || k->pass)
+		return;
+	fix(r, f1, "A motor rated above %.0f A", value_a);
+	fix(r, f2, "%s", fix2);
+	fix(r, f3, "Fewer series cells or a lower-KV motor");
+	if (!r->terse)
+		snprintf(msg, sizeof msg, "Each motor draws %.1f A %s, above its "
+		    "%.1f A %s.", value_a, when, limit_a, rating);
+	violate(r, k, "parts", code, fx, msg);
+}
+
 void
 parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
                     struct solve_result *r)
@@ -327,8 +420,12 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 			    100.0 * o->reserve_soc, o->termination);
 		violate(r, k, "discharge", "RESERVE", fx, msg);
 	}
+	/* The continuous design's T/W, or the floor it may relax to when no
+	 * closing reaches it (parts.c). */
+	double tw_need = o->thrust_to_weight >= x->aim.tw_required
+	    ? x->aim.tw_required : x->aim.tw_floor;
 	k = feasibility_add_check(o, "Thrust-to-weight at full throttle", "",
-	    o->thrust_to_weight, x->aim.tw_required, false);
+	    o->thrust_to_weight, tw_need, false);
 	if (k && !k->pass) {
 		fix(r, f1, "A stronger motor or a larger propeller (locks.motor_part, locks.prop_part)");
 		fix(r, f2, "Reduce the thrust margin (payload_role.thrust_margin_override)");
@@ -336,7 +433,7 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 		if (!r->terse)
 			snprintf(msg, sizeof msg, "The real motor and propeller give T/W "
 			    "%.2f at full throttle; the design needs %.2f.",
-			    o->thrust_to_weight, x->aim.tw_required);
+			    o->thrust_to_weight, tw_need);
 		violate(r, k, "parts", "THRUST", fx, msg);
 	}
 
@@ -369,20 +466,20 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 		fx[2] = f3;
 	}
 
-	/* Ratings of the real parts. */
-	k = feasibility_add_check(o, "Motor current at full throttle", "A",
-	    full->motor_current_a, c->motor_max_current_a, true);
-	if (k && !k->pass) {
-		fix(r, f1, "A motor rated above %.0f A", full->motor_current_a);
-		fix(r, f2, "A smaller or lower-pitch propeller");
-		fix(r, f3, "Fewer series cells or a lower-KV motor");
-		if (!r->terse)
-			snprintf(msg, sizeof msg, "Each motor draws %.1f A at full "
-			    "throttle, above its %.1f A rating.", full->motor_current_a,
-			    c->motor_max_current_a);
-		violate(r, k, "parts", "MOTOR_CURRENT", fx, msg);
-	}
-	if (c->motor_max_power_w > 0.0) {
+	/* Ratings of the real parts: the motor's through the mission and at
+	 * full throttle, each against the rating its maker's basis allows
+	 * (rank.c, parts_motor_limits()). */
+	struct parts_motor_limits lim;
+	parts_motor_limits(cl->o.motor, &lim);
+	motor_current(r, "Motor current, mission (sustained)",
+	    "MOTOR_CURRENT_SUSTAINED", "through the mission",
+	    "A larger propeller or more rotors (lower disk loading)",
+	    pf->sustained_motor_current_a, lim.sustained_a, lim.sustained_text);
+	if (lim.full_a > 0.0)
+		motor_current(r, "Motor current at full throttle", "MOTOR_CURRENT",
+		    "at full throttle", "A smaller or lower-pitch propeller",
+		    full->motor_current_a, lim.full_a, lim.full_text);
+	if (c->motor_max_power_w > 0.0 && !cl->o.motor->integrated) {
 		k = feasibility_add_check(o, "Motor input power at full throttle", "W",
 		    full->power_in_w, c->motor_max_power_w, true);
 		fix(r, f1, "A motor rated above %.0f W", full->power_in_w);
@@ -396,25 +493,62 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 		violate(r, k, "parts", "MOTOR_POWER", fx, msg);
 		fx[2] = f3;
 	}
-	k = feasibility_add_check(o, "ESC current at full throttle", "A",
-	    full->motor_current_a, c->esc_current_a, true);
-	if (k && !k->pass) {
-		fix(r, f1, "An ESC rated above %.0f A continuous", full->motor_current_a);
-		fix(r, f2, "Remove locks.esc_part to let the search choose");
-		fx[2] = NULL;
-		if (!r->terse)
-			snprintf(msg, sizeof msg, "Each motor draws %.1f A at full "
-			    "throttle, above the ESC's %.0f A continuous rating.",
-			    full->motor_current_a, c->esc_current_a);
-		violate(r, k, "parts", "ESC_CURRENT", fx, msg);
-		fx[2] = f3;
+	if (cl->esc != NULL) {
+		k = feasibility_add_check(o, "ESC current at full throttle", "A",
+		    full->motor_current_a, c->esc_current_a, true);
+		if (k && !k->pass) {
+			fix(r, f1, "An ESC rated above %.0f A continuous", full->motor_current_a);
+			fix(r, f2, "Remove locks.esc_part to let the search choose");
+			fx[2] = NULL;
+			if (!r->terse)
+				snprintf(msg, sizeof msg, "Each motor draws %.1f A at full "
+				    "throttle, above the ESC's %.0f A continuous rating.",
+				    full->motor_current_a, c->esc_current_a);
+			violate(r, k, "parts", "ESC_CURRENT", fx, msg);
+			fx[2] = f3;
+		}
 	}
+	/* The power module and the battery connectors (kit.c) carry the
+	 * sustained current. */
+	const struct parts_kit *kit = &cl->kit;
+	double sustained_a = 0.0;
+	for (int i = 0; i < PHASE_MAX; i++)
+		if (o->phase[i].duration_s > 0.0 && o->phase[i].current_a > sustained_a)
+			sustained_a = o->phase[i].current_a;
+	for (int i = 0; i < kit->n_part; i++) {
+		const struct catalog_avionics *a = kit->part[i];
+		if (!(a->max_current_a > 0.0))
+			continue;
+		k = feasibility_add_check(o, "Power module current, mission", "A",
+		    sustained_a, a->max_current_a, true);
+		fix(r, f1, "A power module rated above %.0f A", sustained_a);
+		fx[1] = NULL;
+		if (k && !k->pass && !r->terse)
+			snprintf(msg, sizeof msg, "The mission draws %.1f A through the "
+			    "power module, above its %.0f A rating.", sustained_a,
+			    a->max_current_a);
+		violate(r, k, "parts", "POWER_MODULE_CURRENT", fx, msg);
+		fx[1] = f2;
+	}
+	if (kit->connector != NULL) {
+		int per_pack = kit->n_connectors / (cl->pack.series * cl->pack.parallel);
+		k = feasibility_add_check(o, "Battery connector current, mission", "A",
+		    sustained_a / (double)cl->pack.parallel,
+		    (double)per_pack * kit->connector->max_current_a, true);
+		fix(r, f1, "Fewer, larger packs or a higher-rated connector");
+		fx[1] = NULL;
+		if (k && !k->pass && !r->terse)
+			snprintf(msg, sizeof msg, "Each pack's connector carries %.1f A, "
+			    "above its %.0f A rating.", k->value, k->limit);
+		violate(r, k, "parts", "CONNECTOR_CURRENT", fx, msg);
+		fx[1] = f2;
+	}
+	if (kit->frame != NULL && kit->frame->max_takeoff_kg > 0.0)
+		feasibility_add_check(o, "Takeoff mass within the frame kit's maximum",
+		    "kg", o->mass.total_kg, kit->frame->max_takeoff_kg, true);
 	/* The pack: the highest sustained phase current within its
 	 * continuous rating, full throttle within its burst rating. */
-	double sustained = 0.0;
-	for (int i = 0; i < PHASE_MAX; i++)
-		if (o->phase[i].duration_s > 0.0 && o->phase[i].current_a > sustained)
-			sustained = o->phase[i].current_a;
+	double sustained = sustained_a;
 	k = feasibility_add_check(o, "Battery current, mission (continuous rating)", "A",
 	    sustained, cl->pack.max_continuous_a, true);
 	fix(r, f1, "A pack with a higher C rating or more capacity");
@@ -465,6 +599,16 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 		snprintf(msg, sizeof msg, "The pack reaches %.1f °C, above %.0f °C.",
 		    o->max_battery_temp_c, THERM_RUNAWAY_C);
 	violate(r, k, "discharge", "THERMAL_RUNAWAY", fx, msg);
+	k = feasibility_add_check(o, "Motor winding temperature, hover (steady)", "°C",
+	    o->winding_temp_c, MOTOR_WINDING_MAX_C, true);
+	fix(r, f1, "A larger motor (lower losses, more surface)");
+	fix(r, f2, "A larger propeller (lower disk loading)");
+	fx[2] = NULL;
+	if (k && !k->pass && !r->terse)
+		snprintf(msg, sizeof msg, "The winding settles at %.0f °C in hover "
+		    "(limit %.0f °C).", o->winding_temp_c, MOTOR_WINDING_MAX_C);
+	violate(r, k, "parts", "WINDING_TEMPERATURE_HOVER", fx, msg);
+	fx[2] = f3;
 	k = feasibility_add_check(o, "Motor winding temperature, full-throttle burst", "°C",
 	    full->winding_temp_c, MOTOR_WINDING_MAX_C, true);
 	fix(r, f1, "A larger motor (lower losses, more surface)");

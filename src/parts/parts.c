@@ -100,19 +100,18 @@ report_none(const struct parts_ctx *x, struct solve_result *r)
 	feasibility_violation(r, "closed", "parts", "NO_PARTS", fx, "%s", msg);
 }
 
-/* A closing's score: its takeoff mass, counted heavier by 2 % for every
- * 10 % it falls short of the role's T/W goal (parts_int.h). */
-static double
-score(const struct parts_ctx *x, const struct parts_closed *c)
+/* Does closing c reach the continuous design's T/W? */
+static bool
+at_parity(const struct parts_ctx *x, const struct parts_closed *c)
 {
-	const struct res_run *o = &c->r->closed;
-	double short_by = 1.0 - o->thrust_to_weight / x->aim.tw_target;
-	return o->mass.total_kg * (1.0 + PARTS_TW_SHORTFALL_W
-	    * (short_by > 0.0 ? short_by : 0.0));
+	return c->r->closed.thrust_to_weight >= x->aim.tw_required;
 }
 
-/* Is closing a better than b?  Passing every check first, then the fewest
- * failed checks, then the lower score. */
+/* Is closing a better than b?  Passing every check first (or the fewest
+ * failed), then reaching the continuous design's T/W (the role's margin is
+ * a requirement the continuous design held; the floor is the relaxation
+ * the continuous loop would make when nothing reaches it), then the
+ * lighter. */
 static bool
 better(const struct parts_ctx *x, const struct parts_closed *a,
        const struct parts_closed *b)
@@ -123,7 +122,12 @@ better(const struct parts_ctx *x, const struct parts_closed *a,
 		return a->finite;
 	if (a->failed != b->failed)
 		return a->failed < b->failed;
-	return score(x, a) < score(x, b);
+	if (at_parity(x, a) != at_parity(x, b))
+		return at_parity(x, a);
+	double ma = a->r->closed.mass.total_kg, mb = b->r->closed.mass.total_kg;
+	if (ma != mb)
+		return ma < mb;
+	return strcmp(a->o.motor->id, b->o.motor->id) < 0;
 }
 
 /* The lightest arrangement of the bus that holds need_wh and carries the
@@ -133,7 +137,7 @@ better(const struct parts_ctx *x, const struct parts_closed *a,
  * when none does. */
 static int
 pick_pack(const struct parts_ctx *x, const struct parts_option *o,
-          const struct parts_pack *pk, int n, double need_wh)
+          const struct parts_pack *pk, int n, double need_wh, double max_sag)
 {
 	double v = (double)o->cells * x->p->chem->v_nom;
 	double i_full = (double)x->p->n_rotors * o->full_current_a;
@@ -145,7 +149,7 @@ pick_pack(const struct parts_ctx *x, const struct parts_option *o,
 		    q->capacity_ah, q->b->continuous_c);
 		if (q->energy_wh >= need_wh && q->max_burst_a >= i_full
 		    && q->max_continuous_a >= i_hover
-		    && r_pack * i_full <= PARTS_MAX_SAG * v
+		    && r_pack * i_full <= max_sag * v
 		    && (best < 0 || q->mass_kg < pk[best].mass_kg))
 			best = i;
 	}
@@ -171,33 +175,46 @@ close_option(const struct parts_ctx *x, const struct parts_option *o,
 	const struct parts_pack *pk = parts_packs_for(x, o, &n_pk);
 	if (pk == NULL)
 		return 0;
-	/* The continuous design's energy, scaled by this option's hover
-	 * power, a little below: the real design may well be lighter. */
-	double need = x->aim.hover_power_w > 0.0
-	    ? 0.85 * x->aim.energy_wh * o->hover_power_w / x->aim.hover_power_w : 0.0;
-	int last = -1;
-	for (int k = 0; k < PARTS_PACK_TRIES; k++) {
-		int at = pick_pack(x, o, pk, n_pk, need);
-		if (at < 0 || at == last)
-			break;
-		last = at;
-		parts_close(x, o, &pk[at], esc, n_esc, false, cur);
-		n_closed++;
-		double end_soc = cur->r->closed.end_soc;
-		double reserve = cur->r->closed.reserve_soc;
-		if (better(x, cur, pick)) {
-			if (pick->r == NULL) {
-				pick->r = *spare;
-				*spare = NULL;
+	/* Packs allowed to sag more first (lighter); when none of those
+	 * closes every check (a sagging pack costs thrust and voltage), stiffer
+	 * ones. */
+	static const double max_sag[] = { PARTS_MAX_SAG, PARTS_STIFF_SAG };
+	for (size_t tier = 0; tier < sizeof max_sag / sizeof max_sag[0]; tier++) {
+		/* The continuous design's energy, scaled by this option's hover
+		 * power, a little below: the real design may well be lighter. */
+		double need = x->aim.hover_power_w > 0.0 ? 0.85 * x->aim.energy_wh
+		    * o->hover_power_w / x->aim.hover_power_w : 0.0;
+		int last = -1;
+		bool passed = false;
+		for (int k = 0; k < PARTS_PACK_TRIES; k++) {
+			int at = pick_pack(x, o, pk, n_pk, need, max_sag[tier]);
+			if (at < 0 || at == last)
+				break;
+			last = at;
+			parts_close(x, o, &pk[at], esc, n_esc, cur);
+			n_closed++;
+			passed |= cur->finite && cur->failed == 0;
+			double end_soc = cur->r->closed.end_soc;
+			double reserve = cur->r->closed.reserve_soc;
+			if (better(x, cur, pick)) {
+				if (pick->r == NULL) {
+					pick->r = *spare;
+					*spare = NULL;
+				}
+				swap_closed(cur, pick);
 			}
-			swap_closed(cur, pick);
+			/* Short of the reserve: the charge it needs over the charge
+			 * it drew, with 5 % to spare; at least PARTS_PACK_STEP more
+			 * than this pack, since a mission cut short at the voltage
+			 * floor drew less than it needed. */
+			double used = 1.0 - end_soc;
+			if (end_soc >= reserve || !(used > 0.0))
+				break;
+			need = fmax(pk[at].energy_wh * (1.0 - reserve) / used * 1.05,
+			    pk[at].energy_wh * PARTS_PACK_STEP);
 		}
-		/* Short of the reserve: the charge it needs over the charge it
-		 * drew, with 5 % to spare. */
-		double used = 1.0 - end_soc;
-		if (end_soc >= reserve || !(used > 0.0))
+		if (passed)
 			break;
-		need = pk[at].energy_wh * (1.0 - reserve) / used * 1.05;
 	}
 	return n_closed;
 }
@@ -239,35 +256,46 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 		x.cells_hi = p->cells_hi < PARTS_MAX_CELLS ? p->cells_hi : PARTS_MAX_CELLS;
 	}
 	parts_packs_init(&x);
-	struct parts_option best[PARTS_KEEP];
-	int n_best = parts_rank(&x, best, PARTS_KEEP, r->candidates,
-	    &r->n_candidates);
-	if (n_best == 0) {
-		parts_packs_free(&x);
-		report_none(&x, r);
-		return 0;
-	}
 
-	/* Close the ranked options, each on the lightest pack arrangement
-	 * that fits it; keep the best closing.  The trial buffers keep their
-	 * violations' codes only. */
+	/* Rank and close at the continuous design's mass; when no closing
+	 * passes every check and the closest came out heavier, rank again at
+	 * the mass it closed at (the parts a heavier aircraft needs), as the
+	 * continuous loop would.  The trial buffers keep their violations'
+	 * codes only. */
 	struct parts_closed cur = { 0 }, pick = { 0 };
 	cur.r = xmalloc(sizeof *cur.r);
 	struct solve_result *spare = xmalloc(sizeof *spare);
 	cur.r->terse = spare->terse = true;
-	int n_closed = 0;
-	for (int i = 0; i < n_best; i++) {
-		const struct catalog_esc *esc;
-		int n_esc;
-		if (!parts_pick_esc(&x, &best[i], &esc, &n_esc)) {
-			x.n_census[PARTS_NO_ESC]++;
-			continue;
+	int n_closed = 0, n_ranked = 0;
+	for (int round = 0; round < PARTS_ROUNDS; round++) {
+		if (round > 0) {
+			double grown = pick.r->closed.mass.total_kg / x.aim.mass_kg;
+			if (pick.failed == 0 || !(grown > 1.0 + PARTS_ROUND_MIN_GROWTH))
+				break;
+			parts_aim_regrow(&x.aim, grown);
 		}
-		n_closed += close_option(&x, &best[i], esc, n_esc, &cur, &pick, &spare);
+		struct parts_option best[PARTS_KEEP + PARTS_KEEP_RELAXED];
+		int n_best = parts_rank(&x, best, PARTS_KEEP + PARTS_KEEP_RELAXED,
+		    r->candidates, &r->n_candidates);
+		n_ranked += n_best;
+		/* Each on the lightest pack arrangement that fits it; the best
+		 * closing is kept. */
+		for (int i = 0; i < n_best; i++) {
+			const struct catalog_esc *esc;
+			int n_esc;
+			if (!parts_pick_esc(&x, &best[i], &esc, &n_esc)) {
+				x.n_census[PARTS_NO_ESC]++;
+				continue;
+			}
+			n_closed += close_option(&x, &best[i], esc, n_esc, &cur, &pick,
+			    &spare);
+		}
+		if (pick.r == NULL || !pick.finite)
+			break;
 	}
 	free(spare);
 	free(cur.r);
-	if (pick.r == NULL || !pick.finite) {
+	if (n_ranked == 0 || pick.r == NULL || !pick.finite) {
 		free(pick.r);
 		parts_packs_free(&x);
 		report_none(&x, r);
@@ -277,7 +305,7 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 	/* The design of record, closed again with its violations' texts. */
 	struct parts_closed rec = pick;
 	rec.r = xcalloc(1, sizeof *rec.r);
-	parts_close(&x, &pick.o, &pick.pack, pick.esc, pick.n_esc, true, &rec);
+	parts_close(&x, &pick.o, &pick.pack, pick.esc, pick.n_esc, &rec);
 	r->closed = rec.r->closed;
 	for (int i = 0; i < rec.r->n_violations && r->n_violations < RES_MAX_VIOLATIONS; i++)
 		r->violations[r->n_violations++] = rec.r->violations[i];

@@ -14,13 +14,20 @@
  *          the takeoff-mass penalty they would bring over the continuous
  *          design, in percent (parts/rank.c says how it is estimated and
  *          why that weighs diameter and KV as the physics does);
- *   close  the best options get an ESC set and a battery and are closed:
- *          the takeoff mass found again with the real parts' masses, the
- *          structure sized for the real motors' thrust, the mission flown
- *          on the real drive (sizing/perf.h) and every check applied;
+ *   close  the best options get an ESC set, a battery, a frame kit where
+ *          one fits, the avionics set of the airframe class and the
+ *          battery connectors (parts/kit.c) and are closed: the takeoff
+ *          mass found again with the real parts' masses, the structure
+ *          sized for the real motors' thrust, the mission flown on the real
+ *          drive (sizing/perf.h) and every check applied, with the same
+ *          requirements as the continuous design (its T/W, the reserve,
+ *          the largest payload);
  *   choose the design of record is the lightest combination that passes
- *          every check; when none does, the one with the fewest failures,
- *          reported as not buildable.
+ *          every check and reaches the continuous design's T/W; when none
+ *          reaches it, the lightest at or above the floor the continuous
+ *          loop relaxes a role's default target to; when none passes, the
+ *          search ranks again at the mass the closest closing reached, and
+ *          else reports the one with the fewest failures as not buildable.
  *
  * Parts layer: no I/O.  Reentrant.
  */

@@ -14,19 +14,32 @@
 #include "sizing/perf.h"
 #include "sizing/sizing.h"
 
-#define PARTS_MAX_CELLS     14    /* the highest bus searched (58.8 V LiPo) */
+#define PARTS_MAX_CELLS     18    /* the highest bus searched: the agricultural
+                                     class's 18S (75.6 V LiPo) */
 #define PARTS_MAX_SERIES    4     /* catalogue packs in series ... */
 #define PARTS_MAX_PARALLEL  4     /* ... and in parallel */
-#define PARTS_KEEP          32    /* ranked options closed */
-#define PARTS_PACK_TRIES    5     /* battery arrangements tried per option */
+#define PARTS_KEEP          32    /* ranked options closed that reach the
+                                     continuous design's T/W ... */
+#define PARTS_KEEP_RELAXED  8     /* ... and that reach only the floor */
+#define PARTS_CELL_PACK_FACTOR 1.12 /* a pack built from single cells: the
+                                     cells plus 12 % of holder, nickel strip,
+                                     wiring and wrap (catalogue README) */
+#define PARTS_PACK_TRIES    6     /* battery arrangements tried per option */
+#define PARTS_PACK_STEP     1.15  /* each next one holds at least 15 % more */
+#define PARTS_ROUNDS        2     /* rankings: at the continuous mass, then at
+                                     the mass the closest closing reached */
+#define PARTS_ROUND_MIN_GROWTH 0.03 /* ... when that is 3 % heavier or more */
 #define PARTS_RANGE_TOL_IN  0.5   /* slack on a maker's recommended propeller range */
 #define PARTS_LOADED_BUS    0.95  /* loaded pack voltage / nominal, for ranking */
 #define PARTS_CURRENT_MARGIN 1.1  /* ESC rating over the motor's full-throttle current */
 #define PARTS_TW_TOL        0.98  /* real T/W may fall 2 % short of the continuous one */
 #define PARTS_TW_SPARE      1.05  /* ranking: thrust to spare for the mass estimate */
-#define PARTS_TW_SHORTFALL_W 0.2  /* selection: a design 10 % short of the role's
-                                     T/W goal counts 2 % heavier */
-#define PARTS_MAX_SAG       0.10  /* battery pick: pack sag at full throttle, of V_oc */
+#define PARTS_MAX_SAG       0.15  /* battery pick: pack sag at full throttle, of
+                                     V_oc (high-discharge packs at their rated
+                                     current); the record's own full-throttle
+                                     point on the sagging pack sets its T/W */
+#define PARTS_STIFF_SAG     0.08  /* ... then stiffer packs, when none of those
+                                     closes every check */
 #define PARTS_UNRATED_ESC_CELLS 6 /* bus limit of an ESC with no published range */
 #define PARTS_STACK_MAX_WHEELBASE_M 0.35 /* 4-in-1 boards only on small frames */
 
@@ -45,6 +58,8 @@ enum parts_reason {
 	PARTS_NO_BATTERY,      /* no pack arrangement builds the bus */
 	PARTS_LOCK,            /* excluded by a lock */
 	PARTS_IMPLAUSIBLE,     /* its catalogue entry fails a screen (screen.h) */
+	PARTS_DOWNWASH,        /* its wake above the role's downwash limit */
+	PARTS_DOUBTFUL,        /* a number it is sized on is listed uncertain */
 	PARTS_REASON_MAX
 };
 extern const char *const parts_reason_text[PARTS_REASON_MAX];
@@ -57,11 +72,15 @@ struct parts_aim {
 	double energy_wh;          /* its battery's nominal energy */
 	double hover_power_w;      /* its hover electrical power */
 	double growth;             /* 1 / (1 - L): mass growth per added kg */
-	double tw_required;        /* T/W the real rotor must reach: the
-	                              mission's own target, or for a role's
-	                              default target (a goal) the relaxation
-	                              floor of sizing.h */
-	double tw_target;          /* T/W of the role's target, a goal */
+	double tw_required;        /* T/W the design of record must reach:
+	                              the continuous design's (the role's or
+	                              mission's target, or what the
+	                              continuous loop relaxed it to) */
+	double tw_floor;           /* ... or, for a role's default target
+	                              when no closing reaches it, the
+	                              relaxation floor of sizing.h, as the
+	                              continuous loop relaxes */
+	double downwash_cap_ms;    /* the role's downwash limit; 0 none */
 	double prop_diameter_in;   /* D* */
 	double prop_pitch_in;      /* p* */
 	double motor_kv;           /* KV* at the continuous bus */
@@ -81,6 +100,7 @@ struct parts_option {
 	double full_power_w;               /* one motor's input there */
 	double hover_power_w;              /* the aircraft at M*, drive only */
 	double j;                          /* estimated mass penalty, % */
+	bool parity;                       /* reaches tw_required at M* */
 };
 
 /* A battery built from catalogue packs. */
@@ -110,20 +130,59 @@ struct parts_ctx {
 	int n_examined;
 };
 
+/* The parts around the propulsion (kit.c): the frame kit, the avionics
+ * set of the airframe class and the battery connectors. */
+#define PARTS_KIT_MAX 8
+struct parts_kit {
+	const struct catalog_frame *frame; /* NULL: custom arms and centre */
+	const struct catalog_avionics *part[PARTS_KIT_MAX]; /* the set found */
+	int n_part;
+	const char *allowance_what[PARTS_KIT_MAX]; /* what the class carries
+	                                      that no catalogue part supplies */
+	double allowance_kg[PARTS_KIT_MAX];
+	int n_allowance;
+	double avionics_kg;                /* parts + allowances */
+	const struct catalog_avionics *connector; /* one pair per pack; NULL
+	                                      when none carries the current */
+	int n_connectors;
+	double connector_kg;               /* all pairs */
+	double sized_for_a;                /* the sustained battery current the
+	                                      power module and connectors carry */
+};
+
 /* One closing: an option with its ESC set and battery, flown. */
 struct parts_closed {
 	struct parts_option o;
 	const struct catalog_esc *esc;     /* NULL: integrated */
 	int n_esc;
 	struct parts_pack pack;
+	struct parts_kit kit;
 	struct solve_result *r;            /* its run in r->closed, violations */
 	int failed;                        /* failed checks */
 	bool finite;
 };
 
 /* rank.c */
+
+/* The currents a motor may carry (rank.c says why): through the phases of
+ * the mission, and in a full-throttle burst (0: not checked). */
+struct parts_motor_limits {
+	double sustained_a;
+	double full_a;
+	const char *sustained_text;        /* which rating, for the checks */
+	const char *full_text;
+};
+void parts_motor_limits(const struct catalog_motor *m,
+                        struct parts_motor_limits *l);
+/* An integrated system's published maximum thrust per rotor on `cells`
+ * in the mission's air, N; 0 for a plain motor or none published. */
+double parts_published_thrust_n(const struct parts_ctx *x,
+                                const struct catalog_motor *m, int cells);
 void parts_aim_from(const struct sizing_params *p, const struct res_run *custom,
                     struct parts_aim *aim);
+/* The aim moved to `grown` times its mass: hover power, energy and
+ * battery with it, as M^1.5 (induced power at a fixed disk area). */
+void parts_aim_regrow(struct parts_aim *aim, double grown);
 int parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
                struct res_candidate *cand, int *n_cand);
 bool parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
@@ -137,12 +196,26 @@ bool parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
                     const struct catalog_esc **esc, int *n);
 bool parts_close(const struct parts_ctx *x, const struct parts_option *o,
                  const struct parts_pack *pk, const struct catalog_esc *esc,
-                 int n_esc, bool full, struct parts_closed *out);
+                 int n_esc, struct parts_closed *out);
 const struct parts_pack *parts_packs_for(const struct parts_ctx *x,
                                          const struct parts_option *o,
                                          int *n);
 void parts_record_checks(const struct parts_ctx *x, const struct parts_closed *c,
                          struct solve_result *r);
+
+/* kit.c */
+void parts_kit_pick(const struct parts_ctx *x, const struct parts_option *o,
+                    const struct parts_pack *pk, double sustained_a,
+                    struct parts_kit *kit);
+/* Does frame kit f fit (kit.c says when)?  custom_kg: the custom arms and
+ * centre frame it would replace. */
+bool parts_kit_frame_fits(const struct parts_ctx *x,
+                          const struct catalog_frame *f, double prop_in,
+                          double mass_kg, double arm_od_m, double custom_kg);
+/* The lightest kit that fits, or NULL. */
+const struct catalog_frame *parts_kit_frame(const struct parts_ctx *x,
+                                            double prop_in, double mass_kg,
+                                            double arm_od_m, double custom_kg);
 
 /* bom.c */
 void parts_fill(const struct parts_ctx *x, const struct parts_closed *c,

@@ -6,21 +6,35 @@
  *
  *     J = 100 · growth · (Δdrive + Δbattery) / M*
  *
- * Δdrive is the option's motors, propellers and ESCs (the ESC from the
- * catalogue's mass per amp at its full-throttle current) against the
- * continuous design's; Δbattery is the continuous battery scaled by the
- * option's hover power over the continuous design's (the energy the
- * mission needs follows the hover power); growth = 1 / (1 - L) carries
- * every added kilogram through the mass loop (L, the continuous loop's
- * Lipschitz constant).  So J weighs each mismatch by what it costs in
- * flight: a propeller smaller than the aim raises the induced power as
- * 1/D, a KV away from the aim moves the motor off its efficient speed and
- * raises current and copper loss, a heavier motor adds its mass — instead
- * of the paper's fixed weights (100 per unit of diameter error, 10 of KV,
- * 50 of pitch, 1000 of hover throttle), under which a small, fast FPV
- * motor on a 7 in propeller outscored the right 13 in one.  Options that
- * cannot reach the required thrust, overrun a rating or break tip Mach are
- * pruned before scoring.
+ * Each term is a mass, so J weighs every mismatch by what it costs in
+ * flight instead of by fixed weights on the diameter, KV, pitch and
+ * throttle errors (the paper's 100, 10, 50 and 1000, under which a small,
+ * fast FPV motor on a 7 in propeller outscored the right 13 in one):
+ *
+ *   Δdrive    the option's motors, propellers and ESCs against the
+ *             continuous design's, weight 1 per kilogram: they are flown
+ *             as they are.  The ESC is not chosen yet; it counts by the
+ *             continuous design's own law, the catalogue's median 1.10 g
+ *             per amp (sizing.h) times the role's c_esc (racing boards
+ *             carry far more amps per gram), of its rating, 10 % over the
+ *             motor's full-throttle current (close.c's pick): so J
+ *             compares like with like.  An integrated system's mass holds
+ *             all three.
+ *   Δbattery  the continuous battery scaled by the option's hover power
+ *             over the continuous design's: the energy a mission needs
+ *             follows the hover power, so a propeller smaller than the
+ *             aim (induced power ~ 1/D) or a motor turning away from its
+ *             efficient speed (copper loss ~ I²) costs battery here.
+ *   growth    1 / (1 - L), L the continuous loop's Lipschitz constant
+ *             (capped at 0.8): every kilogram added is carried by more
+ *             battery, structure and thrust, as the loop carries it.
+ *
+ * Options that cannot lift the continuous design at the relaxation floor's
+ * T/W, overrun a motor rating, break tip Mach or the propeller's rpm limit,
+ * or blow a wake above the role's downwash limit are pruned before
+ * scoring.  The rest are kept by J in two lists: those that reach the
+ * continuous design's own T/W at its mass, and a few that reach only the
+ * floor (tried should none of the first close).
  */
 #include <math.h>
 #include <stdio.h>
@@ -44,6 +58,7 @@
 #define LOCK_PITCH_TOL_IN  0.5
 #define MAX_L              0.8    /* growth factor capped at 5 */
 #define PRUNED_J           1e9
+#define PARTS_DOWNWASH_SLACK 1.05 /* sqrt(1 / 0.9): a closing 10 % lighter */
 
 const char *const parts_reason_text[PARTS_REASON_MAX] = {
 	"none",
@@ -59,6 +74,8 @@ const char *const parts_reason_text[PARTS_REASON_MAX] = {
 	"no pack for the bus",
 	"lock",
 	"implausible catalogue entry",
+	"downwash",
+	"doubtful catalogue value",
 };
 
 void
@@ -80,12 +97,12 @@ parts_aim_from(const struct sizing_params *p, const struct res_run *custom,
 	 * prefers but may fall short of, down to the relaxation floor; a
 	 * target the mission sets is a requirement. */
 	double theta_floor = 1.0 - p->thrust_margin_floor;
-	aim->tw_target = custom->thrust_to_weight;
-	aim->tw_required = p->thrust_margin_floor > 0.0
-	    ? PARTS_TW_TOL / (theta_floor * theta_floor)
-	    : custom->thrust_to_weight * PARTS_TW_TOL;
-	if (aim->tw_required > aim->tw_target)
-		aim->tw_required = aim->tw_target * PARTS_TW_TOL;
+	aim->tw_required = custom->thrust_to_weight * PARTS_TW_TOL;
+	aim->tw_floor = p->thrust_margin_floor > 0.0
+	    ? PARTS_TW_TOL / (theta_floor * theta_floor) : aim->tw_required;
+	if (aim->tw_floor > aim->tw_required)
+		aim->tw_floor = aim->tw_required;
+	aim->downwash_cap_ms = p->downwash_cap_ms;
 	aim->prop_diameter_in = custom->opt.prop_diameter_in;
 	aim->prop_pitch_in = custom->opt.prop_pitch_in;
 	aim->motor_kv = custom->opt.motor_kv;
@@ -97,6 +114,16 @@ parts_aim_from(const struct sizing_params *p, const struct res_run *custom,
 	aim->install_factor = (p->fom_isolated_mode ? 1.0 : p->kappa)
 	    * (custom->interference > 1.0 ? custom->interference : 1.0)
 	    * (p->coaxial ? 1.0 + 0.5 * (MISSION_COAX_INDUCED - 1.0) : 1.0);
+}
+
+void
+parts_aim_regrow(struct parts_aim *aim, double grown)
+{
+	double power = pow(grown, 1.5);
+	aim->mass_kg *= grown;
+	aim->hover_power_w *= power;
+	aim->energy_wh *= power;
+	aim->battery_kg *= power;
 }
 
 /* The propeller of an option: the catalogue's, or an integrated system's. */
@@ -120,12 +147,59 @@ option_prop(const struct catalog_motor *m, const struct catalog_prop *pr,
 	c->prop_diameter_m = in_to_m(d_in);
 	c->prop_pitch_m = in_to_m(pitch_in);
 	c->prop_blades = blades;
-	if (pr != NULL && pr->ct_static > 0.0 && pr->cp_static > 0.0) {
+	/* Published coefficients, unless the catalogue doubts them. */
+	if (pr != NULL && pr->ct_static > 0.0 && pr->cp_static > 0.0
+	    && !screen_uncertain(pr->uncertain, "ct_static")
+	    && !screen_uncertain(pr->uncertain, "cp_static")) {
 		c->prop.ct = pr->ct_static;
 		c->prop.cp = pr->cp_static;
 		c->prop.measured = true;
 	} else {
 		prop_estimate(pitch_in / d_in, blades, &c->prop);
+	}
+}
+
+double
+parts_published_thrust_n(const struct parts_ctx *x,
+                         const struct catalog_motor *m, int cells)
+{
+	if (!m->integrated || !(m->max_thrust_n > 0.0))
+		return 0.0;
+	/* Published at sea level on the system's highest rated bus (where
+	 * the maker gives one): thrust at a given rpm follows the density,
+	 * and the rpm the voltage, so thrust ~ ρ V² below that bus. */
+	double scale = x->p->air.rho_kg_m3 / RHO_SL_KG_M3;
+	if (m->cells_max > 0 && cells < m->cells_max) {
+		double v = (double)cells / (double)m->cells_max;
+		scale *= v * v;
+	}
+	return m->max_thrust_n * scale;
+}
+
+void
+parts_motor_limits(const struct catalog_motor *m, struct parts_motor_limits *l)
+{
+	if (m->integrated) {
+		/* The system's ESC's continuous rating holds the mission; full
+		 * throttle is bounded by the published maximum thrust instead. */
+		l->sustained_a = m->integrated_esc_current_a > 0.0
+		    ? m->integrated_esc_current_a : m->max_current_a;
+		l->full_a = 0.0;
+		l->sustained_text = "continuous rating of its ESC";
+		l->full_text = "";
+	} else if (strcmp(m->max_current_basis, "continuous") == 0) {
+		/* No peak published: the continuous rating bounds the burst too. */
+		l->sustained_a = l->full_a = m->max_current_a;
+		l->sustained_text = l->full_text = "continuous rating";
+	} else {
+		/* A peak rating (most makers publish no continuous one): it
+		 * bounds every current; the heat of sustained flight is the
+		 * winding-temperature check's. */
+		l->sustained_a = l->full_a = m->max_current_a;
+		l->sustained_text = "peak rating (no continuous rating published)";
+		l->full_text = strncmp(m->max_current_basis, "peak_", 5) == 0
+		    && strcmp(m->max_current_basis, "peak_unspecified") != 0
+		    ? "peak rating" : "maximum (duration not published)";
 	}
 }
 
@@ -164,6 +238,18 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 	o->full_thrust_n = prop_thrust_n(&c->prop, rho, full.rps, d);
 	o->full_current_a = full.current_a;
 	o->full_power_w = full.power_in_w;
+	/* An integrated system is flown up to the thrust its maker publishes
+	 * and no further: where the model of its motor and propeller promises
+	 * more, the point at that thrust (on the same rotor) is full throttle. */
+	c->max_thrust_n = parts_published_thrust_n(x, m, cells);
+	if (c->max_thrust_n > 0.0 && o->full_thrust_n > c->max_thrust_n) {
+		double n_c = sqrt(c->max_thrust_n / (c->prop.ct * rho * pow(d, 4.0)));
+		motor_at_shaft(&c->motor, t_w, kq * 2.0 * M_PI * n_c * n_c * n_c,
+		    n_c, &full);
+		o->full_thrust_n = c->max_thrust_n;
+		o->full_current_a = full.current_a;
+		o->full_power_w = full.power_in_w;
+	}
 	/* Hover of the continuous design's mass on this rotor. */
 	double t_h = aim->mass_kg * G0_M_S2 / (double)p->n_rotors;
 	double n_h = sqrt(t_h / (c->prop.ct * rho * pow(d, 4.0)));
@@ -174,27 +260,38 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 	return true;
 }
 
-/* The first reason the option fails a hard limit, or PARTS_OK. */
+/* The first reason the option fails a hard limit, or PARTS_OK; o->parity
+ * says whether it reaches the continuous design's T/W. */
 static enum parts_reason
-option_limits(const struct parts_ctx *x, const struct parts_option *o)
+option_limits(const struct parts_ctx *x, struct parts_option *o)
 {
 	const struct sizing_params *p = x->p;
 	const struct perf_craft *c = &o->craft;
 	const struct catalog_motor *m = o->motor;
 	bool locked = x->lock_motor != NULL;
-	/* The thrust at the mass the option is estimated to close at (J), with
-	 * a little to spare for the estimate; never below the continuous
-	 * design's mass, which the estimate may undercut. */
-	double growth = o->j > 0.0 ? 1.0 + o->j / 100.0 : 1.0;
-	double mass = x->aim.mass_kg * growth;
+	/* The thrust to lift the continuous design at the floor's T/W (and
+	 * with the largest payload aboard), with a little to spare: the
+	 * closing finds the real mass, and checks the real T/W there. */
+	double mass = x->aim.mass_kg;
 	double theta_floor = 1.0 - SIZING_MIN_THRUST_MARGIN;
-	double need_n = fmax(x->aim.tw_required * mass, (mass + p->extra_payload_kg)
-	    * PARTS_TW_TOL / (theta_floor * theta_floor)) * G0_M_S2;
-	if ((double)p->n_rotors * o->full_thrust_n < PARTS_TW_SPARE * need_n)
+	double max_payload_n = (mass + p->extra_payload_kg) * PARTS_TW_TOL
+	    / (theta_floor * theta_floor) * G0_M_S2;
+	double thrust = (double)p->n_rotors * o->full_thrust_n;
+	if (thrust < PARTS_TW_SPARE * fmax(x->aim.tw_floor * mass * G0_M_S2,
+	    max_payload_n))
 		return PARTS_THRUST;
-	if (!locked && o->full_current_a > m->max_current_a)
+	/* Parity at the mass it is estimated to close at (J), never below
+	 * the continuous design's: an option that falls short of the T/W
+	 * once its own mass is aboard is a relaxed one. */
+	double grown = o->j > 0.0 ? 1.0 + o->j / 100.0 : 1.0;
+	o->parity = thrust >= PARTS_TW_SPARE * grown * fmax(x->aim.tw_required
+	    * mass * G0_M_S2, max_payload_n);
+	struct parts_motor_limits lim;
+	parts_motor_limits(m, &lim);
+	if (!locked && lim.full_a > 0.0 && o->full_current_a > lim.full_a)
 		return PARTS_MOTOR_CURRENT;
-	if (!locked && m->max_power_w > 0.0 && o->full_power_w > m->max_power_w)
+	if (!locked && !m->integrated && m->max_power_w > 0.0
+	    && o->full_power_w > m->max_power_w)
 		return PARTS_MOTOR_POWER;
 	double rps_full = sqrt(o->full_thrust_n / (c->prop.ct * p->air.rho_kg_m3
 	    * pow(c->prop_diameter_m, 4.0)));
@@ -202,6 +299,15 @@ option_limits(const struct parts_ctx *x, const struct parts_option *o)
 		return PARTS_TIP_MACH;
 	if (c->prop_max_rpm > 0.0 && rps_full * S_PER_MIN > c->prop_max_rpm)
 		return PARTS_PROP_RPM;
+	/* The wake of the continuous design's mass on this rotor, with the
+	 * slack of a design that closes up to 10 % lighter (the wake goes as
+	 * the square root of the mass; the record checks its own). */
+	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
+	double area = 0.25 * M_PI * c->prop_diameter_m * c->prop_diameter_m;
+	if (x->aim.downwash_cap_ms > 0.0 && aero_downwash_ms(mass,
+	    p->air.rho_kg_m3, arms, area) > PARTS_DOWNWASH_SLACK
+	    * x->aim.downwash_cap_ms)
+		return PARTS_DOWNWASH;
 	return PARTS_OK;
 }
 
@@ -213,7 +319,7 @@ option_j(const struct parts_ctx *x, const struct parts_option *o)
 	const struct catalog_motor *m = o->motor;
 	double drive = n * m->mass_kg;
 	if (o->prop != NULL)
-		drive += n * (o->prop->mass_kg + SIZING_ESC_KG_PER_A
+		drive += n * (o->prop->mass_kg + SIZING_ESC_KG_PER_A * x->p->c_esc
 		    * PARTS_CURRENT_MARGIN * o->full_current_a);
 	double d_battery = aim->hover_power_w > 0.0
 	    ? aim->battery_kg * (o->hover_power_w / aim->hover_power_w - 1.0) : 0.0;
@@ -288,11 +394,19 @@ prop_locked_out(const struct parts_ctx *x, const struct catalog_prop *pr)
 	    || fabs(pr->pitch_in - lk->locked_pitch_in) > LOCK_PITCH_TOL_IN);
 }
 
+/* The two lists of kept options (see the top of this file). */
+struct kept {
+	struct parts_option parity[PARTS_KEEP];
+	int n_parity;
+	struct parts_option relaxed[PARTS_KEEP_RELAXED];
+	int n_relaxed;
+};
+
 /* One option: flown, checked, scored; kept among the best. */
 static void
 try_option(struct parts_ctx *x, const struct catalog_motor *m,
-           const struct catalog_prop *pr, int cells, struct parts_option *best,
-           int *n_best, int max_best, double *motor_best_j)
+           const struct catalog_prop *pr, int cells, struct kept *k,
+           double *motor_best_j)
 {
 	struct parts_option o;
 	x->n_examined++;
@@ -308,7 +422,10 @@ try_option(struct parts_ctx *x, const struct catalog_motor *m,
 	}
 	if (o.j < *motor_best_j)
 		*motor_best_j = o.j;
-	keep(best, n_best, max_best, &o);
+	if (o.parity)
+		keep(k->parity, &k->n_parity, PARTS_KEEP, &o);
+	else
+		keep(k->relaxed, &k->n_relaxed, PARTS_KEEP_RELAXED, &o);
 }
 
 /* The catalogue's usable motors by KV, for the KV window of a bus and
@@ -346,13 +463,17 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 			x->n_census[PARTS_IMPLAUSIBLE]++;
 			continue;
 		}
+		if (m != x->lock_motor && screen_doubt_motor(m, why, sizeof why) != NULL) {
+			x->n_census[PARTS_DOUBTFUL]++;
+			continue;
+		}
 		mv[n_m++] = m;
 	}
 	qsort(mv, (size_t)n_m, sizeof *mv, cmp_kv);
 	for (int i = 0; i < n_m; i++)
 		mj[i] = PRUNED_J;
 
-	int n_best = 0;
+	struct kept *kept = xcalloc(1, sizeof *kept);
 	double rho = p->air.rho_kg_m3;
 	double t_req = x->aim.tw_required * x->aim.mass_kg * G0_M_S2
 	    / (double)p->n_rotors;
@@ -376,7 +497,7 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 				x->n_census[PARTS_PROP_OVERLAP]++;
 				continue;
 			}
-			try_option(x, m, NULL, s, best, &n_best, max_best, &mj[i]);
+			try_option(x, m, NULL, s, kept, &mj[i]);
 		}
 		for (size_t k = 0; k < np; k++) {
 			const struct catalog_prop *pr = catalog_prop(cat, k);
@@ -393,6 +514,10 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 			char why[256];
 			if (pr != x->lock_prop && screen_prop(pr, why, sizeof why) != NULL) {
 				x->n_census[PARTS_IMPLAUSIBLE]++;
+				continue;
+			}
+			if (pr != x->lock_prop && screen_doubt_prop(pr, why, sizeof why) != NULL) {
+				x->n_census[PARTS_DOUBTFUL]++;
 				continue;
 			}
 			/* The KV whose loaded full-throttle speed gives the thrust. */
@@ -423,7 +548,7 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 					x->n_census[PARTS_PROP_RANGE]++;
 					continue;
 				}
-				try_option(x, m, pr, s, best, &n_best, max_best, &mj[i]);
+				try_option(x, m, pr, s, kept, &mj[i]);
 			}
 		}
 	}
@@ -440,5 +565,12 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 	}
 	free(mv);
 	free(mj);
+	/* The options that reach the continuous T/W first. */
+	int n_best = 0;
+	for (int i = 0; i < kept->n_parity && n_best < max_best; i++)
+		best[n_best++] = kept->parity[i];
+	for (int i = 0; i < kept->n_relaxed && n_best < max_best; i++)
+		best[n_best++] = kept->relaxed[i];
+	free(kept);
 	return n_best;
 }

@@ -136,3 +136,76 @@ screen_esc(const struct catalog_esc *e, char *why, size_t n)
 	}
 	return NULL;
 }
+
+bool
+screen_uncertain(const char *uncertain, const char *key)
+{
+	size_t len = strlen(key);
+	for (const char *u = uncertain; u != NULL && *u != '\0'; ) {
+		size_t ulen = strcspn(u, ",");
+		if (ulen == len && strncmp(u, key, len) == 0)
+			return true;
+		u += ulen;
+		if (*u == ',')
+			u++;
+	}
+	return false;
+}
+
+/* The first of keys (NULL-terminated) that the list uncertain names, or
+ * NULL. */
+static const char *
+doubted(const char *uncertain, const char *const *keys, char *why, size_t n)
+{
+	for (const char *const *k = keys; *k != NULL; k++)
+		if (screen_uncertain(uncertain, *k)) {
+			snprintf(why, n, "%s: listed as uncertain in the catalogue", *k);
+			return why;
+		}
+	return NULL;
+}
+
+const char *
+screen_doubt_motor(const struct catalog_motor *m, char *why, size_t n)
+{
+	static const char *const plain[] = { "kv_rpm_per_v", "mass_g",
+		"max_current_a", NULL };
+	static const char *const integrated[] = { "kv_rpm_per_v", "mass_g",
+		"max_current_a", "integrated_prop_in", "max_thrust_g", NULL };
+	return doubted(m->uncertain, m->integrated ? integrated : plain, why, n);
+}
+
+const char *
+screen_doubt_prop(const struct catalog_prop *p, char *why, size_t n)
+{
+	static const char *const keys[] = { "diameter_in", "pitch_in", "mass_g",
+		NULL };
+	return doubted(p->uncertain, keys, why, n);
+}
+
+const char *
+screen_doubt_battery(const struct catalog_battery *b, char *why, size_t n)
+{
+	/* The chemistry is not among them: a pack sold as "Li-ion" has its
+	 * NCA/NMC profile marked uncertain, but its family (voltages,
+	 * energy) is known and its capacity and mass are the maker's. */
+	static const char *const keys[] = { "cells_series", "capacity_mah",
+		"mass_g", "continuous_c", NULL };
+	return doubted(b->uncertain, keys, why, n);
+}
+
+const char *
+screen_doubt_esc(const struct catalog_esc *e, char *why, size_t n)
+{
+	static const char *const keys[] = { "continuous_current_a", "mass_g",
+		"channels", NULL };
+	return doubted(e->uncertain, keys, why, n);
+}
+
+const char *
+screen_doubt_frame(const struct catalog_frame *f, char *why, size_t n)
+{
+	static const char *const keys[] = { "rotor_count", "wheelbase_mm",
+		"mass_g", "includes", "max_prop_in", "max_takeoff_kg", NULL };
+	return doubted(f->uncertain, keys, why, n);
+}

@@ -39,4 +39,17 @@ const char *screen_prop(const struct catalog_prop *p, char *why, size_t n);
 const char *screen_battery(const struct catalog_battery *b, char *why, size_t n);
 const char *screen_esc(const struct catalog_esc *e, char *why, size_t n);
 
+/* NULL when none of the numbers the parts search sizes on is listed in
+ * the entry's `uncertain` (the catalogue's own doubt, README "Entry
+ * format"), else the first such key, written into why.  The search builds
+ * the design of record on such an entry only when the mission locks it:
+ * a number its catalogue doubts cannot carry a bill of materials. */
+/* Does the comma-separated `uncertain` list name key? */
+bool screen_uncertain(const char *uncertain, const char *key);
+const char *screen_doubt_motor(const struct catalog_motor *m, char *why, size_t n);
+const char *screen_doubt_prop(const struct catalog_prop *p, char *why, size_t n);
+const char *screen_doubt_battery(const struct catalog_battery *b, char *why, size_t n);
+const char *screen_doubt_esc(const struct catalog_esc *e, char *why, size_t n);
+const char *screen_doubt_frame(const struct catalog_frame *f, char *why, size_t n);
+
 #endif

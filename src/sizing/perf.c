@@ -177,6 +177,34 @@ phase_op(struct perf_ctx *x, double mass_kg, double v_climb_ms,
 	op_from(x, mp, x->p->ambient_c + motor_loss_w(&mp->motor) * rth, op);
 }
 
+/* A full-throttle row of the table from the motor's point pt at thrust_n
+ * (one rotor), with the pack's current i_b and terminal voltage v_b. */
+static void
+full_op(const struct perf_ctx *x, const struct motor_point *pt,
+        double thrust_n, double throttle, double i_b, double v_b,
+        struct res_op *op)
+{
+	const struct perf_craft *c = x->c;
+	memset(op, 0, sizeof *op);
+	op->valid = true;
+	op->thrust_n = thrust_n;
+	op->rpm = pt->rps * S_PER_MIN;
+	op->throttle = throttle;
+	op->motor_current_a = pt->current_a;
+	op->motor_voltage_v = pt->voltage_v;
+	op->power_in_w = pt->power_in_w;
+	op->power_shaft_w = pt->power_shaft_w;
+	op->motor_efficiency = pt->efficiency;
+	op->g_per_w = op->thrust_n / G0_M_S2 * 1000.0 / pt->power_in_w;
+	op->winding_temp_c = motor_temp_step_c(c->motor.mass_kg, x->hover_temp_c,
+	    x->p->ambient_c, motor_loss_w(pt), PERF_FULL_THROTTLE_S);
+	op->tip_mach = M_PI * c->prop_diameter_m * pt->rps / x->model.air.sound_m_s;
+	op->battery_current_a = i_b;
+	op->bus_voltage_v = v_b;
+	op->c_load = i_b / c->capacity_ah;
+	op->electrical_w = v_b * i_b;
+}
+
 /* Full throttle: the motor on the pack's loaded voltage turns the rotor
  * until its torque meets the propeller's, and the pack's voltage sags
  * under the current that draws.  The terminal voltage V solves
@@ -209,25 +237,35 @@ full_throttle(const struct perf_ctx *x, struct res_op *op)
 	if (!motor_at_voltage(&c->motor, x->hover_temp_c, v, x->kq_nm_s2, &pt))
 		return false;
 	double i_b = n_rot * pt.current_a + other_w / v;
-	memset(op, 0, sizeof *op);
-	op->valid = true;
-	op->thrust_n = prop_thrust_n(&c->prop, m->air.rho_kg_m3, pt.rps,
-	    c->prop_diameter_m);
-	op->rpm = pt.rps * S_PER_MIN;
-	op->throttle = 1.0;
-	op->motor_current_a = pt.current_a;
-	op->motor_voltage_v = pt.voltage_v;
-	op->power_in_w = pt.power_in_w;
-	op->power_shaft_w = pt.power_shaft_w;
-	op->motor_efficiency = pt.efficiency;
-	op->g_per_w = op->thrust_n / G0_M_S2 * 1000.0 / pt.power_in_w;
-	op->winding_temp_c = motor_temp_step_c(c->motor.mass_kg, x->hover_temp_c,
-	    x->p->ambient_c, motor_loss_w(&pt), PERF_FULL_THROTTLE_S);
-	op->tip_mach = M_PI * c->prop_diameter_m * pt.rps / m->air.sound_m_s;
-	op->battery_current_a = i_b;
-	op->bus_voltage_v = v;
-	op->c_load = i_b / c->capacity_ah;
-	op->electrical_w = v * i_b;
+	full_op(x, &pt, prop_thrust_n(&c->prop, m->air.rho_kg_m3, pt.rps,
+	    c->prop_diameter_m), 1.0, i_b, v, op);
+	return true;
+}
+
+/* An integrated power system gives at most the thrust its maker
+ * publishes (perf_craft.max_thrust_n): where the model of its motor and
+ * propeller promises more, the full-throttle point is the one at that
+ * thrust, on the same rotor.  False when the model cannot reach it. */
+static bool
+capped_full_throttle(const struct perf_ctx *x, struct res_op *op)
+{
+	const struct perf_craft *c = x->c;
+	if (!(c->max_thrust_n > 0.0) || op->thrust_n <= c->max_thrust_n)
+		return true;
+	double rho = x->model.air.rho_kg_m3;
+	double d = c->prop_diameter_m;
+	double n = sqrt(c->max_thrust_n / (c->prop.ct * rho * pow(d, 4.0)));
+	struct motor_point pt;
+	motor_at_shaft(&c->motor, x->hover_temp_c,
+	    x->kq_nm_s2 * 2.0 * M_PI * n * n * n, n, &pt);
+	double n_rot = (double)x->model.n_rotors;
+	double other_w = 0.5 * MISSION_F_PWM_HZ * MISSION_C_OSS_F
+	    * x->v_oc_nom_v * x->v_oc_nom_v * n_rot + x->model.aux_w;
+	double i_b, v_b;
+	if (!bus_load(x, n_rot * pt.power_in_w + other_w, &i_b, &v_b))
+		return false;
+	full_op(x, &pt, c->max_thrust_n, v_b > 0.0 && pt.voltage_v < v_b
+	    ? pt.voltage_v / v_b : 1.0, i_b, v_b, op);
 	return true;
 }
 
@@ -413,6 +451,9 @@ record_phases(struct perf_ctx *x, double gamma, double v_fwd_ms,
 		ph->throttle = op.throttle < 1.0 ? op.throttle : 1.0;
 		if (d[i] > 0.0 && op.throttle > run->perf.throttle_needed)
 			run->perf.throttle_needed = op.throttle;
+		if (d[i] > 0.0 && op.motor_current_a
+		    > run->perf.sustained_motor_current_a)
+			run->perf.sustained_motor_current_a = op.motor_current_a;
 		ph->pitch_deg = mp.pitch_deg;
 		ph->tip_mach = mp.rotor.tip_mach;
 		t0 += d[i];
@@ -440,10 +481,12 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 	struct mission_power mp;
 	phase_op(&x, mass, 0.0, 0.0, &mp, &pf->op[OP_HOVER]);
 	pf->throttle_needed = pf->op[OP_HOVER].throttle;
+	pf->sustained_motor_current_a = pf->op[OP_HOVER].motor_current_a;
 	/* A drive that cannot turn on this pack (the voltage collapses under
 	 * the current) gives no full-throttle point: no thrust to spare, which
 	 * the checks then fail. */
-	if (!full_throttle(&x, &pf->op[OP_FULL]))
+	if (!full_throttle(&x, &pf->op[OP_FULL])
+	    || !capped_full_throttle(&x, &pf->op[OP_FULL]))
 		memset(&pf->op[OP_FULL], 0, sizeof pf->op[OP_FULL]);
 	const struct res_op *full = &pf->op[OP_FULL];
 

@@ -36,6 +36,9 @@ struct perf_craft {
 	bool motor_r_estimated;       /* R or I0 came from motor.h's fit */
 	double motor_max_current_a;   /* the maker's maximum */
 	double motor_max_power_w;     /* the maker's maximum input; 0 unknown */
+	double max_thrust_n;          /* an integrated system's published
+	                                 maximum thrust per rotor at this bus
+	                                 and air; 0: none (the model's) */
 	struct prop_coeffs prop;      /* static C_T and C_P */
 	double prop_diameter_m;
 	double prop_pitch_m;

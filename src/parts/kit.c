@@ -1,0 +1,268 @@
+/* kit.c — the parts around the propulsion: a frame kit where one fits, the
+ * avionics set of the airframe class, and the battery connectors (see
+ * parts.h).
+ *
+ * Avionics.  Each airframe class carries a set of kinds (flight
+ * controller, GNSS, receiver, telemetry radio, power module), each taken
+ * as the lightest usable catalogue part of that kind that meets the
+ * class's need and the aircraft's bus and current.  What the class carries
+ * that the catalogue does not sell as a part (obstacle sensors, spray
+ * radars, a pump controller), and any kind no catalogue part fits, stays
+ * an allowance: the mass data/airframes.json's class note gives that
+ * group, as a custom line of the bill of materials.  So the record's
+ * avionics mass is the parts it orders plus what it cannot order yet, and
+ * it equals the BOM's avionics lines.
+ *
+ * Frame kit.  A kit fits when it carries the mission's rotors (coaxial
+ * alike), its wheelbase is within PARTS_KIT_WHEELBASE_TOL below the
+ * mission's (never above: the wheelbase is a ceiling), the class matches
+ * where the kit names one, the propeller fits its limit and the overlap
+ * limit of its own wheelbase, the takeoff mass is within its published
+ * maximum, its arm tube is no thinner than the one the loads need (where
+ * it publishes one), none of its deciding numbers is doubted, and it weighs
+ * at most twice the custom arms and centre frame the loads need (a heavier
+ * kit is built for a heavier aircraft).  The lightest that fits replaces
+ * the custom arm tubes and centre frame; the body, landing gear and shell
+ * stay the model's.
+ *
+ * Connectors.  A pack's own connector is in its published mass; each
+ * pack is joined to the harness (or the series lead) by one more mated
+ * pair, the catalogue connector with the smallest rating that carries the
+ * pack's share of the sustained current and a published mass; several
+ * pairs per pack when none carries it alone.  So many small packs cost
+ * their connections, which the harness model (one battery lead) omits.
+ *
+ * Parts layer; no I/O.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "parts/parts_int.h"
+#include "parts/screen.h"
+#include "physics/aero.h"
+#include "util/units.h"
+
+#define PARTS_KIT_WHEELBASE_TOL 0.10  /* a kit up to 10 % below the wheelbase */
+#define PARTS_UNRATED_PM_CELLS  6     /* bus of a power module with no range */
+#define PARTS_MAX_CONNECTORS    4     /* pairs per pack in parallel */
+#define PARTS_KIT_MASS_FACTOR   2.0   /* a kit at most twice the custom arms
+                                         and centre frame it replaces */
+
+/* What one class carries: a catalogue kind with its need, or (kind NULL)
+ * an item no catalogue part supplies; allowance_kg is the mass of that
+ * group in the class note of data/airframes.json, used when no part fits. */
+struct kit_item {
+	const char *kind;
+	const char *need;          /* meets() key, or NULL for any */
+	const char *what;          /* the item in words (allowance lines) */
+	double allowance_kg;
+};
+
+#define KIT_MAX_ITEMS 7
+static const struct kit_item kit_items[AF_CLASS_MAX][KIT_MAX_ITEMS] = {
+	[AF_MICRO_AIO] = {
+		{ "flight_controller", NULL, "Flight controller", 0.012 },
+		{ "receiver", NULL, "Control receiver", 0.004 },
+		{ "video_tx", NULL, "Video transmitter", 0.008 },
+		{ "camera_fpv", NULL, "FPV camera", 0.006 },
+	},
+	[AF_CONSUMER_FOLDING] = {
+		{ "flight_controller", "any", "Flight controller and IMU", 0.020 },
+		{ "gnss", "compass", "GNSS and compass", 0.020 },
+		{ "receiver", NULL, "Control receiver", 0.010 },
+		{ "telemetry", NULL, "Telemetry and video link", 0.025 },
+		{ "power_module", "current", "Power distribution", 0.020 },
+		{ NULL, NULL, "Obstacle sensors", 0.025 },
+	},
+	[AF_ENTERPRISE_RUGGED] = {
+		{ "flight_controller", "redundant", "Redundant flight controller", 0.060 },
+		{ "gnss", "compass", "GNSS and compass", 0.080 },
+		{ "receiver", NULL, "Control receiver", 0.010 },
+		{ "telemetry", NULL, "Long-range datalink", 0.090 },
+		{ "power_module", "current", "Power distribution", 0.050 },
+		{ NULL, NULL, "Sensors (rangefinder, ADS-B receiver, lights)", 0.060 },
+	},
+	[AF_AGRICULTURAL] = {
+		{ "flight_controller", "redundant", "Redundant flight controller", 0.060 },
+		{ "gnss", "rtk", "RTK GNSS", 0.080 },
+		{ "receiver", NULL, "Control receiver", 0.010 },
+		{ "telemetry", NULL, "Datalink", 0.090 },
+		{ "power_module", "current", "Power distribution", 0.200 },
+		{ NULL, NULL, "Terrain and obstacle radars", 0.200 },
+		{ NULL, NULL, "Pump and flow controller", 0.160 },
+	},
+};
+
+/* Does the part's description say it? (Case as written in the catalogue.) */
+static bool
+says(const struct catalog_avionics *a, const char *word)
+{
+	return strstr(a->description, word) != NULL;
+}
+
+/* Does avionics part a meet need on a bus of `cells` carrying
+ * sustained_a? */
+static bool
+meets(const struct catalog_avionics *a, const char *kind, const char *need,
+      int cells, double sustained_a)
+{
+	if (!a->usable || strcmp(a->kind, kind) != 0)
+		return false;
+	if ((a->cells_min > 0 && cells < a->cells_min)
+	    || (a->cells_max > 0 && cells > a->cells_max))
+		return false;
+	/* A flight controller with an ESC on board (an all-in-one board)
+	 * would replace the ESCs the search picks: not taken. */
+	if (strcmp(kind, "flight_controller") == 0 && a->max_current_a > 0.0)
+		return false;
+	if (need == NULL || strcmp(need, "any") == 0)
+		return true;
+	if (strcmp(need, "redundant") == 0)
+		return says(a, "dual IMU") || says(a, "triple IMU");
+	if (strcmp(need, "compass") == 0)
+		return (says(a, "compass") && !says(a, "without compass"))
+		    || says(a, "RTK");
+	if (strcmp(need, "rtk") == 0)
+		return says(a, "RTK");
+	if (strcmp(need, "current") == 0) {
+		int hi = a->cells_max > 0 ? a->cells_max : PARTS_UNRATED_PM_CELLS;
+		return cells <= hi && a->max_current_a >= sustained_a;
+	}
+	return false;
+}
+
+/* The lightest part of kind meeting need (ties by id: deterministic). */
+static const struct catalog_avionics *
+lightest(const struct catalog *cat, const char *kind, const char *need,
+         int cells, double sustained_a)
+{
+	const struct catalog_avionics *best = NULL;
+	for (size_t i = 0; i < catalog_n_avionics(cat); i++) {
+		const struct catalog_avionics *a = catalog_avionics(cat, i);
+		if (!meets(a, kind, need, cells, sustained_a))
+			continue;
+		if (best == NULL || a->mass_kg < best->mass_kg
+		    || (a->mass_kg == best->mass_kg && strcmp(a->id, best->id) < 0))
+			best = a;
+	}
+	/* Agricultural power distribution: a distribution board will do. */
+	if (best == NULL && strcmp(kind, "power_module") == 0)
+		for (size_t i = 0; i < catalog_n_avionics(cat); i++) {
+			const struct catalog_avionics *a = catalog_avionics(cat, i);
+			if (meets(a, "pdb", need, cells, sustained_a)
+			    && (best == NULL || a->mass_kg < best->mass_kg))
+				best = a;
+		}
+	return best;
+}
+
+/* The connector pair per pack: the smallest rating that carries per_pack_a
+ * with a published mass; several in parallel when none does alone. */
+static void
+pick_connector(const struct catalog *cat, double per_pack_a,
+               struct parts_kit *kit, int n_packs)
+{
+	const struct catalog_avionics *best = NULL, *largest = NULL;
+	for (size_t i = 0; i < catalog_n_avionics(cat); i++) {
+		const struct catalog_avionics *a = catalog_avionics(cat, i);
+		if (!a->usable || strcmp(a->kind, "connector") != 0
+		    || !(a->max_current_a > 0.0))
+			continue;
+		if (largest == NULL || a->max_current_a > largest->max_current_a)
+			largest = a;
+		if (a->max_current_a >= per_pack_a && (best == NULL
+		    || a->max_current_a < best->max_current_a))
+			best = a;
+	}
+	int per_pack = 1;
+	if (best == NULL && largest != NULL) {
+		per_pack = (int)ceil(per_pack_a / largest->max_current_a);
+		if (per_pack <= PARTS_MAX_CONNECTORS)
+			best = largest;
+	}
+	kit->connector = best;
+	kit->n_connectors = best != NULL ? per_pack * n_packs : 0;
+	kit->connector_kg = best != NULL ? (double)kit->n_connectors * best->mass_kg
+	    : 0.0;
+}
+
+void
+parts_kit_pick(const struct parts_ctx *x, const struct parts_option *o,
+               const struct parts_pack *pk, double sustained_a,
+               struct parts_kit *kit)
+{
+	memset(kit, 0, sizeof *kit);
+	kit->sized_for_a = sustained_a;
+	int cls = x->spec->airframe_class;
+	if (cls < 0 || cls >= AF_CLASS_MAX)
+		cls = AF_ENTERPRISE_RUGGED;
+	for (int i = 0; i < KIT_MAX_ITEMS; i++) {
+		const struct kit_item *it = &kit_items[cls][i];
+		if (it->what == NULL)
+			break;
+		const struct catalog_avionics *a = it->kind != NULL
+		    ? lightest(x->cat, it->kind, it->need, o->cells, sustained_a)
+		    : NULL;
+		if (a != NULL && kit->n_part < PARTS_KIT_MAX) {
+			kit->part[kit->n_part++] = a;
+			kit->avionics_kg += a->mass_kg;
+		} else if (kit->n_allowance < PARTS_KIT_MAX) {
+			kit->allowance_what[kit->n_allowance] = it->what;
+			kit->allowance_kg[kit->n_allowance++] = it->allowance_kg;
+			kit->avionics_kg += it->allowance_kg;
+		}
+	}
+	int n_packs = pk->series * pk->parallel;
+	pick_connector(x->cat, sustained_a / (double)pk->parallel, kit, n_packs);
+}
+
+bool
+parts_kit_frame_fits(const struct parts_ctx *x, const struct catalog_frame *f,
+                     double prop_in, double mass_kg, double arm_od_m,
+                     double custom_kg)
+{
+	const struct sizing_params *p = x->p;
+	char why[128];
+	if (!f->usable || f->rotor_count != p->n_rotors || f->coaxial != p->coaxial)
+		return false;
+	if (screen_doubt_frame(f, why, sizeof why) != NULL)
+		return false;
+	/* A kit far heavier than the structure the loads need is built for a
+	 * heavier aircraft. */
+	if (f->mass_kg > PARTS_KIT_MASS_FACTOR * custom_kg)
+		return false;
+	if (f->wheelbase_m > p->wheelbase_m * (1.0 + 1e-9)
+	    || f->wheelbase_m < p->wheelbase_m * (1.0 - PARTS_KIT_WHEELBASE_TOL))
+		return false;
+	if (f->frame_class[0] != '\0'
+	    && strcmp(f->frame_class, spec_enum_airframe[x->spec->airframe_class]) != 0)
+		return false;
+	if (f->max_prop_in > 0.0 && prop_in > f->max_prop_in + 1e-9)
+		return false;
+	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
+	if (in_to_m(prop_in) > aero_overlap_limit_m(f->wheelbase_m, arms,
+	    AERO_TIP_CLEARANCE) * (1.0 + 1e-6))
+		return false;
+	if (f->max_takeoff_kg > 0.0 && mass_kg > f->max_takeoff_kg)
+		return false;
+	if (f->arm_tube_od_m > 0.0 && f->arm_tube_od_m < arm_od_m)
+		return false;
+	return true;
+}
+
+const struct catalog_frame *
+parts_kit_frame(const struct parts_ctx *x, double prop_in, double mass_kg,
+                double arm_od_m, double custom_kg)
+{
+	const struct catalog_frame *best = NULL;
+	for (size_t i = 0; i < catalog_n_frames(x->cat); i++) {
+		const struct catalog_frame *f = catalog_frame(x->cat, i);
+		if (!parts_kit_frame_fits(x, f, prop_in, mass_kg, arm_od_m, custom_kg))
+			continue;
+		if (best == NULL || f->mass_kg < best->mass_kg
+		    || (f->mass_kg == best->mass_kg && strcmp(f->id, best->id) < 0))
+			best = f;
+	}
+	return best;
+}
