@@ -364,6 +364,15 @@ check_text(struct entry *e, const cJSON *v, const char *path, size_t max)
 	                            JSON_IN_NO_CONTROL | JSON_IN_NO_FORMULA);
 }
 
+/* s quoted for a message into q (96 bytes): only when one is written, not
+ * for every string a catalogue holds. */
+static const char *
+quoted(const char *s, char q[96])
+{
+	diag_quote(s, strlen(s), 40, q, 96);
+	return q;
+}
+
 static bool
 store_string(struct entry *e, const struct field *f, const cJSON *v, const char *path)
 {
@@ -371,31 +380,30 @@ store_string(struct entry *e, const struct field *f, const cJSON *v, const char 
 	char q[96], list[512];
 	if (!check_text(e, v, path, f->check == C_ID ? CATALOG_ID_MAX - 1 : CATALOG_TEXT_MAX - 1))
 		return false;
-	diag_quote(s, strlen(s), 40, q, sizeof q);
 	switch (f->check) {
 	case C_ID:
 		if (!is_slug(s)) {
-			entry_report(e, DIAG_BAD_ID, f, v, ": %s (a lowercase slug of a-z, 0-9 and '-')", q);
+			entry_report(e, DIAG_BAD_ID, f, v, ": %s (a lowercase slug of a-z, 0-9 and '-')", quoted(s, q));
 			return false;
 		}
 		break;
 	case C_LIST:
 		if (!in_list(s, f->list)) {
 			text_join(f->list, list, sizeof list);
-			entry_report(e, DIAG_BAD_ENUM, f, v, " %s (allowed: %s)", q, list);
+			entry_report(e, DIAG_BAD_ENUM, f, v, " %s (allowed: %s)", quoted(s, q), list);
 			return false;
 		}
 		break;
 	case C_CHEM:
 		if (!in_list(s, e->ld->chems)) {
 			text_join(e->ld->chems, list, sizeof list);
-			entry_report(e, DIAG_BAD_CHEMISTRY, f, v, " %s (known: %s)", q, list);
+			entry_report(e, DIAG_BAD_CHEMISTRY, f, v, " %s (known: %s)", quoted(s, q), list);
 			return false;
 		}
 		break;
 	case C_DATE:
 		if (!is_price_date(s)) {
-			entry_report(e, DIAG_BAD_DATE, f, v, " %s (expected \"YYYY-MM\" or \"YYYY\")", q);
+			entry_report(e, DIAG_BAD_DATE, f, v, " %s (expected \"YYYY-MM\" or \"YYYY\")", quoted(s, q));
 			return false;
 		}
 		break;

@@ -466,10 +466,18 @@ json_in_check_keys(struct json_in *ji, const cJSON *obj, const char *path,
 {
 	int before = ji->n_errors;
 	char sub[512];
+	ji_index_members(ji, obj);
 	for (const cJSON *c = obj->child; c != NULL; c = c->next) {
-		json_in_path(sub, sizeof sub, path, c->string);
-		if (!json_in_member(ji, obj, c, sub))
-			continue;
+		/* The member's path is written only for a message: a clean key
+		 * (the rule, thousands of times in a catalogue) needs none. */
+		size_t first;
+		bool clean = !(ji_flags(ji, c) & (JSON_POS_BAD | JSON_POS_KEY_NUL))
+		    && !ptrmap_get(ji->repeat, c, &first);
+		if (!clean) {
+			json_in_path(sub, sizeof sub, path, c->string);
+			if (!json_in_member(ji, obj, c, sub))
+				continue;
+		}
 		if ((flags & JSON_IN_COMMENTS) && c->string[0] == '_')
 			continue;
 		bool known = false;
@@ -477,6 +485,7 @@ json_in_check_keys(struct json_in *ji, const cJSON *obj, const char *path,
 			known = strcmp(c->string, allowed[i]) == 0;
 		if (known)
 			continue;
+		json_in_path(sub, sizeof sub, path, c->string);
 		const char *hint = json_in_showing(ji) ? text_nearest(c->string, allowed) : NULL;
 		if (hint != NULL)
 			json_in_report(ji, DIAG_UNKNOWN, c, JSON_IN_KEY, sub,
