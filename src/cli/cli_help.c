@@ -53,13 +53,20 @@ static const struct help_cmd help_cmds[] = {
 	  "list every mission field: type, unit, default, range, meaning",
 	  "  --json   print a JSON Schema instead of the table\n" },
 	{ "validate",
-	  "validate [--report FILE.pdf] COHORT.csv",
+	  "validate [--pack] [--report FILE.pdf] [--json] [--missions DIR] COHORT.csv",
 	  "measure the accuracy against a cohort of real aircraft",
-	  "  --report FILE.pdf   also write a validation dossier\n" },
+	  "  --pack              lock each row's published pack (cells, capacity)\n"
+	  "                      instead of sizing the battery from its endurance\n"
+	  "  --report FILE.pdf   also write a validation dossier\n"
+	  "  --json              print the report as JSON\n"
+	  "  --missions DIR      write each row's mission file into DIR\n" },
 	{ "calibrate",
-	  "calibrate COHORT.csv",
+	  "calibrate [--write FILE] COHORT.csv",
 	  "fit the calibration coefficients to a cohort of real aircraft",
-	  "" },
+	  "Fits open loop from the priors, then measures the fit by leave-one-out\n"
+	  "with batteries sized from the endurance and with published packs\n"
+	  "locked, and derives the 90 % prediction interval (docs/validation.md).\n"
+	  "  --write FILE   write the fit and its accuracy as data/calibration.json\n" },
 	{ "sensitivity",
 	  "sensitivity [-o DIR] MISSION.json",
 	  "the 14-parameter sensitivity table of one mission",
