@@ -145,7 +145,7 @@ print_table(FILE *out, const struct cohort *c, const struct validate_report *v)
 			continue;
 		if (!header++)
 			fprintf(out, "\nRole thrust targets relaxed (the role's default "
-			    "did not close; README \"Thrust relaxation\"):\n");
+			    "did not close; docs/model.md, \"Thrust relaxation\"):\n");
 		fprintf(out, "  %-28.28s T/W %.1f\n", c->rows[i].name,
 		    vr->thrust_to_weight);
 	}

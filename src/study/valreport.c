@@ -15,8 +15,9 @@ const char *const valreport_rule_text[] = {
 	"One rule, applied identically to every row, using only the row's own facts; "
 	"the takeoff mass, the empty mass, the battery mass and anything derived from "
 	"them are never read.",
-	"Payload: payload_kg; unknown counts as 0 kg (the cohort's takeoff masses are "
-	"the aircraft's own mass, and takeoff minus empty mass would be the answer).",
+	"Payload: payload_kg; unknown skips the row (a takeoff figure is the aircraft "
+	"plus what it carries). The load case: max_payload_kg where it exceeds the "
+	"payload; motors, ESCs, propellers and structure are built for it.",
 	"Rotors: rotor_count; unknown skips the row. Coaxial: as given; unknown is a "
 	"flat layout. Class: airframe_class; unknown skips the row. Role: role; "
 	"unknown is \"none\".",
@@ -28,9 +29,9 @@ const char *const valreport_rule_text[] = {
 	"mass); a larger propeller is not locked and the engine uses the limit.",
 	"Battery: chemistry as given when it names a loaded profile; \"Li-ion\" is "
 	"read as Li-ion NMC (the lower specific energy of the two Li-ion profiles); "
-	"else LiPo. Pack count as given, else 1. Series cells as given, else chosen "
-	"by the solver. Capacity is never locked: sizing the energy is part of what "
-	"is tested.",
+	"else LiHV, the engine's default. Pack count as given, else 1. Series cells as "
+	"given, else chosen by the solver. Capacity sized from the endurance; with "
+	"validate --pack, a row's published pack (cells, capacity) is locked instead.",
 	"Endurance: one hover phase, no climb, no forward flight. The engine sizes "
 	"capacity as 1.2 x the charge the mission draws, while manufacturer times run "
 	"the pack to empty, so t_hover = hover_time_min / 1.2, else 0.8 x "
