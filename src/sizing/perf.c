@@ -59,21 +59,13 @@ build(const struct sizing_params *p, const struct perf_craft *c,
 	x->p = p;
 	x->c = c;
 	struct mission_model *m = &x->model;
-	m->air = p->air;
+	sizing_mission_model(p, c->mass.total_kg + p->extra_payload_kg, m);
 	m->rotor.diameter_m = c->prop_diameter_m;
 	m->rotor.ct = c->prop.ct;
 	m->rotor.n_blades = c->prop_blades;
 	m->rotor.fom = installed_fom(p, c, aero_interference(p->interference_c,
 	    c->arm.d_out_m, c->prop_diameter_m));
-	m->n_rotors = p->n_rotors;
-	m->coaxial = p->coaxial;
-	m->f_scale = p->f_scale;
-	m->added_drag_m2 = p->added_drag_m2;
-	m->fwd_drag_mult = p->fwd_drag_mult;
-	m->cd_h = p->cd_h;
-	m->cd_v = p->cd_v;
 	m->eta_drive = 1.0; /* not read: the motor gives the drive's losses */
-	m->aux_w = sizing_aux_w(p, c->mass.total_kg + p->extra_payload_kg);
 	x->v_oc_nom_v = (double)c->cells * p->chem->v_nom;
 	m->bus_voltage_v = x->v_oc_nom_v;
 	m->real_drive = true;

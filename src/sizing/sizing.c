@@ -239,20 +239,12 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 	e->k_int = aero_interference(p->interference_c, ls->arm_width_m, d);
 
 	struct mission_model *m = &e->model;
-	m->air = *air;
+	sizing_mission_model(p, e->design_mass_kg, m);
 	m->rotor.diameter_m = d;
 	m->rotor.ct = p->ct;
 	m->rotor.fom = e->fom_inst / e->k_int;
 	m->rotor.n_blades = p->n_blades;
-	m->n_rotors = nr;
-	m->coaxial = p->coaxial;
-	m->f_scale = p->f_scale;
-	m->added_drag_m2 = p->added_drag_m2;
-	m->fwd_drag_mult = p->fwd_drag_mult;
-	m->cd_h = p->cd_h;
-	m->cd_v = p->cd_v;
 	m->eta_drive = p->eta_drive;
-	m->aux_w = sizing_aux_w(p, e->design_mass_kg);
 	m->bus_voltage_v = (double)ls->cells * p->chem->v_nom;
 
 	/* Forward speed: the minimum-power speed when "auto". */
@@ -436,6 +428,21 @@ evaluate(const struct sizing_params *p, const struct loop_state *ls,
 		return;
 	}
 	evaluate_flight(p, ls->gamma_time, steps, rec, e);
+}
+
+void
+sizing_mission_model(const struct sizing_params *p, double design_mass_kg,
+                     struct mission_model *m)
+{
+	m->air = p->air;
+	m->n_rotors = p->n_rotors;
+	m->coaxial = p->coaxial;
+	m->f_scale = p->f_scale;
+	m->added_drag_m2 = p->added_drag_m2;
+	m->fwd_drag_mult = p->fwd_drag_mult;
+	m->cd_h = p->cd_h;
+	m->cd_v = p->cd_v;
+	m->aux_w = sizing_aux_w(p, design_mass_kg);
 }
 
 double

@@ -16,6 +16,7 @@
 
 #include "physics/atmo.h"
 #include "physics/batt.h"
+#include "physics/mission.h"
 #include "physics/role.h"
 #include "core/model.h"
 #include "core/result.h"
@@ -132,6 +133,12 @@ double sizing_seed_kg(double payload_kg, double rho_kg_m3);
  * gave is used as is. */
 #define SIZING_AUX_REF_KG 5.0
 double sizing_aux_w(const struct sizing_params *p, double design_mass_kg);
+
+/* The mission model's air, layout, drag and auxiliary load for p at a
+ * design mass: what the continuous design and the real-parts flight share
+ * (each sets its own rotor and drive). */
+void sizing_mission_model(const struct sizing_params *p, double design_mass_kg,
+                          struct mission_model *m);
 
 /* Continuous motor mass law (see the constants above), kg per motor. */
 double sizing_motor_kg(double power_max_w, double omega_max_rad_s);
