@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "util/strbuf.h"
+#include "util/text.h"
 #include "util/xalloc.h"
 
 /* Counts fsout_write_atomic calls for the AEROEVAL_FAIL_WRITE hook.  Like
@@ -25,18 +26,6 @@ static atomic_ulong write_count;
 /* Makes temporary names unique between threads of one process; O_EXCL
  * makes them safe against everything else. */
 static atomic_ulong temp_seq;
-
-__attribute__((format(printf, 3, 4)))
-static void
-set_err(char *err, size_t errlen, const char *fmt, ...)
-{
-	if (err == NULL || errlen == 0)
-		return;
-	va_list ap;
-	va_start(ap, fmt);
-	vsnprintf(err, errlen, fmt, ap);
-	va_end(ap);
-}
 
 void
 fsout_fault_reset(void)
@@ -129,7 +118,7 @@ fsout_write_atomic(const char *path, const void *data, size_t n,
 	const char *base = slash ? slash + 1 : path;
 
 	if (*base == '\0') {
-		set_err(err, errlen, "%s: not a file name", path);
+		text_errf(err, errlen, "%s: not a file name", path);
 		goto done;
 	}
 	if (slash == NULL)
@@ -150,44 +139,44 @@ fsout_write_atomic(const char *path, const void *data, size_t n,
 			break;
 	}
 	if (fd < 0) {
-		set_err(err, errlen, "%s: cannot create temporary file: %s", path, strerror(errno));
+		text_errf(err, errlen, "%s: cannot create temporary file: %s", path, strerror(errno));
 		strbuf_reset(&tmp); /* nothing to remove */
 		goto done;
 	}
 	/* The umask may have narrowed 0644; outputs get the same mode always. */
 	if (fchmod(fd, 0644) < 0) {
-		set_err(err, errlen, "%s: cannot set mode: %s", strbuf_str(&tmp), strerror(errno));
+		text_errf(err, errlen, "%s: cannot set mode: %s", strbuf_str(&tmp), strerror(errno));
 		goto fail;
 	}
 	if (inject) {
 		(void)fsout_write_all(fd, data, n / 2);
 		errno = inject;
-		set_err(err, errlen, "%s: write failed: %s (AEROEVAL_FAIL_WRITE)",
+		text_errf(err, errlen, "%s: write failed: %s (AEROEVAL_FAIL_WRITE)",
 		        strbuf_str(&tmp), strerror(errno));
 		goto fail;
 	}
 	if (fsout_write_all(fd, data, n) < 0) {
-		set_err(err, errlen, "%s: write failed: %s", strbuf_str(&tmp), strerror(errno));
+		text_errf(err, errlen, "%s: write failed: %s", strbuf_str(&tmp), strerror(errno));
 		goto fail;
 	}
 	if (fsync(fd) < 0) {
-		set_err(err, errlen, "%s: fsync failed: %s", strbuf_str(&tmp), strerror(errno));
+		text_errf(err, errlen, "%s: fsync failed: %s", strbuf_str(&tmp), strerror(errno));
 		goto fail;
 	}
 	if (close(fd) < 0) {
 		fd = -1;
-		set_err(err, errlen, "%s: close failed: %s", strbuf_str(&tmp), strerror(errno));
+		text_errf(err, errlen, "%s: close failed: %s", strbuf_str(&tmp), strerror(errno));
 		goto fail;
 	}
 	fd = -1;
 	if (rename(strbuf_str(&tmp), path) < 0) {
-		set_err(err, errlen, "%s: rename failed: %s", path, strerror(errno));
+		text_errf(err, errlen, "%s: rename failed: %s", path, strerror(errno));
 		goto fail;
 	}
 	/* From here the new content is in place; only durability is left. */
 	strbuf_reset(&tmp);
 	if (sync_dir(strbuf_str(&dir)) < 0) {
-		set_err(err, errlen, "%s: fsync of directory failed: %s",
+		text_errf(err, errlen, "%s: fsync of directory failed: %s",
 		        strbuf_str(&dir), strerror(errno));
 		goto done;
 	}
@@ -214,10 +203,10 @@ mkdir_one(const char *p, char *err, size_t errlen)
 	if (saved == EEXIST && stat(p, &st) == 0) {
 		if (S_ISDIR(st.st_mode))
 			return 0;
-		set_err(err, errlen, "%s: exists and is not a directory", p);
+		text_errf(err, errlen, "%s: exists and is not a directory", p);
 		return -1;
 	}
-	set_err(err, errlen, "%s: cannot create directory: %s", p, strerror(saved));
+	text_errf(err, errlen, "%s: cannot create directory: %s", p, strerror(saved));
 	return -1;
 }
 
@@ -225,7 +214,7 @@ int
 fsout_mkdirs(const char *dir, char *err, size_t errlen)
 {
 	if (*dir == '\0') {
-		set_err(err, errlen, "empty directory name");
+		text_errf(err, errlen, "empty directory name");
 		return -1;
 	}
 	char *p = xstrdup(dir);
@@ -309,7 +298,7 @@ fsout_resolve_date(const char *report_date, const char *mission_path,
 
 	if (report_date != NULL && *report_date != '\0') {
 		if (check_ymd(report_date) < 0) {
-			set_err(err, errlen, "report.date: \"%s\" is not a date YYYY-MM-DD", report_date);
+			text_errf(err, errlen, "report.date: \"%s\" is not a date YYYY-MM-DD", report_date);
 			return -1;
 		}
 		memcpy(out, report_date, 11);
@@ -326,7 +315,7 @@ fsout_resolve_date(const char *report_date, const char *mission_path,
 			t = t * 10 + (*s - '0');
 		if (*s != '\0' || t > epoch_max || format_utc(t, out) < 0) {
 			out[0] = '\0';
-			set_err(err, errlen, "SOURCE_DATE_EPOCH: \"%s\" is not a number of seconds "
+			text_errf(err, errlen, "SOURCE_DATE_EPOCH: \"%s\" is not a number of seconds "
 			        "since 1970 (digits only, at most %lld)", e, epoch_max);
 			return -1;
 		}
@@ -335,13 +324,13 @@ fsout_resolve_date(const char *report_date, const char *mission_path,
 
 	struct stat st;
 	if (stat(mission_path, &st) < 0) {
-		set_err(err, errlen, "%s: cannot read modification time: %s",
+		text_errf(err, errlen, "%s: cannot read modification time: %s",
 		        mission_path, strerror(errno));
 		return -1;
 	}
 	if (format_utc((long long)st.st_mtime, out) < 0) {
 		out[0] = '\0';
-		set_err(err, errlen, "%s: modification time out of range", mission_path);
+		text_errf(err, errlen, "%s: modification time out of range", mission_path);
 		return -1;
 	}
 	return FSOUT_DATE_MISSION_MTIME;

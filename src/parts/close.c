@@ -351,17 +351,6 @@ parts_close(const struct parts_ctx *x, const struct parts_option *o,
 
 /* ---- the design of record's checks ---------------------------------------- */
 
-static void __attribute__((format(printf, 3, 4)))
-fix(const struct solve_result *r, char f[FIX_LEN], const char *fmt, ...)
-{
-	if (r->terse)
-		return;
-	va_list ap;
-	va_start(ap, fmt);
-	vsnprintf(f, FIX_LEN, fmt, ap);
-	va_end(ap);
-}
-
 /* A check that fails becomes a violation with its fixes. */
 static void
 violate(struct solve_result *r, const struct res_check *c, const char *stage,
@@ -384,9 +373,9 @@ motor_current(struct solve_result *r, const char *name, const char *code,
 	    value_a, limit_a, true);
 	if (k == NULL || k->pass)
 		return;
-	fix(r, f1, "A motor rated above %.0f A", value_a);
-	fix(r, f2, "%s", fix2);
-	fix(r, f3, "Fewer series cells or a lower-KV motor");
+	feasibility_fix(r, f1, "A motor rated above %.0f A", value_a);
+	feasibility_fix(r, f2, "%s", fix2);
+	feasibility_fix(r, f3, "Fewer series cells or a lower-KV motor");
 	if (!r->terse)
 		snprintf(msg, sizeof msg, "Each motor draws %.1f A %s, above its "
 		    "%.1f A %s.", value_a, when, limit_a, rating);
@@ -411,9 +400,9 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 	k = feasibility_add_check(o, "State of charge at landing (reserve)", "%",
 	    100.0 * o->end_soc, 100.0 * o->reserve_soc, false);
 	if (k && !k->pass) {
-		fix(r, f1, "Choose a larger pack (locks.battery_part) or more packs in parallel");
-		fix(r, f2, "Shorten the mission or lighten the payload");
-		fix(r, f3, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
+		feasibility_fix(r, f1, "Choose a larger pack (locks.battery_part) or more packs in parallel");
+		feasibility_fix(r, f2, "Shorten the mission or lighten the payload");
+		feasibility_fix(r, f3, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
 		if (!r->terse)
 			snprintf(msg, sizeof msg, "The real pack lands at %.1f %% state of "
 			    "charge, below the %.1f %% reserve (%.80s).", 100.0 * o->end_soc,
@@ -427,9 +416,9 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 	k = feasibility_add_check(o, "Thrust-to-weight at full throttle", "",
 	    o->thrust_to_weight, tw_need, false);
 	if (k && !k->pass) {
-		fix(r, f1, "A stronger motor or a larger propeller (locks.motor_part, locks.prop_part)");
-		fix(r, f2, "Reduce the thrust margin (payload_role.thrust_margin_override)");
-		fix(r, f3, "Add series cells (nominal_cell_count)");
+		feasibility_fix(r, f1, "A stronger motor or a larger propeller (locks.motor_part, locks.prop_part)");
+		feasibility_fix(r, f2, "Reduce the thrust margin (payload_role.thrust_margin_override)");
+		feasibility_fix(r, f3, "Add series cells (nominal_cell_count)");
 		if (!r->terse)
 			snprintf(msg, sizeof msg, "The real motor and propeller give T/W "
 			    "%.2f at full throttle; the design needs %.2f.",
@@ -439,8 +428,8 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 
 	k = feasibility_add_check(o, "Throttle the mission needs (real drive)", "%",
 	    100.0 * pf->throttle_needed, 100.0, true);
-	fix(r, f1, "A motor of higher KV or a larger propeller");
-	fix(r, f2, "Add series cells");
+	feasibility_fix(r, f1, "A motor of higher KV or a larger propeller");
+	feasibility_fix(r, f2, "Add series cells");
 	fx[2] = NULL;
 	if (k && !k->pass && !r->terse)
 		snprintf(msg, sizeof msg, "The mission needs %.0f %% throttle: more "
@@ -455,8 +444,8 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 		k = feasibility_add_check(o, "Thrust-to-weight with the largest payload", "",
 		    o->thrust_to_weight * o->mass.total_kg / m_max, floor_tw * PARTS_TW_TOL,
 		    false);
-		fix(r, f1, "A stronger motor or a larger propeller");
-		fix(r, f2, "A lower max_payload_kg");
+		feasibility_fix(r, f1, "A stronger motor or a larger propeller");
+		feasibility_fix(r, f2, "A lower max_payload_kg");
 		fx[2] = NULL;
 		if (k && !k->pass && !r->terse)
 			snprintf(msg, sizeof msg, "With the largest payload (%.2f kg) "
@@ -482,8 +471,8 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 	if (c->motor_max_power_w > 0.0 && !cl->o.motor->integrated) {
 		k = feasibility_add_check(o, "Motor input power at full throttle", "W",
 		    full->power_in_w, c->motor_max_power_w, true);
-		fix(r, f1, "A motor rated above %.0f W", full->power_in_w);
-		fix(r, f2, "A smaller or lower-pitch propeller");
+		feasibility_fix(r, f1, "A motor rated above %.0f W", full->power_in_w);
+		feasibility_fix(r, f2, "A smaller or lower-pitch propeller");
 		f3[0] = '\0';
 		if (!r->terse)
 			snprintf(msg, sizeof msg, "Each motor takes %.0f W at full "
@@ -497,8 +486,8 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 		k = feasibility_add_check(o, "ESC current at full throttle", "A",
 		    full->motor_current_a, c->esc_current_a, true);
 		if (k && !k->pass) {
-			fix(r, f1, "An ESC rated above %.0f A continuous", full->motor_current_a);
-			fix(r, f2, "Remove locks.esc_part to let the search choose");
+			feasibility_fix(r, f1, "An ESC rated above %.0f A continuous", full->motor_current_a);
+			feasibility_fix(r, f2, "Remove locks.esc_part to let the search choose");
 			fx[2] = NULL;
 			if (!r->terse)
 				snprintf(msg, sizeof msg, "Each motor draws %.1f A at full "
@@ -521,7 +510,7 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 			continue;
 		k = feasibility_add_check(o, "Power module current, mission", "A",
 		    sustained_a, a->max_current_a, true);
-		fix(r, f1, "A power module rated above %.0f A", sustained_a);
+		feasibility_fix(r, f1, "A power module rated above %.0f A", sustained_a);
 		fx[1] = NULL;
 		if (k && !k->pass && !r->terse)
 			snprintf(msg, sizeof msg, "The mission draws %.1f A through the "
@@ -535,7 +524,7 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 		k = feasibility_add_check(o, "Battery connector current, mission", "A",
 		    sustained_a / (double)cl->pack.parallel,
 		    (double)per_pack * kit->connector->max_current_a, true);
-		fix(r, f1, "Fewer, larger packs or a higher-rated connector");
+		feasibility_fix(r, f1, "Fewer, larger packs or a higher-rated connector");
 		fx[1] = NULL;
 		if (k && !k->pass && !r->terse)
 			snprintf(msg, sizeof msg, "Each pack's connector carries %.1f A, "
@@ -551,8 +540,8 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 	double sustained = sustained_a;
 	k = feasibility_add_check(o, "Battery current, mission (continuous rating)", "A",
 	    sustained, cl->pack.max_continuous_a, true);
-	fix(r, f1, "A pack with a higher C rating or more capacity");
-	fix(r, f2, "More packs in parallel");
+	feasibility_fix(r, f1, "A pack with a higher C rating or more capacity");
+	feasibility_fix(r, f2, "More packs in parallel");
 	fx[2] = NULL;
 	if (k && !k->pass && !r->terse)
 		snprintf(msg, sizeof msg, "The mission draws %.1f A, above the pack's "
@@ -571,8 +560,8 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 	    m_to_in(c->prop_diameter_m), o->overlap_limit_in * (1.0 + 1e-6), true);
 	k = feasibility_add_check(o, "Tip Mach number at full throttle", "",
 	    full->tip_mach, AERO_TIP_MACH_MAX, true);
-	fix(r, f1, "A larger, slower propeller");
-	fix(r, f2, "A lower-KV motor");
+	feasibility_fix(r, f1, "A larger, slower propeller");
+	feasibility_fix(r, f2, "A lower-KV motor");
 	fx[2] = NULL;
 	if (k && !k->pass && !r->terse)
 		snprintf(msg, sizeof msg, "The tip reaches Mach %.2f at full throttle "
@@ -592,17 +581,17 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 	/* Heat and voltage. */
 	k = feasibility_add_check(o, "Battery peak temperature", "°C",
 	    o->max_battery_temp_c, THERM_RUNAWAY_C, true);
-	fix(r, f1, "More capacity or packs in parallel (lower C-rate, more mass to heat)");
-	fix(r, f2, "A lower-resistance pack");
-	fix(r, f3, "A lower ambient temperature limit for the mission");
+	feasibility_fix(r, f1, "More capacity or packs in parallel (lower C-rate, more mass to heat)");
+	feasibility_fix(r, f2, "A lower-resistance pack");
+	feasibility_fix(r, f3, "A lower ambient temperature limit for the mission");
 	if (k && !k->pass && !r->terse)
 		snprintf(msg, sizeof msg, "The pack reaches %.1f °C, above %.0f °C.",
 		    o->max_battery_temp_c, THERM_RUNAWAY_C);
 	violate(r, k, "discharge", "THERMAL_RUNAWAY", fx, msg);
 	k = feasibility_add_check(o, "Motor winding temperature, hover (steady)", "°C",
 	    o->winding_temp_c, MOTOR_WINDING_MAX_C, true);
-	fix(r, f1, "A larger motor (lower losses, more surface)");
-	fix(r, f2, "A larger propeller (lower disk loading)");
+	feasibility_fix(r, f1, "A larger motor (lower losses, more surface)");
+	feasibility_fix(r, f2, "A larger propeller (lower disk loading)");
 	fx[2] = NULL;
 	if (k && !k->pass && !r->terse)
 		snprintf(msg, sizeof msg, "The winding settles at %.0f °C in hover "
@@ -611,8 +600,8 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 	fx[2] = f3;
 	k = feasibility_add_check(o, "Motor winding temperature, full-throttle burst", "°C",
 	    full->winding_temp_c, MOTOR_WINDING_MAX_C, true);
-	fix(r, f1, "A larger motor (lower losses, more surface)");
-	fix(r, f2, "A smaller or lower-pitch propeller");
+	feasibility_fix(r, f1, "A larger motor (lower losses, more surface)");
+	feasibility_fix(r, f2, "A smaller or lower-pitch propeller");
 	fx[2] = NULL;
 	if (k && !k->pass && !r->terse)
 		snprintf(msg, sizeof msg, "The winding reaches %.0f °C after %.0f s at "
@@ -622,8 +611,8 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 	fx[2] = f3;
 	k = feasibility_add_check(o, "Minimum terminal voltage", "V",
 	    o->min_terminal_voltage_v, o->voltage_floor_v, false);
-	fix(r, f1, "More capacity or a lower-resistance pack");
-	fix(r, f2, "Add series cells");
+	feasibility_fix(r, f1, "More capacity or a lower-resistance pack");
+	feasibility_fix(r, f2, "Add series cells");
 	fx[2] = NULL;
 	if (k && !k->pass && !r->terse)
 		snprintf(msg, sizeof msg, "The pack falls to %.2f V, below the %.2f V "
@@ -638,11 +627,11 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 		k->sized = true;
 	k = feasibility_add_check(o, "Arm mode clear of the blade-pass band", "",
 	    o->resonance_margin, 0.0, false);
-	fix(r, f1, "Stiffen the arm above %.0f Hz (larger tube)",
+	feasibility_fix(r, f1, "Stiffen the arm above %.0f Hz (larger tube)",
 	    STRUCT_RESONANCE_MARGIN * o->blade_pass_frequency_hz);
-	fix(r, f2, "Or soften it below %.0f Hz (soft mounts)",
+	feasibility_fix(r, f2, "Or soften it below %.0f Hz (soft mounts)",
 	    o->blade_pass_low_hz / STRUCT_RESONANCE_MARGIN);
-	fix(r, f3, "Another blade count moves the band");
+	feasibility_fix(r, f3, "Another blade count moves the band");
 	if (k && !k->pass && !r->terse)
 		snprintf(msg, sizeof msg, "The arm's first mode (%.0f Hz) lies inside "
 		    "the blade-pass band (%.0f–%.0f Hz) without the 1.5 margin.",
@@ -657,9 +646,9 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 	if (p->downwash_cap_ms > 0.0) {
 		k = feasibility_add_check(o, "Downwash (role limit)", "m/s",
 		    o->downwash_ms, p->downwash_cap_ms, true);
-		fix(r, f1, "A larger wheelbase: larger rotors lower the downwash");
-		fix(r, f2, "More rotors");
-		fix(r, f3, "Raise payload_role.ag_max_downwash_ms if the crop allows");
+		feasibility_fix(r, f1, "A larger wheelbase: larger rotors lower the downwash");
+		feasibility_fix(r, f2, "More rotors");
+		feasibility_fix(r, f3, "Raise payload_role.ag_max_downwash_ms if the crop allows");
 		if (k && !k->pass && !r->terse)
 			snprintf(msg, sizeof msg, "The downwash of %.1f m/s exceeds the "
 			    "role's %.1f m/s limit.", o->downwash_ms, p->downwash_cap_ms);
@@ -670,8 +659,8 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 		    MISSION_PITCH_MAX_DEG, true);
 		k = feasibility_add_check(o, "Forward speed within full thrust", "m/s",
 		    o->optimal_speed_ms, o->v_max_ms, true);
-		fix(r, f1, "Reduce v_forward_ms to %.1f m/s or less", o->v_max_ms);
-		fix(r, f2, "Use \"auto\" for the minimum-power speed");
+		feasibility_fix(r, f1, "Reduce v_forward_ms to %.1f m/s or less", o->v_max_ms);
+		feasibility_fix(r, f2, "Use \"auto\" for the minimum-power speed");
 		fx[2] = NULL;
 		if (k && !k->pass && !r->terse)
 			snprintf(msg, sizeof msg, "At %.1f m/s the real rotors run out of "

@@ -45,17 +45,14 @@ feasibility_violation(struct solve_result *r, const char *run,
 	}
 }
 
-/* A violation's fix text into f, unless r keeps its violations' codes
- * only (a trial closing's, solve_result.terse): none of its violations
- * reads the text then. */
-static void __attribute__((format(printf, 3, 4)))
-fix_text(const struct solve_result *r, char f[FIX_LEN], const char *fmt, ...)
+void
+feasibility_fix(const struct solve_result *r, char *f, const char *fmt, ...)
 {
 	if (r->terse)
 		return;
 	va_list ap;
 	va_start(ap, fmt);
-	vsnprintf(f, FIX_LEN, fmt, ap);
+	vsnprintf(f, RES_TEXT, fmt, ap);
 	va_end(ap);
 }
 
@@ -77,8 +74,8 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 	const char *fx[4] = { f1, f2, f3, NULL };
 
 	if (p->coaxial && (p->n_rotors % 2 != 0 || p->n_rotors < 6)) {
-		fix_text(r, f1, "Use an even rotor count of 6 or more (coaxial X8: num_rotors 8)");
-		fix_text(r, f2, "Set coaxial_layout to false");
+		feasibility_fix(r, f1, "Use an even rotor count of 6 or more (coaxial X8: num_rotors 8)");
+		feasibility_fix(r, f2, "Set coaxial_layout to false");
 		fx[2] = NULL;
 		feasibility_violation(r, run, "feasibility", "COAXIAL_LAYOUT", fx,
 		    "A coaxial layout stacks rotors in pairs on at least 3 arms; "
@@ -91,9 +88,9 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 	if (p->prop_locked && p->prop_diameter_m > limit * (1.0 + AERO_OVERLAP_REL_TOL)) {
 		double w_need = p->prop_diameter_m / ((1.0 - AERO_TIP_CLEARANCE)
 		    * sin(M_PI / (double)arms));
-		fix_text(r, f1, "Increase max_diameter_m to at least %.3f m", w_need);
-		fix_text(r, f2, "Lock a propeller of at most %.1f in", m_to_in(limit));
-		fix_text(r, f3, "Use fewer rotors or a coaxial layout");
+		feasibility_fix(r, f1, "Increase max_diameter_m to at least %.3f m", w_need);
+		feasibility_fix(r, f2, "Lock a propeller of at most %.1f in", m_to_in(limit));
+		feasibility_fix(r, f3, "Use fewer rotors or a coaxial layout");
 		fx[2] = f3;
 		feasibility_violation(r, run, "feasibility", "PROP_OVERLAP", fx,
 		    "The locked %.1f in propeller overlaps its neighbour: a %.0f mm "
@@ -104,8 +101,8 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 	}
 	double d_y = 0.5 * p->wheelbase_m * cos(M_PI / (double)arms);
 	if (p->cg_shift_m >= d_y) {
-		fix_text(r, f1, "Mount the payload within %.3f m of the centre", d_y);
-		fix_text(r, f2, "Increase max_diameter_m above %.3f m",
+		feasibility_fix(r, f1, "Mount the payload within %.3f m of the centre", d_y);
+		feasibility_fix(r, f2, "Increase max_diameter_m above %.3f m",
 		    2.0 * p->cg_shift_m / cos(M_PI / (double)arms));
 		fx[2] = NULL;
 		feasibility_violation(r, run, "feasibility", "CG_OFFSET", fx,
@@ -128,10 +125,10 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 		double p_ideal_w = w * sqrt(w / (2.0 * p->air.rho_kg_m3 * area));
 		double e_min_wh = p_ideal_w * mission_time_s(p) / 3600.0;
 		if (e_min_wh > e_avail_wh) {
-			fix_text(r, f1, "Increase locks.locked_capacity_mah above %.0f mAh",
+			feasibility_fix(r, f1, "Increase locks.locked_capacity_mah above %.0f mAh",
 			    1000.0 * e_min_wh / v_nom);
-			fix_text(r, f2, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
-			fix_text(r, f3, "Shorten the mission");
+			feasibility_fix(r, f2, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
+			feasibility_fix(r, f3, "Shorten the mission");
 			fx[2] = f3;
 			feasibility_violation(r, run, "feasibility", "LOCKED_BATTERY_ENERGY", fx,
 			    "The locked %.0f Wh battery cannot fly this mission even with "
@@ -142,7 +139,7 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 		}
 	}
 	if (!(mission_time_s(p) > 0.0)) {
-		fix_text(r, f1, "Give t_hover_s, t_climb_s or t_forward_s");
+		feasibility_fix(r, f1, "Give t_hover_s, t_climb_s or t_forward_s");
 		fx[1] = NULL;
 		feasibility_violation(r, run, "feasibility", "NO_MISSION", fx,
 		    "The mission has no flight time: every phase duration is 0.");
@@ -193,16 +190,16 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	if (c)
 		c->sized = true;
 	if (st == SIZING_RUNAWAY) {
-		fix_text(r, f1, "Reduce payload_kg or the mission times");
-		fix_text(r, f2, "Choose a higher specific-energy battery_chemistry");
-		fix_text(r, f3, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
+		feasibility_fix(r, f1, "Reduce payload_kg or the mission times");
+		feasibility_fix(r, f2, "Choose a higher specific-energy battery_chemistry");
+		feasibility_fix(r, f3, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
 		feasibility_violation(r, run, "mass_loop", "MASS_RUNAWAY", fx,
 		    "The takeoff mass ran away above %.0f kg: each added kilogram "
 		    "needs more than a kilogram of battery, structure and motors "
 		    "(Lipschitz constant >= 1).", SIZING_RUNAWAY_KG);
 	} else if (st == SIZING_MAX_ITERATIONS) {
-		fix_text(r, f1, "Shorten the mission or lighten the payload");
-		fix_text(r, f2, "Fix the cell count (nominal_cell_count) to stop cell-count cycling");
+		feasibility_fix(r, f1, "Shorten the mission or lighten the payload");
+		feasibility_fix(r, f2, "Fix the cell count (nominal_cell_count) to stop cell-count cycling");
 		fx[2] = NULL;
 		feasibility_violation(r, run, "mass_loop", "NOT_CONVERGED", fx,
 		    "The mass loop did not converge to 1 g in %d iterations.",
@@ -233,14 +230,14 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	}
 	if (c && !c->pass && st != SIZING_RUNAWAY) {
 		if (p->capacity_locked) {
-			fix_text(r, f1, "Increase locks.locked_capacity_mah above %.0f mAh",
+			feasibility_fix(r, f1, "Increase locks.locked_capacity_mah above %.0f mAh",
 			    p->capacity_locked_ah * 1000.0 * (need > 0.0 && flown > 0.0 ? need / flown : 2.0) * SIZING_CAP_MARGIN);
-			fix_text(r, f2, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
-			fix_text(r, f3, "Unlock the battery so the solver can size it");
+			feasibility_fix(r, f2, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
+			feasibility_fix(r, f3, "Unlock the battery so the solver can size it");
 		} else {
-			fix_text(r, f1, "Add series cells (nominal_cell_count) to lower the current");
-			fix_text(r, f2, "Shorten the mission or lighten the payload");
-			fix_text(r, f3, "Choose a lower-resistance battery_chemistry");
+			feasibility_fix(r, f1, "Add series cells (nominal_cell_count) to lower the current");
+			feasibility_fix(r, f2, "Shorten the mission or lighten the payload");
+			feasibility_fix(r, f3, "Choose a lower-resistance battery_chemistry");
 		}
 		if (!completed)
 			feasibility_violation(r, run, "discharge", "MISSION_NOT_FLOWN", fx,
@@ -261,9 +258,9 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	c = feasibility_add_check(o, "Tip Mach number at full throttle", "", o->tip_mach_peak,
 	    AERO_TIP_MACH_MAX, true);
 	if (c && !c->pass) {
-		fix_text(r, f1, "Use a larger propeller (lower rpm for the same thrust)");
-		fix_text(r, f2, "Reduce the thrust margin (payload_role.thrust_margin_override)");
-		fix_text(r, f3, "Lower the operating altitude or raise the ambient temperature limit");
+		feasibility_fix(r, f1, "Use a larger propeller (lower rpm for the same thrust)");
+		feasibility_fix(r, f2, "Reduce the thrust margin (payload_role.thrust_margin_override)");
+		feasibility_fix(r, f3, "Lower the operating altitude or raise the ambient temperature limit");
 		feasibility_violation(r, run, "propulsion", "TIP_MACH", fx,
 		    "The rotor tip reaches Mach %.2f at full throttle (limit %.2f): "
 		    "noise, compressibility losses and blade loads rise sharply.",
@@ -274,9 +271,9 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	c = feasibility_add_check(o, "Battery peak temperature", "°C", o->max_battery_temp_c,
 	    THERM_RUNAWAY_C, true);
 	if (c && !c->pass) {
-		fix_text(r, f1, "Add capacity or parallel packs to lower the C-rate");
-		fix_text(r, f2, "Choose a lower-resistance battery_chemistry (LiPo, LiHV)");
-		fix_text(r, f3, "Lower the ambient temperature limit of the mission");
+		feasibility_fix(r, f1, "Add capacity or parallel packs to lower the C-rate");
+		feasibility_fix(r, f2, "Choose a lower-resistance battery_chemistry (LiPo, LiHV)");
+		feasibility_fix(r, f3, "Lower the ambient temperature limit of the mission");
 		feasibility_violation(r, run, "discharge", "THERMAL_RUNAWAY", fx,
 		    "The pack reaches %.1f °C, above the %.0f °C thermal-runaway limit.",
 		    o->max_battery_temp_c, THERM_RUNAWAY_C);
@@ -284,8 +281,8 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	c = feasibility_add_check(o, "Minimum terminal voltage", "V", o->min_terminal_voltage_v,
 	    o->voltage_floor_v, false);
 	if (c && !c->pass) {
-		fix_text(r, f1, "Add series cells (nominal_cell_count)");
-		fix_text(r, f2, "Add capacity to reduce the voltage sag");
+		feasibility_fix(r, f1, "Add series cells (nominal_cell_count)");
+		feasibility_fix(r, f2, "Add capacity to reduce the voltage sag");
 		fx[2] = NULL;
 		feasibility_violation(r, run, "discharge", "VOLTAGE_FLOOR", fx,
 		    "The terminal voltage falls to %.2f V, below the %.2f V cut-off.",
@@ -299,9 +296,9 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	if (c)
 		c->sized = o->battery_power_binds;
 	if (c && !c->pass) {
-		fix_text(r, f1, "Unlock or enlarge the battery");
-		fix_text(r, f2, "Choose a higher-power chemistry such as LiPo or LiHV");
-		fix_text(r, f3, "Reduce the thrust margin");
+		feasibility_fix(r, f1, "Unlock or enlarge the battery");
+		feasibility_fix(r, f2, "Choose a higher-power chemistry such as LiPo or LiHV");
+		feasibility_fix(r, f3, "Reduce the thrust margin");
 		feasibility_violation(r, run, "discharge", "BATTERY_POWER", fx,
 		    "Full throttle draws %.0f W, but %.2f kg of %s cells deliver at "
 		    "most %.0f W in a 10 s burst (%.0f × their continuous specific "
@@ -317,11 +314,11 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	c = feasibility_add_check(o, "Arm mode clear of the blade-pass band", "",
 	    o->resonance_margin, 0.0, false);
 	if (c && !c->pass) {
-		fix_text(r, f1, "Stiffen the arm above %.0f Hz (larger tube diameter)",
+		feasibility_fix(r, f1, "Stiffen the arm above %.0f Hz (larger tube diameter)",
 		    STRUCT_RESONANCE_MARGIN * o->blade_pass_frequency_hz);
-		fix_text(r, f2, "Or soften it below %.0f Hz (soft-mounted arms)",
+		feasibility_fix(r, f2, "Or soften it below %.0f Hz (soft-mounted arms)",
 		    o->blade_pass_low_hz / STRUCT_RESONANCE_MARGIN);
-		fix_text(r, f3, "Change the blade count (structural_overrides.num_blades) to move the band");
+		feasibility_fix(r, f3, "Change the blade count (structural_overrides.num_blades) to move the band");
 		feasibility_violation(r, run, "structure", "ARM_RESONANCE", fx,
 		    "The arm's first bending mode (%.0f Hz) lies inside the "
 		    "in-flight blade-pass band (%.0f–%.0f Hz) without the 1.5 margin.",
@@ -337,9 +334,9 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 		c = feasibility_add_check(o, "Downwash (crop and drift limit)", "m/s",
 		    o->downwash_ms, p->downwash_cap_ms, true);
 		if (c && !c->pass) {
-			fix_text(r, f1, "Increase max_diameter_m: larger rotors lower the downwash");
-			fix_text(r, f2, "Use more rotors (num_rotors)");
-			fix_text(r, f3, "Raise payload_role.ag_max_downwash_ms if the crop allows");
+			feasibility_fix(r, f1, "Increase max_diameter_m: larger rotors lower the downwash");
+			feasibility_fix(r, f2, "Use more rotors (num_rotors)");
+			feasibility_fix(r, f3, "Raise payload_role.ag_max_downwash_ms if the crop allows");
 			feasibility_violation(r, run, "feasibility", "DOWNWASH", fx,
 			    "The downwash of %.1f m/s exceeds the %.1f m/s cap against "
 			    "crop damage and spray drift.", o->downwash_ms, p->downwash_cap_ms);
@@ -351,9 +348,9 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 		c = feasibility_add_check(o, "Forward speed within thrust margin", "m/s",
 		    o->optimal_speed_ms, o->v_max_ms, true);
 		if (c && !c->pass) {
-			fix_text(r, f1, "Reduce v_forward_ms to %.1f m/s or less", o->v_max_ms);
-			fix_text(r, f2, "Use \"auto\" for the minimum-power speed");
-			fix_text(r, f3, "Reduce the drag area (payload_role.added_drag_m2)");
+			feasibility_fix(r, f1, "Reduce v_forward_ms to %.1f m/s or less", o->v_max_ms);
+			feasibility_fix(r, f2, "Use \"auto\" for the minimum-power speed");
+			feasibility_fix(r, f3, "Reduce the drag area (payload_role.added_drag_m2)");
 			feasibility_violation(r, run, "mission", "FORWARD_SPEED", fx,
 			    "At %.1f m/s the drag needs more thrust or pitch than the "
 			    "design has; the model diverges beyond %.1f m/s.",

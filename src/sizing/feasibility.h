@@ -44,4 +44,10 @@ void feasibility_violation(struct solve_result *r, const char *run,
                            const char *const *fixes, const char *fmt, ...)
     __attribute__((format(printf, 6, 7)));
 
+/* A violation's fix text into f (RES_TEXT bytes), unless r keeps its
+ * violations' codes only (a trial closing's, solve_result.terse): none of
+ * its violations reads the text then. */
+void feasibility_fix(const struct solve_result *r, char *f, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
 #endif

@@ -4,25 +4,14 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "util/text.h"
 #include "util/xalloc.h"
-
-static void
-file_err(char *err, size_t errlen, const char *fmt, ...)
-{
-	if (err == NULL || errlen == 0)
-		return;
-	va_list ap;
-	va_start(ap, fmt);
-	vsnprintf(err, errlen, fmt, ap);
-	va_end(ap);
-}
 
 /* Reads the open file fd (named path in messages) whole, as file_read()
  * describes, and closes it. */
@@ -32,12 +21,12 @@ read_fd(int fd, const char *path, size_t max_n, unsigned char **out,
 {
 	struct stat st;
 	if (fstat(fd, &st) < 0 || !S_ISREG(st.st_mode)) {
-		file_err(err, errlen, "%s: not a regular file", path);
+		text_errf(err, errlen, "%s: not a regular file", path);
 		close(fd);
 		return -1;
 	}
 	if ((unsigned long long)st.st_size > max_n) {
-		file_err(err, errlen, "%s: file too large (%lld bytes, limit %zu)",
+		text_errf(err, errlen, "%s: file too large (%lld bytes, limit %zu)",
 		        path, (long long)st.st_size, max_n);
 		close(fd);
 		return -1;
@@ -55,14 +44,14 @@ read_fd(int fd, const char *path, size_t max_n, unsigned char **out,
 		if (k < 0 && errno == EINTR)
 			continue;
 		if (k < 0) {
-			file_err(err, errlen, "%s: read failed: %s", path, strerror(errno));
+			text_errf(err, errlen, "%s: read failed: %s", path, strerror(errno));
 			goto fail;
 		}
 		if (k == 0)
 			break;
 		len += (size_t)k;
 		if (len > max_n) {
-			file_err(err, errlen, "%s: file too large (limit %zu bytes)", path, max_n);
+			text_errf(err, errlen, "%s: file too large (limit %zu bytes)", path, max_n);
 			goto fail;
 		}
 	}
@@ -88,7 +77,7 @@ file_read(const char *path, size_t max_n, unsigned char **out,
 	 * unaffected. */
 	int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK);
 	if (fd < 0) {
-		file_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+		text_errf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
 		return -1;
 	}
 	return read_fd(fd, path, max_n, out, n, err, errlen);
@@ -102,7 +91,7 @@ file_read_at(int dir_fd, const char *name, const char *path, size_t max_n,
 	*n = 0;
 	int fd = openat(dir_fd, name, O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOFOLLOW);
 	if (fd < 0) {
-		file_err(err, errlen, "%s: cannot open: %s", path, errno == ELOOP
+		text_errf(err, errlen, "%s: cannot open: %s", path, errno == ELOOP
 		    ? "a symbolic link, which aeroeval does not follow here" : strerror(errno));
 		return -1;
 	}

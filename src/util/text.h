@@ -55,4 +55,9 @@ size_t text_typo_limit(size_t len);
  * writers of CSV tables neutralise such cells of text they did not check. */
 int text_is_formula(const char *s);
 
+/* An error message into err[0..errlen) when the caller asked for one
+ * (err NULL or errlen 0: nothing is written). */
+void text_errf(char *err, size_t errlen, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
 #endif
