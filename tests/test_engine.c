@@ -11,6 +11,7 @@
 #include "core/diag.h"
 #include "engine/engine.h"
 #include "input/mission_io.h"
+#include "physics/therm.h"
 #include "util/units.h"
 #include "util/xalloc.h"
 
@@ -583,6 +584,46 @@ engine_every_example_should_converge_to_finite_numbers(void **state)
 	assert_true(n >= 1);
 }
 
+/* Energy and heat from the same losses: over the SAR example's design of
+ * record, the pack's temperature rise equals the heat its voltage sag
+ * (V_oc - V_term) I puts in less what its surface gives off, over its heat
+ * capacity, integrated on the recorded trace (trapezoids over ~60 samples:
+ * 15 %), and it is a rise of kelvins, not a flat line. */
+static void
+engine_pack_should_heat_by_what_its_losses_say(void **state)
+{
+	(void)state;
+	struct cli_env env;
+	assert_int_equal(cli_env_load(&env, NULL, 1, stderr), 0);
+	struct diag *dg = diag_alloc(NULL);
+	struct mission_spec s;
+	assert_int_equal(mission_io_load("examples/sar_imaging_quad.json",
+	    env.model.chem_names, dg, &s), 0);
+	diag_free(dg);
+	struct solve_result *r = xcalloc(1, sizeof *r);
+	assert_int_equal(engine_solve(&s, &env.model, env.cat, r), 0);
+	const struct res_run *o = r->parts_selected ? &r->closed : &r->custom;
+	assert_true(o->n_trace > 10);
+	double m_kg = o->mass.battery_kg;
+	double hac = therm_hac_w_k(m_kg, THERM_H_DEFAULT);
+	double ambient = r->mission.ambient_temp_c, heat_j = 0.0, cool_j = 0.0;
+	for (int i = 0; i + 1 < o->n_trace; i++) {
+		const struct res_sample *a = &o->trace[i], *b = &o->trace[i + 1];
+		double dt = b->t_s - a->t_s;
+		heat_j += 0.5 * dt * ((a->v_oc_v - a->v_term_v) * a->current_a
+		    + (b->v_oc_v - b->v_term_v) * b->current_a);
+		cool_j += 0.5 * dt * hac * (a->temp_c + b->temp_c - 2.0 * ambient);
+	}
+	double rise = o->trace[o->n_trace - 1].temp_c - o->trace[0].temp_c;
+	double want = (heat_j - cool_j) / (m_kg * THERM_CP_J_KGK);
+	print_message("pack: %.2f kJ in, %.2f kJ out, rise %.2f K, balance %.2f K\n",
+	    heat_j / 1000.0, cool_j / 1000.0, rise, want);
+	assert_true(rise > 2.0);
+	assert_rel(rise, want, 0.15);
+	free(r);
+	cli_env_free(&env);
+}
+
 static void
 engine_solve_should_be_deterministic(void **state)
 {
@@ -666,6 +707,7 @@ main(void)
 		T(engine_peak_battery_temperature_should_rise_with_ambient),
 		T(engine_approved_time_should_fall_as_aux_power_rises_on_a_locked_battery),
 		T(engine_nmc_and_lihv_should_both_converge_with_different_batteries),
+		T(engine_pack_should_heat_by_what_its_losses_say),
 		T(engine_auto_cells_should_not_stop_at_a_runaway_cell_count),
 		T(engine_li_s_should_converge_with_enough_series_cells),
 		T(engine_coaxial_x8_should_converge_with_the_quad_overlap_limit),
