@@ -184,6 +184,7 @@ struct res_run {
 	double time_scale;        /* goal relaxation γ (1 = as requested) */
 	double thrust_margin;     /* thrust margin flown, 1 - hover throttle */
 	double thrust_margin_requested; /* the role's or mission's target */
+	double aux_power_w;       /* auxiliary power flown (sizing_aux_w()) */
 	struct res_fixed_point fixed;
 
 	struct res_mass mass;

@@ -205,7 +205,7 @@ X(LOCK_ESC_PART, "locks.esc_part", SPEC_STR, locks.esc_part, "", 0, 0, 0, SPEC_F
 X(ROLE_TYPE, "payload_role.type", SPEC_ENUM, payload_role.type, "", ROLE_NONE, 0, ROLE_MAX - 1, SPEC_F_DERIVED, spec_enum_role, \
   "Mission role: sets thrust margin, load factor, aux power and drag (data/roles.json)") \
 X(ROLE_AUX_POWER_W, "payload_role.aux_power_w", SPEC_NUM, payload_role.aux_power_w, "W", 0, 0, 5000, SPEC_F_DERIVED, NULL, \
-  "Auxiliary electrical power (gimbal, pump, sensors); default from the role") \
+  "Auxiliary electrical power (gimbal, pump, sensors); default: the role's value for a 5 kg aircraft, scaled by (M / 5 kg)^(2/3) with the design's mass (each run reports the power it flew)") \
 X(ROLE_ADDED_DRAG_M2, "payload_role.added_drag_m2", SPEC_NUM, payload_role.added_drag_m2, "m2", 0, 0, 5, SPEC_F_DERIVED, NULL, \
   "Drag area added to S_ref by the payload; default from the role") \
 X(ROLE_CG_SHIFT_M, "payload_role.cg_shift_m", SPEC_NUM, payload_role.cg_shift_m, "m", 0, 0, 5, 0, NULL, \

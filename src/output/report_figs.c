@@ -181,7 +181,7 @@ report_sec_mission(struct rep *rp, const char *title)
 	              "%dS %s).",
 	              shed ? "; payload leaves the aircraft on the way (drop or spray), so the later "
 	                     "phases fly lighter than the takeoff mass" : " at the takeoff mass",
-	              report_num(b1, sizeof b1, r->mission.payload_role.aux_power_w, 0),
+	              report_num(b1, sizeof b1, rec->aux_power_w, 0),
 	              rp->buildable ? "design of record" : "continuous design",
 	              report_num(b2, sizeof b2, rec->energy_wh, 1), rec->cell_count, rec->chemistry));
 	report_subheading(rp, report_record_name(rp), REP_PHASE_PT);

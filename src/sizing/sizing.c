@@ -808,6 +808,7 @@ record_run(const struct sizing_params *p, struct eval *e,
 	double d[PHASE_MAX];
 	sizing_durations(p, ls->gamma_time, d);
 	out->mass = e->mass;
+	out->aux_power_w = e->model.aux_w;
 	out->reserve_soc = sizing_reserve_soc();
 	out->tolerance_kg = SIZING_TOL_KG;
 	str_copy(out->chemistry, sizeof out->chemistry, p->chem->name);
