@@ -260,34 +260,18 @@ minimise(struct fit_ctx *cx, const double *start, double mu, double *theta,
 	return st;
 }
 
-/* Size a row by the full mass loop with calibration cal. */
+/* Size a mission by the full mass loop with calibration cal into *vr;
+ * true when it converged (VALIDATE_ROW_OK). */
 static bool
-closed_loop(struct fit_ctx *cx, const struct calibrate_row *row,
+closed_loop(struct fit_ctx *cx, const struct mission_spec *spec,
             const struct model_calibration *cal, struct solve_result *work,
-            double *pred_kg, double *battery_kg)
+            struct validate_row *vr)
 {
 	cx->md.cal = *cal;
-	struct validate_row vr;
-	memset(&vr, 0, sizeof vr);
-	validate_solve_row(&row->spec, &cx->md, work, &vr);
+	memset(vr, 0, sizeof *vr);
+	validate_solve_row(spec, &cx->md, work, vr);
 	cx->n_solves++;
-	*pred_kg = vr.predicted_kg;
-	*battery_kg = vr.battery_pred_kg;
-	return vr.status == VALIDATE_ROW_OK;
-}
-
-/* Is the row's loop a contraction at its role's default thrust target at
- * calibration cal (the engine did not relax it)? */
-static bool
-contracts(struct fit_ctx *cx, const struct calibrate_row *row,
-          const struct model_calibration *cal, struct solve_result *work)
-{
-	cx->md.cal = *cal;
-	struct validate_row vr;
-	memset(&vr, 0, sizeof vr);
-	validate_solve_row(&row->spec, &cx->md, work, &vr);
-	cx->n_solves++;
-	return !vr.thrust_relaxed;
+	return vr->status == VALIDATE_ROW_OK;
 }
 
 bool
@@ -413,11 +397,11 @@ leave_one_out(struct fit_ctx *cx, const struct calibrate_row *rows, size_t n,
 		struct calibrate_loo *l = &out->loo[i];
 		const struct calibrate_row *row = &rows[use[i]];
 		for (int b = 0; b < MODEL_BASIS_MAX; b++) {
-			struct calibrate_row r = *row;
-			if (b == MODEL_PACK_LOCKED)
-				r.spec = row->pack_spec;
-			l->sized[b] = closed_loop(cx, &r, &cal, work, &l->predicted_kg[b],
-			    &l->battery_pred_kg[b]);
+			struct validate_row vr;
+			l->sized[b] = closed_loop(cx, b == MODEL_PACK_LOCKED ? &row->pack_spec
+			    : &row->spec, &cal, work, &vr);
+			l->predicted_kg[b] = vr.predicted_kg;
+			l->battery_pred_kg[b] = vr.battery_pred_kg;
 		}
 	}
 	cx->use = use;
@@ -462,7 +446,11 @@ fit(const struct calibrate_row *rows, size_t n, const struct model_data *md,
 		double r[3];
 		if ((size_t)open_residuals(cx, &rows[i], r) != n_residuals(&rows[i]))
 			continue;
-		if (!contracts(cx, &rows[i], &prior_cal, work)) {
+		/* A row whose loop the engine had to relax at the role's default
+		 * thrust target is no contraction there: reported, left out. */
+		struct validate_row vr;
+		closed_loop(cx, &rows[i].spec, &prior_cal, work, &vr);
+		if (vr.thrust_relaxed) {
 			out->n_relaxed++;
 			continue;
 		}
@@ -490,9 +478,9 @@ fit(const struct calibrate_row *rows, size_t n, const struct model_data *md,
 	/* Closed loop, in sample. */
 	double ape = 0.0;
 	for (size_t i = 0; i < m; i++) {
-		double pred, batt;
-		if (closed_loop(cx, &rows[use[i]], &out->after, work, &pred, &batt)) {
-			ape += fabs(pred / rows[use[i]].actual_kg - 1.0);
+		struct validate_row vr;
+		if (closed_loop(cx, &rows[use[i]].spec, &out->after, work, &vr)) {
+			ape += fabs(vr.predicted_kg / rows[use[i]].actual_kg - 1.0);
 			out->n_sized++;
 		}
 		if (progress != NULL && progress->fn != NULL)

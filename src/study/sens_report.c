@@ -152,6 +152,20 @@ add_num(cJSON *o, const char *key, double v)
 		cJSON_AddItemToObject(o, key, cJSON_CreateRaw(buf));
 }
 
+/* A sweep's crossing {x, reason} at key, or null when it has none. */
+static void
+add_crossing(cJSON *o, const char *key, bool crosses, double x, const char *why)
+{
+	if (!crosses) {
+		cJSON_AddNullToObject(o, key);
+		return;
+	}
+	cJSON *c = cJSON_CreateObject();
+	add_num(c, "x", x);
+	cJSON_AddStringToObject(c, "reason", why);
+	cJSON_AddItemToObject(o, key, c);
+}
+
 static cJSON *
 point_json(const struct sens_point *p, bool with_x)
 {
@@ -200,20 +214,8 @@ curve_json(const struct sens_curve *c)
 		cJSON_AddItemToObject(o, "fd_low", point_json(&c->fd_lo, true));
 	if (c->has_fd_hi)
 		cJSON_AddItemToObject(o, "fd_high", point_json(&c->fd_hi, true));
-	if (c->cross_lo) {
-		cJSON *x = cJSON_CreateObject();
-		add_num(x, "x", c->x_cross_lo);
-		cJSON_AddStringToObject(x, "reason", c->why_lo);
-		cJSON_AddItemToObject(o, "crossing_low", x);
-	} else
-		cJSON_AddNullToObject(o, "crossing_low");
-	if (c->cross_hi) {
-		cJSON *x = cJSON_CreateObject();
-		add_num(x, "x", c->x_cross_hi);
-		cJSON_AddStringToObject(x, "reason", c->why_hi);
-		cJSON_AddItemToObject(o, "crossing_high", x);
-	} else
-		cJSON_AddNullToObject(o, "crossing_high");
+	add_crossing(o, "crossing_low", c->cross_lo, c->x_cross_lo, c->why_lo);
+	add_crossing(o, "crossing_high", c->cross_hi, c->x_cross_hi, c->why_hi);
 	cJSON *g = cJSON_CreateObject();
 	add_num(g, "x_low", c->x_good_lo);
 	add_num(g, "x_high", c->x_good_hi);
