@@ -47,7 +47,7 @@ CPPFLAGS += -D_DEFAULT_SOURCE -DAEROEVAL_VERSION='"$(VERSION)"' -Isrc
 # side by side, and cli on top (docs/architecture.md); `make check-layers`
 # (part of `make test`) keeps every include pointing down.
 LAYERS   := util core physics sizing parts engine study input output cli
-LIB_SRCS := $(filter-out src/cli/main.c,$(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)))
+LIB_SRCS := $(filter-out src/cli/main.c src/cli/catsnap.c,$(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)))
 LIB_OBJS := $(LIB_SRCS:src/%.c=$(BUILD)/obj/%.o)
 LIB      := $(BUILD)/libaeroeval.a
 BIN      := $(BUILD)/aeroeval
@@ -82,8 +82,26 @@ $(LIB): $(LIB_OBJS)
 	rm -f $@
 	ar rcs $@ $^
 
-$(BIN): $(BUILD)/obj/cli/main.o $(LIB)
+$(BIN): $(BUILD)/obj/cli/main.o $(BUILD)/obj/cli/snapshot.o $(LIB)
 	$(CC) $(CFLAGS) -o $@ $^ $(PKG_LIBS)
+
+# The shipped catalogue, loaded and checked once here and carried inside the
+# program (src/input/catalog_snap.h): catsnap writes the snapshot, and
+# snapshot.S includes its bytes.  At start-up aeroeval uses it only while
+# the files it was made from are unchanged, else it reads the JSON.
+CATALOG_FILES := $(wildcard data/catalog/*.json) data/chemistries.json
+SNAP          := $(BUILD)/gen/catalog.snap
+
+$(BUILD)/catsnap: $(BUILD)/obj/cli/catsnap.o $(LIB)
+	$(CC) $(CFLAGS) -o $@ $^ $(PKG_LIBS)
+
+$(SNAP): $(BUILD)/catsnap $(CATALOG_FILES)
+	@mkdir -p $(@D)
+	$(BUILD)/catsnap data $@
+
+$(BUILD)/obj/cli/snapshot.o: src/cli/snapshot.S $(SNAP)
+	@mkdir -p $(@D)
+	$(CC) -c -I$(BUILD)/gen -o $@ $<
 
 $(BUILD)/tests/%: tests/%.c $(LIB) | $(BUILD)/tests
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -Itests -MMD -MP -o $@ $< $(LIB) $(PKG_LIBS) -lcmocka
@@ -172,6 +190,10 @@ golden: all
 # (dashes, quotes ‘ ’ “ ”, • … ‰ ′ ″), super- and subscript digits, € and ™,
 # the arrows ← ↑ → ↓ ↔ ↕ and the mathematical operators U+2200-22FF, chosen
 # as whole runs (a run costs one segment, a scattered character one each).
+# Nothing above U+22FF (not even U+FFFD): the document's glyph map holds two
+# bytes for every code up to the highest one the font has (doc.c cuts
+# libharu's 128 KiB map there), so U+22FF keeps it at 18 KiB a font; a code
+# the font lacks, U+FFFD included, prints as the .notdef box.
 # FONT_CHARS_MONO is for what the dossier sets in Sans Mono: fingerprints and
 # catalogue ids (lowercase slugs), so ASCII and Latin-1.  A character outside
 # the set prints as the .notdef box (as CJK did with the whole font) and stays
@@ -180,8 +202,8 @@ golden: all
 FONT_SRC        := /usr/share/fonts/truetype/dejavu
 FONT_CHARS      := U+0020-007E,U+00A0-017F,U+0391-03A1,U+03A3-03C9,U+0400-045F, \
                    U+2010-203A,U+2070-2071,U+2074-208E,U+20AC,U+2122,U+2190-2195, \
-                   U+2200-22FF,U+FFFD
-FONT_CHARS_MONO := U+0020-007E,U+00A0-00FF,U+FFFD
+                   U+2200-22FF
+FONT_CHARS_MONO := U+0020-007E,U+00A0-00FF
 FONT_SUBSET      = pyftsubset $(FONT_SRC)/$(1).ttf --unicodes='$(2)' \
                    --output-file=templates/fonts/$(1).ttf --layout-features='' \
                    --drop-tables+=GSUB,GPOS,GDEF,MATH,FFTM --name-IDs='*' \

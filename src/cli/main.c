@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/cli.h"
 #include "cli/cli_build.h"
 #include "cli/cli_front.h"
 #include "cli/cli_help.h"
@@ -36,9 +37,14 @@ is_help(const char *a)
 	return strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0;
 }
 
+/* The shipped catalogue's snapshot, from snapshot.S. */
+extern const unsigned char aeroeval_snapshot[], aeroeval_snapshot_end[];
+
 int
 main(int argc, char **argv)
 {
+	cli_use_snapshot(aeroeval_snapshot,
+	                 (size_t)(aeroeval_snapshot_end - aeroeval_snapshot));
 	atexit(doc_global_cleanup); /* fontconfig/cairo caches: valgrind-clean exit */
 	if (argc < 2) {
 		cli_help_overview(stderr);

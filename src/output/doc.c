@@ -421,6 +421,45 @@ fix_to_unicode(struct doc *d, HPDF_Font font)
 	HPDF_Dict_RemoveElement(map, "WMode");
 }
 
+/* Cuts a UTF-8 font's CIDToGIDMap after the last code point its font
+ * has a glyph for.  libharu writes the map for the whole Basic
+ * Multilingual Plane (65 536 codes x 2 bytes = 128 KiB per font), which
+ * the document then deflates and carries; codes past the end of a map have
+ * no glyph (.notdef) in every reader, exactly as a zero entry, so the cut
+ * map means the same.  The shipped fonts stop at U+22FF (Makefile, `make
+ * fonts`): 18 KiB. */
+static void
+trim_cid_map(struct doc *d, HPDF_Font font)
+{
+	HPDF_Array desc = HPDF_Dict_GetItem(font, "DescendantFonts", HPDF_OCLASS_ARRAY);
+	HPDF_Dict cid = desc != NULL ? HPDF_Array_GetItem(desc, 0, HPDF_OCLASS_DICT) : NULL;
+	HPDF_Dict map = cid != NULL ? HPDF_Dict_GetItem(cid, "CIDToGIDMap", HPDF_OCLASS_DICT) : NULL;
+	if (map == NULL || map->stream == NULL || map->stream->type != HPDF_STREAM_MEMORY) {
+		HPDF_ResetError(d->pdf);   /* no map to cut: nothing is wrong */
+		return;
+	}
+	HPDF_Stream s = map->stream;
+	HPDF_UINT size = s->size;
+	HPDF_BYTE *bytes = xmalloc(size > 0 ? size : 1);
+	HPDF_UINT at = 0;
+	for (HPDF_UINT i = 0; i < HPDF_MemStream_GetBufCount(s) && at < size; i++) {
+		HPDF_UINT len = 0;
+		HPDF_BYTE *p = HPDF_MemStream_GetBufPtr(s, i, &len);
+		if (p == NULL || len > size - at)
+			break;
+		memcpy(bytes + at, p, len);
+		at += len;
+	}
+	HPDF_UINT keep = at;
+	while (keep >= 2 && bytes[keep - 1] == 0 && bytes[keep - 2] == 0)
+		keep -= 2;
+	if (at == size && keep < size) {
+		HPDF_MemStream_FreeData(s);
+		HPDF_Stream_Write(s, bytes, keep);
+	}
+	free(bytes);
+}
+
 static HPDF_Font
 load_font(struct doc *d, const char *path)
 {
@@ -432,6 +471,8 @@ load_font(struct doc *d, const char *path)
 	HPDF_Font f = HPDF_GetFont(d->pdf, name, "UTF-8");
 	if (f != NULL)
 		fix_to_unicode(d, f);
+	if (f != NULL)
+		trim_cid_map(d, f);
 	return f;
 }
 
