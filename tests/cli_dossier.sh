@@ -118,6 +118,14 @@ for f in examples/*.json; do
 			sh -c "! grep -Eq 'Downwash \(|Downwash,' '$d/all.txt'"
 	fi
 
+	# A sentence that compares two numbers says the right way round: "flies
+	# X, above the Y" only where X >= Y (result.json keeps it on one line).
+	check "dossier_${n}_says_above_only_of_a_larger_number" \
+		awk 'match($0, /flies [0-9.]+, above the [0-9.]+/) {
+			split(substr($0, RSTART, RLENGTH), w, /[ ,]+/)
+			if (w[2] + 0 < w[5] + 0) bad = 1 }
+		     END { exit bad }' "$d/result.json"
+
 	check "dossier_${n}_has_document_control_and_contents_after_the_cover" \
 		sh -c "grep -q '^Document control' '$d/page2.txt' && grep -q '^Contents' '$d/page2.txt' &&
 		       grep -Eq '^ *1 +Executive summary.* [0-9]+$' '$d/page2.txt' &&

@@ -421,7 +421,7 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 		feasibility_fix(r, f3, "Add series cells (nominal_cell_count)");
 		if (!r->terse)
 			snprintf(msg, sizeof msg, "The real motor and propeller give T/W "
-			    "%.2f at full throttle; the design needs %.2f.",
+			    "%.3f at full throttle; the design needs %.3f.",
 			    o->thrust_to_weight, tw_need);
 		violate(r, k, "parts", "THRUST", fx, msg);
 	}
