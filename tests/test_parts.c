@@ -96,6 +96,8 @@ kit_fixture(struct kit_fixture *f, int airframe_class, double wheelbase_m,
 	f->p.air.rho_kg_m3 = RHO_SL_KG_M3;
 	f->x.spec = &f->spec;
 	f->x.p = &f->p;
+	if (cat != NULL)
+		parts_kit_init(&f->x);
 }
 
 static void
@@ -235,6 +237,7 @@ connector_should_be_the_smallest_rating_that_carries_each_pack(void **state)
 	kit_pick(&f, 700.0, 1, 1, &kit);
 	assert_null(kit.connector);
 	assert_true(kit.connector_kg == 0.0);
+	parts_kit_free(&f.x);
 	catalog_free(f.cat);
 }
 
@@ -263,6 +266,7 @@ avionics_should_meet_the_class_need_and_keep_allowances_for_the_rest(void **stat
 	f.spec.airframe_class = AF_CONSUMER_FOLDING;
 	kit_pick(&f, 20.0, 1, 1, &kit);
 	assert_string_equal(kit.part[0]->id, "t-fc-light");
+	parts_kit_free(&f.x);
 	catalog_free(f.cat);
 }
 
@@ -339,6 +343,7 @@ frame_kit_should_fit_rotors_wheelbase_class_and_propeller(void **state)
 	tube.arm_tube_od_m = 0.012;
 	assert_false(parts_kit_frame_fits(&f.x, &tube, 10.0, 2.0, 0.016, 0.400));
 	assert_true(parts_kit_frame_fits(&f.x, &tube, 10.0, 2.0, 0.010, 0.400));
+	parts_kit_free(&f.x);
 	catalog_free(f.cat);
 }
 

@@ -284,6 +284,14 @@ sustained_battery_a(const struct res_run *o)
 }
 
 bool
+parts_close_figures(const struct parts_ctx *x, struct parts_closed *cl)
+{
+	struct sizing_params q = *x->p;
+	q.chem = cl->pack.chem;
+	return perf_figures(&q, &cl->o.craft, &cl->r->closed);
+}
+
+bool
 parts_close(const struct parts_ctx *x, const struct parts_option *o,
             const struct parts_pack *pk, const struct catalog_esc *esc,
             int n_esc, struct parts_closed *out)

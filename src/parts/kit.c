@@ -36,12 +36,14 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "parts/parts_int.h"
 #include "parts/screen.h"
 #include "physics/aero.h"
 #include "util/units.h"
+#include "util/xalloc.h"
 
 #define PARTS_KIT_WHEELBASE_TOL 0.10  /* a kit up to 10 % below the wheelbase */
 #define PARTS_UNRATED_PM_CELLS  6     /* bus of a power module with no range */
@@ -133,13 +135,56 @@ meets(const struct catalog_avionics *a, const char *kind, const char *need,
 }
 
 /* The lightest part of kind meeting need (ties by id: deterministic). */
+void
+parts_kit_init(struct parts_ctx *x)
+{
+	x->n_kit_kinds = 0;
+	size_t n = catalog_n_avionics(x->cat);
+	for (size_t i = 0; i < n; i++) {
+		const struct catalog_avionics *a = catalog_avionics(x->cat, i);
+		if (!a->usable)
+			continue;
+		int k = 0;
+		while (k < x->n_kit_kinds && strcmp(x->kit_kinds[k].kind, a->kind) != 0)
+			k++;
+		if (k == x->n_kit_kinds) {
+			if (k == PARTS_KIT_KINDS)
+				continue;   /* more kinds than catalog_io knows: not ours */
+			x->kit_kinds[k].kind = a->kind;
+			x->kit_kinds[k].items = xcalloc(n, sizeof *x->kit_kinds[k].items);
+			x->kit_kinds[k].n = 0;
+			x->n_kit_kinds++;
+		}
+		x->kit_kinds[k].items[x->kit_kinds[k].n++] = a;
+	}
+}
+
+void
+parts_kit_free(struct parts_ctx *x)
+{
+	for (int k = 0; k < x->n_kit_kinds; k++)
+		free(x->kit_kinds[k].items);
+	x->n_kit_kinds = 0;
+}
+
+/* The usable parts of one kind, in catalogue order. */
+static const struct parts_kit_kind *
+of_kind(const struct parts_ctx *x, const char *kind)
+{
+	for (int k = 0; k < x->n_kit_kinds; k++)
+		if (strcmp(x->kit_kinds[k].kind, kind) == 0)
+			return &x->kit_kinds[k];
+	return NULL;
+}
+
 static const struct catalog_avionics *
-lightest(const struct catalog *cat, const char *kind, const char *need,
+lightest(const struct parts_ctx *x, const char *kind, const char *need,
          int cells, double sustained_a)
 {
 	const struct catalog_avionics *best = NULL;
-	for (size_t i = 0; i < catalog_n_avionics(cat); i++) {
-		const struct catalog_avionics *a = catalog_avionics(cat, i);
+	const struct parts_kit_kind *kk = of_kind(x, kind);
+	for (int i = 0; kk != NULL && i < kk->n; i++) {
+		const struct catalog_avionics *a = kk->items[i];
 		if (!meets(a, kind, need, cells, sustained_a))
 			continue;
 		if (best == NULL || a->mass_kg < best->mass_kg
@@ -147,27 +192,25 @@ lightest(const struct catalog *cat, const char *kind, const char *need,
 			best = a;
 	}
 	/* Agricultural power distribution: a distribution board will do. */
-	if (best == NULL && strcmp(kind, "power_module") == 0)
-		for (size_t i = 0; i < catalog_n_avionics(cat); i++) {
-			const struct catalog_avionics *a = catalog_avionics(cat, i);
-			if (meets(a, "pdb", need, cells, sustained_a)
-			    && (best == NULL || a->mass_kg < best->mass_kg))
-				best = a;
-		}
+	kk = best == NULL && strcmp(kind, "power_module") == 0 ? of_kind(x, "pdb") : NULL;
+	for (int i = 0; kk != NULL && i < kk->n; i++) {
+		const struct catalog_avionics *a = kk->items[i];
+		if (meets(a, "pdb", need, cells, sustained_a)
+		    && (best == NULL || a->mass_kg < best->mass_kg))
+			best = a;
+	}
 	return best;
 }
 
-/* The connector pair per pack: the smallest rating that carries per_pack_a
- * with a published mass; several in parallel when none does alone. */
 static void
-pick_connector(const struct catalog *cat, double per_pack_a,
+pick_connector(const struct parts_ctx *x, double per_pack_a,
                struct parts_kit *kit, int n_packs)
 {
 	const struct catalog_avionics *best = NULL, *largest = NULL;
-	for (size_t i = 0; i < catalog_n_avionics(cat); i++) {
-		const struct catalog_avionics *a = catalog_avionics(cat, i);
-		if (!a->usable || strcmp(a->kind, "connector") != 0
-		    || !(a->max_current_a > 0.0))
+	const struct parts_kit_kind *kk = of_kind(x, "connector");
+	for (int i = 0; kk != NULL && i < kk->n; i++) {
+		const struct catalog_avionics *a = kk->items[i];
+		if (!(a->max_current_a > 0.0))
 			continue;
 		if (largest == NULL || a->max_current_a > largest->max_current_a)
 			largest = a;
@@ -202,7 +245,7 @@ parts_kit_pick(const struct parts_ctx *x, const struct parts_option *o,
 		if (it->what == NULL)
 			break;
 		const struct catalog_avionics *a = it->kind != NULL
-		    ? lightest(x->cat, it->kind, it->need, o->cells, sustained_a)
+		    ? lightest(x, it->kind, it->need, o->cells, sustained_a)
 		    : NULL;
 		if (a != NULL && kit->n_part < PARTS_KIT_MAX) {
 			kit->part[kit->n_part++] = a;
@@ -214,7 +257,7 @@ parts_kit_pick(const struct parts_ctx *x, const struct parts_option *o,
 		}
 	}
 	int n_packs = pk->series * pk->parallel;
-	pick_connector(x->cat, sustained_a / (double)pk->parallel, kit, n_packs);
+	pick_connector(x, sustained_a / (double)pk->parallel, kit, n_packs);
 }
 
 bool

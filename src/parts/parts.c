@@ -256,6 +256,7 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 		x.cells_hi = p->cells_hi < PARTS_MAX_CELLS ? p->cells_hi : PARTS_MAX_CELLS;
 	}
 	parts_packs_init(&x);
+	parts_kit_init(&x);
 
 	/* Rank and close at the continuous design's mass; when no closing
 	 * passes every check and the closest came out heavier, rank again at
@@ -298,6 +299,7 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 	if (n_ranked == 0 || pick.r == NULL || !pick.finite) {
 		free(pick.r);
 		parts_packs_free(&x);
+		parts_kit_free(&x);
 		report_none(&x, r);
 		return pick.r != NULL ? 3 : 0;
 	}
@@ -306,6 +308,7 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 	struct parts_closed rec = pick;
 	rec.r = xcalloc(1, sizeof *rec.r);
 	parts_close(&x, &pick.o, &pick.pack, pick.esc, pick.n_esc, &rec);
+	rec.finite = rec.finite && parts_close_figures(&x, &rec);
 	r->closed = rec.r->closed;
 	for (int i = 0; i < rec.r->n_violations && r->n_violations < RES_MAX_VIOLATIONS; i++)
 		r->violations[r->n_violations++] = rec.r->violations[i];
@@ -328,5 +331,6 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 	free(rec.r);
 	free(pick.r);
 	parts_packs_free(&x);
+	parts_kit_free(&x);
 	return finite ? 0 : 3;
 }

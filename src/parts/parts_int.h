@@ -112,6 +112,15 @@ struct parts_pack {
 	const struct batt_chem *chem;
 };
 
+/* The catalogue's usable avionics parts of one kind, in catalogue order
+ * (kit.c): a kit looks through its kind's few parts, not all of them. */
+#define PARTS_KIT_KINDS 24
+struct parts_kit_kind {
+	const char *kind;
+	const struct catalog_avionics **items;
+	int n;
+};
+
 /* The search's lists, built once per solve. */
 struct parts_ctx {
 	const struct mission_spec *spec;
@@ -126,6 +135,8 @@ struct parts_ctx {
 	int cells_lo, cells_hi;            /* buses searched */
 	struct parts_pack *packs;          /* every arrangement, by bus then mass */
 	int n_packs;
+	struct parts_kit_kind kit_kinds[PARTS_KIT_KINDS];
+	int n_kit_kinds;
 	int n_census[PARTS_REASON_MAX];
 	int n_examined;
 };
@@ -197,6 +208,9 @@ bool parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
 bool parts_close(const struct parts_ctx *x, const struct parts_option *o,
                  const struct parts_pack *pk, const struct catalog_esc *esc,
                  int n_esc, struct parts_closed *out);
+/* The performance figures beyond the mission (sizing/perf.h) of a closing
+ * parts_close() made: the design of record's.  False if not finite. */
+bool parts_close_figures(const struct parts_ctx *x, struct parts_closed *cl);
 const struct parts_pack *parts_packs_for(const struct parts_ctx *x,
                                          const struct parts_option *o,
                                          int *n);
@@ -204,6 +218,9 @@ void parts_record_checks(const struct parts_ctx *x, const struct parts_closed *c
                          struct solve_result *r);
 
 /* kit.c */
+/* Indexes the catalogue's avionics by kind into x (parts_kit_free). */
+void parts_kit_init(struct parts_ctx *x);
+void parts_kit_free(struct parts_ctx *x);
 void parts_kit_pick(const struct parts_ctx *x, const struct parts_option *o,
                     const struct parts_pack *pk, double sustained_a,
                     struct parts_kit *kit);

@@ -554,19 +554,38 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 	pf->prop_ct = c->prop.ct;
 	pf->prop_cp = c->prop.cp;
 	pf->prop_coeffs_measured = c->prop.measured;
-	figures(&x, run, pf);
+	pf->max_speed_ms = run->v_max_ms;
+	pf->landing_soc = run->end_soc;
 
 	/* Every number it produced must be a number. */
 	const double v[] = { run->max_battery_temp_c, run->min_terminal_voltage_v,
 		run->peak_power_w, run->peak_current_a, run->thrust_to_weight,
-		run->hover_throttle, pf->hover_time_s, pf->mixed_time_s,
-		pf->full_throttle_time_s, pf->max_climb_ms, pf->max_tilt_deg,
-		run->end_soc, run->downwash_ms, run->resonance_margin };
+		run->hover_throttle, run->end_soc, run->downwash_ms,
+		run->resonance_margin };
 	for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
 		if (!isfinite(v[i]))
 			return false;
 	for (int i = 0; i < OP_MAX; i++)
 		if (!isfinite(pf->op[i].power_in_w) || !isfinite(pf->op[i].throttle))
+			return false;
+	return true;
+}
+
+bool
+perf_figures(const struct sizing_params *p, const struct perf_craft *c,
+             struct res_run *run)
+{
+	/* The state perf_fly() left them: built, hover settled. */
+	struct perf_ctx x;
+	build(p, c, &x);
+	settle_hover(&x, c->mass.total_kg);
+	struct res_perf *pf = &run->perf;
+	figures(&x, run, pf);
+	const double v[] = { pf->hover_time_s, pf->mixed_time_s,
+		pf->full_throttle_time_s, pf->max_climb_ms, pf->max_tilt_deg,
+		pf->spare_payload_kg, pf->motor_out_ratio };
+	for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
+		if (!isfinite(v[i]))
 			return false;
 	return true;
 }

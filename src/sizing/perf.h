@@ -55,12 +55,22 @@ struct perf_craft {
 };
 
 /* Fly craft c on the mission of p (the custom run's parameters) into run:
- * masses, battery, phases, trace, operating points, performance figures,
- * structure and thermal fields (run->checks are left to the caller).
- * Flies the whole mission, or with p->allow_relax the largest fraction of
- * it (goal relaxation, γ >= 0.05) that lands at the reserve.  Returns true
- * when every number came out finite. */
+ * masses, battery, phases, trace, operating points, structure and thermal
+ * fields (run->checks are left to the caller).  Flies the whole mission,
+ * or with p->allow_relax the largest fraction of it (goal relaxation,
+ * γ >= 0.05) that lands at the reserve.  Returns true when every number
+ * came out finite. */
 bool perf_fly(const struct sizing_params *p, const struct perf_craft *c,
               struct res_run *run);
+
+/* The performance figures beyond the mission (hover and full-throttle
+ * endurance, the mission's mix to the reserve, maximum climb and tilt,
+ * spare payload, one motor out) into run->perf, for a run perf_fly() has
+ * flown with the same p and c.  No check reads them: the parts search
+ * works them out for the design of record only, not for every closing it
+ * tries (two discharge simulations each).  Returns true when they came
+ * out finite. */
+bool perf_figures(const struct sizing_params *p, const struct perf_craft *c,
+                  struct res_run *run);
 
 #endif
