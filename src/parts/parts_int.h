@@ -99,6 +99,7 @@ struct parts_option {
 	double full_current_a;             /* one motor at full throttle */
 	double full_power_w;               /* one motor's input there */
 	double hover_power_w;              /* the aircraft at M*, drive only */
+	double d4_m4;                      /* the propeller's diameter^4 */
 	double j;                          /* estimated mass penalty, % */
 	bool parity;                       /* reaches tw_required at M* */
 };
@@ -196,9 +197,6 @@ void parts_aim_from(const struct sizing_params *p, const struct res_run *custom,
 void parts_aim_regrow(struct parts_aim *aim, double grown);
 int parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
                struct res_candidate *cand, int *n_cand);
-bool parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
-                 const struct catalog_prop *pr, int cells,
-                 struct parts_option *o);
 
 /* close.c */
 void parts_packs_init(struct parts_ctx *x);

@@ -203,9 +203,34 @@ parts_motor_limits(const struct catalog_motor *m, struct parts_motor_limits *l)
 	}
 }
 
-bool
+/* What a catalogue propeller brings to every motor it is tried on,
+ * worked out once per bus and propeller: its craft fields (option_prop),
+ * D^4 and its torque factor Q / n^2 before the installation. */
+struct prop_pre {
+	struct perf_craft craft;
+	double d4_m4;
+	double kq_nm_s2;
+};
+
+static void
+prop_pre(const struct catalog_prop *pr, const struct parts_aim *aim,
+         double rho, struct prop_pre *pp)
+{
+	memset(pp, 0, sizeof *pp);
+	option_prop(NULL, pr, aim, &pp->craft);
+	double d = pp->craft.prop_diameter_m;
+	pp->d4_m4 = pow(d, 4.0);
+	pp->kq_nm_s2 = prop_kq_nm_s2(&pp->craft.prop, rho, d);
+}
+
+/* Option m on propeller pr (with its prop_pre pp), or an integrated
+ * system (pr and pp NULL), on a bus of cells: its full-throttle point and
+ * its hover power at the continuous design's mass.  False when the motor
+ * cannot turn the propeller. */
+static bool
 parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
-            const struct catalog_prop *pr, int cells, struct parts_option *o)
+            const struct catalog_prop *pr, const struct prop_pre *pp,
+            int cells, struct parts_option *o)
 {
 	const struct sizing_params *p = x->p;
 	const struct parts_aim *aim = &x->aim;
@@ -224,18 +249,30 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 	c->motor_r_estimated = !(m->resistance_ohm > 0.0 && m->no_load_current_a > 0.0);
 	c->motor_max_current_a = m->max_current_a;
 	c->motor_max_power_w = m->max_power_w;
-	option_prop(m, pr, aim, c);
+	double rho = p->air.rho_kg_m3;
+	double kq_prop;
+	if (pp != NULL) {
+		c->prop_diameter_m = pp->craft.prop_diameter_m;
+		c->prop_pitch_m = pp->craft.prop_pitch_m;
+		c->prop_blades = pp->craft.prop_blades;
+		c->prop_max_rpm = pp->craft.prop_max_rpm;
+		c->prop = pp->craft.prop;
+		o->d4_m4 = pp->d4_m4;
+		kq_prop = pp->kq_nm_s2;
+	} else {
+		option_prop(m, pr, aim, c);
+		o->d4_m4 = pow(c->prop_diameter_m, 4.0);
+		kq_prop = prop_kq_nm_s2(&c->prop, rho, c->prop_diameter_m);
+	}
 	c->cells = cells;
 
-	double rho = p->air.rho_kg_m3;
-	double d = c->prop_diameter_m;
-	double kq = aim->install_factor * prop_kq_nm_s2(&c->prop, rho, d);
+	double kq = aim->install_factor * kq_prop;
 	double t_w = p->ambient_c + RANK_WINDING_RISE_K;
 	double v = (double)cells * p->chem->v_nom * PARTS_LOADED_BUS;
 	struct motor_point full;
 	if (!motor_at_voltage(&c->motor, t_w, v, kq, &full))
 		return false;
-	o->full_thrust_n = prop_thrust_n(&c->prop, rho, full.rps, d);
+	o->full_thrust_n = prop_thrust_d4_n(&c->prop, rho, full.rps, o->d4_m4);
 	o->full_current_a = full.current_a;
 	o->full_power_w = full.power_in_w;
 	/* An integrated system is flown up to the thrust its maker publishes
@@ -243,7 +280,7 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 	 * more, the point at that thrust (on the same rotor) is full throttle. */
 	c->max_thrust_n = parts_published_thrust_n(x, m, cells);
 	if (c->max_thrust_n > 0.0 && o->full_thrust_n > c->max_thrust_n) {
-		double n_c = sqrt(c->max_thrust_n / (c->prop.ct * rho * pow(d, 4.0)));
+		double n_c = sqrt(c->max_thrust_n / (c->prop.ct * rho * o->d4_m4));
 		motor_at_shaft(&c->motor, t_w, kq * 2.0 * M_PI * n_c * n_c * n_c,
 		    n_c, &full);
 		o->full_thrust_n = c->max_thrust_n;
@@ -252,7 +289,7 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 	}
 	/* Hover of the continuous design's mass on this rotor. */
 	double t_h = aim->mass_kg * G0_M_S2 / (double)p->n_rotors;
-	double n_h = sqrt(t_h / (c->prop.ct * rho * pow(d, 4.0)));
+	double n_h = sqrt(t_h / (c->prop.ct * rho * o->d4_m4));
 	struct motor_point hov;
 	motor_at_shaft(&c->motor, t_w, kq * 2.0 * M_PI * n_h * n_h * n_h, n_h,
 	    &hov);
@@ -294,7 +331,7 @@ option_limits(const struct parts_ctx *x, struct parts_option *o)
 	    && o->full_power_w > m->max_power_w)
 		return PARTS_MOTOR_POWER;
 	double rps_full = sqrt(o->full_thrust_n / (c->prop.ct * p->air.rho_kg_m3
-	    * pow(c->prop_diameter_m, 4.0)));
+	    * o->d4_m4));
 	if (M_PI * c->prop_diameter_m * rps_full / p->air.sound_m_s > AERO_TIP_MACH_MAX)
 		return PARTS_TIP_MACH;
 	if (c->prop_max_rpm > 0.0 && rps_full * S_PER_MIN > c->prop_max_rpm)
@@ -405,12 +442,12 @@ struct kept {
 /* One option: flown, checked, scored; kept among the best. */
 static void
 try_option(struct parts_ctx *x, const struct catalog_motor *m,
-           const struct catalog_prop *pr, int cells, struct kept *k,
-           double *motor_best_j)
+           const struct catalog_prop *pr, const struct prop_pre *pp, int cells,
+           struct kept *k, double *motor_best_j)
 {
 	struct parts_option o;
 	x->n_examined++;
-	if (!parts_drive(x, m, pr, cells, &o)) {
+	if (!parts_drive(x, m, pr, pp, cells, &o)) {
 		x->n_census[PARTS_THRUST]++;
 		return;
 	}
@@ -497,7 +534,7 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 				x->n_census[PARTS_PROP_OVERLAP]++;
 				continue;
 			}
-			try_option(x, m, NULL, s, kept, &mj[i]);
+			try_option(x, m, NULL, NULL, s, kept, &mj[i]);
 		}
 		for (size_t k = 0; k < np; k++) {
 			const struct catalog_prop *pr = catalog_prop(cat, k);
@@ -521,11 +558,9 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 				continue;
 			}
 			/* The KV whose loaded full-throttle speed gives the thrust. */
-			struct parts_option probe;
-			memset(&probe, 0, sizeof probe);
-			option_prop(NULL, pr, &x->aim, &probe.craft);
-			double d = probe.craft.prop_diameter_m;
-			double n_req = sqrt(t_req / (probe.craft.prop.ct * rho * pow(d, 4.0)));
+			struct prop_pre pp;
+			prop_pre(pr, &x->aim, rho, &pp);
+			double n_req = sqrt(t_req / (pp.craft.prop.ct * rho * pp.d4_m4));
 			double kv_req = S_PER_MIN * n_req / (v_bus * LOADED_SPEED);
 			for (int i = 0; i < n_m; i++) {
 				const struct catalog_motor *m = mv[i];
@@ -548,7 +583,7 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 					x->n_census[PARTS_PROP_RANGE]++;
 					continue;
 				}
-				try_option(x, m, pr, s, kept, &mj[i]);
+				try_option(x, m, pr, &pp, s, kept, &mj[i]);
 			}
 		}
 	}

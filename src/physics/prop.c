@@ -41,7 +41,14 @@ double
 prop_thrust_n(const struct prop_coeffs *c, double rho_kg_m3, double rps,
               double d_m)
 {
-	return c->ct * rho_kg_m3 * rps * rps * pow(d_m, 4.0);
+	return prop_thrust_d4_n(c, rho_kg_m3, rps, pow(d_m, 4.0));
+}
+
+double
+prop_thrust_d4_n(const struct prop_coeffs *c, double rho_kg_m3, double rps,
+                 double d4_m4)
+{
+	return c->ct * rho_kg_m3 * rps * rps * d4_m4;
 }
 
 double

@@ -37,6 +37,10 @@ double prop_fom(const struct prop_coeffs *c);
 /* Thrust and power at n rev/s in air of density rho, diameter d_m. */
 double prop_thrust_n(const struct prop_coeffs *c, double rho_kg_m3,
                      double rps, double d_m);
+/* The same thrust from D^4 already worked out (d4_m4 = d_m^4): for a
+ * search that tries one propeller at many speeds. */
+double prop_thrust_d4_n(const struct prop_coeffs *c, double rho_kg_m3,
+                        double rps, double d4_m4);
 double prop_power_w(const struct prop_coeffs *c, double rho_kg_m3,
                     double rps, double d_m);
 
