@@ -483,10 +483,10 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 		memset(&pf->op[OP_FULL], 0, sizeof pf->op[OP_FULL]);
 	const struct res_op *full = &pf->op[OP_FULL];
 
-	/* Forward speed: the minimum-power speed when "auto"; the sweep is the
-	 * power-vs-speed figure, limited by the real rotor's full thrust. */
-	run->n_sweep = mission_speed_sweep(&x.model, mass, full->thrust_n,
-	    run->sweep_v_ms, run->sweep_power_w, RES_MAX_SWEEP,
+	/* Forward speed: the minimum-power speed when "auto", and the top
+	 * speed the real rotor's full thrust allows, found on the sweep's grid
+	 * (the sweep itself is a figure: perf_figures()). */
+	mission_speed_search(&x.model, mass, full->thrust_n,
 	    &run->v_min_power_ms, &run->v_max_ms);
 	double v_fwd = p->v_auto ? run->v_min_power_ms : p->v_forward_ms;
 	run->optimal_speed_ms = v_fwd;
@@ -581,6 +581,12 @@ perf_figures(const struct sizing_params *p, const struct perf_craft *c,
 	settle_hover(&x, c->mass.total_kg);
 	struct res_perf *pf = &run->perf;
 	figures(&x, run, pf);
+	/* The power-vs-speed figure, limited by the real rotor's full thrust;
+	 * its speeds are the search's of perf_fly(). */
+	double v_min_power_ms, v_max_ms;
+	run->n_sweep = mission_speed_sweep(&x.model, c->mass.total_kg,
+	    pf->op[OP_FULL].thrust_n, run->sweep_v_ms, run->sweep_power_w,
+	    RES_MAX_SWEEP, &v_min_power_ms, &v_max_ms);
 	const double v[] = { pf->hover_time_s, pf->mixed_time_s,
 		pf->full_throttle_time_s, pf->max_climb_ms, pf->max_tilt_deg,
 		pf->spare_payload_kg, pf->motor_out_ratio };

@@ -65,7 +65,8 @@ bool perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 
 /* The performance figures beyond the mission (hover and full-throttle
  * endurance, the mission's mix to the reserve, maximum climb and tilt,
- * spare payload, one motor out) into run->perf, for a run perf_fly() has
+ * spare payload, one motor out) into run->perf, and the power-vs-speed
+ * curve into run->sweep_v_ms/sweep_power_w, for a run perf_fly() has
  * flown with the same p and c.  No check reads them: the parts search
  * works them out for the design of record only, not for every closing it
  * tries (two discharge simulations each).  Returns true when they came
