@@ -589,6 +589,44 @@ engine_every_example_should_converge_to_finite_numbers(void **state)
  * (V_oc - V_term) I puts in less what its surface gives off, over its heat
  * capacity, integrated on the recorded trace (trapezoids over ~60 samples:
  * 15 %), and it is a rise of kelvins, not a flat line. */
+/* The design of record carries its figures beyond the mission (worked out
+ * for it alone, not for each closing tried): endurances that order as the
+ * powers do, and a power-vs-speed curve whose lowest point within the
+ * rotor's limits is the minimum-power speed its mission was flown at. */
+static void
+engine_record_should_carry_its_figures_and_speed_curve(void **state)
+{
+	(void)state;
+	struct cli_env env;
+	assert_int_equal(cli_env_load(&env, NULL, 1, stderr), 0);
+	struct diag *dg = diag_alloc(NULL);
+	struct mission_spec s;
+	assert_int_equal(mission_io_load("examples/sar_imaging_quad.json",
+	    env.model.chem_names, dg, &s), 0);
+	diag_free(dg);
+	struct solve_result *r = xcalloc(1, sizeof *r);
+	assert_int_equal(engine_solve(&s, &env.model, env.cat, r), 0);
+	assert_true(r->parts_selected);
+	const struct res_run *o = &r->closed;
+	const struct res_perf *pf = &o->perf;
+	assert_true(pf->valid);
+	assert_true(pf->hover_time_s > 60.0);
+	assert_true(pf->full_throttle_time_s > 0.0);
+	assert_true(pf->full_throttle_time_s < pf->hover_time_s);
+	assert_true(pf->max_climb_ms > 0.0);
+	assert_true(pf->max_tilt_deg > 0.0 && pf->max_tilt_deg < 90.0);
+	assert_true(o->n_sweep > 10);
+	int best = -1;
+	for (int i = 0; i < o->n_sweep; i++)
+		if (o->sweep_v_ms[i] <= o->v_max_ms + 1e-9
+		    && (best < 0 || o->sweep_power_w[i] < o->sweep_power_w[best]))
+			best = i;
+	assert_true(best >= 0);
+	assert_true(o->sweep_v_ms[best] == o->v_min_power_ms);
+	free(r);
+	cli_env_free(&env);
+}
+
 static void
 engine_pack_should_heat_by_what_its_losses_say(void **state)
 {
@@ -708,6 +746,7 @@ main(void)
 		T(engine_approved_time_should_fall_as_aux_power_rises_on_a_locked_battery),
 		T(engine_nmc_and_lihv_should_both_converge_with_different_batteries),
 		T(engine_pack_should_heat_by_what_its_losses_say),
+		T(engine_record_should_carry_its_figures_and_speed_curve),
 		T(engine_auto_cells_should_not_stop_at_a_runaway_cell_count),
 		T(engine_li_s_should_converge_with_enough_series_cells),
 		T(engine_coaxial_x8_should_converge_with_the_quad_overlap_limit),
