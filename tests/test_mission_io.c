@@ -329,11 +329,11 @@ mission_io_should_respect_an_exclusive_minimum(void **state)
 {
 	(void)state;
 	struct mission_spec s;
-	expect("{\"max_diameter_m\": 0.05}",
-	       "m.json:1:20: error: max_diameter_m: out of range: 0.05 "
-	       "(allowed above 0.05 up to 5 m)\n", 1);
-	parse_ok("{\"max_diameter_m\": 0.0500001}", &s);
-	assert_rel(s.max_diameter_m, 0.0500001, 0);
+	expect("{\"max_diameter_m\": 0.03}",
+	       "m.json:1:20: error: max_diameter_m: out of range: 0.03 "
+	       "(allowed above 0.03 up to 5 m)\n", 1);
+	parse_ok("{\"max_diameter_m\": 0.0300001}", &s);
+	assert_rel(s.max_diameter_m, 0.0300001, 0);
 	parse_ok("{\"payload_kg\": 0, \"max_diameter_m\": 5}", &s); /* inclusive ends */
 }
 

@@ -63,7 +63,7 @@ spec_range_text_should_mark_an_exclusive_minimum(void **state)
 	spec_range_text(spec_field_by_path("payload_kg"), buf, sizeof buf);
 	assert_string_equal(buf, "0 to 500 kg");
 	spec_range_text(spec_field_by_path("max_diameter_m"), buf, sizeof buf);
-	assert_string_equal(buf, "above 0.05 up to 5 m");
+	assert_string_equal(buf, "above 0.03 up to 5 m");
 	spec_range_text(spec_field_by_path("num_rotors"), buf, sizeof buf);
 	assert_string_equal(buf, "3 to 16");
 }
@@ -237,7 +237,7 @@ schema_text_should_list_every_field_with_its_range(void **state)
 	}
 	assert_non_null(strstr(text, "default 1 kg (when absent, derived by the engine); "
 	                             "allowed 0 to 500 kg\n"));
-	assert_non_null(strstr(text, "allowed above 0.05 up to 5 m"));
+	assert_non_null(strstr(text, "allowed above 0.03 up to 5 m"));
 	assert_non_null(strstr(text, "allowed: offset, folding, under_rotor"));
 	assert_non_null(strstr(text, "  battery_chemistry  (string)\n      default LiHV"));
 	/* Each group heading once, the top level first. */

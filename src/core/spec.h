@@ -130,7 +130,7 @@ X(PAYLOAD_KG, "payload_kg", SPEC_NUM, payload_kg, "kg", 1.0, 0.0, 500.0, SPEC_F_
   "Payload mass carried at takeoff (requirements.payload_preset may set it)") \
 X(MAX_PAYLOAD_KG, "max_payload_kg", SPEC_NUM, max_payload_kg, "kg", 0.0, 0.0, 500.0, SPEC_F_ZERO_AUTO, NULL, \
   "Largest payload the aircraft must lift: structure, propulsion and the thrust floor are sized for the empty aircraft plus it, the energy for the mission as flown with payload_kg; 0 = payload_kg") \
-X(MAX_DIAMETER_M, "max_diameter_m", SPEC_NUM, max_diameter_m, "m", 0.5, 0.05, 5.0, SPEC_F_MIN_EXCL | SPEC_F_DERIVED, NULL, \
+X(MAX_DIAMETER_M, "max_diameter_m", SPEC_NUM, max_diameter_m, "m", 0.5, 0.03, 5.0, SPEC_F_MIN_EXCL | SPEC_F_DERIVED, NULL, \
   "Diagonal motor-to-motor wheelbase W; bounds propeller size by the overlap limit") \
 X(NUM_ROTORS, "num_rotors", SPEC_INT, num_rotors, "", 4, 3, 16, SPEC_F_DERIVED, NULL, \
   "Number of rotors (a coaxial X8 has 8)") \
