@@ -60,6 +60,8 @@ enum parts_reason {
 	PARTS_IMPLAUSIBLE,     /* its catalogue entry fails a screen (screen.h) */
 	PARTS_DOWNWASH,        /* its wake above the role's downwash limit */
 	PARTS_DOUBTFUL,        /* a number it is sized on is listed uncertain */
+	PARTS_WINDING,         /* winding above its limit in hover or after the
+	                          full-throttle burst */
 	PARTS_REASON_MAX
 };
 extern const char *const parts_reason_text[PARTS_REASON_MAX];
@@ -99,6 +101,8 @@ struct parts_option {
 	double full_current_a;             /* one motor at full throttle */
 	double full_power_w;               /* one motor's input there */
 	double hover_power_w;              /* the aircraft at M*, drive only */
+	double full_winding_c;             /* winding after the full-throttle
+	                                      burst from its hover temperature */
 	double j;                          /* estimated mass penalty, % */
 	bool parity;                       /* reaches tw_required at M* */
 };

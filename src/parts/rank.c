@@ -31,8 +31,11 @@
  *
  * Options that cannot lift the continuous design at the relaxation floor's
  * T/W, overrun a motor rating, break tip Mach or the propeller's rpm limit,
- * or blow a wake above the role's downwash limit are pruned before
- * scoring.  The rest are kept by J in two lists: those that reach the
+ * heat the winding past its limit (steady in hover, then the record's
+ * full-throttle burst: most makers publish only a peak current, so the
+ * winding's heat is the motor's real rating) or blow a wake above the
+ * role's downwash limit are pruned before scoring: a kept place given to
+ * an option that fails the record's checks is one a passing option lost.  The rest are kept by J in two lists: those that reach the
  * continuous design's own T/W at its mass, and a few that reach only the
  * floor (tried should none of the first close).
  */
@@ -76,6 +79,7 @@ const char *const parts_reason_text[PARTS_REASON_MAX] = {
 	"implausible catalogue entry",
 	"downwash",
 	"doubtful catalogue value",
+	"winding temperature",
 };
 
 void
@@ -257,6 +261,13 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 	motor_at_shaft(&c->motor, t_w, kq * 2.0 * M_PI * n_h * n_h * n_h, n_h,
 	    &hov);
 	o->hover_power_w = hov.power_in_w * (double)p->n_rotors;
+	/* The winding as the record's checks heat it (perf.c): steady in
+	 * hover, then the full-throttle burst from there. */
+	double hover_c = p->ambient_c + (hov.copper_loss_w + hov.no_load_loss_w)
+	    * motor_thermal_resistance_k_w(m->mass_kg);
+	o->full_winding_c = fmax(hover_c, motor_temp_step_c(m->mass_kg, hover_c,
+	    p->ambient_c, full.copper_loss_w + full.no_load_loss_w,
+	    PERF_FULL_THROTTLE_S));
 	return true;
 }
 
@@ -299,6 +310,10 @@ option_limits(const struct parts_ctx *x, struct parts_option *o)
 		return PARTS_TIP_MACH;
 	if (c->prop_max_rpm > 0.0 && rps_full * S_PER_MIN > c->prop_max_rpm)
 		return PARTS_PROP_RPM;
+	/* An integrated system's losses are not modelled apart from its ESC
+	 * and propeller (its mass holds all three): the record checks it. */
+	if (!locked && !m->integrated && o->full_winding_c > MOTOR_WINDING_MAX_C)
+		return PARTS_WINDING;
 	/* The wake of the continuous design's mass on this rotor, with the
 	 * slack of a design that closes up to 10 % lighter (the wake goes as
 	 * the square root of the mass; the record checks its own). */
