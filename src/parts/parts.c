@@ -274,8 +274,10 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 				break;
 			parts_aim_regrow(&x.aim, grown);
 		}
-		struct parts_option best[PARTS_KEEP + PARTS_KEEP_RELAXED];
-		int n_best = parts_rank(&x, best, PARTS_KEEP + PARTS_KEEP_RELAXED,
+		struct parts_option best[PARTS_KEEP + PARTS_KEEP_RELAXED
+		    + PARTS_KEEP_MARGINAL];
+		int n_best = parts_rank(&x, best, PARTS_KEEP + PARTS_KEEP_RELAXED
+		    + PARTS_KEEP_MARGINAL,
 		    r->candidates, &r->n_candidates);
 		n_ranked += n_best;
 		/* Each on the lightest pack arrangement that fits it; the best
