@@ -8,6 +8,7 @@
 
 #include "parts/parts_int.h"
 #include "physics/batt.h"
+#include "physics/discharge.h"
 #include "sizing/feasibility.h"
 #include "util/strbuf.h"
 #include "util/xalloc.h"
@@ -164,8 +165,38 @@ swap_closed(struct parts_closed *a, struct parts_closed *b)
 	*b = t;
 }
 
+/* What a closing on one pack says about the next pack to try. */
+struct pack_try {
+	double end_soc, reserve_soc;
+	bool completed;                /* the discharge flew the whole mission */
+};
+
+/* Close option o on pack pk, keep it in *pick when better; true when it
+ * passes every check. */
+static bool
+close_on(const struct parts_ctx *x, const struct parts_option *o,
+         const struct parts_pack *pk, const struct catalog_esc *esc,
+         int n_esc, struct parts_closed *cur, struct parts_closed *pick,
+         struct solve_result **spare, struct pack_try *t)
+{
+	parts_close(x, o, pk, esc, n_esc, cur);
+	bool passed = cur->finite && cur->failed == 0;
+	t->end_soc = cur->r->closed.end_soc;
+	t->reserve_soc = cur->r->closed.reserve_soc;
+	t->completed = strcmp(cur->r->closed.termination,
+	    discharge_end_text[DIS_COMPLETED]) == 0;
+	if (better(x, cur, pick)) {
+		if (pick->r == NULL) {
+			pick->r = *spare;
+			*spare = NULL;
+		}
+		swap_closed(cur, pick);
+	}
+	return passed;
+}
+
 /* Close option o on the lightest fitting pack, then, while the pack lands
- * below the reserve, on one sized up by the charge it fell short. */
+ * below the reserve, on larger ones. */
 static int
 close_option(const struct parts_ctx *x, const struct parts_option *o,
              const struct catalog_esc *esc, int n_esc, struct parts_closed *cur,
@@ -191,34 +222,35 @@ close_option(const struct parts_ctx *x, const struct parts_option *o,
 			if (at < 0 || at == last)
 				break;
 			last = at;
-			parts_close(x, o, &pk[at], esc, n_esc, cur);
+			struct pack_try t;
+			passed |= close_on(x, o, &pk[at], esc, n_esc, cur, pick, spare, &t);
 			n_closed++;
-			passed |= cur->finite && cur->failed == 0;
-			double end_soc = cur->r->closed.end_soc;
-			double reserve = cur->r->closed.reserve_soc;
-			if (better(x, cur, pick)) {
-				if (pick->r == NULL) {
-					pick->r = *spare;
-					*spare = NULL;
-				}
-				swap_closed(cur, pick);
-			}
-			/* Short of the reserve: the charge it needs over the charge
-			 * it drew, with 5 % to spare; at least PARTS_PACK_STEP more
-			 * than this pack, since a mission cut short at the voltage
-			 * floor drew less than it needed. */
-			double used = 1.0 - end_soc;
-			if (end_soc >= reserve || !(used > 0.0))
+			double used = 1.0 - t.end_soc;
+			if (t.end_soc >= t.reserve_soc || !(used > 0.0))
 				break;
-			need = fmax(pk[at].energy_wh * (1.0 - reserve) / used * 1.05,
-			    pk[at].energy_wh * PARTS_PACK_STEP);
+			/* Short of the reserve: the next pack holds at least
+			 * PARTS_PACK_STEP more (it carries its own mass, and a
+			 * mission cut short at the voltage floor drew less than it
+			 * needed).  A mission flown whole also tries the pack its
+			 * charge alone asks for, this pack's energy times the charge
+			 * it drew over the charge it may draw, when that is a
+			 * smaller step. */
+			need = pk[at].energy_wh * PARTS_PACK_STEP;
+			int fit = t.completed ? pick_pack(x, o, pk, n_pk,
+			    pk[at].energy_wh * used / (1.0 - t.reserve_soc),
+			    max_sag[tier]) : -1;
+			if (fit >= 0 && fit != at
+			    && fit != pick_pack(x, o, pk, n_pk, need, max_sag[tier])) {
+				passed |= close_on(x, o, &pk[fit], esc, n_esc, cur, pick,
+				    spare, &t);
+				n_closed++;
+			}
 		}
 		if (passed)
 			break;
 	}
 	return n_closed;
 }
-
 
 int
 parts_select(const struct mission_spec *spec, const struct sizing_params *p,
@@ -275,8 +307,10 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 				break;
 			parts_aim_regrow(&x.aim, grown);
 		}
-		struct parts_option best[PARTS_KEEP + PARTS_KEEP_RELAXED];
-		int n_best = parts_rank(&x, best, PARTS_KEEP + PARTS_KEEP_RELAXED,
+		struct parts_option best[PARTS_KEEP + PARTS_KEEP_RELAXED
+		    + PARTS_KEEP_MARGINAL];
+		int n_best = parts_rank(&x, best, PARTS_KEEP + PARTS_KEEP_RELAXED
+		    + PARTS_KEEP_MARGINAL,
 		    r->candidates, &r->n_candidates);
 		n_ranked += n_best;
 		/* Each on the lightest pack arrangement that fits it; the best

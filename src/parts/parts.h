@@ -10,7 +10,9 @@
  *   rank   every bus × motor × propeller option is flown at full throttle
  *          on the motor's own constants (KV, R, I0) and the propeller's
  *          own coefficients; those that cannot lift the design, overrun a
- *          rating, or break tip Mach are pruned; the rest are scored by J,
+ *          rating even on the most-sagged bus a pack may give (the winding
+ *          temperature counted among the ratings), or break tip Mach are
+ *          pruned; the rest are scored by J,
  *          the takeoff-mass penalty they would bring over the continuous
  *          design, in percent (parts/rank.c says how it is estimated and
  *          why that weighs diameter and KV as the physics does);

@@ -21,6 +21,8 @@
 #define PARTS_KEEP          32    /* ranked options closed that reach the
                                      continuous design's T/W ... */
 #define PARTS_KEEP_RELAXED  8     /* ... and that reach only the floor */
+#define PARTS_KEEP_MARGINAL 8     /* ... and within the motor's ratings only
+                                     on the most-sagged bus (rank.c) */
 #define PARTS_CELL_PACK_FACTOR 1.12 /* a pack built from single cells: the
                                      cells plus 12 % of holder, nickel strip,
                                      wiring and wrap (catalogue README) */
@@ -60,6 +62,8 @@ enum parts_reason {
 	PARTS_IMPLAUSIBLE,     /* its catalogue entry fails a screen (screen.h) */
 	PARTS_DOWNWASH,        /* its wake above the role's downwash limit */
 	PARTS_DOUBTFUL,        /* a number it is sized on is listed uncertain */
+	PARTS_WINDING,         /* winding above its limit in hover or after the
+	                          full-throttle burst */
 	PARTS_REASON_MAX
 };
 extern const char *const parts_reason_text[PARTS_REASON_MAX];
@@ -100,8 +104,17 @@ struct parts_option {
 	double full_power_w;               /* one motor's input there */
 	double hover_power_w;              /* the aircraft at M*, drive only */
 	double d4_m4;                      /* the propeller's diameter^4 */
+	double full_winding_c;             /* winding after the full-throttle
+	                                      burst from its hover temperature */
+	double sagged_current_a;           /* full throttle on the most-sagged
+	                                      bus a kept pack may give: the */
+	double sagged_power_w;             /* least current and input a real
+	                                      pack can bring (the ratings' prune) */
+	double sagged_winding_c;           /* ... and the winding there */
 	double j;                          /* estimated mass penalty, % */
 	bool parity;                       /* reaches tw_required at M* */
+	bool marginal;                     /* within the motor's ratings only
+	                                      on the most-sagged bus */
 };
 
 /* A battery built from catalogue packs. */

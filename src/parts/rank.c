@@ -31,10 +31,18 @@
  *
  * Options that cannot lift the continuous design at the relaxation floor's
  * T/W, overrun a motor rating, break tip Mach or the propeller's rpm limit,
- * or blow a wake above the role's downwash limit are pruned before
- * scoring.  The rest are kept by J in two lists: those that reach the
- * continuous design's own T/W at its mass, and a few that reach only the
- * floor (tried should none of the first close).
+ * heat the winding past its limit (steady in hover, then the record's
+ * full-throttle burst: most makers publish only a peak current, so the
+ * winding's heat is the motor's real rating) or blow a wake above the
+ * role's downwash limit are pruned before scoring.  The ratings (current,
+ * power, winding) are pruned on the most-sagged bus a kept pack may give
+ * (PARTS_MAX_SAG below nominal): the record flies full throttle on its
+ * pack's own sag, which lowers the current, so an option over a rating on
+ * the ranking's bus may still pass there.  The rest are kept by J in three
+ * lists, all closed: those that reach the continuous design's own T/W at
+ * its mass, a few that reach only the floor, and a few within the motor's
+ * ratings only on the sagged bus (marginal: kept apart, so that they take
+ * no place from the options the ranking's bus already admits).
  */
 #include <math.h>
 #include <stdio.h>
@@ -76,6 +84,7 @@ const char *const parts_reason_text[PARTS_REASON_MAX] = {
 	"implausible catalogue entry",
 	"downwash",
 	"doubtful catalogue value",
+	"winding temperature",
 };
 
 void
@@ -294,6 +303,32 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 	motor_at_shaft(&c->motor, t_w, kq * 2.0 * M_PI * n_h * n_h * n_h, n_h,
 	    &hov);
 	o->hover_power_w = hov.power_in_w * (double)p->n_rotors;
+	/* The winding as the record's checks heat it (perf.c): steady in
+	 * hover, then the full-throttle burst from there. */
+	double hover_c = p->ambient_c + (hov.copper_loss_w + hov.no_load_loss_w)
+	    * motor_thermal_resistance_k_w(m->mass_kg);
+	o->full_winding_c = fmax(hover_c, motor_temp_step_c(m->mass_kg, hover_c,
+	    p->ambient_c, full.copper_loss_w + full.no_load_loss_w,
+	    PERF_FULL_THROTTLE_S));
+	/* The ratings are pruned where a real pack is kindest to them: the
+	 * record flies full throttle on its pack's own sag (up to
+	 * PARTS_MAX_SAG, close.c), which lowers the current; an option
+	 * pruned at the ranking's bus would be lost though the record would
+	 * pass it.  An integrated system capped at its published thrust draws
+	 * that point's current on any bus. */
+	o->sagged_current_a = o->full_current_a;
+	o->sagged_power_w = o->full_power_w;
+	o->sagged_winding_c = o->full_winding_c;
+	struct motor_point sag;
+	if (!(c->max_thrust_n > 0.0 && o->full_thrust_n >= c->max_thrust_n)
+	    && motor_at_voltage(&c->motor, t_w, (double)cells * p->chem->v_nom
+	    * (1.0 - PARTS_MAX_SAG), kq, &sag)) {
+		o->sagged_current_a = sag.current_a;
+		o->sagged_power_w = sag.power_in_w;
+		o->sagged_winding_c = fmax(hover_c, motor_temp_step_c(m->mass_kg,
+		    hover_c, p->ambient_c, sag.copper_loss_w + sag.no_load_loss_w,
+		    PERF_FULL_THROTTLE_S));
+	}
 	return true;
 }
 
@@ -323,12 +358,19 @@ option_limits(const struct parts_ctx *x, struct parts_option *o)
 	double grown = o->j > 0.0 ? 1.0 + o->j / 100.0 : 1.0;
 	o->parity = thrust >= PARTS_TW_SPARE * grown * fmax(x->aim.tw_required
 	    * mass * G0_M_S2, max_payload_n);
+	/* The motor's ratings on the ranking's bus; an option within them
+	 * only on the most-sagged bus is marginal (kept apart, see above). */
 	struct parts_motor_limits lim;
 	parts_motor_limits(m, &lim);
-	if (!locked && lim.full_a > 0.0 && o->full_current_a > lim.full_a)
+	bool cur_full = lim.full_a > 0.0 && o->full_current_a > lim.full_a;
+	bool pow_full = !m->integrated && m->max_power_w > 0.0
+	    && o->full_power_w > m->max_power_w;
+	bool hot_full = !m->integrated && o->full_winding_c > MOTOR_WINDING_MAX_C;
+	o->marginal = !locked && (cur_full || pow_full || hot_full);
+	if (!locked && lim.full_a > 0.0 && o->sagged_current_a > lim.full_a)
 		return PARTS_MOTOR_CURRENT;
 	if (!locked && !m->integrated && m->max_power_w > 0.0
-	    && o->full_power_w > m->max_power_w)
+	    && o->sagged_power_w > m->max_power_w)
 		return PARTS_MOTOR_POWER;
 	double rps_full = sqrt(o->full_thrust_n / (c->prop.ct * p->air.rho_kg_m3
 	    * o->d4_m4));
@@ -336,6 +378,10 @@ option_limits(const struct parts_ctx *x, struct parts_option *o)
 		return PARTS_TIP_MACH;
 	if (c->prop_max_rpm > 0.0 && rps_full * S_PER_MIN > c->prop_max_rpm)
 		return PARTS_PROP_RPM;
+	/* An integrated system's losses are not modelled apart from its ESC
+	 * and propeller (its mass holds all three): the record checks it. */
+	if (!locked && !m->integrated && o->sagged_winding_c > MOTOR_WINDING_MAX_C)
+		return PARTS_WINDING;
 	/* The wake of the continuous design's mass on this rotor, with the
 	 * slack of a design that closes up to 10 % lighter (the wake goes as
 	 * the square root of the mass; the record checks its own). */
@@ -431,12 +477,14 @@ prop_locked_out(const struct parts_ctx *x, const struct catalog_prop *pr)
 	    || fabs(pr->pitch_in - lk->locked_pitch_in) > LOCK_PITCH_TOL_IN);
 }
 
-/* The two lists of kept options (see the top of this file). */
+/* The three lists of kept options (see the top of this file). */
 struct kept {
 	struct parts_option parity[PARTS_KEEP];
 	int n_parity;
 	struct parts_option relaxed[PARTS_KEEP_RELAXED];
 	int n_relaxed;
+	struct parts_option marginal[PARTS_KEEP_MARGINAL];
+	int n_marginal;
 };
 
 /* One option: flown, checked, scored; kept among the best. */
@@ -459,7 +507,9 @@ try_option(struct parts_ctx *x, const struct catalog_motor *m,
 	}
 	if (o.j < *motor_best_j)
 		*motor_best_j = o.j;
-	if (o.parity)
+	if (o.marginal)
+		keep(k->marginal, &k->n_marginal, PARTS_KEEP_MARGINAL, &o);
+	else if (o.parity)
 		keep(k->parity, &k->n_parity, PARTS_KEEP, &o);
 	else
 		keep(k->relaxed, &k->n_relaxed, PARTS_KEEP_RELAXED, &o);
@@ -606,6 +656,8 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 		best[n_best++] = kept->parity[i];
 	for (int i = 0; i < kept->n_relaxed && n_best < max_best; i++)
 		best[n_best++] = kept->relaxed[i];
+	for (int i = 0; i < kept->n_marginal && n_best < max_best; i++)
+		best[n_best++] = kept->marginal[i];
 	free(kept);
 	return n_best;
 }
