@@ -232,14 +232,36 @@ prop_pre(const struct catalog_prop *pr, const struct parts_aim *aim,
 	pp->kq_nm_s2 = prop_kq_nm_s2(&pp->craft.prop, rho, d);
 }
 
-/* Option m on propeller pr (with its prop_pre pp), or an integrated
+/* What a motor brings to every propeller and bus it is tried on, worked
+ * out once per solve: its winding resistance and no-load current
+ * (published, else estimated), its thermal resistance and the decay of
+ * its winding's temperature over the full-throttle burst. */
+struct motor_pre {
+	double r_ohm, i0_a;
+	bool estimated;
+	double rth_k_w, decay_full;
+};
+
+static void
+motor_pre(const struct catalog_motor *m, struct motor_pre *mp)
+{
+	mp->r_ohm = m->resistance_ohm > 0.0 ? m->resistance_ohm
+	    : motor_estimate_resistance_ohm(m->kv_rpm_per_v, m->mass_kg);
+	mp->i0_a = m->no_load_current_a > 0.0 ? m->no_load_current_a
+	    : motor_estimate_no_load_a(m->kv_rpm_per_v, m->mass_kg);
+	mp->estimated = !(m->resistance_ohm > 0.0 && m->no_load_current_a > 0.0);
+	mp->rth_k_w = motor_thermal_resistance_k_w(m->mass_kg);
+	mp->decay_full = motor_temp_decay(m->mass_kg, PERF_FULL_THROTTLE_S);
+}
+
+/* Option m (with its motor_pre mp) on propeller pr (with its prop_pre pp), or an integrated
  * system (pr and pp NULL), on a bus of cells: its full-throttle point and
  * its hover power at the continuous design's mass.  False when the motor
  * cannot turn the propeller. */
 static bool
 parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
-            const struct catalog_prop *pr, const struct prop_pre *pp,
-            int cells, struct parts_option *o)
+            const struct motor_pre *mp, const struct catalog_prop *pr,
+            const struct prop_pre *pp, int cells, struct parts_option *o)
 {
 	const struct sizing_params *p = x->p;
 	const struct parts_aim *aim = &x->aim;
@@ -250,12 +272,9 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 	struct perf_craft *c = &o->craft;
 	c->motor.kv_rpm_per_v = m->kv_rpm_per_v;
 	c->motor.mass_kg = m->mass_kg;
-	c->motor.resistance_ohm = m->resistance_ohm > 0.0 ? m->resistance_ohm
-	    : motor_estimate_resistance_ohm(m->kv_rpm_per_v, m->mass_kg);
-	c->motor.no_load_current_a = m->no_load_current_a > 0.0
-	    ? m->no_load_current_a
-	    : motor_estimate_no_load_a(m->kv_rpm_per_v, m->mass_kg);
-	c->motor_r_estimated = !(m->resistance_ohm > 0.0 && m->no_load_current_a > 0.0);
+	c->motor.resistance_ohm = mp->r_ohm;
+	c->motor.no_load_current_a = mp->i0_a;
+	c->motor_r_estimated = mp->estimated;
 	c->motor_max_current_a = m->max_current_a;
 	c->motor_max_power_w = m->max_power_w;
 	double rho = p->air.rho_kg_m3;
@@ -306,10 +325,10 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 	/* The winding as the record's checks heat it (perf.c): steady in
 	 * hover, then the full-throttle burst from there. */
 	double hover_c = p->ambient_c + (hov.copper_loss_w + hov.no_load_loss_w)
-	    * motor_thermal_resistance_k_w(m->mass_kg);
-	o->full_winding_c = fmax(hover_c, motor_temp_step_c(m->mass_kg, hover_c,
-	    p->ambient_c, full.copper_loss_w + full.no_load_loss_w,
-	    PERF_FULL_THROTTLE_S));
+	    * mp->rth_k_w;
+	o->full_winding_c = fmax(hover_c, motor_temp_step_from(mp->rth_k_w,
+	    mp->decay_full, hover_c, p->ambient_c,
+	    full.copper_loss_w + full.no_load_loss_w));
 	/* The ratings are pruned where a real pack is kindest to them: the
 	 * record flies full throttle on its pack's own sag (up to
 	 * PARTS_MAX_SAG, close.c), which lowers the current; an option
@@ -325,9 +344,9 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 	    * (1.0 - PARTS_MAX_SAG), kq, &sag)) {
 		o->sagged_current_a = sag.current_a;
 		o->sagged_power_w = sag.power_in_w;
-		o->sagged_winding_c = fmax(hover_c, motor_temp_step_c(m->mass_kg,
-		    hover_c, p->ambient_c, sag.copper_loss_w + sag.no_load_loss_w,
-		    PERF_FULL_THROTTLE_S));
+		o->sagged_winding_c = fmax(hover_c, motor_temp_step_from(
+		    mp->rth_k_w, mp->decay_full, hover_c, p->ambient_c,
+		    sag.copper_loss_w + sag.no_load_loss_w));
 	}
 	return true;
 }
@@ -490,12 +509,13 @@ struct kept {
 /* One option: flown, checked, scored; kept among the best. */
 static void
 try_option(struct parts_ctx *x, const struct catalog_motor *m,
-           const struct catalog_prop *pr, const struct prop_pre *pp, int cells,
-           struct kept *k, double *motor_best_j)
+           const struct motor_pre *mp, const struct catalog_prop *pr,
+           const struct prop_pre *pp, int cells, struct kept *k,
+           double *motor_best_j)
 {
 	struct parts_option o;
 	x->n_examined++;
-	if (!parts_drive(x, m, pr, pp, cells, &o)) {
+	if (!parts_drive(x, m, mp, pr, pp, cells, &o)) {
 		x->n_census[PARTS_THRUST]++;
 		return;
 	}
@@ -557,8 +577,11 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 		mv[n_m++] = m;
 	}
 	qsort(mv, (size_t)n_m, sizeof *mv, cmp_kv);
-	for (int i = 0; i < n_m; i++)
+	struct motor_pre *mpre = xmalloc((n_m ? (size_t)n_m : 1) * sizeof *mpre);
+	for (int i = 0; i < n_m; i++) {
 		mj[i] = PRUNED_J;
+		motor_pre(mv[i], &mpre[i]);
+	}
 
 	struct kept *kept = xcalloc(1, sizeof *kept);
 	double rho = p->air.rho_kg_m3;
@@ -584,7 +607,7 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 				x->n_census[PARTS_PROP_OVERLAP]++;
 				continue;
 			}
-			try_option(x, m, NULL, NULL, s, kept, &mj[i]);
+			try_option(x, m, &mpre[i], NULL, NULL, s, kept, &mj[i]);
 		}
 		for (size_t k = 0; k < np; k++) {
 			const struct catalog_prop *pr = catalog_prop(cat, k);
@@ -633,7 +656,7 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 					x->n_census[PARTS_PROP_RANGE]++;
 					continue;
 				}
-				try_option(x, m, pr, &pp, s, kept, &mj[i]);
+				try_option(x, m, &mpre[i], pr, &pp, s, kept, &mj[i]);
 			}
 		}
 	}
@@ -650,6 +673,7 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 	}
 	free(mv);
 	free(mj);
+	free(mpre);
 	/* The options that reach the continuous T/W first. */
 	int n_best = 0;
 	for (int i = 0; i < kept->n_parity && n_best < max_best; i++)

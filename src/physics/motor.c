@@ -88,10 +88,24 @@ double
 motor_temp_step_c(double mass_kg, double temp_c, double ambient_c,
                   double loss_w, double dt_s)
 {
+	return motor_temp_step_from(motor_thermal_resistance_k_w(mass_kg),
+	    motor_temp_decay(mass_kg, dt_s), temp_c, ambient_c, loss_w);
+}
+
+double
+motor_temp_decay(double mass_kg, double dt_s)
+{
 	double rth = motor_thermal_resistance_k_w(mass_kg);
 	double cth = motor_thermal_capacity_j_k(mass_kg);
-	double t_ss = ambient_c + loss_w * rth;
-	return t_ss + (temp_c - t_ss) * exp(-dt_s / (rth * cth));
+	return exp(-dt_s / (rth * cth));
+}
+
+double
+motor_temp_step_from(double rth_k_w, double decay, double temp_c,
+                     double ambient_c, double loss_w)
+{
+	double t_ss = ambient_c + loss_w * rth_k_w;
+	return t_ss + (temp_c - t_ss) * decay;
 }
 
 double

@@ -80,6 +80,13 @@ double motor_thermal_capacity_j_k(double mass_kg);
 double motor_temp_step_c(double mass_kg, double temp_c, double ambient_c,
                          double loss_w, double dt_s);
 
+/* motor_temp_step_c() in two parts, for a search that steps one motor
+ * many times: the decay exp(-dt / (R_th C_th)) of a motor of mass_kg over
+ * dt_s, then the step from it and the motor's R_th.  The same numbers. */
+double motor_temp_decay(double mass_kg, double dt_s);
+double motor_temp_step_from(double rth_k_w, double decay, double temp_c,
+                            double ambient_c, double loss_w);
+
 /* Estimates where the catalogue lacks a value: log-linear least squares
  * over the catalogue's motors with KV, mass, R and I0 published (motor.c
  * gives the fit and its scatter). */
