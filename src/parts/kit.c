@@ -135,6 +135,8 @@ meets(const struct catalog_avionics *a, const char *kind, const char *need,
 }
 
 /* The lightest part of kind meeting need (ties by id: deterministic). */
+static bool frame_offered(const struct catalog_frame *f);
+
 void
 parts_kit_init(struct parts_ctx *x)
 {
@@ -157,6 +159,12 @@ parts_kit_init(struct parts_ctx *x)
 		}
 		x->kit_kinds[k].items[x->kit_kinds[k].n++] = a;
 	}
+	size_t nf = catalog_n_frames(x->cat);
+	x->kit_frames = xcalloc(nf > 0 ? nf : 1, sizeof *x->kit_frames);
+	x->n_kit_frames = 0;
+	for (size_t i = 0; i < nf; i++)
+		if (frame_offered(catalog_frame(x->cat, i)))
+			x->kit_frames[x->n_kit_frames++] = catalog_frame(x->cat, i);
 }
 
 void
@@ -165,6 +173,9 @@ parts_kit_free(struct parts_ctx *x)
 	for (int k = 0; k < x->n_kit_kinds; k++)
 		free(x->kit_kinds[k].items);
 	x->n_kit_kinds = 0;
+	free(x->kit_frames);
+	x->kit_frames = NULL;
+	x->n_kit_frames = 0;
 }
 
 /* The usable parts of one kind, in catalogue order. */
@@ -260,16 +271,23 @@ parts_kit_pick(const struct parts_ctx *x, const struct parts_option *o,
 	pick_connector(x, sustained_a / (double)pk->parallel, kit, n_packs);
 }
 
-bool
-parts_kit_frame_fits(const struct parts_ctx *x, const struct catalog_frame *f,
-                     double prop_in, double mass_kg, double arm_od_m,
-                     double custom_kg)
+/* Is a catalogue frame kit one the search may offer at all: every
+ * needed number known and none in doubt (screen.h)?  The catalogue's
+ * answer, the same for every closing: parts_kit_init() asks it once. */
+static bool
+frame_offered(const struct catalog_frame *f)
+{
+	char why[128];
+	return f->usable && screen_doubt_frame(f, why, sizeof why) == NULL;
+}
+
+/* Does offered kit f fit this aircraft (see parts_kit_frame_fits())? */
+static bool
+frame_fits(const struct parts_ctx *x, const struct catalog_frame *f,
+           double prop_in, double mass_kg, double arm_od_m, double custom_kg)
 {
 	const struct sizing_params *p = x->p;
-	char why[128];
-	if (!f->usable || f->rotor_count != p->n_rotors || f->coaxial != p->coaxial)
-		return false;
-	if (screen_doubt_frame(f, why, sizeof why) != NULL)
+	if (f->rotor_count != p->n_rotors || f->coaxial != p->coaxial)
 		return false;
 	/* A kit far heavier than the structure the loads need is built for a
 	 * heavier aircraft. */
@@ -294,14 +312,23 @@ parts_kit_frame_fits(const struct parts_ctx *x, const struct catalog_frame *f,
 	return true;
 }
 
+bool
+parts_kit_frame_fits(const struct parts_ctx *x, const struct catalog_frame *f,
+                     double prop_in, double mass_kg, double arm_od_m,
+                     double custom_kg)
+{
+	return frame_offered(f) && frame_fits(x, f, prop_in, mass_kg, arm_od_m,
+	    custom_kg);
+}
+
 const struct catalog_frame *
 parts_kit_frame(const struct parts_ctx *x, double prop_in, double mass_kg,
                 double arm_od_m, double custom_kg)
 {
 	const struct catalog_frame *best = NULL;
-	for (size_t i = 0; i < catalog_n_frames(x->cat); i++) {
-		const struct catalog_frame *f = catalog_frame(x->cat, i);
-		if (!parts_kit_frame_fits(x, f, prop_in, mass_kg, arm_od_m, custom_kg))
+	for (int i = 0; i < x->n_kit_frames; i++) {
+		const struct catalog_frame *f = x->kit_frames[i];
+		if (!frame_fits(x, f, prop_in, mass_kg, arm_od_m, custom_kg))
 			continue;
 		if (best == NULL || f->mass_kg < best->mass_kg
 		    || (f->mass_kg == best->mass_kg && strcmp(f->id, best->id) < 0))

@@ -151,6 +151,8 @@ struct parts_ctx {
 	int n_packs;
 	struct parts_kit_kind kit_kinds[PARTS_KIT_KINDS];
 	int n_kit_kinds;
+	const struct catalog_frame **kit_frames; /* the frame kits offered */
+	int n_kit_frames;
 	int n_census[PARTS_REASON_MAX];
 	int n_examined;
 };
