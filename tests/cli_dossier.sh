@@ -118,6 +118,10 @@ for f in examples/*.json; do
 			sh -c "! grep -Eq 'Downwash \(|Downwash,' '$d/all.txt'"
 	fi
 
+	# The verdict's sentences end before the next begins.
+	check "dossier_${n}_verdict_sentences_are_closed" \
+		sh -c "! grep -Eq '[a-z0-9)] Do not build' '$d/all.txt'"
+
 	# A sentence that compares two numbers says the right way round: "flies
 	# X, above the Y" only where X >= Y (result.json keeps it on one line).
 	check "dossier_${n}_says_above_only_of_a_larger_number" \

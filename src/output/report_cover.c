@@ -87,6 +87,9 @@ cover_status(struct rep *rp)
 				strbuf_printf(&sb, "; the first: %s", r->violations[i].message);
 				break;
 			}
+		const char *so_far = strbuf_str(&sb);
+		if (so_far[0] != '\0' && so_far[strlen(so_far) - 1] != '.')
+			strbuf_append_str(&sb, ".");
 		strbuf_append_str(&sb, " Do not build it as specified: the checks section lists every "
 		                  "failure with the fixes the solver suggests.");
 		doc_callout(rp->d, DOC_CALLOUT_FAIL, "NOT FEASIBLE AS BUILT", strbuf_str(&sb));
