@@ -223,11 +223,13 @@ paper: all
 
 # ---- housekeeping -----------------------------------------------------------
 # The man page's header carries the version; it is set from VERSION here.
+# The data keep their file times, so the installed program's catalogue
+# snapshot matches them (src/input/catalog_snap.h) and is used.
 install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/aeroeval \
 	  $(DESTDIR)$(PREFIX)/share/man/man1
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/aeroeval
-	cp -R data templates $(DESTDIR)$(PREFIX)/share/aeroeval/
+	cp -R --preserve=timestamps data templates $(DESTDIR)$(PREFIX)/share/aeroeval/
 	sed '/^\.TH/s/"aeroeval [^"]*"/"aeroeval $(VERSION)"/' src/cli/aeroeval.1 \
 	  >$(DESTDIR)$(PREFIX)/share/man/man1/aeroeval.1
 	chmod 644 $(DESTDIR)$(PREFIX)/share/man/man1/aeroeval.1
