@@ -9,6 +9,7 @@
 #include <cairo.h>
 
 #include "output/doc.h"
+#include "output/doc_int.h"
 #include "output/plot.h"
 #include "cli/cli.h"
 #include "core/template.h"
@@ -372,6 +373,35 @@ doc_letter_template_should_build(void **state)
 	template_free(tpl);
 }
 
+/* The widths a document measures from its cache of glyph widths are the
+ * ones libharu gives for the whole string: Latin, Greek, Cyrillic and
+ * signs, a stray byte, an overlong form and a character beyond the Basic
+ * Multilingual Plane (measured whole), first and second time alike. */
+static void
+doc_widths_should_equal_libharus_whole_string_measure(void **state)
+{
+	(void)state;
+	struct template *tpl = template_default();
+	struct doc *d = doc_alloc(tpl, NULL);
+	assert_null(doc_error(d));
+	const char *texts[] = {
+		"Takeoff mass (MTOW)", "\xe2\x89\xa4 0.75 \xc2\xb7 \xce\xb1\xce\xb2 \xe2\x86\x92 \xe2\x88\x9e",
+		"\xc3\xa9\xc3\xbc\xc3\xb1 \xc5\x81 \xd0\x96\xd0\x94 \xc2\xb2", "a stray \xff byte",
+		"overlong \xc1\x81 A", "beyond \xf0\x9f\x98\x80 the plane", "x", "",
+	};
+	HPDF_Font fonts[] = { d->font, d->bold, doc_mono_font(d) };
+	for (int pass = 0; pass < 2; pass++)
+		for (size_t f = 0; f < sizeof fonts / sizeof fonts[0]; f++)
+			for (size_t i = 0; i < sizeof texts / sizeof texts[0]; i++) {
+				size_t n = strlen(texts[i]);
+				double want = n == 0 ? 0.0 : HPDF_Font_TextWidth(fonts[f],
+				    (const HPDF_BYTE *)texts[i], (HPDF_UINT)n).width * 10.0 / 1000.0;
+				assert_true(doc_width(fonts[f], 10.0, texts[i], n) == want);
+			}
+	doc_free(d);
+	template_free(tpl);
+}
+
 static void
 doc_bad_font_should_fail_and_write_nothing(void **state)
 {
@@ -436,6 +466,7 @@ main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(doc_demo_should_build_without_error_and_be_reproducible),
 		cmocka_unit_test(doc_letter_template_should_build),
+		cmocka_unit_test(doc_widths_should_equal_libharus_whole_string_measure),
 		cmocka_unit_test(doc_bad_font_should_fail_and_write_nothing),
 		cmocka_unit_test(doc_bad_inputs_should_be_sticky_errors),
 	};

@@ -4,6 +4,7 @@
 
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -77,14 +78,89 @@ doc_error(const struct doc *d)
 
 /* ---- text measuring and wrapping ------------------------------------------- */
 
+/* Glyph widths by code point, per font, filled as text is measured:
+ * HPDF_Font_TextWidth walks the font's character map for every character,
+ * and a dossier measures the same few hundred characters thousands of
+ * times (wrapping, alignment).  The slots of a document's fonts are
+ * emptied when it is freed (forget_widths). */
+#define WIDTH_FONTS 8
+#define WIDTH_CODES 0x10000
+static struct width_slot {
+	HPDF_Font font;
+	int32_t *units;            /* per code point; -1 not yet measured */
+} width_slots[WIDTH_FONTS];
+
+static int32_t *
+widths_of(HPDF_Font f)
+{
+	struct width_slot *free_slot = NULL;
+	for (int i = 0; i < WIDTH_FONTS; i++) {
+		if (width_slots[i].font == f)
+			return width_slots[i].units;
+		if (width_slots[i].font == NULL && free_slot == NULL)
+			free_slot = &width_slots[i];
+	}
+	if (free_slot == NULL)
+		return NULL;       /* every slot taken: measure directly */
+	free_slot->font = f;
+	free_slot->units = xmalloc(WIDTH_CODES * sizeof *free_slot->units);
+	for (int c = 0; c < WIDTH_CODES; c++)
+		free_slot->units[c] = -1;
+	return free_slot->units;
+}
+
+static void
+forget_widths(HPDF_Font f)
+{
+	for (int i = 0; f != NULL && i < WIDTH_FONTS; i++)
+		if (width_slots[i].font == f) {
+			free(width_slots[i].units);
+			width_slots[i].font = NULL;
+			width_slots[i].units = NULL;
+		}
+}
+
+static size_t utf8_len(const char *s);
+
+/* The code point of the UTF-8 character of n bytes at s. */
+static long
+code_of(const char *s, size_t n)
+{
+	const unsigned char *u = (const unsigned char *)s;
+	if (n == 1)
+		return u[0];
+	long c = u[0] & (0x7f >> n);
+	for (size_t i = 1; i < n; i++)
+		c = c << 6 | (u[i] & 0x3f);
+	return c;
+}
+
 /* Advance width of len bytes of s in font units (1/1000 em): the sum of
  * the glyphs' widths, so the width of a concatenation is the sum of its
- * parts' (libharu applies no kerning). */
+ * parts' (libharu applies no kerning); each glyph's measured once.  Text
+ * that is not well-formed UTF-8 is measured whole, as libharu reads it. */
 static HPDF_UINT
 units_of(HPDF_Font f, const char *s, size_t len)
 {
 	if (len == 0 || f == NULL)
 		return 0;
+	int32_t *w = widths_of(f);
+	HPDF_UINT sum = 0;
+	for (size_t i = 0; w != NULL && i < len; ) {
+		size_t n = utf8_len(s + i);
+		if (i + n > len || (n == 1 && (unsigned char)s[i] >= 0x80))
+			break;
+		long c = code_of(s + i, n);
+		if (c >= WIDTH_CODES || (n == 2 && c < 0x80) || (n == 3 && c < 0x800))
+			break;     /* beyond the table, or an overlong form */
+		if (w[c] < 0)
+			w[c] = (int32_t)HPDF_Font_TextWidth(f, (const HPDF_BYTE *)(s + i),
+			    (HPDF_UINT)n).width;
+		sum += (HPDF_UINT)w[c];
+		i += n;
+		if (i == len)
+			return sum;
+	}
 	return HPDF_Font_TextWidth(f, (const HPDF_BYTE *)s, (HPDF_UINT)len).width;
 }
 
@@ -570,6 +646,9 @@ doc_free(struct doc *d)
 {
 	if (d == NULL)
 		return;
+	forget_widths(d->font);
+	forget_widths(d->bold);
+	forget_widths(d->mono);
 	if (d->pdf != NULL)
 		HPDF_Free(d->pdf);
 	for (int i = 0; i < d->n_toc; i++)
