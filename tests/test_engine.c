@@ -584,11 +584,22 @@ engine_every_example_should_converge_to_finite_numbers(void **state)
 	assert_true(n >= 1);
 }
 
-/* Energy and heat from the same losses: over the SAR example's design of
- * record, the pack's temperature rise equals the heat its voltage sag
- * (V_oc - V_term) I puts in less what its surface gives off, over its heat
- * capacity, integrated on the recorded trace (trapezoids over ~60 samples:
- * 15 %), and it is a rise of kelvins, not a flat line. */
+/* The SAR example solved with the shipped data; free the result and
+ * cli_env_free(env) after. */
+static struct solve_result *
+solve_sar_example(struct cli_env *env)
+{
+	assert_int_equal(cli_env_load(env, NULL, 1, stderr), 0);
+	struct diag *dg = diag_alloc(NULL);
+	struct mission_spec s;
+	assert_int_equal(mission_io_load("examples/sar_imaging_quad.json",
+	    env->model.chem_names, dg, &s), 0);
+	diag_free(dg);
+	struct solve_result *r = xcalloc(1, sizeof *r);
+	assert_int_equal(engine_solve(&s, &env->model, env->cat, r), 0);
+	return r;
+}
+
 /* The design of record carries its figures beyond the mission (worked out
  * for it alone, not for each closing tried): endurances that order as the
  * powers do, and a power-vs-speed curve whose lowest point within the
@@ -598,14 +609,7 @@ engine_record_should_carry_its_figures_and_speed_curve(void **state)
 {
 	(void)state;
 	struct cli_env env;
-	assert_int_equal(cli_env_load(&env, NULL, 1, stderr), 0);
-	struct diag *dg = diag_alloc(NULL);
-	struct mission_spec s;
-	assert_int_equal(mission_io_load("examples/sar_imaging_quad.json",
-	    env.model.chem_names, dg, &s), 0);
-	diag_free(dg);
-	struct solve_result *r = xcalloc(1, sizeof *r);
-	assert_int_equal(engine_solve(&s, &env.model, env.cat, r), 0);
+	struct solve_result *r = solve_sar_example(&env);
 	assert_true(r->parts_selected);
 	const struct res_run *o = &r->closed;
 	const struct res_perf *pf = &o->perf;
@@ -627,19 +631,17 @@ engine_record_should_carry_its_figures_and_speed_curve(void **state)
 	cli_env_free(&env);
 }
 
+/* Energy and heat from the same losses: over the SAR example's design of
+ * record, the pack's temperature rise equals the heat its voltage sag
+ * (V_oc - V_term) I puts in less what its surface gives off, over its heat
+ * capacity, integrated on the recorded trace (trapezoids over ~60 samples:
+ * 15 %), and it is a rise of kelvins, not a flat line. */
 static void
 engine_pack_should_heat_by_what_its_losses_say(void **state)
 {
 	(void)state;
 	struct cli_env env;
-	assert_int_equal(cli_env_load(&env, NULL, 1, stderr), 0);
-	struct diag *dg = diag_alloc(NULL);
-	struct mission_spec s;
-	assert_int_equal(mission_io_load("examples/sar_imaging_quad.json",
-	    env.model.chem_names, dg, &s), 0);
-	diag_free(dg);
-	struct solve_result *r = xcalloc(1, sizeof *r);
-	assert_int_equal(engine_solve(&s, &env.model, env.cat, r), 0);
+	struct solve_result *r = solve_sar_example(&env);
 	const struct res_run *o = r->parts_selected ? &r->closed : &r->custom;
 	assert_true(o->n_trace > 10);
 	double m_kg = o->mass.battery_kg;
