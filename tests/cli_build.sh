@@ -41,6 +41,19 @@ AEROEVAL_DATA="$T/data2" "$AE" solve examples/sar_imaging_quad.json >/dev/null 2
 [ "$rc" -eq 2 ] && grep -q "motors.json:.*mass_g" "$T/edit.err"
 check $? "snapshot_edited_catalogue_is_read_not_the_snapshot"
 
+# catsnap, which make runs to write the snapshot: a catalogue that does not
+# load does not build (its diagnostics, exit 2, no file left behind); the
+# shipped one does.
+cs="$(dirname "$AE")/catsnap"
+if [ -x "$cs" ]; then
+	"$cs" "$T/data2" "$T/snap.bin" 2>"$T/cs.err"; rc=$?
+	[ "$rc" -eq 2 ] && grep -q "motors.json:.*mass_g" "$T/cs.err" \
+	    && [ ! -e "$T/snap.bin" ] && [ ! -e "$T/snap.bin.tmp" ]
+	check $? "catsnap_refuses_a_catalogue_that_does_not_load"
+	"$cs" data "$T/snap.bin" 2>/dev/null && [ -s "$T/snap.bin" ]
+	check $? "catsnap_writes_the_shipped_catalogue"
+fi
+
 # A bad mission: exit 2, nothing written, previous outputs intact.
 mkdir -p "$T/m"
 cp examples/sar_imaging_quad.json "$T/m/good.json"
