@@ -78,6 +78,18 @@ doc_error(const struct doc *d)
 
 /* ---- text measuring and wrapping ------------------------------------------- */
 
+/* Bytes of the UTF-8 character starting at s (1 for a stray byte). */
+static size_t
+utf8_len(const char *s)
+{
+	unsigned char c = (unsigned char)*s;
+	size_t n = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 1;
+	for (size_t i = 1; i < n; i++)
+		if (((unsigned char)s[i] & 0xc0) != 0x80)
+			return 1;
+	return n;
+}
+
 /* Glyph widths by code point, per font, filled as text is measured:
  * HPDF_Font_TextWidth walks the font's character map for every character,
  * and a dossier measures the same few hundred characters thousands of
@@ -119,8 +131,6 @@ forget_widths(HPDF_Font f)
 			width_slots[i].units = NULL;
 		}
 }
-
-static size_t utf8_len(const char *s);
 
 /* The code point of the UTF-8 character of n bytes at s. */
 static long
@@ -186,18 +196,6 @@ lines_push(struct lines *L, const char *s, size_t len)
 	L->v[L->n].s = s;
 	L->v[L->n].len = len;
 	L->n++;
-}
-
-/* Bytes of the UTF-8 character starting at s (1 for a stray byte). */
-static size_t
-utf8_len(const char *s)
-{
-	unsigned char c = (unsigned char)*s;
-	size_t n = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 1;
-	for (size_t i = 1; i < n; i++)
-		if (((unsigned char)s[i] & 0xc0) != 0x80)
-			return 1;
-	return n;
 }
 
 static int

@@ -134,8 +134,15 @@ meets(const struct catalog_avionics *a, const char *kind, const char *need,
 	return false;
 }
 
-/* The lightest part of kind meeting need (ties by id: deterministic). */
-static bool frame_offered(const struct catalog_frame *f);
+/* Is a catalogue frame kit one the search may offer at all: every
+ * needed number known and none in doubt (screen.h)?  The catalogue's
+ * answer, the same for every closing: parts_kit_init() asks it once. */
+static bool
+frame_offered(const struct catalog_frame *f)
+{
+	char why[128];
+	return f->usable && screen_doubt_frame(f, why, sizeof why) == NULL;
+}
 
 void
 parts_kit_init(struct parts_ctx *x)
@@ -188,6 +195,7 @@ of_kind(const struct parts_ctx *x, const char *kind)
 	return NULL;
 }
 
+/* The lightest part of kind meeting need (ties by id: deterministic). */
 static const struct catalog_avionics *
 lightest(const struct parts_ctx *x, const char *kind, const char *need,
          int cells, double sustained_a)
@@ -269,16 +277,6 @@ parts_kit_pick(const struct parts_ctx *x, const struct parts_option *o,
 	}
 	int n_packs = pk->series * pk->parallel;
 	pick_connector(x, sustained_a / (double)pk->parallel, kit, n_packs);
-}
-
-/* Is a catalogue frame kit one the search may offer at all: every
- * needed number known and none in doubt (screen.h)?  The catalogue's
- * answer, the same for every closing: parts_kit_init() asks it once. */
-static bool
-frame_offered(const struct catalog_frame *f)
-{
-	char why[128];
-	return f->usable && screen_doubt_frame(f, why, sizeof why) == NULL;
 }
 
 /* Does offered kit f fit this aircraft (see parts_kit_frame_fits())? */

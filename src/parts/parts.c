@@ -252,6 +252,14 @@ close_option(const struct parts_ctx *x, const struct parts_option *o,
 	return n_closed;
 }
 
+/* Frees the lists parts_packs_init() and parts_kit_init() built. */
+static void
+ctx_free(struct parts_ctx *x)
+{
+	parts_packs_free(x);
+	parts_kit_free(x);
+}
+
 int
 parts_select(const struct mission_spec *spec, const struct sizing_params *p,
              const struct model_data *md, const struct catalog *cat,
@@ -332,8 +340,7 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 	free(cur.r);
 	if (n_ranked == 0 || pick.r == NULL || !pick.finite) {
 		free(pick.r);
-		parts_packs_free(&x);
-		parts_kit_free(&x);
+		ctx_free(&x);
 		report_none(&x, r);
 		return pick.r != NULL ? 3 : 0;
 	}
@@ -364,7 +371,6 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 	bool finite = rec.finite && isfinite(r->bom_mass_kg);
 	free(rec.r);
 	free(pick.r);
-	parts_packs_free(&x);
-	parts_kit_free(&x);
+	ctx_free(&x);
 	return finite ? 0 : 3;
 }

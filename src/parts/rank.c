@@ -212,9 +212,10 @@ parts_motor_limits(const struct catalog_motor *m, struct parts_motor_limits *l)
 	}
 }
 
-/* What a catalogue propeller brings to every motor it is tried on,
- * worked out once per bus and propeller: its craft fields (option_prop),
- * D^4 and its torque factor Q / n^2 before the installation. */
+/* What a propeller brings to every motor it is tried on, worked out once
+ * per bus and catalogue propeller (for an integrated system's own
+ * propeller, per option): its craft fields (option_prop), D^4 and its
+ * torque factor Q / n^2 before the installation. */
 struct prop_pre {
 	struct perf_craft craft;
 	double d4_m4;
@@ -222,11 +223,11 @@ struct prop_pre {
 };
 
 static void
-prop_pre(const struct catalog_prop *pr, const struct parts_aim *aim,
-         double rho, struct prop_pre *pp)
+prop_pre(const struct catalog_motor *m, const struct catalog_prop *pr,
+         const struct parts_aim *aim, double rho, struct prop_pre *pp)
 {
 	memset(pp, 0, sizeof *pp);
-	option_prop(NULL, pr, aim, &pp->craft);
+	option_prop(m, pr, aim, &pp->craft);
 	double d = pp->craft.prop_diameter_m;
 	pp->d4_m4 = pow(d, 4.0);
 	pp->kq_nm_s2 = prop_kq_nm_s2(&pp->craft.prop, rho, d);
@@ -254,10 +255,10 @@ motor_pre(const struct catalog_motor *m, struct motor_pre *mp)
 	mp->decay_full = motor_temp_decay(m->mass_kg, PERF_FULL_THROTTLE_S);
 }
 
-/* Option m (with its motor_pre mp) on propeller pr (with its prop_pre pp), or an integrated
- * system (pr and pp NULL), on a bus of cells: its full-throttle point and
- * its hover power at the continuous design's mass.  False when the motor
- * cannot turn the propeller. */
+/* Option m (with its motor_pre mp) on propeller pr (with its prop_pre
+ * pp), or an integrated system (pr and pp NULL), on a bus of cells: its
+ * full-throttle point and its hover power at the continuous design's mass.
+ * False when the motor cannot turn the propeller. */
 static bool
 parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
             const struct motor_pre *mp, const struct catalog_prop *pr,
@@ -278,23 +279,20 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 	c->motor_max_current_a = m->max_current_a;
 	c->motor_max_power_w = m->max_power_w;
 	double rho = p->air.rho_kg_m3;
-	double kq_prop;
-	if (pp != NULL) {
-		c->prop_diameter_m = pp->craft.prop_diameter_m;
-		c->prop_pitch_m = pp->craft.prop_pitch_m;
-		c->prop_blades = pp->craft.prop_blades;
-		c->prop_max_rpm = pp->craft.prop_max_rpm;
-		c->prop = pp->craft.prop;
-		o->d4_m4 = pp->d4_m4;
-		kq_prop = pp->kq_nm_s2;
-	} else {
-		option_prop(m, pr, aim, c);
-		o->d4_m4 = pow(c->prop_diameter_m, 4.0);
-		kq_prop = prop_kq_nm_s2(&c->prop, rho, c->prop_diameter_m);
+	struct prop_pre own;
+	if (pp == NULL) {
+		prop_pre(m, pr, aim, rho, &own);
+		pp = &own;
 	}
+	c->prop_diameter_m = pp->craft.prop_diameter_m;
+	c->prop_pitch_m = pp->craft.prop_pitch_m;
+	c->prop_blades = pp->craft.prop_blades;
+	c->prop_max_rpm = pp->craft.prop_max_rpm;
+	c->prop = pp->craft.prop;
+	o->d4_m4 = pp->d4_m4;
 	c->cells = cells;
 
-	double kq = aim->install_factor * kq_prop;
+	double kq = aim->install_factor * pp->kq_nm_s2;
 	double t_w = p->ambient_c + RANK_WINDING_RISE_K;
 	double v = (double)cells * p->chem->v_nom * PARTS_LOADED_BUS;
 	struct motor_point full;
@@ -632,7 +630,7 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 			}
 			/* The KV whose loaded full-throttle speed gives the thrust. */
 			struct prop_pre pp;
-			prop_pre(pr, &x->aim, rho, &pp);
+			prop_pre(NULL, pr, &x->aim, rho, &pp);
 			double n_req = sqrt(t_req / (pp.craft.prop.ct * rho * pp.d4_m4));
 			double kv_req = S_PER_MIN * n_req / (v_bus * LOADED_SPEED);
 			for (int i = 0; i < n_m; i++) {

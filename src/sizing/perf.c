@@ -348,7 +348,6 @@ figures(struct perf_ctx *x, const struct res_run *run, struct res_perf *pf)
 	double used = 1.0 - run->end_soc;
 	pf->mixed_time_s = used > 0.0 && run->flight_time_s > 0.0
 	    ? run->flight_time_s * (1.0 - reserve) / used : 0.0;
-	pf->max_speed_ms = run->v_max_ms;
 	pf->max_climb_ms = max_climb_ms(x, mass, full);
 	double ratio = n_rot * full->thrust_n / weight_n;
 	pf->max_tilt_deg = ratio > 1.0 ? acos(1.0 / ratio) * 180.0 / M_PI : 0.0;
@@ -366,7 +365,6 @@ figures(struct perf_ctx *x, const struct res_run *run, struct res_perf *pf)
 		    / weight_n;
 		pf->motor_out_holds = pf->motor_out_ratio >= 1.0;
 	}
-	pf->landing_soc = run->end_soc;
 }
 
 /* The masses, battery and structure of the craft into run. */
