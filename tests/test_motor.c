@@ -120,6 +120,26 @@ motor_estimates_should_follow_the_catalogue_fit(void **state)
 }
 
 static void
+motor_stator_estimates_should_follow_their_fit(void **state)
+{
+	(void)state;
+	/* A 2207 of 1750 KV: R = 1e-3 exp(29.286 - 1.719 ln 1750
+	 * - 3.210 ln 22 - 1.108 ln 7) = 0.0791444 Ω, I0 = exp(-23.432
+	 * + 1.655 ln 1750 + 2.991 ln 22 + 0.878 ln 7) = 0.887201 A (the
+	 * catalogue's XING2 2207 1855 KV publishes 50 mΩ; the mass law says
+	 * 112 mΩ for it). */
+	assert_rel(motor_estimate_resistance_stator_ohm(1750.0, 22.0, 7.0),
+	    7.914443034780e-02, 1e-9);
+	assert_rel(motor_estimate_no_load_stator_a(1750.0, 22.0, 7.0),
+	    8.872009293956e-01, 1e-9);
+	/* A wider or taller stator of the same KV: more copper, less R. */
+	assert_true(motor_estimate_resistance_stator_ohm(1750.0, 23.0, 7.0)
+	    < motor_estimate_resistance_stator_ohm(1750.0, 22.0, 7.0));
+	assert_true(motor_estimate_resistance_stator_ohm(1750.0, 22.0, 8.0)
+	    < motor_estimate_resistance_stator_ohm(1750.0, 22.0, 7.0));
+}
+
+static void
 prop_estimate_should_follow_the_catalogue_fit(void **state)
 {
 	(void)state;
@@ -168,6 +188,7 @@ main(void)
 		cmocka_unit_test(motor_at_voltage_should_refuse_a_voltage_below_the_no_load_drop),
 		cmocka_unit_test(motor_winding_should_follow_its_losses_through_the_estimated_thermal_path),
 		cmocka_unit_test(motor_estimates_should_follow_the_catalogue_fit),
+		cmocka_unit_test(motor_stator_estimates_should_follow_their_fit),
 		cmocka_unit_test(prop_estimate_should_follow_the_catalogue_fit),
 		cmocka_unit_test(prop_thrust_and_power_should_scale_with_n_and_d),
 	};

@@ -3,6 +3,7 @@
 #include "core/catalog.h"
 
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -207,3 +208,14 @@ const struct catalog_frame *
 catalog_find_frame(const struct catalog *c, const char *id) { return item_by_id(c, CATALOG_FRAME, id); }
 const struct catalog_avionics *
 catalog_find_avionics(const struct catalog *c, const char *id) { return item_by_id(c, CATALOG_AVIONICS, id); }
+
+bool
+catalog_motor_stator_mm(const struct catalog_motor *m, double *d_mm,
+                        double *h_mm)
+{
+	char tail;
+	if (m->stator == NULL
+	    || sscanf(m->stator, "%lfx%lf%c", d_mm, h_mm, &tail) != 2)
+		return false;
+	return *d_mm > 0.0 && *h_mm > 0.0 && *d_mm < 1000.0 && *h_mm < 1000.0;
+}

@@ -185,6 +185,11 @@ size_t catalog_n_frames(const struct catalog *c);
 size_t catalog_n_avionics(const struct catalog *c);
 
 const struct catalog_motor *catalog_motor(const struct catalog *c, size_t i);
+
+/* The stator's diameter and height in mm from m->stator ("22x07"); false
+ * when the catalogue gives none or a form this does not read. */
+bool catalog_motor_stator_mm(const struct catalog_motor *m, double *d_mm,
+                             double *h_mm);
 const struct catalog_prop *catalog_prop(const struct catalog *c, size_t i);
 const struct catalog_battery *catalog_battery(const struct catalog *c, size_t i);
 const struct catalog_esc *catalog_esc(const struct catalog *c, size_t i);

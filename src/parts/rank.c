@@ -246,10 +246,10 @@ struct motor_pre {
 static void
 motor_pre(const struct catalog_motor *m, struct motor_pre *mp)
 {
-	mp->r_ohm = m->resistance_ohm > 0.0 ? m->resistance_ohm
-	    : motor_estimate_resistance_ohm(m->kv_rpm_per_v, m->mass_kg);
-	mp->i0_a = m->no_load_current_a > 0.0 ? m->no_load_current_a
-	    : motor_estimate_no_load_a(m->kv_rpm_per_v, m->mass_kg);
+	double est_r_ohm, est_i0_a;
+	screen_motor_estimates(m, &est_r_ohm, &est_i0_a);
+	mp->r_ohm = m->resistance_ohm > 0.0 ? m->resistance_ohm : est_r_ohm;
+	mp->i0_a = m->no_load_current_a > 0.0 ? m->no_load_current_a : est_i0_a;
 	mp->estimated = !(m->resistance_ohm > 0.0 && m->no_load_current_a > 0.0);
 	mp->rth_k_w = motor_thermal_resistance_k_w(m->mass_kg);
 	mp->decay_full = motor_temp_decay(m->mass_kg, PERF_FULL_THROTTLE_S);

@@ -21,6 +21,21 @@ off_trend(double ratio, double factor)
 	return !(ratio >= 1.0 / factor && ratio <= factor);
 }
 
+void
+screen_motor_estimates(const struct catalog_motor *m, double *r_ohm,
+                       double *i0_a)
+{
+	double d_mm, h_mm;
+	if (catalog_motor_stator_mm(m, &d_mm, &h_mm)) {
+		*r_ohm = motor_estimate_resistance_stator_ohm(m->kv_rpm_per_v,
+		    d_mm, h_mm);
+		*i0_a = motor_estimate_no_load_stator_a(m->kv_rpm_per_v, d_mm, h_mm);
+	} else {
+		*r_ohm = motor_estimate_resistance_ohm(m->kv_rpm_per_v, m->mass_kg);
+		*i0_a = motor_estimate_no_load_a(m->kv_rpm_per_v, m->mass_kg);
+	}
+}
+
 const char *
 screen_motor(const struct catalog_motor *m, char *why, size_t n)
 {
@@ -47,20 +62,22 @@ screen_motor(const struct catalog_motor *m, char *why, size_t n)
 			return why;
 		}
 	}
+	double est_r_ohm, est_i0_a;
+	screen_motor_estimates(m, &est_r_ohm, &est_i0_a);
 	if (m->resistance_ohm > 0.0) {
-		double est = motor_estimate_resistance_ohm(m->kv_rpm_per_v, m->mass_kg);
+		double est = est_r_ohm;
 		if (off_trend(m->resistance_ohm / est, SCREEN_RI_FACTOR)) {
 			snprintf(why, n, "resistance_mohm: %.1f mOhm is %.2f x the "
-			    "catalogue's trend for its KV and mass",
+			    "catalogue's trend for its KV and size",
 			    m->resistance_ohm * 1000.0, m->resistance_ohm / est);
 			return why;
 		}
 	}
 	if (m->no_load_current_a > 0.0) {
-		double est = motor_estimate_no_load_a(m->kv_rpm_per_v, m->mass_kg);
+		double est = est_i0_a;
 		if (off_trend(m->no_load_current_a / est, SCREEN_RI_FACTOR)) {
 			snprintf(why, n, "no_load_current_a: %.2f A is %.2f x the "
-			    "catalogue's trend for its KV and mass",
+			    "catalogue's trend for its KV and size",
 			    m->no_load_current_a, m->no_load_current_a / est);
 			return why;
 		}

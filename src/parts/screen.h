@@ -39,6 +39,13 @@ const char *screen_prop(const struct catalog_prop *p, char *why, size_t n);
 const char *screen_battery(const struct catalog_battery *b, char *why, size_t n);
 const char *screen_esc(const struct catalog_esc *e, char *why, size_t n);
 
+/* A motor's winding resistance and no-load current as the catalogue's
+ * fits estimate them (physics/motor.h): from the stator where the entry
+ * names one, else from the mass.  Used where the entry publishes none,
+ * and to screen what it publishes. */
+void screen_motor_estimates(const struct catalog_motor *m, double *r_ohm,
+                            double *i0_a);
+
 /* NULL when none of the numbers the parts search sizes on is listed in
  * the entry's `uncertain` (the catalogue's own doubt, README "Entry
  * format"), else the first such key, written into why.  The search builds

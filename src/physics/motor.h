@@ -92,5 +92,11 @@ double motor_temp_step_from(double rth_k_w, double decay, double temp_c,
  * gives the fit and its scatter). */
 double motor_estimate_resistance_ohm(double kv_rpm_per_v, double mass_kg);
 double motor_estimate_no_load_a(double kv_rpm_per_v, double mass_kg);
+/* The same from the stator's diameter and height (mm): tighter, used
+ * wherever the catalogue names the stator. */
+double motor_estimate_resistance_stator_ohm(double kv_rpm_per_v, double d_mm,
+                                            double h_mm);
+double motor_estimate_no_load_stator_a(double kv_rpm_per_v, double d_mm,
+                                       double h_mm);
 
 #endif
