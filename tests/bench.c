@@ -18,7 +18,9 @@
  *   solved by `AEROEVAL solve [--db DB]`.  Prints how many size
  *   continuously, how many of those close on real parts (a design of
  *   record with no violation of its own), the closed-vs-continuous takeoff
- *   mass gap (median, median of its size, worst) and the failures by code.
+ *   mass gap (median, median of its size, worst), the gap split by mass
+ *   line (each line's median share of the continuous takeoff mass) and
+ *   the failures by code.
  *   With CLOSURE_LIST=1 it also lists every mission that does not close.
  *   Deterministic: the same lines for the same SEED, binary and catalogue.
  *
@@ -175,9 +177,24 @@ grow_catalog(const char *src, const char *dst, int factor)
 
 #define CLOSURE_MAX_CODES 32
 
+/* The mass-breakdown lines of result.json the gap is split into, with the
+ * names the report prints. */
+static const char *const closure_part_key[] = {
+	"motor_mass_kg", "prop_mass_kg", "battery_mass_kg", "esc_mass_kg",
+	"wiring_mass_kg", "frame_mass_kg", "arm_mass_kg", "avionics_mass_kg",
+	"other_mass_kg", "role_aux_mass_kg",
+};
+static const char *const closure_part_name[] = {
+	"motors", "propellers", "battery", "ESCs", "harness and connectors",
+	"frame", "arms", "avionics", "body and equipment", "role hardware",
+};
+#define CLOSURE_PARTS (sizeof closure_part_key / sizeof closure_part_key[0])
+
 struct closure {
 	int n_missions, n_continuous, n_closed;
 	double *gap;                  /* closed / continuous - 1, per closure */
+	double *part_gap[CLOSURE_PARTS]; /* each line's record - continuous,
+	                                    over the continuous takeoff mass */
 	char code[CLOSURE_MAX_CODES][48];
 	int n_code[CLOSURE_MAX_CODES];
 	int n_codes;
@@ -278,6 +295,14 @@ closure_record(struct closure *c, const char *text, const char *name,
 		}
 	}
 	if (buildable && failed == 0 && m_cont > 0.0) {
+		for (size_t k = 0; k < CLOSURE_PARTS; k++) {
+			double rec_kg = cJSON_GetNumberValue(cJSON_GetObjectItemCaseSensitive(
+			    rec, closure_part_key[k]));
+			double cont_kg = cJSON_GetNumberValue(cJSON_GetObjectItemCaseSensitive(
+			    custom, closure_part_key[k]));
+			c->part_gap[k][c->n_closed] = isfinite(rec_kg - cont_kg)
+			    ? (rec_kg - cont_kg) / m_cont : 0.0;
+		}
 		c->gap[c->n_closed++] = m_rec / m_cont - 1.0;
 	} else if (list) {
 		char *m = cJSON_PrintUnformatted(mission);
@@ -294,6 +319,13 @@ cmp_double(const void *a, const void *b)
 	return (x > y) - (x < y);
 }
 
+/* The median of n sorted values (n >= 1). */
+static double
+median_sorted(const double *v, int n)
+{
+	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
 static int
 closure_report(uint64_t seed, int n, const char *bin, const char *db)
 {
@@ -305,6 +337,8 @@ closure_report(uint64_t seed, int n, const char *bin, const char *db)
 	struct closure c;
 	memset(&c, 0, sizeof c);
 	c.gap = calloc((size_t)n, sizeof *c.gap);
+	for (size_t k = 0; k < CLOSURE_PARTS; k++)
+		c.part_gap[k] = calloc((size_t)n, sizeof *c.part_gap[k]);
 	bool list = getenv("CLOSURE_LIST") != NULL;
 	uint64_t s = seed * 0x9E3779B97F4A7C15u + 1;
 	int rc = 0;
@@ -341,14 +375,35 @@ closure_report(uint64_t seed, int n, const char *bin, const char *db)
 		}
 		qsort(c.gap, (size_t)c.n_closed, sizeof *c.gap, cmp_double);
 		qsort(abs_gap, (size_t)c.n_closed, sizeof *abs_gap, cmp_double);
-		int k = c.n_closed;
-		double med = k % 2 ? c.gap[k / 2] : 0.5 * (c.gap[k / 2 - 1] + c.gap[k / 2]);
-		double med_abs = k % 2 ? abs_gap[k / 2]
-		    : 0.5 * (abs_gap[k / 2 - 1] + abs_gap[k / 2]);
+		double med = median_sorted(c.gap, c.n_closed);
+		double med_abs = median_sorted(abs_gap, c.n_closed);
 		printf("closed vs continuous takeoff mass: median %+.1f %%, median "
 		    "|gap| %.1f %%, worst %+.1f %%\n", 100.0 * med, 100.0 * med_abs,
 		    100.0 * worst);
 		free(abs_gap);
+		/* Where the gap sits: each mass line's median share of the
+		 * continuous takeoff mass, the largest first. */
+		double part_med[CLOSURE_PARTS];
+		bool shown[CLOSURE_PARTS] = { false };
+		for (size_t k = 0; k < CLOSURE_PARTS; k++) {
+			qsort(c.part_gap[k], (size_t)c.n_closed, sizeof *c.part_gap[k],
+			    cmp_double);
+			part_med[k] = median_sorted(c.part_gap[k], c.n_closed);
+		}
+		printf("gap by mass line (record - continuous, median, of the "
+		    "continuous takeoff mass):");
+		for (size_t done = 0; done < CLOSURE_PARTS; done++) {
+			size_t best = CLOSURE_PARTS;
+			for (size_t k = 0; k < CLOSURE_PARTS; k++)
+				if (!shown[k] && (best == CLOSURE_PARTS
+				    || fabs(part_med[k]) > fabs(part_med[best])))
+					best = k;
+			shown[best] = true;
+			if (fabs(part_med[best]) >= 0.0005)
+				printf("%s %s %+.1f %%", done ? "," : "",
+				    closure_part_name[best], 100.0 * part_med[best]);
+		}
+		printf("\n");
 	}
 	/* Failures by code, most first (ties by name: deterministic). */
 	printf("failures by code (missions sized continuously but not closed):");
@@ -364,6 +419,8 @@ closure_report(uint64_t seed, int n, const char *bin, const char *db)
 	}
 	printf("%s\n", c.n_codes ? "" : " none");
 	free(c.gap);
+	for (size_t k = 0; k < CLOSURE_PARTS; k++)
+		free(c.part_gap[k]);
 	return rc;
 }
 
