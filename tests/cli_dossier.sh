@@ -118,6 +118,17 @@ for f in examples/*.json; do
 			sh -c "! grep -Eq 'Downwash \(|Downwash,' '$d/all.txt'"
 	fi
 
+	# The cover's gap sentence says the right way round (+ heavier,
+	# − lighter), names the mass lines that carry the gap and closes.
+	if grep -q '"buildable": true' "$d/result.json"; then
+		check "dossier_${n}_cover_gap_names_its_lines" \
+			awk '/^What the physics/ { on = 1 } on { t = t " " $0 } on && /^$/ { on = 0 }
+			     END { ok = (t ~ /\(\+[0-9.]+ %\) heavier/ || t ~ /\(−[0-9.]+ %\) lighter/) &&
+			               t ~ /lines that differ most: [a-zA-Z ]+ (\+|−)[0-9.]+ kg/ &&
+			               t ~ /every line\)\. *$/
+			           exit !ok }' "$d/cover.txt"
+	fi
+
 	# The verdict's sentences end before the next begins.
 	check "dossier_${n}_verdict_sentences_are_closed" \
 		sh -c "! grep -Eq '[a-z0-9)] Do not build' '$d/all.txt'"

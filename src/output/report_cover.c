@@ -120,6 +120,46 @@ key_row(struct rep *rp, struct doc_table *t, const char *label, const char *rec,
 		doc_table_cell(t, DOC_CELL_NORMAL, "%s", cont);
 }
 
+/* Append to sb where the record's mass departs from the continuous
+ * design's: the (up to) three mass lines that differ most, largest
+ * first, then a full stop.  Real parts are not the continuous laws'
+ * median parts: the reader sees which lines carry the difference. */
+static void
+gap_lines(struct strbuf *sb, const struct res_mass *rec, const struct res_mass *c)
+{
+	const struct { const char *name; double dkg; } line[] = {
+		{ "motors", rec->motor_kg - c->motor_kg },
+		{ "propellers", rec->prop_kg - c->prop_kg },
+		{ "battery", rec->battery_kg - c->battery_kg },
+		{ "ESCs", rec->esc_kg - c->esc_kg },
+		{ "power harness", rec->wiring_kg - c->wiring_kg },
+		{ "frame and arms", rec->frame_kg + rec->arm_kg - c->frame_kg - c->arm_kg },
+		{ "avionics", rec->avionics_kg - c->avionics_kg },
+		{ "body and equipment", rec->other_kg - c->other_kg },
+		{ "role hardware", rec->role_aux_kg - c->role_aux_kg },
+	};
+	enum { N_LINES = sizeof line / sizeof line[0], SHOWN = 3 };
+	bool used[N_LINES] = { false };
+	char b[48];
+	int n = 0;
+	for (int k = 0; k < SHOWN; k++) {
+		int best = -1;
+		for (int i = 0; i < N_LINES; i++)
+			if (!used[i] && (best < 0 || fabs(line[i].dkg) > fabs(line[best].dkg)))
+				best = i;
+		/* Differences under a gram, or under 1 % of the largest, are noise. */
+		if (best < 0 || fabs(line[best].dkg) < 0.0005
+		    || (n > 0 && fabs(line[best].dkg) < 0.01 * fabs(line[0].dkg)))
+			break;
+		used[best] = true;
+		strbuf_printf(sb, "%s %s %s%s" NBSP "kg", n == 0 ? "; the lines that differ most:" : ",",
+		              line[best].name, line[best].dkg >= 0.0 ? "+" : "−",
+		              report_num(b, sizeof b, fabs(line[best].dkg), 3));
+		n++;
+	}
+	strbuf_append_str(sb, n > 0 ? " (the mass breakdown lists every line)." : ".");
+}
+
 static void
 cover_key_figures(struct rep *rp)
 {
@@ -174,12 +214,14 @@ cover_key_figures(struct rep *rp)
 	doc_table_clear(&t);
 	if (rp->buildable) {
 		double dm = mtow - c->mass.total_kg;
-		doc_paragraph(rp->d, report_sfmt(&s1, "What the physics asks for (continuous optimum) weighs "
-		              "%s" NBSP "kg; the design of record is %s" NBSP "kg (%s%s" NBSP "%%) %s, because "
-		              "real parts come in catalogue sizes.", report_num(b1, sizeof b1, c->mass.total_kg, 3),
-		              report_num(b2, sizeof b2, fabs(dm), 3), dm >= 0 ? "+" : "−",
-		              report_num(b3, sizeof b3, fabs(100.0 * report_div(dm, c->mass.total_kg)), 1),
-		              dm >= 0 ? "heavier" : "lighter"));
+		report_sfmt(&s1, "What the physics asks for (continuous optimum) weighs %s" NBSP "kg; the "
+		            "design of record is %s" NBSP "kg (%s%s" NBSP "%%) %s",
+		            report_num(b1, sizeof b1, c->mass.total_kg, 3),
+		            report_num(b2, sizeof b2, fabs(dm), 3), dm >= 0 ? "+" : "−",
+		            report_num(b3, sizeof b3, fabs(100.0 * report_div(dm, c->mass.total_kg)), 1),
+		            dm >= 0 ? "heavier" : "lighter");
+		gap_lines(&s1, &rec->mass, &c->mass);
+		doc_paragraph(rp->d, strbuf_str(&s1));
 	}
 	strbuf_free(&s1);
 	strbuf_free(&s2);
