@@ -241,6 +241,63 @@ connector_should_be_the_smallest_rating_that_carries_each_pack(void **state)
 	catalog_free(f.cat);
 }
 
+/* A pack mates only with its own plug's family: that pair is chosen when
+ * the catalogue has it with a mass, whatever its rating (the connector
+ * check then judges the current); else the smallest rating that carries
+ * the current, as for a pack that names no plug. */
+static void
+connector_should_mate_with_the_packs_own_plug(void **state)
+{
+	(void)state;
+	struct catalog_avionics *a = xcalloc(5, sizeof *a);
+	a[0] = avionics("t-xt30", "connector", 3.0, 15.0, "XT30 pair");
+	a[0].part_number = "XT30 (mated pair)";
+	a[1] = avionics("t-xt60", "connector", 0.0, 30.0, "XT60 pair");
+	a[1].part_number = "XT60 (mated pair)";                 /* no mass */
+	a[2] = avionics("t-xt90", "connector", 28.0, 90.0, "XT90 pair");
+	a[2].part_number = "XT90 (mated pair)";
+	a[3] = avionics("t-xt90s", "connector", 30.0, 90.0, "XT90 anti-spark");
+	a[3].part_number = "XT90-S (mated pair, anti-spark)";
+	a[4] = avionics("t-as150", "connector", 24.0, 150.0, "AS150 pair");
+	a[4].part_number = "AS150 (mated pair, anti-spark)";
+	struct catalog *c = catalog_alloc();
+	catalog_adopt(c, CATALOG_AVIONICS, a, 5);
+	catalog_finish(c);
+	struct kit_fixture f;
+	kit_fixture(&f, AF_ENTERPRISE_RUGGED, 1.0, 4, c);
+	struct parts_option o;
+	memset(&o, 0, sizeof o);
+	o.cells = 6;
+	struct catalog_battery b;
+	memset(&b, 0, sizeof b);
+	struct parts_pack pk;
+	memset(&pk, 0, sizeof pk);
+	pk.b = &b;
+	pk.series = 1;
+	pk.parallel = 2;
+	struct parts_kit kit;
+	const struct { const char *plug; double amps; const char *want; bool mates; } t[] = {
+		{ "XT30", 50.0, "t-xt30", true },    /* 25 A a pack on a 15 A plug: its own */
+		{ "xt90", 20.0, "t-xt90", true },    /* the XT30 would carry it, but does not mate */
+		{ "XT90S", 20.0, "t-xt90s", true },  /* "XT90-S" is the same family */
+		{ "AS150/XT150", 20.0, "t-as150", true },
+		/* 10 A a pack: the smallest rating that carries it. */
+		{ "XT60", 20.0, "t-xt30", false },   /* its own family has no mass */
+		{ "smart", 20.0, "t-xt30", false },
+		{ "", 20.0, "t-xt30", false },
+	};
+	for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
+		b.connector = t[i].plug;
+		parts_kit_pick(&f.x, &o, &pk, t[i].amps, &kit);
+		assert_non_null(kit.connector);
+		assert_string_equal(kit.connector->id, t[i].want);
+		assert_int_equal(kit.connector_mates, t[i].mates);
+		assert_int_equal(kit.n_connectors, 2);
+	}
+	parts_kit_free(&f.x);
+	catalog_free(f.cat);
+}
+
 static void
 avionics_should_meet_the_class_need_and_keep_allowances_for_the_rest(void **state)
 {
@@ -556,6 +613,7 @@ main(void)
 		cmocka_unit_test(published_thrust_should_scale_with_density_and_the_bus_squared),
 		cmocka_unit_test(doubt_should_refuse_an_uncertain_number_the_search_sizes_on),
 		cmocka_unit_test(connector_should_be_the_smallest_rating_that_carries_each_pack),
+		cmocka_unit_test(connector_should_mate_with_the_packs_own_plug),
 		cmocka_unit_test(avionics_should_meet_the_class_need_and_keep_allowances_for_the_rest),
 		cmocka_unit_test(frame_kit_should_fit_rotors_wheelbase_class_and_propeller),
 		cmocka_unit_test(price_text_should_say_at_least_and_count_the_unpriced_lines),

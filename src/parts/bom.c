@@ -4,6 +4,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+#include <strings.h>
 
 #include "parts/parts_int.h"
 #include "util/strbuf.h"
@@ -239,10 +240,23 @@ fill_bom(const struct parts_ctx *x, const struct parts_closed *c,
 	const struct parts_kit *kit = &c->kit;
 	double harness_kg = m->wiring_kg - kit->connector_kg;
 	if (kit->connector != NULL) {
-		snprintf(d, sizeof d, "%s, %d per pack, for the %.0f A each pack "
-		    "carries through the mission", kit->connector->description,
-		    kit->n_connectors / (c->pack.series * c->pack.parallel),
-		    kit->sized_for_a / (double)c->pack.parallel);
+		/* The part number names the connector; the line says how it
+		 * meets the pack and what it carries. */
+		/* A smart pack's plug is its maker's own, not re-terminated. */
+		const char *plug = strcasecmp(c->pack.b->connector, "smart") == 0
+		    ? "" : c->pack.b->connector;
+		int per_pack = kit->n_connectors / (c->pack.series * c->pack.parallel);
+		double each_a = kit->sized_for_a / (double)c->pack.parallel;
+		if (kit->connector_mates)
+			snprintf(d, sizeof d, "%d per pack, mating the pack's %s plug; "
+			    "%.0f A per pack through the mission", per_pack, plug, each_a);
+		else if (plug[0] != '\0')
+			snprintf(d, sizeof d, "%d per pack for the %.0f A each pack "
+			    "carries through the mission; the pack's %s plug is "
+			    "re-terminated to it", per_pack, each_a, plug);
+		else
+			snprintf(d, sizeof d, "%d per pack for the %.0f A each pack "
+			    "carries through the mission", per_pack, each_a);
 		bom_catalogue(r, kit->n_connectors, "connector",
 		    kit->connector->id,
 		    kit->connector->manufacturer, kit->connector->part_number, d,

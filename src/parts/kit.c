@@ -27,13 +27,17 @@
  *
  * Connectors.  A pack's own connector is in its published mass; each
  * pack is joined to the harness (or the series lead) by one more mated
- * pair, the catalogue connector with the smallest rating that carries the
- * pack's share of the sustained current and a published mass; several
- * pairs per pack when none carries it alone.  So many small packs cost
- * their connections, which the harness model (one battery lead) omits.
+ * pair.  That pair is the pack's own family where the pack names one the
+ * catalogue has (an XT60 pack mates only with an XT60: the check of its
+ * rating then says whether the pack's plug carries the current); else the
+ * catalogue connector with the smallest rating that carries the pack's
+ * share of the sustained current, several pairs per pack when none carries
+ * it alone.  So many small packs cost their connections, which the
+ * harness model (one battery lead) omits.
  *
  * Parts layer; no I/O.
  */
+#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -221,12 +225,57 @@ lightest(const struct parts_ctx *x, const char *kind, const char *need,
 	return best;
 }
 
+/* The family of a connector's name: its letters and digits, upper case,
+ * up to the first space, "(" or "/" ("XT90-S (mated pair)" and "xt90s"
+ * both read "XT90S"). */
+static void
+connector_family(const char *name, char *out, size_t n)
+{
+	size_t k = 0;
+	for (; *name != '\0' && *name != ' ' && *name != '(' && *name != '/'; name++)
+		if (isalnum((unsigned char)*name) && k + 1 < n)
+			out[k++] = (char)toupper((unsigned char)*name);
+	out[k] = '\0';
+}
+
+/* Does a pack's connector text ("XT60", "AS150/XT150") name the family of
+ * catalogue connector a? */
+static bool
+mates_with(const char *pack_connector, const struct catalog_avionics *a)
+{
+	char want[32], have[32];
+	connector_family(a->part_number, have, sizeof have);
+	if (have[0] == '\0')
+		return false;
+	for (const char *p = pack_connector; *p != '\0'; ) {
+		connector_family(p, want, sizeof want);
+		if (strcmp(want, have) == 0)
+			return true;
+		const char *slash = strchr(p, '/');
+		if (slash == NULL)
+			break;
+		p = slash + 1;
+	}
+	return false;
+}
+
 static void
 pick_connector(const struct parts_ctx *x, double per_pack_a,
-               struct parts_kit *kit, int n_packs)
+               struct parts_kit *kit, int n_packs, const char *pack_connector)
 {
 	const struct catalog_avionics *best = NULL, *largest = NULL;
 	const struct parts_kit_kind *kk = of_kind(x, "connector");
+	/* The pack's own family, one pair per pack (a pack has one plug). */
+	for (int i = 0; pack_connector != NULL && pack_connector[0] != '\0'
+	    && kk != NULL && i < kk->n; i++)
+		if (mates_with(pack_connector, kk->items[i])
+		    && kk->items[i]->max_current_a > 0.0) {
+			kit->connector = kk->items[i];
+			kit->connector_mates = true;
+			kit->n_connectors = n_packs;
+			kit->connector_kg = (double)n_packs * kk->items[i]->mass_kg;
+			return;
+		}
 	for (int i = 0; kk != NULL && i < kk->n; i++) {
 		const struct catalog_avionics *a = kk->items[i];
 		if (!(a->max_current_a > 0.0))
@@ -276,7 +325,8 @@ parts_kit_pick(const struct parts_ctx *x, const struct parts_option *o,
 		}
 	}
 	int n_packs = pk->series * pk->parallel;
-	pick_connector(x, sustained_a / (double)pk->parallel, kit, n_packs);
+	pick_connector(x, sustained_a / (double)pk->parallel, kit, n_packs,
+	    pk->b != NULL ? pk->b->connector : NULL);
 }
 
 /* Does offered kit f fit this aircraft (see parts_kit_frame_fits())? */

@@ -173,6 +173,7 @@ struct parts_kit {
 	                                      when none carries the current */
 	int n_connectors;
 	double connector_kg;               /* all pairs */
+	bool connector_mates;              /* of the pack's own plug's family */
 	double sized_for_a;                /* the sustained battery current the
 	                                      power module and connectors carry */
 };
