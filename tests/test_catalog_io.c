@@ -523,7 +523,7 @@ static const struct edit_case rule_cases[] = {
 	  "DIR/propellers.json:4:188: error: propellers[0].price_date: inconsistent values: "
 	  "null while price_usd is given (a price is dated, and a date needs a price)\n" },
 	{ "escs.json", "\"price_date\": null", "\"price_date\": \"2024\"",
-	  "DIR/escs.json:4:68: error: escs[0].price_date: inconsistent values: given while "
+	  "DIR/escs.json:4:85: error: escs[0].price_date: inconsistent values: given while "
 	  "price_usd is null (a price is dated, and a date needs a price)\n" },
 	{ "propellers.json", "\"2024-01\"", "\"2024-13\"",
 	  "DIR/propellers.json:4:188: error: propellers[0].price_date: invalid date "

@@ -208,7 +208,7 @@ kit_pick(struct kit_fixture *f, double sustained_a, int series, int parallel,
 	memset(&pk, 0, sizeof pk);
 	pk.series = series;
 	pk.parallel = parallel;
-	parts_kit_pick(&f->x, &o, &pk, sustained_a, kit);
+	parts_kit_pick(&f->x, &o, &pk, NULL, sustained_a, kit);
 }
 
 static void
@@ -288,7 +288,7 @@ connector_should_mate_with_the_packs_own_plug(void **state)
 	};
 	for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
 		b.connector = t[i].plug;
-		parts_kit_pick(&f.x, &o, &pk, t[i].amps, &kit);
+		parts_kit_pick(&f.x, &o, &pk, NULL, t[i].amps, &kit);
 		assert_non_null(kit.connector);
 		assert_string_equal(kit.connector->id, t[i].want);
 		assert_int_equal(kit.connector_mates, t[i].mates);
@@ -323,6 +323,49 @@ avionics_should_meet_the_class_need_and_keep_allowances_for_the_rest(void **stat
 	f.spec.airframe_class = AF_CONSUMER_FOLDING;
 	kit_pick(&f, 20.0, 1, 1, &kit);
 	assert_string_equal(kit.part[0]->id, "t-fc-light");
+	parts_kit_free(&f.x);
+	catalog_free(f.cat);
+}
+
+/* An all-in-one ESC board carries the flight controller (and here the
+ * receiver): the kit buys neither again, nor keeps an allowance for them;
+ * a redundant flight controller is never an AIO's. */
+static void
+avionics_should_not_buy_twice_what_the_esc_board_carries(void **state)
+{
+	(void)state;
+	struct kit_fixture f;
+	kit_fixture(&f, AF_MICRO_AIO, 0.1, 4, avionics_catalog());
+	struct parts_option o;
+	memset(&o, 0, sizeof o);
+	o.cells = 4;
+	struct parts_pack pk;
+	memset(&pk, 0, sizeof pk);
+	pk.series = pk.parallel = 1;
+	struct catalog_esc aio;
+	memset(&aio, 0, sizeof aio);
+	aio.carries = "flight_controller,receiver";
+	struct parts_kit bare, kit;
+	parts_kit_pick(&f.x, &o, &pk, NULL, 10.0, &bare);
+	parts_kit_pick(&f.x, &o, &pk, &aio, 10.0, &kit);
+	/* Micro: the light FC and the receiver as parts, the VTX and camera
+	 * as allowances; on the AIO only the allowances stay. */
+	assert_int_equal(bare.n_part, 2);
+	assert_int_equal(bare.n_on_esc, 0);
+	assert_int_equal(kit.n_part, 0);
+	assert_int_equal(kit.n_on_esc, 2);
+	assert_int_equal(kit.n_allowance, bare.n_allowance);
+	assert_rel(kit.avionics_kg, bare.avionics_kg - 0.0080 - 0.0014, 1e-12);
+	/* "receiver" is matched as a whole kind, not inside another word. */
+	aio.carries = "flight_controller,receivers";
+	parts_kit_pick(&f.x, &o, &pk, &aio, 10.0, &kit);
+	assert_int_equal(kit.n_on_esc, 1);
+	/* Enterprise needs a redundant flight controller: bought apart. */
+	f.spec.airframe_class = AF_ENTERPRISE_RUGGED;
+	aio.carries = "flight_controller";
+	parts_kit_pick(&f.x, &o, &pk, &aio, 10.0, &kit);
+	assert_int_equal(kit.n_on_esc, 0);
+	assert_string_equal(kit.part[0]->id, "t-fc-dual");
 	parts_kit_free(&f.x);
 	catalog_free(f.cat);
 }
@@ -615,6 +658,7 @@ main(void)
 		cmocka_unit_test(connector_should_be_the_smallest_rating_that_carries_each_pack),
 		cmocka_unit_test(connector_should_mate_with_the_packs_own_plug),
 		cmocka_unit_test(avionics_should_meet_the_class_need_and_keep_allowances_for_the_rest),
+		cmocka_unit_test(avionics_should_not_buy_twice_what_the_esc_board_carries),
 		cmocka_unit_test(frame_kit_should_fit_rotors_wheelbase_class_and_propeller),
 		cmocka_unit_test(price_text_should_say_at_least_and_count_the_unpriced_lines),
 		cmocka_unit_test(bom_should_order_the_frame_kit_and_avionics_with_prices_and_dates),

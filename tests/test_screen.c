@@ -190,6 +190,37 @@ stator_estimates_should_beat_the_mass_law_on_the_catalogue(void **state)
 	assert_true(err_stator < 0.8 * err_mass);
 }
 
+/* What an ESC board says it carries are avionics kinds the class sets
+ * know, so the kit can leave them out (parts/kit.c). */
+static void
+esc_carries_should_name_known_avionics_kinds(void **state)
+{
+	(void)state;
+	static const char *const kinds[] = { "flight_controller", "receiver",
+		"video_tx" };
+	struct catalog *cat = load_shipped();
+	int n_aio = 0;
+	for (size_t i = 0; i < catalog_n_escs(cat); i++) {
+		const struct catalog_esc *e = catalog_esc(cat, i);
+		if (e->carries == NULL || e->carries[0] == '\0')
+			continue;
+		n_aio++;
+		char list[128];
+		snprintf(list, sizeof list, "%s", e->carries);
+		for (char *save = NULL, *k = strtok_r(list, ",", &save); k != NULL;
+		    k = strtok_r(NULL, ",", &save)) {
+			bool known = false;
+			for (size_t j = 0; j < sizeof kinds / sizeof kinds[0]; j++)
+				known |= strcmp(k, kinds[j]) == 0;
+			if (!known)
+				print_error("%s: carries unknown kind \"%s\"\n", e->id, k);
+			assert_true(known);
+		}
+	}
+	catalog_free(cat);
+	assert_true(n_aio >= 40);
+}
+
 int
 main(void)
 {
@@ -199,6 +230,7 @@ main(void)
 		cmocka_unit_test(screen_motor_should_refuse_power_its_current_cannot_carry),
 		cmocka_unit_test(screen_shipped_catalogue_should_flag_every_implausible_entry),
 		cmocka_unit_test(stator_should_read_diameter_by_height),
+		cmocka_unit_test(esc_carries_should_name_known_avionics_kinds),
 		cmocka_unit_test(stator_estimates_should_beat_the_mass_law_on_the_catalogue),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);

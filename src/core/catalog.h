@@ -109,6 +109,9 @@ struct catalog_esc {
 	int cells_min, cells_max;
 	double mass_kg;            /* the whole board, all channels (needed) */
 	int channels;              /* 1 single ESC, 4 for a 4-in-1 board (needed) */
+	const char *carries;       /* avionics kinds on the board besides the
+	                              ESCs, comma-separated ("flight_controller,
+	                              receiver" on an all-in-one board), "" */
 };
 
 struct catalog_frame {

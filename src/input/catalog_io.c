@@ -175,6 +175,7 @@ static const struct field esc_fields[] = {
 	INT(E, "cells_max", cells_max, false),
 	NUM(E, "mass_g", mass_kg, G_TO_KG, "g", true),
 	INT(E, "channels", channels, true),
+	TEXT(E, "carries", carries, false),
 };
 #undef E
 

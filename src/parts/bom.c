@@ -43,6 +43,28 @@ source_url(const char *source, char *out, size_t n)
 	out[len] = '\0';
 }
 
+/* An ESC board's `carries` list in words: "flight controller, receiver
+ * and video transmitter". */
+static const char *
+on_board_text(const char *carries, char *buf, size_t size)
+{
+	static const struct { const char *kind, *words; } names[] = {
+		{ "flight_controller", "flight controller" },
+		{ "receiver", "receiver" },
+		{ "video_tx", "video transmitter" },
+	};
+	const char *have[3];
+	int n = 0;
+	for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
+		if (strstr(carries, names[i].kind) != NULL)
+			have[n++] = names[i].words;
+	buf[0] = '\0';
+	for (int i = 0; i < n; i++)
+		append(buf, size, "%s%s", i == 0 ? "" : i == n - 1 ? " and " : ", ",
+		    have[i]);
+	return buf;
+}
+
 static void
 part_common(struct res_part *rp, const char *id, const char *manufacturer,
             const char *part_number, double price_usd, const char *price_date,
@@ -113,6 +135,11 @@ fill_parts(const struct parts_ctx *x, const struct parts_closed *c,
 			append(rp->description, sizeof rp->description, ", 4-in-1");
 		if (e->cells_max > 0)
 			append(rp->description, sizeof rp->description, ", up to %dS", e->cells_max);
+		/* An all-in-one board: what the kit then does not buy apart. */
+		char on_board[96];
+		if (c->kit.n_on_esc > 0)
+			append(rp->description, sizeof rp->description, "; carries the %s",
+			    on_board_text(e->carries, on_board, sizeof on_board));
 		rp->qty = c->n_esc;
 		rp->unit_mass_kg = e->mass_kg;
 	}

@@ -328,7 +328,7 @@ parts_close(const struct parts_ctx *x, const struct parts_option *o,
 	struct solve_result *r = out->r;
 	bool converged = false;
 	for (int pass = 0; pass < 2; pass++) {
-		parts_kit_pick(x, o, pk, sustained, &out->kit);
+		parts_kit_pick(x, o, pk, esc, sustained, &out->kit);
 		if (!close_with_kit(x, &q, o, &out->kit, fixed, c, &converged))
 			return false;
 		struct res_mass *m = &c->mass;
@@ -339,7 +339,7 @@ parts_close(const struct parts_ctx *x, const struct parts_option *o,
 		out->finite = perf_fly(&q, c, &r->closed);
 		double flown = sustained_battery_a(&r->closed);
 		struct parts_kit again;
-		parts_kit_pick(x, o, pk, flown, &again);
+		parts_kit_pick(x, o, pk, esc, flown, &again);
 		bool same = again.connector == out->kit.connector
 		    && again.n_connectors == out->kit.n_connectors
 		    && again.n_part == out->kit.n_part

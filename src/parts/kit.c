@@ -298,10 +298,23 @@ pick_connector(const struct parts_ctx *x, double per_pack_a,
 	    : 0.0;
 }
 
+/* Does the ESC board carry avionics kind (its `carries` list)? */
+static bool
+esc_carries(const struct catalog_esc *esc, const char *kind)
+{
+	if (esc == NULL || esc->carries == NULL)
+		return false;
+	size_t n = strlen(kind);
+	for (const char *p = esc->carries; (p = strstr(p, kind)) != NULL; p += n)
+		if ((p == esc->carries || p[-1] == ',') && (p[n] == '\0' || p[n] == ','))
+			return true;
+	return false;
+}
+
 void
 parts_kit_pick(const struct parts_ctx *x, const struct parts_option *o,
-               const struct parts_pack *pk, double sustained_a,
-               struct parts_kit *kit)
+               const struct parts_pack *pk, const struct catalog_esc *esc,
+               double sustained_a, struct parts_kit *kit)
 {
 	memset(kit, 0, sizeof *kit);
 	kit->sized_for_a = sustained_a;
@@ -312,6 +325,14 @@ parts_kit_pick(const struct parts_ctx *x, const struct parts_option *o,
 		const struct kit_item *it = &kit_items[cls][i];
 		if (it->what == NULL)
 			break;
+		/* An all-in-one board's flight controller, receiver or video
+		 * transmitter is in the ESC's mass and order line: not bought
+		 * twice.  A redundant flight controller is not an AIO's. */
+		if (it->kind != NULL && (it->need == NULL || strcmp(it->need, "any") == 0)
+		    && esc_carries(esc, it->kind)) {
+			kit->n_on_esc++;
+			continue;
+		}
 		const struct catalog_avionics *a = it->kind != NULL
 		    ? lightest(x, it->kind, it->need, o->cells, sustained_a)
 		    : NULL;

@@ -174,6 +174,9 @@ struct parts_kit {
 	int n_connectors;
 	double connector_kg;               /* all pairs */
 	bool connector_mates;              /* of the pack's own plug's family */
+	int n_on_esc;                      /* class items the ESC board carries
+	                                      (an all-in-one board's flight
+	                                      controller, receiver, ...) */
 	double sized_for_a;                /* the sustained battery current the
 	                                      power module and connectors carry */
 };
@@ -235,9 +238,11 @@ void parts_record_checks(const struct parts_ctx *x, const struct parts_closed *c
 /* Indexes the catalogue's avionics by kind into x (parts_kit_free). */
 void parts_kit_init(struct parts_ctx *x);
 void parts_kit_free(struct parts_ctx *x);
+/* The kit of option o on pack pk with ESC esc (NULL: the motors' own, an
+ * integrated system's), sized for sustained_a. */
 void parts_kit_pick(const struct parts_ctx *x, const struct parts_option *o,
-                    const struct parts_pack *pk, double sustained_a,
-                    struct parts_kit *kit);
+                    const struct parts_pack *pk, const struct catalog_esc *esc,
+                    double sustained_a, struct parts_kit *kit);
 /* Does frame kit f fit (kit.c says when)?  custom_kg: the custom arms and
  * centre frame it would replace. */
 bool parts_kit_frame_fits(const struct parts_ctx *x,
