@@ -10,8 +10,9 @@
  *   design still gets its whole dossier, so it costs what a feasible one
  *   does.
  *
- * usage: build/bench closure SEED N AEROEVAL [DB]
- *   The closure report: N plausible missions made from SEED (payload
+ * usage: build/bench closure SEED|LO-HI N AEROEVAL [DB]
+ *   The closure report: N plausible missions made from SEED, or from each
+ *   seed LO to HI (a line per seed, then the whole sample) (payload
  *   0.2-25 kg log-uniform, wheelbase 0.25-2 m, 4, 4, 6 or 8 rotors, hover
  *   600-1800 s, altitude 0-4000 m, one of the roles imaging, delivery,
  *   inspection, mapping or none; every other field its default), each
@@ -326,25 +327,34 @@ median_sorted(const double *v, int n)
 	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-static int
-closure_report(uint64_t seed, int n, const char *bin, const char *db)
+static void
+closure_init(struct closure *c, int cap)
 {
-	char dir[] = "/tmp/aeroeval-closure-XXXXXX";
-	if (n < 1 || mkdtemp(dir) == NULL) {
-		fprintf(stderr, "bench: closure needs N >= 1 and a temporary folder\n");
-		return 2;
-	}
-	struct closure c;
-	memset(&c, 0, sizeof c);
-	c.gap = calloc((size_t)n, sizeof *c.gap);
+	memset(c, 0, sizeof *c);
+	c->gap = calloc((size_t)cap, sizeof *c->gap);
 	for (size_t k = 0; k < CLOSURE_PARTS; k++)
-		c.part_gap[k] = calloc((size_t)n, sizeof *c.part_gap[k]);
+		c->part_gap[k] = calloc((size_t)cap, sizeof *c->part_gap[k]);
+}
+
+static void
+closure_free(struct closure *c)
+{
+	free(c->gap);
+	for (size_t k = 0; k < CLOSURE_PARTS; k++)
+		free(c->part_gap[k]);
+}
+
+/* The n missions of seed, each solved, recorded in c; dir is scratch. */
+static int
+closure_run(uint64_t seed, int n, const char *bin, const char *db,
+            const char *dir, struct closure *c)
+{
 	bool list = getenv("CLOSURE_LIST") != NULL;
 	uint64_t s = seed * 0x9E3779B97F4A7C15u + 1;
 	int rc = 0;
 	for (int i = 0; i < n && rc == 0; i++) {
-		char name[32], path[4200], cmd[8600];
-		snprintf(name, sizeof name, "m%04d", i);
+		char name[48], path[4200], cmd[8600];
+		snprintf(name, sizeof name, "s%llu-m%04d", (unsigned long long)seed, i);
 		snprintf(path, sizeof path, "%s/%s.json", dir, name);
 		cJSON *m = closure_mission(&s);
 		rc = write_json(path, m);
@@ -353,30 +363,53 @@ closure_report(uint64_t seed, int n, const char *bin, const char *db)
 			    bin, db != NULL ? "--db '" : "", db != NULL ? db : "",
 			    db != NULL ? "'" : "", path);
 			char *out = closure_solve(cmd);
-			closure_record(&c, out, name, m, list);
+			closure_record(c, out, name, m, list);
 			free(out);
-			c.n_missions++;
+			c->n_missions++;
 		}
 		remove(path);
 		cJSON_Delete(m);
 	}
-	rmdir(dir);
-	printf("missions %d (seed %llu), sized continuously %d, closed on real "
-	    "parts %d (%.1f %%)\n", c.n_missions, (unsigned long long)seed,
-	    c.n_continuous, c.n_closed, c.n_continuous > 0
-	    ? 100.0 * c.n_closed / c.n_continuous : 0.0);
-	if (c.n_closed > 0) {
-		double *abs_gap = calloc((size_t)c.n_closed, sizeof *abs_gap);
+	return rc;
+}
+
+/* Add src's counts, gaps and failure codes to dst (room for them). */
+static void
+closure_merge(struct closure *dst, const struct closure *src)
+{
+	for (int i = 0; i < src->n_closed; i++) {
+		dst->gap[dst->n_closed + i] = src->gap[i];
+		for (size_t k = 0; k < CLOSURE_PARTS; k++)
+			dst->part_gap[k][dst->n_closed + i] = src->part_gap[k][i];
+	}
+	dst->n_missions += src->n_missions;
+	dst->n_continuous += src->n_continuous;
+	dst->n_closed += src->n_closed;
+	for (int i = 0; i < src->n_codes; i++)
+		for (int j = 0; j < src->n_code[i]; j++)
+			closure_count(dst, src->code[i]);
+}
+
+/* The report's lines for c; seeds names the sample ("seed 1", "seeds 1-3"). */
+static void
+closure_print(struct closure *c, const char *seeds)
+{
+	printf("missions %d (%s), sized continuously %d, closed on real "
+	    "parts %d (%.1f %%)\n", c->n_missions, seeds, c->n_continuous,
+	    c->n_closed, c->n_continuous > 0
+	    ? 100.0 * c->n_closed / c->n_continuous : 0.0);
+	if (c->n_closed > 0) {
+		double *abs_gap = calloc((size_t)c->n_closed, sizeof *abs_gap);
 		double worst = 0.0;
-		for (int i = 0; i < c.n_closed; i++) {
-			abs_gap[i] = fabs(c.gap[i]);
+		for (int i = 0; i < c->n_closed; i++) {
+			abs_gap[i] = fabs(c->gap[i]);
 			if (abs_gap[i] > fabs(worst))
-				worst = c.gap[i];
+				worst = c->gap[i];
 		}
-		qsort(c.gap, (size_t)c.n_closed, sizeof *c.gap, cmp_double);
-		qsort(abs_gap, (size_t)c.n_closed, sizeof *abs_gap, cmp_double);
-		double med = median_sorted(c.gap, c.n_closed);
-		double med_abs = median_sorted(abs_gap, c.n_closed);
+		qsort(c->gap, (size_t)c->n_closed, sizeof *c->gap, cmp_double);
+		qsort(abs_gap, (size_t)c->n_closed, sizeof *abs_gap, cmp_double);
+		double med = median_sorted(c->gap, c->n_closed);
+		double med_abs = median_sorted(abs_gap, c->n_closed);
 		printf("closed vs continuous takeoff mass: median %+.1f %%, median "
 		    "|gap| %.1f %%, worst %+.1f %%\n", 100.0 * med, 100.0 * med_abs,
 		    100.0 * worst);
@@ -386,9 +419,9 @@ closure_report(uint64_t seed, int n, const char *bin, const char *db)
 		double part_med[CLOSURE_PARTS];
 		bool shown[CLOSURE_PARTS] = { false };
 		for (size_t k = 0; k < CLOSURE_PARTS; k++) {
-			qsort(c.part_gap[k], (size_t)c.n_closed, sizeof *c.part_gap[k],
+			qsort(c->part_gap[k], (size_t)c->n_closed, sizeof *c->part_gap[k],
 			    cmp_double);
-			part_med[k] = median_sorted(c.part_gap[k], c.n_closed);
+			part_med[k] = median_sorted(c->part_gap[k], c->n_closed);
 		}
 		printf("gap by mass line (record - continuous, median, of the "
 		    "continuous takeoff mass):");
@@ -407,35 +440,81 @@ closure_report(uint64_t seed, int n, const char *bin, const char *db)
 	}
 	/* Failures by code, most first (ties by name: deterministic). */
 	printf("failures by code (missions sized continuously but not closed):");
-	for (int done = 0; done < c.n_codes; done++) {
+	int shown_codes[CLOSURE_MAX_CODES] = { 0 };
+	for (int done = 0; done < c->n_codes; done++) {
 		int best = -1;
-		for (int i = 0; i < c.n_codes; i++)
-			if (c.n_code[i] > 0 && (best < 0 || c.n_code[i] > c.n_code[best]
-			    || (c.n_code[i] == c.n_code[best]
-			    && strcmp(c.code[i], c.code[best]) < 0)))
+		for (int i = 0; i < c->n_codes; i++)
+			if (!shown_codes[i] && (best < 0 || c->n_code[i] > c->n_code[best]
+			    || (c->n_code[i] == c->n_code[best]
+			    && strcmp(c->code[i], c->code[best]) < 0)))
 				best = i;
-		printf("%s %s %d", done ? "," : "", c.code[best], c.n_code[best]);
-		c.n_code[best] = -c.n_code[best];
+		shown_codes[best] = 1;
+		printf("%s %s %d", done ? "," : "", c->code[best], c->n_code[best]);
 	}
-	printf("%s\n", c.n_codes ? "" : " none");
-	free(c.gap);
-	for (size_t k = 0; k < CLOSURE_PARTS; k++)
-		free(c.part_gap[k]);
+	printf("%s\n", c->n_codes ? "" : " none");
+}
+
+/* The closure report over seeds lo..hi, n missions each: a line per seed
+ * when there are several, then the whole sample. */
+static int
+closure_report(uint64_t lo, uint64_t hi, int n, const char *bin, const char *db)
+{
+	char dir[] = "/tmp/aeroeval-closure-XXXXXX";
+	if (n < 1 || hi < lo || hi - lo >= 100 || mkdtemp(dir) == NULL) {
+		fprintf(stderr, "bench: closure needs N >= 1, at most 100 seeds "
+		    "and a temporary folder\n");
+		return 2;
+	}
+	int n_seeds = (int)(hi - lo + 1);
+	struct closure all;
+	closure_init(&all, n * n_seeds);
+	int rc = 0;
+	for (uint64_t seed = lo; seed <= hi && rc == 0; seed++) {
+		struct closure c;
+		closure_init(&c, n);
+		rc = closure_run(seed, n, bin, db, dir, &c);
+		if (n_seeds > 1)
+			printf("  seed %llu: %d missions, sized continuously %d, closed "
+			    "%d (%.1f %%)\n", (unsigned long long)seed, c.n_missions,
+			    c.n_continuous, c.n_closed, c.n_continuous > 0
+			    ? 100.0 * c.n_closed / c.n_continuous : 0.0);
+		closure_merge(&all, &c);
+		closure_free(&c);
+	}
+	rmdir(dir);
+	char seeds[64];
+	if (n_seeds > 1)
+		snprintf(seeds, sizeof seeds, "seeds %llu-%llu",
+		    (unsigned long long)lo, (unsigned long long)hi);
+	else
+		snprintf(seeds, sizeof seeds, "seed %llu", (unsigned long long)lo);
+	closure_print(&all, seeds);
+	closure_free(&all);
 	return rc;
 }
 
 int
 main(int argc, char **argv)
 {
-	if ((argc == 5 || argc == 6) && strcmp(argv[1], "closure") == 0)
-		return closure_report(strtoull(argv[2], NULL, 10), atoi(argv[3]),
-		    argv[4], argc == 6 ? argv[5] : NULL);
+	if ((argc == 5 || argc == 6) && strcmp(argv[1], "closure") == 0) {
+		/* SEED or a range LO-HI. */
+		char *end;
+		uint64_t lo = strtoull(argv[2], &end, 10), hi = lo;
+		if (*end == '-')
+			hi = strtoull(end + 1, &end, 10);
+		if (*end != '\0') {
+			fprintf(stderr, "bench: closure SEED is a number or LO-HI\n");
+			return 2;
+		}
+		return closure_report(lo, hi, atoi(argv[3]), argv[4],
+		    argc == 6 ? argv[5] : NULL);
+	}
 	if (argc == 5 && strcmp(argv[1], "missions") == 0)
 		return make_missions(strtoull(argv[2], NULL, 10), atoi(argv[3]), argv[4]);
 	if (argc == 5 && strcmp(argv[1], "catalog") == 0 && atoi(argv[4]) >= 1)
 		return grow_catalog(argv[2], argv[3], atoi(argv[4]));
 	fprintf(stderr, "usage: bench missions SEED N DIR\n"
-	                "       bench closure SEED N AEROEVAL [DB]\n"
+	                "       bench closure SEED|LO-HI N AEROEVAL [DB]\n"
 	                "       bench catalog SRC DST FACTOR\n");
 	return 2;
 }

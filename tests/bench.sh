@@ -23,22 +23,24 @@
 #   4. with PAPER_ENGINE set (the paper's engine, as a command that takes a
 #      mission file as its last argument), the instructions of that engine on
 #      every example, beside aeroeval solve.
-#   0. the closure report first (BUILD/bench closure): CLOSURE (200) seeded
-#      plausible missions solved, the share that closes on real parts and
-#      the closed-vs-continuous takeoff-mass gap (docs/validation.md).
-# Environment: BATCH, SEED, FACTOR, CLOSURE, PAPER_ENGINE; NO_BATCH=1 skips
-# part 3.
+#   0. the closure report first (BUILD/bench closure): CLOSURE (200)
+#      plausible missions of each seed of CLOSURE_SEEDS (1-3) solved, the
+#      share that closes on real parts and the closed-vs-continuous
+#      takeoff-mass gap (docs/performance.md).
+# Environment: BATCH, SEED, FACTOR, CLOSURE, CLOSURE_SEEDS, PAPER_ENGINE;
+# NO_BATCH=1 skips part 3.
 build=${1:-build}
 bin="$build/aeroeval"
 BATCH=${BATCH:-1000}
 SEED=${SEED:-1}
 FACTOR=${FACTOR:-4}
 CLOSURE=${CLOSURE:-200}
+CLOSURE_SEEDS=${CLOSURE_SEEDS:-1-3}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-echo "== closure on real parts ($CLOSURE missions, seed $SEED)"
-"$build/bench" closure "$SEED" "$CLOSURE" "$bin" data/catalog || exit 2
+echo "== closure on real parts ($CLOSURE missions per seed, seeds $CLOSURE_SEEDS)"
+"$build/bench" closure "$CLOSURE_SEEDS" "$CLOSURE" "$bin" data/catalog || exit 2
 echo
 
 if ! command -v valgrind >/dev/null 2>&1; then
