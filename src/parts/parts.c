@@ -299,8 +299,9 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 	parts_kit_init(&x);
 
 	/* Rank and close at the continuous design's mass; when no closing
-	 * passes every check and the closest came out heavier, rank again at
-	 * the mass it closed at (the parts a heavier aircraft needs), as the
+	 * passes every check and the closest came out heavier, or landed short
+	 * of the reserve (the battery it lacks, grown as the loop grows it),
+	 * rank again at that mass (the parts a heavier aircraft needs), as the
 	 * continuous loop would.  The trial buffers keep their violations'
 	 * codes only. */
 	struct parts_closed cur = { 0 }, pick = { 0 };
@@ -310,7 +311,16 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 	int n_closed = 0, n_ranked = 0;
 	for (int round = 0; round < PARTS_ROUNDS; round++) {
 		if (round > 0) {
-			double grown = pick.r->closed.mass.total_kg / x.aim.mass_kg;
+			const struct res_run *cl = &pick.r->closed;
+			double grown = cl->mass.total_kg / x.aim.mass_kg;
+			/* Short of the reserve: the energy it lacks, carried as
+			 * battery the loop grows around (aim.growth). */
+			if (cl->end_soc < cl->reserve_soc && cl->mass.total_kg > 0.0) {
+				double lack = (1.0 - cl->end_soc) / (1.0 - cl->reserve_soc) - 1.0;
+				grown = fmax(grown, cl->mass.total_kg / x.aim.mass_kg
+				    * (1.0 + x.aim.growth * lack * cl->mass.battery_kg
+				    / cl->mass.total_kg));
+			}
 			if (pick.failed == 0 || !(grown > 1.0 + PARTS_ROUND_MIN_GROWTH))
 				break;
 			parts_aim_regrow(&x.aim, grown);
