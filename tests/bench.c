@@ -191,8 +191,13 @@ static const char *const closure_part_name[] = {
 };
 #define CLOSURE_PARTS (sizeof closure_part_key / sizeof closure_part_key[0])
 
+/* Continuous takeoff-mass bands the closure is also counted in, kg. */
+static const double closure_band_kg[] = { 5.0, 20.0, 50.0 };
+#define CLOSURE_BANDS (sizeof closure_band_kg / sizeof closure_band_kg[0] + 1)
+
 struct closure {
 	int n_missions, n_continuous, n_closed;
+	int band_sized[CLOSURE_BANDS], band_closed[CLOSURE_BANDS];
 	double *gap;                  /* closed / continuous - 1, per closure */
 	double *part_gap[CLOSURE_PARTS]; /* each line's record - continuous,
 	                                    over the continuous takeoff mass */
@@ -279,6 +284,10 @@ closure_record(struct closure *c, const char *text, const char *name,
 	c->n_continuous++;
 	double m_cont = cJSON_GetNumberValue(
 	    cJSON_GetObjectItemCaseSensitive(custom, "total_mass_kg"));
+	size_t band = 0;
+	while (band + 1 < CLOSURE_BANDS && !(m_cont < closure_band_kg[band]))
+		band++;
+	c->band_sized[band]++;
 	const cJSON *rec = cJSON_GetObjectItemCaseSensitive(r, "design_of_record");
 	double m_rec = cJSON_GetNumberValue(
 	    cJSON_GetObjectItemCaseSensitive(rec, "total_mass_kg"));
@@ -305,6 +314,7 @@ closure_record(struct closure *c, const char *text, const char *name,
 			    ? (rec_kg - cont_kg) / m_cont : 0.0;
 		}
 		c->gap[c->n_closed++] = m_rec / m_cont - 1.0;
+		c->band_closed[band]++;
 	} else if (list) {
 		char *m = cJSON_PrintUnformatted(mission);
 		printf("  open %s %s\n", name, m != NULL ? m : "");
@@ -382,6 +392,10 @@ closure_merge(struct closure *dst, const struct closure *src)
 		for (size_t k = 0; k < CLOSURE_PARTS; k++)
 			dst->part_gap[k][dst->n_closed + i] = src->part_gap[k][i];
 	}
+	for (size_t b = 0; b < CLOSURE_BANDS; b++) {
+		dst->band_sized[b] += src->band_sized[b];
+		dst->band_closed[b] += src->band_closed[b];
+	}
 	dst->n_missions += src->n_missions;
 	dst->n_continuous += src->n_continuous;
 	dst->n_closed += src->n_closed;
@@ -398,6 +412,17 @@ closure_print(struct closure *c, const char *seeds)
 	    "parts %d (%.1f %%)\n", c->n_missions, seeds, c->n_continuous,
 	    c->n_closed, c->n_continuous > 0
 	    ? 100.0 * c->n_closed / c->n_continuous : 0.0);
+	printf("closed by continuous takeoff mass:");
+	for (size_t b = 0; b < CLOSURE_BANDS; b++) {
+		if (b == 0)
+			printf(" below %.0f kg", closure_band_kg[0]);
+		else if (b + 1 == CLOSURE_BANDS)
+			printf(", %.0f kg and over", closure_band_kg[b - 1]);
+		else
+			printf(", %.0f-%.0f kg", closure_band_kg[b - 1], closure_band_kg[b]);
+		printf(" %d of %d", c->band_closed[b], c->band_sized[b]);
+	}
+	printf("\n");
 	if (c->n_closed > 0) {
 		double *abs_gap = calloc((size_t)c->n_closed, sizeof *abs_gap);
 		double worst = 0.0;
