@@ -114,9 +114,9 @@ sweep_speed_ms(int i)
 	return MISSION_SWEEP_V0_MS + MISSION_SWEEP_STEP_MS * (double)i;
 }
 
-/* Past the thrust or pitch limit at this operating point? */
-static bool
-sweep_over(const struct mission_power *p, double max_thrust_per_rotor_n)
+bool
+mission_beyond_limits(const struct mission_power *p,
+                      double max_thrust_per_rotor_n)
 {
 	return p->thrust_per_rotor_n > max_thrust_per_rotor_n
 	    || p->pitch_deg > MISSION_PITCH_MAX_DEG;
@@ -144,7 +144,7 @@ mission_speed_sweep(const struct mission_model *m, double mass_kg,
 			power_w[n] = p.electrical_w;
 			n++;
 		}
-		bool over = sweep_over(&p, max_thrust_per_rotor_n);
+		bool over = mission_beyond_limits(&p, max_thrust_per_rotor_n);
 		if (over && !limited) {
 			limited = true;
 			*v_max_ms = v - MISSION_SWEEP_STEP_MS;
@@ -174,7 +174,7 @@ memo_at(struct sweep_memo *s, int i)
 	struct mission_power p;
 	phase_power(s->m, s->mass_kg, 0.0, sweep_speed_ms(i), s->s_fwd_m2, &p);
 	s->power_w[i] = p.electrical_w;
-	s->over[i] = sweep_over(&p, s->max_thrust_n);
+	s->over[i] = mission_beyond_limits(&p, s->max_thrust_n);
 }
 
 /* The tests the search bisects on, each monotone in i on the grid: past

@@ -71,6 +71,11 @@ void mission_power(const struct mission_model *m, double mass_kg,
 void mission_peak_power(const struct mission_model *m, double thrust_per_rotor_n,
                         struct mission_power *out);
 
+/* Is this operating point past max_thrust_per_rotor_n or the pitch limit
+ * MISSION_PITCH_MAX_DEG (the speed sweep's limits)? */
+bool mission_beyond_limits(const struct mission_power *p,
+                           double max_thrust_per_rotor_n);
+
 /* Sweep forward speed; fills up to max_points (v, electrical power) pairs and
  * returns the count.  *v_min_power_ms gets the minimum-power speed, and
  * *v_max_ms the highest speed whose thrust stays within

@@ -488,6 +488,15 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 	    &run->v_min_power_ms, &run->v_max_ms);
 	double v_fwd = p->v_auto ? run->v_min_power_ms : p->v_forward_ms;
 	run->optimal_speed_ms = v_fwd;
+	/* A forward speed past what the real rotor's full thrust or the pitch
+	 * limit allows (FORWARD_SPEED reports it) is flown at the fastest
+	 * they allow: no phase runs above full throttle. */
+	if (!p->v_auto && v_fwd > run->v_max_ms) {
+		struct mission_power over;
+		mission_power(&x.model, mass, 0.0, v_fwd, &over);
+		if (mission_beyond_limits(&over, full->thrust_n))
+			v_fwd = run->v_max_ms;
+	}
 	phase_op(&x, mass, p->v_climb_ms > 0.0 ? p->v_climb_ms : 1.0, 0.0, &mp,
 	    &pf->op[OP_CLIMB]);
 	phase_op(&x, mass, 0.0, v_fwd > 0.0 ? v_fwd : 1.0, &mp, &pf->op[OP_CRUISE]);

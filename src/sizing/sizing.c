@@ -39,7 +39,8 @@ struct eval {
 	double mass_kg;                 /* M at which it was evaluated */
 	double capacity_ah;             /* capacity used */
 	struct mission_model model;
-	double v_fwd_ms;
+	double v_fwd_ms;                /* flown */
+	double v_fwd_request_ms;        /* asked: the mission's, or "auto"'s */
 	double v_min_power_ms, v_max_ms;
 	struct mission_power ph[PHASE_MAX];
 	bool phases_done;               /* ph and pitch_m set (eval_phases()) */
@@ -259,6 +260,19 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 		    &e->v_min_power_ms, &e->v_max_ms, ls->speed_hint);
 	if (p->v_auto)
 		e->v_fwd_ms = e->v_min_power_ms;
+	/* A forward speed the thrust or the pitch limit does not reach (the
+	 * FORWARD_SPEED check reports it) is flown at the fastest they allow:
+	 * no phase runs above full throttle. */
+	e->v_fwd_request_ms = e->v_fwd_ms;
+	if (!p->v_auto && e->v_fwd_ms > 0.0) {
+		struct mission_power fwd;
+		mission_power(m, mass_kg, 0.0, e->v_fwd_ms, &fwd);
+		if (mission_beyond_limits(&fwd, e->t_peak_n)) {
+			double v_min_ms, v_max_ms;
+			mission_speed_search(m, mass_kg, e->t_peak_n, &v_min_ms, &v_max_ms);
+			e->v_fwd_ms = fmin(e->v_fwd_ms, v_max_ms);
+		}
+	}
 
 	/* The phase powers size a free battery (the specific-power floor
 	 * below) and go into the record; a given capacity (locked, or a
@@ -852,7 +866,7 @@ record_run(const struct sizing_params *p, struct eval *e,
 		r->pitch_deg = mp->pitch_deg;
 		r->tip_mach = mp->rotor.tip_mach;
 	}
-	out->optimal_speed_ms = e->v_fwd_ms;
+	out->optimal_speed_ms = e->v_fwd_request_ms;
 	out->v_min_power_ms = e->v_min_power_ms;
 	out->v_max_ms = e->v_max_ms;
 
