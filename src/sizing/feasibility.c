@@ -345,8 +345,11 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	if (p->duration_s[PHASE_FORWARD] > 0.0) {
 		c = feasibility_add_check(o, "Forward body pitch", "°", o->forward_pitch_deg,
 		    MISSION_PITCH_MAX_DEG, true);
-		c = feasibility_add_check(o, "Forward speed within thrust margin", "m/s",
-		    o->optimal_speed_ms, o->v_max_ms, true);
+		/* A design whose mass loop ran away has no top speed to compare
+		 * with (v_max_ms 0): its runaway is the violation. */
+		c = o->v_max_ms > 0.0 ? feasibility_add_check(o,
+		    "Forward speed within thrust margin", "m/s", o->optimal_speed_ms,
+		    o->v_max_ms, true) : NULL;
 		if (c && !c->pass) {
 			feasibility_fix(r, f1, "Reduce v_forward_ms to %.1f m/s or less", o->v_max_ms);
 			feasibility_fix(r, f2, "Use \"auto\" for the minimum-power speed");
