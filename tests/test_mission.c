@@ -119,6 +119,27 @@ mission_sweep_should_cover_1_to_30_m_s_in_half_steps(void **state)
 }
 
 static void
+mission_max_climb_should_stop_where_the_climb_drag_meets_the_thrust(void **state)
+{
+	(void)state;
+	struct mission_model m;
+	fixture_hand_model(&m, false);
+	/* 4 T = W + ½ ρ V² C_d A: with T at 11.0 N, V² = (44 - 43.00216025)
+	 * / (½ · 1.2249781262 · 1.2 · 0.0521485195), V = 5.10234260 m/s. */
+	assert_rel(mission_max_climb_ms(&m, 4.385, 11.0, 20.0), 5.10234260, 1e-3);
+	/* Within the limit: the climb asked; not even a hover: none. */
+	assert_rel(mission_max_climb_ms(&m, 4.385, 11.0, 3.0), 3.0, 0.0);
+	assert_rel(mission_max_climb_ms(&m, 4.385, 10.0, 3.0), 0.0, 0.0);
+	/* The speed returned is within the limit, a step above it is not. */
+	double v = mission_max_climb_ms(&m, 4.385, 11.0, 20.0);
+	struct mission_power p;
+	mission_power(&m, 4.385, v, 0.0, &p);
+	assert_false(mission_beyond_limits(&p, 11.0));
+	mission_power(&m, 4.385, v + 0.01, 0.0, &p);
+	assert_true(mission_beyond_limits(&p, 11.0));
+}
+
+static void
 mission_sweep_should_stop_v_max_at_the_thrust_limit(void **state)
 {
 	(void)state;
@@ -218,6 +239,7 @@ main(void)
 		cmocka_unit_test(mission_forward_flight_should_pitch_and_tilt_the_thrust),
 		cmocka_unit_test(mission_coaxial_should_raise_induced_power_by_1_22),
 		cmocka_unit_test(mission_sweep_should_cover_1_to_30_m_s_in_half_steps),
+		cmocka_unit_test(mission_max_climb_should_stop_where_the_climb_drag_meets_the_thrust),
 		cmocka_unit_test(mission_sweep_should_stop_v_max_at_the_thrust_limit),
 		cmocka_unit_test(mission_search_should_find_the_sweeps_speeds_on_random_aircraft),
 		cmocka_unit_test(mission_search_hint_should_name_the_grid_points_of_its_answers),

@@ -208,6 +208,9 @@ struct res_run {
 	double optimal_speed_ms;  /* forward speed used (auto: minimum power) */
 	double v_min_power_ms;    /* minimum-power speed of the sweep */
 	double v_max_ms;          /* highest forward speed the thrust margin allows */
+	double climb_limit_ms;    /* the fastest climb the thrust allows, flown
+	                             instead of the mission's when that is
+	                             beyond it; 0 when the mission's is within */
 	int n_sweep;
 	double sweep_v_ms[RES_MAX_SWEEP];
 	double sweep_power_w[RES_MAX_SWEEP];

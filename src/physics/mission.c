@@ -100,6 +100,31 @@ mission_peak_power(const struct mission_model *m, double thrust_per_rotor_n,
 	finish(m, out);
 }
 
+double
+mission_max_climb_ms(const struct mission_model *m, double mass_kg,
+                     double max_thrust_per_rotor_n, double v_hi_ms)
+{
+	struct mission_power p;
+	mission_power(m, mass_kg, v_hi_ms, 0.0, &p);
+	if (!mission_beyond_limits(&p, max_thrust_per_rotor_n))
+		return v_hi_ms;
+	mission_power(m, mass_kg, 0.0, 0.0, &p);
+	if (mission_beyond_limits(&p, max_thrust_per_rotor_n))
+		return 0.0;
+	/* Thrust grows with the climb's drag: bisect on the speed, keeping
+	 * the low end within the limit. */
+	double lo = 0.0, hi = v_hi_ms;
+	for (int i = 0; i < 64 && hi - lo > 1e-3; i++) {
+		double mid = 0.5 * (lo + hi);
+		mission_power(m, mass_kg, mid, 0.0, &p);
+		if (mission_beyond_limits(&p, max_thrust_per_rotor_n))
+			hi = mid;
+		else
+			lo = mid;
+	}
+	return lo;
+}
+
 /* The sweep's grid: speed i of 0..mission_sweep_last(). */
 static int
 sweep_last(void)

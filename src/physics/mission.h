@@ -76,6 +76,12 @@ void mission_peak_power(const struct mission_model *m, double thrust_per_rotor_n
 bool mission_beyond_limits(const struct mission_power *p,
                            double max_thrust_per_rotor_n);
 
+/* The fastest vertical climb, up to v_hi_ms, whose thrust stays within
+ * max_thrust_per_rotor_n (bisection to 1 mm/s); v_hi_ms itself when that
+ * is within it, 0 when not even a hover is. */
+double mission_max_climb_ms(const struct mission_model *m, double mass_kg,
+                            double max_thrust_per_rotor_n, double v_hi_ms);
+
 /* Sweep forward speed; fills up to max_points (v, electrical power) pairs and
  * returns the count.  *v_min_power_ms gets the minimum-power speed, and
  * *v_max_ms the highest speed whose thrust stays within

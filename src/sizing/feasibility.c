@@ -342,6 +342,17 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 			    "crop damage and spray drift.", o->downwash_ms, p->downwash_cap_ms);
 		}
 	}
+	if (p->duration_s[PHASE_CLIMB] > 0.0 && o->climb_limit_ms > 0.0) {
+		c = feasibility_add_check(o, "Climb speed within thrust", "m/s",
+		    p->v_climb_ms, o->climb_limit_ms, true);
+		feasibility_fix(r, f1, "Reduce v_climb_ms to %.1f m/s or less", o->climb_limit_ms);
+		feasibility_fix(r, f2, "Raise the thrust margin (payload_role.thrust_margin_override)");
+		feasibility_fix(r, f3, "Reduce the vertical drag (payload_role.added_drag_m2)");
+		feasibility_violation(r, run, "mission", "CLIMB_SPEED", fx,
+		    "A %.1f m/s climb needs more thrust than full throttle gives; the "
+		    "design climbs at %.1f m/s at most and flies its climb at that.",
+		    p->v_climb_ms, o->climb_limit_ms);
+	}
 	if (p->duration_s[PHASE_FORWARD] > 0.0) {
 		c = feasibility_add_check(o, "Forward body pitch", "°", o->forward_pitch_deg,
 		    MISSION_PITCH_MAX_DEG, true);

@@ -29,6 +29,8 @@ struct perf_ctx {
 	double r_sys_ohm;             /* pack and ESC resistance at ambient */
 	double kq_nm_s2;              /* installed torque factor, Q = kq n² */
 	double hover_temp_c;          /* steady winding temperature at hover */
+	double v_climb_ms;            /* the climb flown: the mission's, or the
+	                                 fastest full thrust allows */
 };
 
 static int
@@ -58,6 +60,7 @@ build(const struct sizing_params *p, const struct perf_craft *c,
 	memset(x, 0, sizeof *x);
 	x->p = p;
 	x->c = c;
+	x->v_climb_ms = p->v_climb_ms;
 	struct mission_model *m = &x->model;
 	sizing_mission_model(p, c->mass.total_kg + p->extra_payload_kg, m);
 	m->rotor.diameter_m = c->prop_diameter_m;
@@ -272,7 +275,7 @@ fly(const struct perf_ctx *x, double gamma, double v_fwd_ms,
 	dm.dry_mass_kg = x->c->mass.total_kg - p->payload_kg;
 	sizing_shedding(p, gamma, &dm.shed);
 	sizing_durations(p, gamma, dm.duration_s);
-	dm.speed_ms[PHASE_CLIMB] = p->v_climb_ms;
+	dm.speed_ms[PHASE_CLIMB] = x->v_climb_ms;
 	dm.speed_ms[PHASE_FORWARD] = v_fwd_ms;
 	dm.speed_ms[PHASE_HOVER] = 0.0;
 	dm.ambient_c = p->ambient_c;
@@ -420,7 +423,7 @@ record_phases(struct perf_ctx *x, double gamma, double v_fwd_ms,
 	run->flight_time_s = 0.0;
 	for (int i = 0; i < PHASE_MAX; i++) {
 		struct res_phase *ph = &run->phase[i];
-		double v_c = i == PHASE_CLIMB ? p->v_climb_ms : 0.0;
+		double v_c = i == PHASE_CLIMB ? x->v_climb_ms : 0.0;
 		double v_f = i == PHASE_FORWARD ? v_fwd_ms : 0.0;
 		struct mission_power mp;
 		struct res_op op;
@@ -497,7 +500,19 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 		if (mission_beyond_limits(&over, full->thrust_n))
 			v_fwd = run->v_max_ms;
 	}
-	phase_op(&x, mass, p->v_climb_ms > 0.0 ? p->v_climb_ms : 1.0, 0.0, &mp,
+	/* The same for the climb rate (CLIMB_SPEED). */
+	x.v_climb_ms = p->v_climb_ms;
+	run->climb_limit_ms = 0.0;
+	if (p->v_climb_ms > 0.0) {
+		struct mission_power climb;
+		mission_power(&x.model, mass, p->v_climb_ms, 0.0, &climb);
+		if (mission_beyond_limits(&climb, full->thrust_n)) {
+			run->climb_limit_ms = mission_max_climb_ms(&x.model, mass,
+			    full->thrust_n, p->v_climb_ms);
+			x.v_climb_ms = run->climb_limit_ms;
+		}
+	}
+	phase_op(&x, mass, x.v_climb_ms > 0.0 ? x.v_climb_ms : 1.0, 0.0, &mp,
 	    &pf->op[OP_CLIMB]);
 	phase_op(&x, mass, 0.0, v_fwd > 0.0 ? v_fwd : 1.0, &mp, &pf->op[OP_CRUISE]);
 
@@ -585,6 +600,8 @@ perf_figures(const struct sizing_params *p, const struct perf_craft *c,
 	/* The state perf_fly() left them: built, hover settled. */
 	struct perf_ctx x;
 	build(p, c, &x);
+	if (run->climb_limit_ms > 0.0)
+		x.v_climb_ms = run->climb_limit_ms;
 	settle_hover(&x, c->mass.total_kg);
 	struct res_perf *pf = &run->perf;
 	figures(&x, run, pf);

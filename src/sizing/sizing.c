@@ -39,6 +39,8 @@ struct eval {
 	double mass_kg;                 /* M at which it was evaluated */
 	double capacity_ah;             /* capacity used */
 	struct mission_model model;
+	double v_climb_ms;              /* flown */
+	double climb_limit_ms;          /* > 0: the asked climb was beyond it */
 	double v_fwd_ms;                /* flown */
 	double v_fwd_request_ms;        /* asked: the mission's, or "auto"'s */
 	double v_min_power_ms, v_max_ms;
@@ -187,7 +189,7 @@ eval_phases(const struct sizing_params *p, struct eval *e)
 	if (e->phases_done)
 		return;
 	const struct mission_model *m = &e->model;
-	mission_power(m, e->mass_kg, p->v_climb_ms, 0.0, &e->ph[PHASE_CLIMB]);
+	mission_power(m, e->mass_kg, e->v_climb_ms, 0.0, &e->ph[PHASE_CLIMB]);
 	mission_power(m, e->mass_kg, 0.0, e->v_fwd_ms, &e->ph[PHASE_FORWARD]);
 	mission_power(m, e->mass_kg, 0.0, 0.0, &e->ph[PHASE_HOVER]);
 	if (!p->prop_locked)
@@ -264,6 +266,18 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 	 * FORWARD_SPEED check reports it) is flown at the fastest they allow:
 	 * no phase runs above full throttle. */
 	e->v_fwd_request_ms = e->v_fwd_ms;
+	/* The same for a climb rate the thrust does not reach (CLIMB_SPEED). */
+	e->v_climb_ms = p->v_climb_ms;
+	e->climb_limit_ms = 0.0;
+	if (p->v_climb_ms > 0.0) {
+		struct mission_power climb;
+		mission_power(m, mass_kg, p->v_climb_ms, 0.0, &climb);
+		if (mission_beyond_limits(&climb, e->t_peak_n)) {
+			e->climb_limit_ms = mission_max_climb_ms(m, mass_kg, e->t_peak_n,
+			    p->v_climb_ms);
+			e->v_climb_ms = e->climb_limit_ms;
+		}
+	}
 	if (!p->v_auto && e->v_fwd_ms > 0.0) {
 		struct mission_power fwd;
 		mission_power(m, mass_kg, 0.0, e->v_fwd_ms, &fwd);
@@ -394,7 +408,7 @@ evaluate_flight(const struct sizing_params *p, double gamma_time, int steps,
 	dm.dry_mass_kg = e->mass_kg - p->payload_kg;
 	sizing_shedding(p, gamma_time, &dm.shed);
 	sizing_durations(p, gamma_time, dm.duration_s);
-	dm.speed_ms[PHASE_CLIMB] = p->v_climb_ms;
+	dm.speed_ms[PHASE_CLIMB] = e->v_climb_ms;
 	dm.speed_ms[PHASE_FORWARD] = e->v_fwd_ms;
 	dm.speed_ms[PHASE_HOVER] = 0.0;
 	dm.ambient_c = p->ambient_c;
@@ -846,14 +860,14 @@ record_run(const struct sizing_params *p, struct eval *e,
 		struct res_phase *r = &out->phase[i];
 		struct mission_power mean_mp;
 		mission_power(&e->model, dry + role_payload_mean(&shed, t0, t0 + d[i]),
-		    i == PHASE_CLIMB ? p->v_climb_ms : 0.0,
+		    i == PHASE_CLIMB ? e->v_climb_ms : 0.0,
 		    i == PHASE_FORWARD ? e->v_fwd_ms : 0.0, &mean_mp);
 		const struct mission_power *mp = &mean_mp;
 		t0 += d[i];
 		out->approved_time_s[i] = d[i];
 		out->flight_time_s += d[i];
 		r->duration_s = d[i];
-		r->speed_ms = i == PHASE_CLIMB ? p->v_climb_ms
+		r->speed_ms = i == PHASE_CLIMB ? e->v_climb_ms
 		    : i == PHASE_FORWARD ? e->v_fwd_ms : 0.0;
 		r->thrust_per_rotor_n = mp->thrust_per_rotor_n;
 		r->shaft_power_w = mp->shaft_w;
@@ -867,6 +881,7 @@ record_run(const struct sizing_params *p, struct eval *e,
 		r->tip_mach = mp->rotor.tip_mach;
 	}
 	out->optimal_speed_ms = e->v_fwd_request_ms;
+	out->climb_limit_ms = e->climb_limit_ms;
 	out->v_min_power_ms = e->v_min_power_ms;
 	out->v_max_ms = e->v_max_ms;
 
