@@ -342,13 +342,16 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 			    "crop damage and spray drift.", o->downwash_ms, p->downwash_cap_ms);
 		}
 	}
+	/* A climb rate the thrust does not reach: the run flies the fastest
+	 * climb it does reach (climb_limit_ms). */
 	if (p->duration_s[PHASE_CLIMB] > 0.0 && o->climb_limit_ms > 0.0) {
-		c = feasibility_add_check(o, "Climb speed within thrust", "m/s",
+		feasibility_add_check(o, "Climb speed within thrust", "m/s",
 		    p->v_climb_ms, o->climb_limit_ms, true);
-		feasibility_fix(r, f1, "Reduce v_climb_ms to %.1f m/s or less", o->climb_limit_ms);
-		feasibility_fix(r, f2, "Raise the thrust margin (payload_role.thrust_margin_override)");
-		feasibility_fix(r, f3, "Reduce the vertical drag (payload_role.added_drag_m2)");
-		feasibility_violation(r, run, "mission", "CLIMB_SPEED", fx,
+		const char *climb_fx[] = { f1, NULL };
+		feasibility_fix(r, f1, "Reduce v_climb_ms to %.1f m/s or less, or raise "
+		    "the thrust margin (payload_role.thrust_margin_override)",
+		    o->climb_limit_ms);
+		feasibility_violation(r, run, "mission", "CLIMB_SPEED", climb_fx,
 		    "A %.1f m/s climb needs more thrust than full throttle gives; the "
 		    "design climbs at %.1f m/s at most and flies its climb at that.",
 		    p->v_climb_ms, o->climb_limit_ms);
