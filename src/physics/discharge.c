@@ -242,9 +242,14 @@ discharge_run(const struct discharge_pack *pack,
 					power_w = before * p0 + (1.0 - before) * p1;
 				}
 			} else if (mis->shed.kind == SHED_SPRAY) {
-				/* The tank empties along the step: its mid-step mass. */
+				/* The tank empties along the step: its mean mass over
+				 * the step (the mid-step mass unless the tank runs dry
+				 * within it).  The steps' means average to the phase's,
+				 * so the phase's mean power is at least the power at its
+				 * mean mass, the record's shaft power (power is convex
+				 * in mass). */
 				mass = mis->dry_mass_kg
-				    + role_payload_at(&mis->shed, t + 0.5 * dt);
+				    + role_payload_mean(&mis->shed, t, t + dt);
 				power_w = memo_power_w(mis, v_climb, v_fwd, &pm, mass);
 			}
 			struct step_out so;
