@@ -226,11 +226,12 @@ craft_masses(const struct sizing_params *q, const struct parts_option *o,
 
 /* The takeoff mass with the real parts: the airframe follows the mass it
  * carries (the CG thrust of its arms), a contraction far below 1.  False
- * on a runaway. */
+ * on a runaway (*ran_away set) or a number that is none. */
 static bool
 close_mass(const struct sizing_params *q, const struct parts_option *o,
            const struct parts_kit *kit, double fixed_kg, double start_kg,
-           struct perf_craft *c, double *mass_kg, bool *converged)
+           struct perf_craft *c, double *mass_kg, bool *converged,
+           bool *ran_away)
 {
 	double mass = start_kg;
 	*converged = false;
@@ -238,7 +239,8 @@ close_mass(const struct sizing_params *q, const struct parts_option *o,
 		double next = craft_masses(q, o, kit, fixed_kg, mass, c);
 		*converged = fabs(next - mass) < CLOSE_TOL_KG;
 		mass = next;
-		if (!isfinite(mass) || mass > SIZING_RUNAWAY_KG)
+		*ran_away = mass > SIZING_RUNAWAY_KG;
+		if (!isfinite(mass) || *ran_away)
 			return false;
 	}
 	craft_masses(q, o, kit, fixed_kg, mass, c);
@@ -252,11 +254,13 @@ close_mass(const struct sizing_params *q, const struct parts_option *o,
 static bool
 close_with_kit(const struct parts_ctx *x, const struct sizing_params *q,
                const struct parts_option *o, struct parts_kit *kit,
-               double fixed_kg, struct perf_craft *c, bool *converged)
+               double fixed_kg, struct perf_craft *c, bool *converged,
+               bool *ran_away)
 {
 	double mass;
 	kit->frame = NULL;
-	if (!close_mass(q, o, kit, fixed_kg, x->aim.mass_kg, c, &mass, converged))
+	if (!close_mass(q, o, kit, fixed_kg, x->aim.mass_kg, c, &mass, converged,
+	    ran_away))
 		return false;
 	double prop_in = m_to_in(c->prop_diameter_m);
 	double custom_kg = c->mass.arm_kg + c->mass.frame_kg;
@@ -264,12 +268,12 @@ close_with_kit(const struct parts_ctx *x, const struct sizing_params *q,
 	if (kit->frame == NULL)
 		return true;
 	double with_kit;
-	if (close_mass(q, o, kit, fixed_kg, mass, c, &with_kit, converged)
+	if (close_mass(q, o, kit, fixed_kg, mass, c, &with_kit, converged, ran_away)
 	    && parts_kit_frame_fits(x, kit->frame, prop_in, with_kit,
 	    c->arm.d_out_m, custom_kg))
 		return true;
 	kit->frame = NULL;
-	return close_mass(q, o, kit, fixed_kg, mass, c, &mass, converged);
+	return close_mass(q, o, kit, fixed_kg, mass, c, &mass, converged, ran_away);
 }
 
 /* The highest current of a phase the mission flies, at the pack. */
@@ -298,6 +302,10 @@ parts_close(const struct parts_ctx *x, const struct parts_option *o,
 {
 	struct sizing_params q = *x->p;
 	q.chem = pk->chem;
+	/* Nothing of the buffer's last closing may stand for this one. */
+	out->finite = false;
+	out->ran_away = false;
+	out->failed = 0;
 	out->o = *o;
 	out->esc = esc;
 	out->n_esc = n_esc;
@@ -329,7 +337,8 @@ parts_close(const struct parts_ctx *x, const struct parts_option *o,
 	bool converged = false;
 	for (int pass = 0; pass < 2; pass++) {
 		parts_kit_pick(x, o, pk, esc, sustained, &out->kit);
-		if (!close_with_kit(x, &q, o, &out->kit, fixed, c, &converged))
+		if (!close_with_kit(x, &q, o, &out->kit, fixed, c, &converged,
+		    &out->ran_away))
 			return false;
 		struct res_mass *m = &c->mass;
 		m->total_kg = m->payload_kg + m->battery_kg + m->frame_kg + m->arm_kg

@@ -349,10 +349,23 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 	free(spare);
 	free(cur.r);
 	if (n_ranked == 0 || pick.r == NULL || !pick.finite) {
+		/* Closings whose mass ran away are a verdict on the parts, not
+		 * a defect: said as one.  A closing that is no number is. */
+		bool ran_away = pick.r != NULL && pick.ran_away;
+		bool defect = pick.r != NULL && !pick.ran_away;
 		free(pick.r);
 		ctx_free(&x);
-		report_none(&x, r);
-		return pick.r != NULL ? 3 : 0;
+		if (ran_away) {
+			const char *fx[] = {
+				"Add lighter or stronger parts near the continuous optimum, or use --db",
+				"Relax the mission (payload, times, thrust margin)", NULL };
+			feasibility_violation(r, "closed", "parts", "PARTS_RUNAWAY", fx,
+			    "Every closing on catalogue parts ran away: with the real "
+			    "parts the takeoff mass grows past %.0f kg.", SIZING_RUNAWAY_KG);
+		} else {
+			report_none(&x, r);
+		}
+		return defect ? 3 : 0;
 	}
 
 	/* The design of record, closed again with its violations' texts. */

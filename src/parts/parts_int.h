@@ -191,6 +191,9 @@ struct parts_closed {
 	struct solve_result *r;            /* its run in r->closed, violations */
 	int failed;                        /* failed checks */
 	bool finite;
+	bool ran_away;                     /* its mass loop grew past
+	                                      SIZING_RUNAWAY_KG: not finite, and
+	                                      no defect either */
 };
 
 /* rank.c */
