@@ -494,7 +494,7 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 	/* A forward speed past what the real rotor's full thrust or the pitch
 	 * limit allows (FORWARD_SPEED reports it) is flown at the fastest
 	 * they allow: no phase runs above full throttle. */
-	if (!p->v_auto && v_fwd > run->v_max_ms) {
+	if (v_fwd > run->v_max_ms) {
 		struct mission_power over;
 		mission_power(&x.model, mass, 0.0, v_fwd, &over);
 		if (mission_beyond_limits(&over, full->thrust_n))

@@ -278,7 +278,7 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 			e->v_climb_ms = e->climb_limit_ms;
 		}
 	}
-	if (!p->v_auto && e->v_fwd_ms > 0.0) {
+	if (e->v_fwd_ms > 0.0) {
 		struct mission_power fwd;
 		mission_power(m, mass_kg, 0.0, e->v_fwd_ms, &fwd);
 		if (mission_beyond_limits(&fwd, e->t_peak_n)) {
