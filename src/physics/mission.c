@@ -101,6 +101,25 @@ mission_peak_power(const struct mission_model *m, double thrust_per_rotor_n,
 }
 
 double
+mission_forward_flown_ms(const struct mission_model *m, double mass_kg,
+                         double max_thrust_per_rotor_n, double v_fwd_ms,
+                         double v_max_ms)
+{
+	if (v_max_ms > 0.0 && v_fwd_ms <= v_max_ms)
+		return v_fwd_ms;
+	struct mission_power p;
+	mission_power(m, mass_kg, 0.0, v_fwd_ms, &p);
+	if (!mission_beyond_limits(&p, max_thrust_per_rotor_n))
+		return v_fwd_ms;
+	if (!(v_max_ms > 0.0)) {
+		double v_min_ms;
+		mission_speed_search(m, mass_kg, max_thrust_per_rotor_n, &v_min_ms,
+		    &v_max_ms);
+	}
+	return fmin(v_fwd_ms, v_max_ms);
+}
+
+double
 mission_max_climb_ms(const struct mission_model *m, double mass_kg,
                      double max_thrust_per_rotor_n, double v_hi_ms)
 {

@@ -76,6 +76,14 @@ void mission_peak_power(const struct mission_model *m, double thrust_per_rotor_n
 bool mission_beyond_limits(const struct mission_power *p,
                            double max_thrust_per_rotor_n);
 
+/* The forward speed flown when v_fwd_ms is asked: itself when it stays
+ * within max_thrust_per_rotor_n and the pitch limit, else the top speed
+ * within them: v_max_ms when the caller has it (> 0), else searched as
+ * mission_speed_search() does.  No phase then runs above full throttle. */
+double mission_forward_flown_ms(const struct mission_model *m, double mass_kg,
+                                double max_thrust_per_rotor_n, double v_fwd_ms,
+                                double v_max_ms);
+
 /* The fastest vertical climb, up to v_hi_ms, whose thrust stays within
  * max_thrust_per_rotor_n (bisection to 1 mm/s); v_hi_ms itself when that
  * is within it, 0 when not even a hover is. */

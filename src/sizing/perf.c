@@ -491,27 +491,13 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 	    &run->v_min_power_ms, &run->v_max_ms);
 	double v_fwd = p->v_auto ? run->v_min_power_ms : p->v_forward_ms;
 	run->optimal_speed_ms = v_fwd;
-	/* A forward speed past what the real rotor's full thrust or the pitch
-	 * limit allows (FORWARD_SPEED reports it) is flown at the fastest
-	 * they allow: no phase runs above full throttle. */
-	if (v_fwd > run->v_max_ms) {
-		struct mission_power over;
-		mission_power(&x.model, mass, 0.0, v_fwd, &over);
-		if (mission_beyond_limits(&over, full->thrust_n))
-			v_fwd = run->v_max_ms;
-	}
-	/* The same for the climb rate (CLIMB_SPEED). */
-	x.v_climb_ms = p->v_climb_ms;
-	run->climb_limit_ms = 0.0;
-	if (p->v_climb_ms > 0.0) {
-		struct mission_power climb;
-		mission_power(&x.model, mass, p->v_climb_ms, 0.0, &climb);
-		if (mission_beyond_limits(&climb, full->thrust_n)) {
-			run->climb_limit_ms = mission_max_climb_ms(&x.model, mass,
-			    full->thrust_n, p->v_climb_ms);
-			x.v_climb_ms = run->climb_limit_ms;
-		}
-	}
+	/* What full thrust (or the pitch limit) does not reach is flown at the
+	 * fastest it does (FORWARD_SPEED, CLIMB_SPEED report the shortfall). */
+	v_fwd = mission_forward_flown_ms(&x.model, mass, full->thrust_n, v_fwd,
+	    run->v_max_ms);
+	x.v_climb_ms = p->v_climb_ms > 0.0 ? mission_max_climb_ms(&x.model, mass,
+	    full->thrust_n, p->v_climb_ms) : p->v_climb_ms;
+	run->climb_limit_ms = x.v_climb_ms < p->v_climb_ms ? x.v_climb_ms : 0.0;
 	phase_op(&x, mass, x.v_climb_ms > 0.0 ? x.v_climb_ms : 1.0, 0.0, &mp,
 	    &pf->op[OP_CLIMB]);
 	phase_op(&x, mass, 0.0, v_fwd > 0.0 ? v_fwd : 1.0, &mp, &pf->op[OP_CRUISE]);

@@ -262,31 +262,17 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 		    &e->v_min_power_ms, &e->v_max_ms, ls->speed_hint);
 	if (p->v_auto)
 		e->v_fwd_ms = e->v_min_power_ms;
-	/* A forward speed the thrust or the pitch limit does not reach (the
-	 * FORWARD_SPEED check reports it) is flown at the fastest they allow:
-	 * no phase runs above full throttle. */
+	/* A forward speed or climb rate the thrust (or the pitch limit) does
+	 * not reach is flown at the fastest it does, so no phase runs above
+	 * full throttle; FORWARD_SPEED and CLIMB_SPEED report the shortfall
+	 * against what was asked. */
 	e->v_fwd_request_ms = e->v_fwd_ms;
-	/* The same for a climb rate the thrust does not reach (CLIMB_SPEED). */
-	e->v_climb_ms = p->v_climb_ms;
-	e->climb_limit_ms = 0.0;
-	if (p->v_climb_ms > 0.0) {
-		struct mission_power climb;
-		mission_power(m, mass_kg, p->v_climb_ms, 0.0, &climb);
-		if (mission_beyond_limits(&climb, e->t_peak_n)) {
-			e->climb_limit_ms = mission_max_climb_ms(m, mass_kg, e->t_peak_n,
-			    p->v_climb_ms);
-			e->v_climb_ms = e->climb_limit_ms;
-		}
-	}
-	if (e->v_fwd_ms > 0.0) {
-		struct mission_power fwd;
-		mission_power(m, mass_kg, 0.0, e->v_fwd_ms, &fwd);
-		if (mission_beyond_limits(&fwd, e->t_peak_n)) {
-			double v_min_ms, v_max_ms;
-			mission_speed_search(m, mass_kg, e->t_peak_n, &v_min_ms, &v_max_ms);
-			e->v_fwd_ms = fmin(e->v_fwd_ms, v_max_ms);
-		}
-	}
+	if (e->v_fwd_ms > 0.0)
+		e->v_fwd_ms = mission_forward_flown_ms(m, mass_kg, e->t_peak_n,
+		    e->v_fwd_ms, 0.0);
+	e->v_climb_ms = p->v_climb_ms > 0.0 ? mission_max_climb_ms(m, mass_kg,
+	    e->t_peak_n, p->v_climb_ms) : p->v_climb_ms;
+	e->climb_limit_ms = e->v_climb_ms < p->v_climb_ms ? e->v_climb_ms : 0.0;
 
 	/* The phase powers size a free battery (the specific-power floor
 	 * below) and go into the record; a given capacity (locked, or a
