@@ -219,3 +219,18 @@ catalog_motor_stator_mm(const struct catalog_motor *m, double *d_mm,
 		return false;
 	return *d_mm > 0.0 && *h_mm > 0.0 && *d_mm < 1000.0 && *h_mm < 1000.0;
 }
+
+bool
+catalog_list_names(const char *list, const char *item)
+{
+	size_t len = strlen(item);
+	for (const char *u = list; u != NULL && *u != '\0'; ) {
+		size_t ulen = strcspn(u, ",");
+		if (ulen == len && strncmp(u, item, len) == 0)
+			return true;
+		u += ulen;
+		if (*u == ',')
+			u++;
+	}
+	return false;
+}

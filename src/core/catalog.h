@@ -189,6 +189,10 @@ size_t catalog_n_avionics(const struct catalog *c);
 
 const struct catalog_motor *catalog_motor(const struct catalog *c, size_t i);
 
+/* Does a catalogue list field ("uncertain", an ESC's "carries": items
+ * joined by commas) name item exactly?  False for a NULL list. */
+bool catalog_list_names(const char *list, const char *item);
+
 /* The stator's diameter and height in mm from m->stator ("22x07"); false
  * when the catalogue gives none or a form this does not read. */
 bool catalog_motor_stator_mm(const struct catalog_motor *m, double *d_mm,

@@ -302,13 +302,7 @@ pick_connector(const struct parts_ctx *x, double per_pack_a,
 static bool
 esc_carries(const struct catalog_esc *esc, const char *kind)
 {
-	if (esc == NULL || esc->carries == NULL)
-		return false;
-	size_t n = strlen(kind);
-	for (const char *p = esc->carries; (p = strstr(p, kind)) != NULL; p += n)
-		if ((p == esc->carries || p[-1] == ',') && (p[n] == '\0' || p[n] == ','))
-			return true;
-	return false;
+	return esc != NULL && catalog_list_names(esc->carries, kind);
 }
 
 void

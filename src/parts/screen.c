@@ -157,16 +157,7 @@ screen_esc(const struct catalog_esc *e, char *why, size_t n)
 bool
 screen_uncertain(const char *uncertain, const char *key)
 {
-	size_t len = strlen(key);
-	for (const char *u = uncertain; u != NULL && *u != '\0'; ) {
-		size_t ulen = strcspn(u, ",");
-		if (ulen == len && strncmp(u, key, len) == 0)
-			return true;
-		u += ulen;
-		if (*u == ',')
-			u++;
-	}
-	return false;
+	return catalog_list_names(uncertain, key);
 }
 
 /* The first of keys (NULL-terminated) that the list uncertain names, or
