@@ -56,7 +56,7 @@ on_board_text(const char *carries, char *buf, size_t size)
 	const char *have[3];
 	int n = 0;
 	for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
-		if (strstr(carries, names[i].kind) != NULL)
+		if (catalog_list_names(carries, names[i].kind))
 			have[n++] = names[i].words;
 	buf[0] = '\0';
 	for (int i = 0; i < n; i++)
