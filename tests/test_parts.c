@@ -646,6 +646,27 @@ agricultural_octocopter_should_close_on_real_parts_or_say_why(void **state)
 	cli_env_free(&env);
 }
 
+/* A mission whose real parts close far lighter than its continuous design
+ * (whose laws fit the catalogue's median part): screened at the continuous
+ * mass, no option passes; the ranking that trusts an option's lighter
+ * estimate finds the closing (tests/fixtures/missions). */
+static void
+search_should_find_a_closing_much_lighter_than_the_continuous_design(void **state)
+{
+	(void)state;
+	struct cli_env env;
+	assert_int_equal(cli_env_load(&env, NULL, 1, stderr), 0);
+	struct solve_result *r = xcalloc(1, sizeof *r);
+	solve_file(&env, "tests/fixtures/missions/lighter_on_parts.json", r);
+	assert_true(r->custom.converged && r->custom.feasible);
+	assert_true(r->parts_selected && r->closed.feasible);
+	assert_true(r->closed.mass.total_kg < 0.8 * r->custom.mass.total_kg);
+	assert_true(r->closed.end_soc >= r->closed.reserve_soc);
+	assert_true(fabs(bom_sum_kg(r) - r->closed.mass.total_kg) < 0.001);
+	free(r);
+	cli_env_free(&env);
+}
+
 int
 main(void)
 {
@@ -663,6 +684,7 @@ main(void)
 		cmocka_unit_test(price_text_should_say_at_least_and_count_the_unpriced_lines),
 		cmocka_unit_test(bom_should_order_the_frame_kit_and_avionics_with_prices_and_dates),
 		cmocka_unit_test(agricultural_octocopter_should_close_on_real_parts_or_say_why),
+		cmocka_unit_test(search_should_find_a_closing_much_lighter_than_the_continuous_design),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

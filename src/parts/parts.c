@@ -89,11 +89,17 @@ report_none(const struct parts_ctx *x, struct solve_result *r)
 	size_t len = (size_t)snprintf(msg, sizeof msg, "No catalogue combination "
 	    "fits at %d-%dS; of %d options: ", x->cells_lo, x->cells_hi,
 	    x->n_examined);
-	for (int k = 0; k < n && len < sizeof msg; k++)
-		len += (size_t)snprintf(msg + len, sizeof msg - len, "%s%s %d",
-		    k > 0 ? ", " : "", parts_reason_text[order[k]], x->n_census[order[k]]);
-	if (len < sizeof msg)
-		snprintf(msg + len, sizeof msg - len, ".");
+	/* Whole reasons only, the commonest first, as many as the text holds. */
+	for (int k = 0; k < n; k++) {
+		char item[96];
+		size_t add = (size_t)snprintf(item, sizeof item, "%s%s %d", k > 0 ? ", " : "",
+		    parts_reason_text[order[k]], x->n_census[order[k]]);
+		if (len + add + 2 > sizeof msg)
+			break;
+		memcpy(msg + len, item, add + 1);
+		len += add;
+	}
+	snprintf(msg + len, sizeof msg - len, ".");
 	const char *fx[] = {
 		"Add parts near the continuous optimum to the catalogue, or use --db",
 		"Lock a part by id (locks.motor_part) to see which of its limits binds",
@@ -131,14 +137,15 @@ better(const struct parts_ctx *x, const struct parts_closed *a,
 	return strcmp(a->o.motor->id, b->o.motor->id) < 0;
 }
 
-/* The lightest arrangement of the bus that holds need_wh and carries the
- * option's currents: hover within the continuous rating, full throttle
+/* The lightest arrangement of the bus heavier than above_kg that holds
+ * need_wh and carries the option's currents: hover within the continuous rating, full throttle
  * within the burst rating and with the pack's sag at most PARTS_MAX_SAG of
  * its voltage (else the thrust the ranking counted on is not there).  -1
  * when none does. */
 static int
 pick_pack(const struct parts_ctx *x, const struct parts_option *o,
-          const struct parts_pack *pk, int n, double need_wh, double max_sag)
+          const struct parts_pack *pk, int n, double need_wh, double max_sag,
+          double above_kg)
 {
 	double v = (double)o->cells * x->p->chem->v_nom;
 	double i_full = (double)x->p->n_rotors * o->full_current_a;
@@ -150,7 +157,7 @@ pick_pack(const struct parts_ctx *x, const struct parts_option *o,
 		    q->capacity_ah, q->b->continuous_c);
 		if (q->energy_wh >= need_wh && q->max_burst_a >= i_full
 		    && q->max_continuous_a >= i_hover
-		    && r_pack * i_full <= max_sag * v
+		    && r_pack * i_full <= max_sag * v && q->mass_kg > above_kg
 		    && (best < 0 || q->mass_kg < pk[best].mass_kg))
 			best = i;
 	}
@@ -169,7 +176,22 @@ swap_closed(struct parts_closed *a, struct parts_closed *b)
 struct pack_try {
 	double end_soc, reserve_soc;
 	bool completed;                /* the discharge flew the whole mission */
+	bool pack_failed;              /* it failed, and only on checks another
+	                                  pack of the bus may pass */
 };
+
+/* The checks a closing's pack alone decides (its plug, its sag, its
+ * ratings and heat), the drive and the mass unchanged. */
+static bool
+pack_check(const char *code)
+{
+	static const char *const codes[] = { "CONNECTOR_CURRENT", "VOLTAGE_FLOOR",
+	    "BATTERY_CURRENT", "BATTERY_BURST", "BATTERY_POWER", "THERMAL_RUNAWAY" };
+	for (size_t i = 0; i < sizeof codes / sizeof codes[0]; i++)
+		if (strcmp(code, codes[i]) == 0)
+			return true;
+	return false;
+}
 
 /* Close option o on pack pk, keep it in *pick when better; true when it
  * passes every check. */
@@ -185,6 +207,9 @@ close_on(const struct parts_ctx *x, const struct parts_option *o,
 	t->reserve_soc = cur->r->closed.reserve_soc;
 	t->completed = strcmp(cur->r->closed.termination,
 	    discharge_end_text[DIS_COMPLETED]) == 0;
+	t->pack_failed = !passed && cur->finite;
+	for (int i = 0; i < cur->r->n_violations && t->pack_failed; i++)
+		t->pack_failed = pack_check(cur->r->violations[i].code);
 	if (better(x, cur, pick)) {
 		if (pick->r == NULL) {
 			pick->r = *spare;
@@ -216,9 +241,10 @@ close_option(const struct parts_ctx *x, const struct parts_option *o,
 		double need = x->aim.hover_power_w > 0.0 ? 0.85 * x->aim.energy_wh
 		    * o->hover_power_w / x->aim.hover_power_w : 0.0;
 		int last = -1;
+		double above_kg = 0.0;
 		bool passed = false;
 		for (int k = 0; k < PARTS_PACK_TRIES; k++) {
-			int at = pick_pack(x, o, pk, n_pk, need, max_sag[tier]);
+			int at = pick_pack(x, o, pk, n_pk, need, max_sag[tier], above_kg);
 			if (at < 0 || at == last)
 				break;
 			last = at;
@@ -226,6 +252,12 @@ close_option(const struct parts_ctx *x, const struct parts_option *o,
 			passed |= close_on(x, o, &pk[at], esc, n_esc, cur, pick, spare, &t);
 			n_closed++;
 			double used = 1.0 - t.end_soc;
+			/* Enough charge, but its plug, sag or ratings fail: the
+			 * next heavier pack of the same need. */
+			if (t.end_soc >= t.reserve_soc && t.pack_failed) {
+				above_kg = pk[at].mass_kg;
+				continue;
+			}
 			if (t.end_soc >= t.reserve_soc || !(used > 0.0))
 				break;
 			/* Short of the reserve: the next pack holds at least
@@ -238,9 +270,9 @@ close_option(const struct parts_ctx *x, const struct parts_option *o,
 			need = pk[at].energy_wh * PARTS_PACK_STEP;
 			int fit = t.completed ? pick_pack(x, o, pk, n_pk,
 			    pk[at].energy_wh * used / (1.0 - t.reserve_soc),
-			    max_sag[tier]) : -1;
+			    max_sag[tier], 0.0) : -1;
 			if (fit >= 0 && fit != at
-			    && fit != pick_pack(x, o, pk, n_pk, need, max_sag[tier])) {
+			    && fit != pick_pack(x, o, pk, n_pk, need, max_sag[tier], 0.0)) {
 				passed |= close_on(x, o, &pk[fit], esc, n_esc, cur, pick,
 				    spare, &t);
 				n_closed++;
@@ -310,9 +342,12 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 	cur.r->terse = spare->terse = true;
 	int n_closed = 0, n_ranked = 0;
 	for (int round = 0; round < PARTS_ROUNDS; round++) {
-		if (round > 0) {
+		if (round > 0 && pick.r != NULL && pick.failed == 0)
+			break;
+		double grown = 1.0;
+		if (round > 0 && pick.r != NULL) {
 			const struct res_run *cl = &pick.r->closed;
-			double grown = cl->mass.total_kg / x.aim.mass_kg;
+			grown = cl->mass.total_kg / x.aim.mass_kg;
 			/* Short of the reserve: the energy it lacks, carried as
 			 * battery the loop grows around (aim.growth). */
 			if (cl->end_soc < cl->reserve_soc && cl->mass.total_kg > 0.0) {
@@ -321,10 +356,22 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 				    * (1.0 + x.aim.growth * lack * cl->mass.battery_kg
 				    / cl->mass.total_kg));
 			}
-			if (pick.failed == 0 || !(grown > 1.0 + PARTS_ROUND_MIN_GROWTH))
-				break;
-			parts_aim_regrow(&x.aim, grown);
 		}
+		if (round > 0 && grown > 1.0 + PARTS_ROUND_MIN_GROWTH) {
+			parts_aim_regrow(&x.aim, grown);
+		} else if (round > 0) {
+			/* Nothing ranked, or the closest closing is not heavier:
+			 * the real parts may close lighter than the continuous
+			 * design (its laws fit the catalogue's median part, the
+			 * search finds the lightest), so the ranking may trust
+			 * an option's lighter estimate, once. */
+			if (x.aim.lightest < 1.0)
+				break;
+			x.aim.lightest = PARTS_LIGHTEST;
+		}
+		/* The census the report gives is the last ranking's. */
+		memset(x.n_census, 0, sizeof x.n_census);
+		x.n_examined = 0;
 		struct parts_option best[PARTS_KEEP + PARTS_KEEP_RELAXED
 		    + PARTS_KEEP_MARGINAL];
 		int n_best = parts_rank(&x, best, PARTS_KEEP + PARTS_KEEP_RELAXED
@@ -343,7 +390,7 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 			n_closed += close_option(&x, &best[i], esc, n_esc, &cur, &pick,
 			    &spare);
 		}
-		if (pick.r == NULL || !pick.finite)
+		if (pick.r != NULL && !pick.finite)
 			break;
 	}
 	free(spare);

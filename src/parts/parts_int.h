@@ -28,9 +28,12 @@
                                      wiring and wrap (catalogue README) */
 #define PARTS_PACK_TRIES    6     /* battery arrangements tried per option */
 #define PARTS_PACK_STEP     1.15  /* each next one holds at least 15 % more */
-#define PARTS_ROUNDS        2     /* rankings: at the continuous mass, then at
-                                     the mass the closest closing reached */
-#define PARTS_ROUND_MIN_GROWTH 0.03 /* ... when that is 3 % heavier or more */
+#define PARTS_ROUNDS        3     /* rankings: at the continuous mass, then at
+                                     the mass the closest closing reached ... */
+#define PARTS_ROUND_MIN_GROWTH 0.03 /* ... when that is 3 % heavier or more,
+                                     or trusting lighter closings: */
+#define PARTS_LIGHTEST      0.8   /* ... an option's J estimate down to 80 % of
+                                     the continuous mass */
 #define PARTS_RANGE_TOL_IN  0.5   /* slack on a maker's recommended propeller range */
 #define PARTS_LOADED_BUS    0.95  /* loaded pack voltage / nominal, for ranking */
 #define PARTS_CURRENT_MARGIN 1.1  /* ESC rating over the motor's full-throttle current */
@@ -71,6 +74,8 @@ extern const char *const parts_reason_text[PARTS_REASON_MAX];
 /* The continuous optimum the search aims at, and what it must reach. */
 struct parts_aim {
 	double mass_kg;            /* M*: continuous takeoff mass */
+	double lightest;           /* the lightest closing the ranking trusts
+	                              its J to estimate, of M*: 1 at first */
 	double drive_kg;           /* its motors + propellers + ESCs */
 	double battery_kg;         /* its battery */
 	double energy_wh;          /* its battery's nominal energy */

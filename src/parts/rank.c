@@ -94,6 +94,7 @@ parts_aim_from(const struct sizing_params *p, const struct res_run *custom,
 	memset(aim, 0, sizeof *aim);
 	const struct res_mass *m = &custom->mass;
 	aim->mass_kg = m->total_kg;
+	aim->lightest = 1.0;
 	aim->drive_kg = m->motor_kg + m->prop_kg + m->esc_kg;
 	aim->battery_kg = m->battery_kg;
 	aim->energy_wh = custom->energy_wh;
@@ -361,7 +362,12 @@ option_limits(const struct parts_ctx *x, struct parts_option *o)
 	/* The thrust to lift the continuous design at the floor's T/W (and
 	 * with the largest payload aboard), with a little to spare: the
 	 * closing finds the real mass, and checks the real T/W there. */
-	double mass = x->aim.mass_kg;
+	/* The mass it is estimated to close at (J), trusted below the
+	 * continuous design's only down to aim.lightest: at first not at all,
+	 * so the thrust is screened at the continuous mass. */
+	double est = 1.0 + o->j / 100.0;
+	double screen = fmax(x->aim.lightest, fmin(1.0, est));
+	double mass = x->aim.mass_kg * screen;
 	double theta_floor = 1.0 - SIZING_MIN_THRUST_MARGIN;
 	double max_payload_n = (mass + p->extra_payload_kg) * PARTS_TW_TOL
 	    / (theta_floor * theta_floor) * G0_M_S2;
@@ -369,12 +375,10 @@ option_limits(const struct parts_ctx *x, struct parts_option *o)
 	if (thrust < PARTS_TW_SPARE * fmax(x->aim.tw_floor * mass * G0_M_S2,
 	    max_payload_n))
 		return PARTS_THRUST;
-	/* Parity at the mass it is estimated to close at (J), never below
-	 * the continuous design's: an option that falls short of the T/W
+	/* Parity at that estimate: an option that falls short of the T/W
 	 * once its own mass is aboard is a relaxed one. */
-	double grown = o->j > 0.0 ? 1.0 + o->j / 100.0 : 1.0;
-	o->parity = thrust >= PARTS_TW_SPARE * grown * fmax(x->aim.tw_required
-	    * mass * G0_M_S2, max_payload_n);
+	o->parity = thrust >= PARTS_TW_SPARE * fmax(est, x->aim.lightest)
+	    / screen * fmax(x->aim.tw_required * mass * G0_M_S2, max_payload_n);
 	/* The motor's ratings on the ranking's bus; an option within them
 	 * only on the most-sagged bus is marginal (kept apart, see above). */
 	struct parts_motor_limits lim;
