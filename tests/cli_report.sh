@@ -4,10 +4,10 @@
 # cover, the mission file attached byte for byte, fonts embedded, an outline.
 # Prints "ok NAME" / "not ok NAME" lines.
 build=$(dirname "${AEROEVAL:-build/aeroeval}")
-[ -f "$build/dossier_sar_imaging_quad.pdf" ] && [ -f "$build/dossier_agri_static_20kg.pdf" ] ||
+[ -f "$build/dossier_sar_imaging_quad.pdf" ] && [ -f "$build/dossier_infeasible_compact_lifter.pdf" ] ||
 	"$build/tests/test_report" >/dev/null 2>&1
 ok_pdf="$(cd "$build" && pwd)/dossier_sar_imaging_quad.pdf"
-bad_pdf="$(cd "$build" && pwd)/dossier_agri_static_20kg.pdf"
+bad_pdf="$(cd "$build" && pwd)/dossier_infeasible_compact_lifter.pdf"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 

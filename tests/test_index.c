@@ -72,8 +72,8 @@ row_should_carry_the_design_of_record(void **state)
 	cJSON_Delete(root);
 	free(text);
 
-	text = golden("agri_static_20kg");
-	assert_int_equal(parse_text(text, "agri_static_20kg", &w, msg, sizeof msg), 0);
+	text = golden("infeasible_compact_lifter");
+	assert_int_equal(parse_text(text, "infeasible_compact_lifter", &w, msg, sizeof msg), 0);
 	assert_int_equal(w.status, SUMMARY_NOT_BUILDABLE);
 	assert_string_equal(w.motor, "");
 	assert_false(w.has_cost);

@@ -33,8 +33,8 @@
 
 static const char *const examples[] = {
 	"agri_dynamic_20kg", "agri_spray_octo", "agri_static_20kg", "coaxial_inspection_quad",
-	"delivery_drop_3p5kg", "delivery_quad", "fpv_racing_quad", "lidar_mapping_quad",
-	"sar_imaging_quad",
+	"delivery_drop_3p5kg", "delivery_quad", "fpv_racing_quad", "infeasible_compact_lifter",
+	"lidar_mapping_quad", "sar_imaging_quad",
 };
 #define N_EXAMPLES ((int)(sizeof examples / sizeof examples[0]))
 

@@ -506,7 +506,8 @@ accuracy(struct solve_result *r, const struct model_data *md)
 	o->interval_rows = iv->n;
 	o->coverage = a->coverage;
 	const struct res_run *rec = res_record(r, NULL);
-	if (rec == NULL || !rec->ran || !(rec->mass.total_kg > 0.0))
+	/* No interval around a loop's last iterate: it predicts nothing. */
+	if (rec == NULL || !rec->ran || !rec->converged || !(rec->mass.total_kg > 0.0))
 		return;
 	r->mtow_interval.valid = true;
 	r->mtow_interval.level = a->level;

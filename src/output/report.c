@@ -256,6 +256,9 @@ report_no_parts_reason(const struct rep *rp)
 	if (!r->custom.ran)
 		return "The continuous design stopped at the feasibility gate, so there was no "
 		       "sized requirement to match parts against.";
+	if (!r->custom.converged)
+		return "The continuous design's mass loop did not converge, so there was no sized "
+		       "requirement to match parts against.";
 	if (r->n_candidates == 0)
 		return "The parts search scored no catalogue motor for this design.";
 	return "No combination of catalogue motor, propeller, battery and ESC closes the design.";

@@ -68,7 +68,17 @@ cover_status(struct rep *rp)
 	int n_fail = 0;
 	for (int i = 0; i < rec->n_checks && i < RES_MAX_CHECKS; i++)
 		n_fail += !rec->checks[i].pass;
-	if (!rp->buildable) {
+	if (!rp->buildable && r->custom.ran && !r->custom.converged) {
+		/* No parts were searched: the physics gave no design to match. */
+		report_sfmt(&sb, "This mission cannot be sized: the mass loop did not converge (%s), so "
+		            "there is no design and no bill of materials. The figures in this dossier are "
+		            "the loop's last iterate, shown to say why: the checks section and the "
+		            "convergence history show what diverges, the fixes what to relax.",
+		            r->custom.termination);
+		if (n_fail > 0)
+			strbuf_printf(&sb, " It fails %d of its %d checks.", n_fail, rec->n_checks);
+		doc_callout(rp->d, DOC_CALLOUT_FAIL, "NOT BUILDABLE", strbuf_str(&sb));
+	} else if (!rp->buildable) {
 		report_sfmt(&sb, "No combination of catalogue parts closes this design, so there is no "
 		            "bill of materials to build from. The figures in this dossier are those of the "
 		            "continuous design: what the physics asks for, which cannot be bought as "
