@@ -39,11 +39,11 @@ while IFS='|' read -r name paper why; do
 	printf '%-24s | %-62s | %s\n' "$name" "$row" "$paper"
 	printf '%-24s   why: %s\n' "" "$why"
 done <<'EOF'
-sar_imaging_quad|5.57 kg 26x9 KV 200 4S 12650 mAh|mission inputs are not published (examples/ are reconstructions); our 6S comes from the 60 A x sqrt(M) current budget; KV is the continuous target at our bus voltage, not a catalogue motor
-delivery_quad|12.41 kg 39.5x14 KV 80 6S 36861 mAh|the paper's pack (6S 36.9 Ah, ~820 Wh) holds ~5x our energy: its mission must be longer or heavier than the reconstructed one
-agri_spray_octo|50.33 kg 38x12 KV 50 12S 14568 mAh|ours is about 30 % heavier (T/W 2.78 from the role's 40 % margin, the calibrated Agricultural equipment law) and feasible under the 17 m/s downwash limit (docs/model.md), where the paper's 8 m/s cap rules out every real sprayer; 18S from the current budget against the paper's 12S, hence the lower KV
-fpv_racing_quad|0.31 kg 5x2 KV 2300 4S 1264 mAh|ours is about 40 % lighter: the example asks for T/W 8.2 (thrust margin 0.65; the racing default T/W 25 relaxes to about 10) against the paper's T/W 25, and our racing motors (C_motor 0.25) and 3-minute-mission pack are light; 5S from the burst power
-lidar_mapping_quad|2.81 kg 21x7 KV 200 3S 7071 mAh|same cell count and prop, MTOW and capacity about 12 % high; the rest is the reconstructed mission
+sar_imaging_quad|5.57 kg 26x9 KV 200 4S 12650 mAh|mission inputs are not published (examples/ are reconstructions); our cell count comes from the 60 A x sqrt(M) current budget; KV is the continuous target at our bus voltage, not a catalogue motor
+delivery_quad|12.41 kg 39.5x14 KV 80 6S 36861 mAh|the paper's pack (6S 36.9 Ah, ~820 Wh) holds more energy than ours: its mission must be longer or heavier than the reconstructed one; our propeller is the lightest of the diameters the propeller search tries (docs/model.md), not the largest the wheelbase admits
+agri_spray_octo|50.33 kg 38x12 KV 50 12S 14568 mAh|ours is about 20 % heavier (T/W 2.78 from the role's 40 % margin, the calibrated Agricultural equipment law) and feasible under the 17 m/s downwash limit (docs/model.md), where the paper's 8 m/s cap rules out every real sprayer; 18S from the current budget against the paper's 12S, hence the lower KV
+fpv_racing_quad|0.31 kg 5x2 KV 2300 4S 1264 mAh|ours is heavier: the calibrated MicroAIO equipment law and a 6S pack from the burst power, although the example asks for T/W 8.2 (thrust margin 0.65) against the paper's T/W 25
+lidar_mapping_quad|2.81 kg 21x7 KV 200 3S 7071 mAh|ours is heavier, on 6S from the current budget against the paper's 3S; our propeller is the lightest of the diameters the propeller search tries (docs/model.md), below the 21 in the wheelbase admits
 coaxial_inspection_quad|7.77 kg 15x4 KV 450 6S 26881 mAh|the paper's pack (6S 26.9 Ah, ~600 Wh) holds several times our energy: mission inputs are not published
 EOF
 

@@ -282,6 +282,42 @@ engine_explore_should_pass_through_the_design_point(void **state)
 		assert_true(c->endurance_mass_kg[k] > c->endurance_mass_kg[k - 1]);
 }
 
+/* A light aircraft on a wide frame: the propeller search keeps a rotor
+ * smaller than the largest the wheelbase admits, because at the design's
+ * own mass the largest one closes heavier (the open loop f(M) with each
+ * share); a heavy one at high disk loading keeps the largest. */
+static void
+engine_propeller_should_be_the_lighter_diameter(void **state)
+{
+	struct fixture *f = *state;
+	static const struct test_profile light = { 0.5, 1.5, 4,
+	    AF_ENTERPRISE_RUGGED, 900.0, 30.0, 0.0, 2.0, 0.0, ROLE_IMAGING };
+	struct mission_spec s;
+	test_mission(&s, &light);
+	solve(f, &s, f->a);
+	const struct res_run *o = &f->a->custom;
+	assert_sound_run(o);
+	assert_true(o->prop_frac < 0.7);
+	assert_rel(o->opt.prop_diameter_in, o->overlap_limit_in * o->prop_frac, 1e-6);
+	struct sizing_open at_own, at_largest;
+	double m = o->mass.total_kg;
+	assert_true(engine_at_mass(&s, &f->env.model, m, o->prop_frac, &at_own));
+	assert_true(engine_at_mass(&s, &f->env.model, m, 1.0, &at_largest));
+	assert_rel(at_own.mass.total_kg, m, 0.01);
+	assert_true(at_largest.mass.total_kg > 1.05 * m);
+	/* Left free, the open loop picks the same share at that mass. */
+	struct sizing_open free_pick;
+	assert_true(engine_at_mass(&s, &f->env.model, m, 0.0, &free_pick));
+	assert_rel(free_pick.prop_frac, o->prop_frac, 1e-12);
+
+	static const struct test_profile heavy = { 20.0, 1.2, 4,
+	    AF_ENTERPRISE_RUGGED, 300.0, 30.0, 0.0, 2.0, 0.0, ROLE_DELIVERY };
+	test_mission(&s, &heavy);
+	solve(f, &s, f->a);
+	assert_true(f->a->custom.ran && f->a->custom.converged);
+	assert_rel(f->a->custom.prop_frac, 1.0, 1e-12);
+}
+
 static void
 engine_hover_phase_should_follow_the_paper_rotor_model(void **state)
 {
@@ -296,8 +332,12 @@ engine_hover_phase_should_follow_the_paper_rotor_model(void **state)
 	double d = in_to_m(o->opt.prop_diameter_in);
 	double area = 0.25 * M_PI * d * d;
 	double m = o->mass.total_kg; /* f(M*), within 1 g of M* */
-	/* D = the quad overlap limit 0.95 · 0.85 · sin(π/4) = 0.570989 m */
-	assert_rel(d, 0.570989, 1e-5);
+	/* D = a share 0.85^k of the quad overlap limit
+	 * 0.95 · 0.85 · sin(π/4) = 0.570989 m (the propeller search) */
+	int n = (int)lround(log(o->prop_frac) / log(0.85));
+	assert_true(n >= 0 && n < 8);
+	assert_rel(o->prop_frac, pow(0.85, n), 1e-12);
+	assert_rel(d, 0.570989 * o->prop_frac, 1e-5);
 	/* FoM = 0.75 / κ · (1 - exp(-Re/20000)), floored at 0.38, with the
 	 * class's calibrated κ (the paper's 1.25 is its prior) */
 	double kappa = f->env.model.cal.kappa[s.airframe_class];
@@ -744,6 +784,7 @@ main(void)
 		T(engine_coaxial_cg_limit_should_use_the_four_arm_polygon),
 		T(engine_racing_margin_0_8_should_target_thrust_to_weight_25),
 		T(engine_hover_phase_should_follow_the_paper_rotor_model),
+		T(engine_propeller_should_be_the_lighter_diameter),
 		T(engine_coaxial_downwash_should_count_one_disk_per_stacked_pair),
 		T(engine_motor_targets_should_follow_the_continuous_scaling_laws),
 		T(engine_should_reject_a_mission_without_flight_time),

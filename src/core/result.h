@@ -175,6 +175,8 @@ struct res_run {
 	bool ran;                 /* false if the gate stopped it before the loop */
 	bool feasible;            /* every check passed */
 	bool converged;           /* mass loop met the 1 g tolerance */
+	double prop_frac;         /* an unlocked propeller's diameter over the
+	                             largest the wheelbase admits (engine.c) */
 	char termination[RES_TEXT]; /* why the discharge ended / the loop stopped */
 	int iterations;
 	double tolerance_kg;      /* the loop's convergence tolerance |ΔM| */

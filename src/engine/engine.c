@@ -297,6 +297,21 @@ mass_diff(const struct res_mass *a, const struct res_mass *b, struct res_mass *d
 	d->total_kg = a->total_kg - b->total_kg;
 }
 
+/* The propeller diameters a continuous design tries: the largest the
+ * wheelbase admits, then each PROP_STEP smaller, N_PROP_FRACS in all (down
+ * to 32 %).  The paper's overlap limit (eq. overlap) is a bound, not a
+ * choice: a smaller rotor needs more power for the same thrust but turns
+ * faster, and a motor weighs by its torque (sizing_motor_kg), so a light
+ * aircraft on a wide frame is lighter on smaller rotors. */
+#define PROP_STEP    0.85
+#define N_PROP_FRACS 8
+
+static double
+prop_frac(int k)
+{
+	return pow(PROP_STEP, (double)k);
+}
+
 /* Plain sentences about what the solver decided and what binds. */
 static void
 explain(const struct sizing_params *p, const struct res_run *o,
@@ -308,11 +323,22 @@ explain(const struct sizing_params *p, const struct res_run *o,
 	if (p->prop_locked)
 		res_rationale(r, "Propeller %.1f × %.1f in is locked by the mission.",
 		    o->opt.prop_diameter_in, o->opt.prop_pitch_in);
+	else if (p->prop_frac < 1.0)
+		res_rationale(r, "Propeller %.1f × %.1f in: %.0f %% of the largest the "
+		    "wheelbase admits (%.1f in), the lightest design that passes every "
+		    "check of the diameters tried (100 %% down to %.0f %%): a smaller rotor "
+		    "needs more power but turns faster, and motors weigh by their torque; "
+		    "pitch from the hover inflow angle plus 4° incidence.",
+		    o->opt.prop_diameter_in, o->opt.prop_pitch_in, 100.0 * p->prop_frac,
+		    o->overlap_limit_in, 100.0 * prop_frac(N_PROP_FRACS - 1));
 	else
 		res_rationale(r, "Propeller %.1f × %.1f in: the largest the wheelbase "
-		    "admits with 5 %% tip clearance (bigger rotors need less power for "
-		    "the same thrust); pitch from the hover inflow angle plus 4° incidence.",
-		    o->opt.prop_diameter_in, o->opt.prop_pitch_in);
+		    "admits with 5 %% tip clearance, of the diameters tried (100 %% down to "
+		    "%.0f %%) the lightest design that passes every check, or the paper's "
+		    "choice when none does; pitch from the hover inflow angle plus 4° "
+		    "incidence.",
+		    o->opt.prop_diameter_in, o->opt.prop_pitch_in,
+		    100.0 * prop_frac(N_PROP_FRACS - 1));
 	res_rationale(r, "Hover throttle %.0f %% (thrust margin %.0f %%) gives a "
 	    "design thrust-to-weight ratio of %.2f.", 100.0 * o->hover_throttle,
 	    100.0 * (1.0 - o->hover_throttle), o->thrust_to_weight);
@@ -465,6 +491,60 @@ run_finish(const struct sizing_params *p, const char *name, bool baseline,
 		explain(p, o, s, r);
 }
 
+
+/* A continuous design's propeller: with a locked one the mass loop once;
+ * else at each diameter prop_frac() gives, keeping the lightest that
+ * converges and passes every check (judged on a scratch result) at the
+ * thrust margin asked for, or the largest when none does (the paper's
+ * choice), from the largest down until the mass rises again.  Fills *o (its checks not yet made) and p->prop_frac; returns
+ * the loop's status. */
+static enum sizing_status
+prop_search(struct sizing_params *p, const char *name, struct res_run *o,
+            const struct solve_result *r)
+{
+	p->prop_frac = 1.0;
+	if (p->prop_locked)
+		return sizing_run(p, o);
+	struct solve_result *scratch = xmalloc(sizeof *scratch);
+	struct res_run *best = xmalloc(sizeof *best);
+	enum sizing_status best_st = SIZING_RUNAWAY;
+	double best_frac = 1.0;
+	bool best_ok = false, best_full = false;
+	for (int k = 0; k < N_PROP_FRACS; k++) {
+		p->prop_frac = prop_frac(k);
+		struct res_run *t = &scratch->custom;
+		*t = *o;
+		enum sizing_status st = sizing_run(p, t);
+		scratch->mission = r->mission;
+		scratch->n_violations = 0;
+		bool ok = run_finite(t);
+		if (ok) {
+			feasibility_checks(p, st, name, t, scratch);
+			ok = t->converged && t->feasible;
+		}
+		bool full = t->thrust_margin >= t->thrust_margin_requested;
+		if (k == 0 || (ok && (!best_ok || (full && !best_full)
+		    || (full == best_full && t->mass.total_kg < best->mass.total_kg)))) {
+			*best = *t;
+			best_st = st;
+			best_frac = prop_frac(k);
+			best_ok = ok;
+			best_full = full;
+		} else if (ok && best_ok && full == best_full) {
+			/* The takeoff mass over the diameter falls to one
+			 * minimum (heavier motors one side, more power and
+			 * battery the other): past the first rise, no lighter
+			 * design follows. */
+			break;
+		}
+	}
+	*o = *best;
+	p->prop_frac = best_frac;
+	free(best);
+	free(scratch);
+	return best_st;
+}
+
 /* The role overhead and its rationale line. */
 static void
 role_overhead(struct solve_result *r)
@@ -523,16 +603,20 @@ engine_solve(const struct mission_spec *spec, const struct model_data *md,
 	r->mission = *spec;
 	engine_resolve(&r->mission, md, r);
 
+	/* Each continuous design chooses its propeller (prop_search). */
 	struct sizing_params p;
 	engine_params(&r->mission, md, true, &p);
-	if (run_gate(&p, "baseline", &r->baseline, r))
-		run_finish(&p, "baseline", true, sizing_run(&p, &r->baseline),
-		    &r->mission, &r->baseline, r, &rc);
-
+	if (run_gate(&p, "baseline", &r->baseline, r)) {
+		enum sizing_status st = prop_search(&p, "baseline", &r->baseline, r);
+		run_finish(&p, "baseline", true, st, &r->mission, &r->baseline, r, &rc);
+		r->baseline.prop_frac = p.prop_frac;
+	}
 	engine_params(&r->mission, md, false, &p);
-	if (run_gate(&p, "custom", &r->custom, r))
-		run_finish(&p, "custom", false, sizing_run(&p, &r->custom),
-		    &r->mission, &r->custom, r, &rc);
+	if (run_gate(&p, "custom", &r->custom, r)) {
+		enum sizing_status st = prop_search(&p, "custom", &r->custom, r);
+		run_finish(&p, "custom", false, st, &r->mission, &r->custom, r, &rc);
+		r->custom.prop_frac = p.prop_frac;
+	}
 	role_overhead(r);
 
 	/* Real parts on top of a converged custom run (parts.h). */
@@ -552,13 +636,37 @@ engine_solve(const struct mission_spec *spec, const struct model_data *md,
 
 bool
 engine_at_mass(const struct mission_spec *spec, const struct model_data *md,
-               double mass_kg, struct sizing_open *out)
+               double mass_kg, double share, struct sizing_open *out)
 {
 	struct mission_spec s = *spec;
 	engine_resolve(&s, md, NULL);
 	struct sizing_params p;
 	engine_params(&s, md, false, &p);
-	return sizing_at_mass(&p, mass_kg, out);
+	if (p.prop_locked || share > 0.0) {
+		p.prop_frac = p.prop_locked ? 1.0 : share;
+		bool ok = sizing_at_mass(&p, mass_kg, out);
+		out->prop_frac = p.prop_frac;
+		return ok;
+	}
+	/* The diameter the designer would choose at this mass: of those the
+	 * closed loop tries, the one that closes lightest. */
+	bool any = false;
+	for (int k = 0; k < N_PROP_FRACS; k++) {
+		struct sizing_open t;
+		p.prop_frac = prop_frac(k);
+		if (sizing_at_mass(&p, mass_kg, &t)
+		    && (!any || t.mass.total_kg < out->mass.total_kg)) {
+			*out = t;
+			out->prop_frac = p.prop_frac;
+			any = true;
+		}
+	}
+	if (!any) {
+		p.prop_frac = 1.0;
+		sizing_at_mass(&p, mass_kg, out);
+		out->prop_frac = 1.0;
+	}
+	return any;
 }
 
 void
@@ -572,5 +680,6 @@ engine_explore(struct solve_result *r, const struct model_data *md)
 		return;
 	struct sizing_params p;
 	engine_params(&r->mission, md, false, &p);
+	p.prop_frac = o->prop_frac;
 	sizing_explore(&p, o);
 }

@@ -36,9 +36,12 @@ void engine_explore(struct solve_result *r, const struct model_data *md);
 
 /* The custom run's map f evaluated once at mass_kg (sizing_at_mass()):
  * the open-loop comparison of validate and calibrate, which evaluate the
- * model at a real aircraft's real takeoff mass. */
+ * model at a real aircraft's real takeoff mass.  An unlocked propeller is
+ * flown at share of the largest the wheelbase admits, or, with share 0,
+ * at the share of those the closed loop tries whose f is
+ * least (out->prop_frac says which). */
 bool engine_at_mass(const struct mission_spec *spec, const struct model_data *md,
-                    double mass_kg, struct sizing_open *out);
+                    double mass_kg, double share, struct sizing_open *out);
 
 /* Resolve the mission into the custom-run parameters (after the
  * requirements layer has been applied to *spec).  Exposed for the

@@ -254,7 +254,7 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	c = feasibility_add_check(o, "Propeller diameter (overlap limit)", "in",
 	    o->opt.prop_diameter_in, o->overlap_limit_in + 1e-9, true);
 	if (c)
-		c->sized = !p->prop_locked;
+		c->sized = !p->prop_locked && !(p->prop_frac > 0.0 && p->prop_frac < 1.0);
 	c = feasibility_add_check(o, "Tip Mach number at full throttle", "", o->tip_mach_peak,
 	    AERO_TIP_MACH_MAX, true);
 	if (c && !c->pass) {

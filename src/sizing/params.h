@@ -80,6 +80,8 @@ struct sizing_params {
 	/* propeller and motor */
 	bool prop_locked;
 	double prop_diameter_m;
+	double prop_frac;          /* unlocked: the diameter flown over the largest
+	                              the wheelbase admits (0 reads as 1) */
 	double prop_pitch_m;
 	bool kv_locked;
 	double kv;

@@ -214,10 +214,12 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 	memset(e, 0, sizeof *e);
 	e->mass_kg = mass_kg;
 
-	/* Propeller: the largest the overlap limit allows, unless locked. */
+	/* Propeller: the locked one, or the chosen share of the largest the
+	 * overlap limit allows (engine.c tries several). */
 	e->overlap_limit_m = aero_overlap_limit_m(p->wheelbase_m, n_arms(p),
 	    AERO_TIP_CLEARANCE);
-	double d = p->prop_locked ? p->prop_diameter_m : e->overlap_limit_m;
+	double d = p->prop_locked ? p->prop_diameter_m : e->overlap_limit_m
+	    * (p->prop_frac > 0.0 ? p->prop_frac : 1.0);
 
 	/* Thrust targets: T/W = 1 / θ² at the mission's mass (paper §II-E),
 	 * and at least the relaxation floor's T/W with the largest payload

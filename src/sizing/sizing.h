@@ -115,6 +115,8 @@ struct sizing_open {
 	int cells;                   /* its series cells */
 	bool flown;                  /* the mission flew on it */
 	bool settled;                /* capacity and charge agree */
+	double prop_frac;            /* the propeller's share of the largest
+	                                the wheelbase admits (engine_at_mass) */
 };
 
 /* Fills *out at mass_kg; true when the capacity settled and the mission

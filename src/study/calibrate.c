@@ -117,6 +117,10 @@ struct fit_ctx {
 	const struct calibrate_progress *progress;
 	size_t stage;
 	size_t n_solves;
+	double *prop_frac;             /* per row: its unlocked propeller's share
+	                                  of the overlap limit, held through a
+	                                  minimisation (0: chosen at the next
+	                                  evaluation, engine_at_mass()) */
 };
 
 static void
@@ -132,12 +136,15 @@ expand(const struct fit_ctx *cx, const double *theta_free, double *theta)
  * mass is known the dry-mass and battery errors into r[1], r[2]; returns
  * how many (0 when the model cannot fly the mission at M). */
 static int
-open_residuals(struct fit_ctx *cx, const struct calibrate_row *row, double r[3])
+open_residuals(struct fit_ctx *cx, size_t idx, double r[3])
 {
+	const struct calibrate_row *row = &cx->rows[idx];
 	struct sizing_open o;
 	cx->n_evals++;
-	if (!engine_at_mass(&row->spec, &cx->md, row->actual_kg, &o)
-	    || !(o.mass.total_kg > 0.0))
+	bool flown = engine_at_mass(&row->spec, &cx->md, row->actual_kg,
+	    cx->prop_frac[idx], &o);
+	cx->prop_frac[idx] = o.prop_frac;
+	if (!flown || !(o.mass.total_kg > 0.0))
 		return 0;
 	r[0] = log(o.mass.total_kg / row->actual_kg);
 	double dry = calibrate_dry_kg(row);
@@ -166,7 +173,7 @@ residuals(const double *theta_free, double *r, size_t m, void *ctx)
 	for (size_t i = 0; i < cx->n; i++) {
 		const struct calibrate_row *row = &cx->rows[cx->use[i]];
 		double ri[3];
-		int got = open_residuals(cx, row, ri);
+		int got = open_residuals(cx, cx->use[i], ri);
 		if (got == 0 || (size_t)got != n_residuals(row) || k + (size_t)got > m)
 			return 1;
 		for (int j = 0; j < got; j++)
@@ -187,7 +194,7 @@ open_error_pct(struct fit_ctx *cx, const double *theta)
 	size_t k = 0;
 	for (size_t i = 0; i < cx->n; i++) {
 		double r[3];
-		if (open_residuals(cx, &cx->rows[cx->use[i]], r) > 0) {
+		if (open_residuals(cx, cx->use[i], r) > 0) {
 			sum += fabs(expm1(r[0]));
 			k++;
 		}
@@ -442,9 +449,10 @@ fit(const struct calibrate_row *rows, size_t n, const struct model_data *md,
 	 * residuals for the minimiser. */
 	size_t m = 0;
 	struct solve_result *work = xmalloc(sizeof *work);
+	cx->prop_frac = xcalloc(n ? n : 1, sizeof *cx->prop_frac);
 	for (size_t i = 0; i < n; i++) {
 		double r[3];
-		if ((size_t)open_residuals(cx, &rows[i], r) != n_residuals(&rows[i]))
+		if ((size_t)open_residuals(cx, i, r) != n_residuals(&rows[i]))
 			continue;
 		/* A row whose loop the engine had to relax at the role's default
 		 * thrust target is no contraction there: reported, left out. */
@@ -467,6 +475,29 @@ fit(const struct calibrate_row *rows, size_t n, const struct model_data *md,
 	cx->n = m;
 	out->open_before_pct = open_error_pct(cx, calibrate_prior);
 	out->lsq_status = minimise(cx, calibrate_prior, mu, out->theta, &out->n_iter);
+	/* Each row's propeller is held through a minimisation (a diameter
+	 * switching between evaluations would put kinks in the residuals),
+	 * then chosen again at the fitted coefficients; while a choice moves,
+	 * minimise again from there. */
+	for (int pass = 1; pass < CALIBRATE_PROP_PASSES
+	    && (out->lsq_status == LSQ_OK || out->lsq_status == LSQ_MAXITER); pass++) {
+		bool moved = false;
+		double *held = xmalloc((n ? n : 1) * sizeof *held);
+		memcpy(held, cx->prop_frac, (n ? n : 1) * sizeof *held);
+		for (size_t i = 0; i < m; i++)
+			cx->prop_frac[use[i]] = 0.0;
+		open_error_pct(cx, out->theta);
+		for (size_t i = 0; i < m; i++)
+			moved |= cx->prop_frac[use[i]] != held[use[i]];
+		free(held);
+		if (!moved)
+			break;
+		double start[CAL_N_PARAMS];
+		memcpy(start, out->theta, sizeof start);
+		size_t n_iter = 0;
+		out->lsq_status = minimise(cx, start, mu, out->theta, &n_iter);
+		out->n_iter += n_iter;
+	}
 	if (out->lsq_status != LSQ_OK && out->lsq_status != LSQ_MAXITER
 	    && !(out->lsq_status == LSQ_EBADFUNC && out->n_iter > 0)) {
 		rc = -2;
@@ -493,6 +524,7 @@ done:
 	free(work);
 	out->n_evals = cx->n_evals;
 	out->n_solves = cx->n_solves;
+	free(cx->prop_frac);
 	free(cx);
 	return rc;
 }

@@ -72,6 +72,7 @@ extern const double calibrate_hi[CAL_N_PARAMS];
 /* A coefficient informed by fewer rows keeps its prior: two aircraft
  * cannot tell a class's coefficient from their own quirks. */
 #define CALIBRATE_MIN_ROWS 3
+#define CALIBRATE_PROP_PASSES 3 /* minimisations, each propeller choice held */
 #define CALIBRATE_MU 0.05    /* Tikhonov weight: a 10 % move from the prior
                               * costs about as much as a 2 % error on one row */
 #define CALIBRATE_LEVEL 0.90 /* nominal coverage of the interval */

@@ -386,15 +386,15 @@ validate_cohort(const struct cohort *c, const struct model_data *md,
 		 * is a fixed point the loop can reach (docs/validation.md). */
 		struct sizing_open lo, hi;
 		double m = row->takeoff_mass_kg;
-		if (engine_at_mass(&vr->spec, md, 0.99 * m, &lo)
-		    && engine_at_mass(&vr->spec, md, 1.01 * m, &hi))
+		if (engine_at_mass(&vr->spec, md, 0.99 * m, 0.0, &lo)
+		    && engine_at_mass(&vr->spec, md, 1.01 * m, lo.prop_frac, &hi))
 			vr->slope_at_real = (hi.mass.total_kg - lo.mass.total_kg) / (0.02 * m);
 		/* Open loop at the real mass, where the dry mass is known. */
 		struct sizing_open o;
 		double dry = row->takeoff_mass_kg - row->payload_kg
 		    - (row->has_battery_mass_kg ? row->battery_mass_kg : 0.0);
 		if (row->has_battery_mass_kg && dry > 0.0
-		    && engine_at_mass(&vr->spec, md, row->takeoff_mass_kg, &o)) {
+		    && engine_at_mass(&vr->spec, md, row->takeoff_mass_kg, 0.0, &o)) {
 			open_dry += fabs(o.dry_kg / dry - 1.0);
 			open_batt += fabs(o.mass.battery_kg / row->battery_mass_kg - 1.0);
 			out->n_open++;
