@@ -616,6 +616,9 @@ engine_every_example_should_converge_to_finite_numbers(void **state)
 		solve(f, &s, f->a);
 		print_message("%-36s custom %8.4f kg in %3d iterations\n", e->d_name,
 		    f->a->custom.mass.total_kg, f->a->custom.iterations);
+		/* Every rationale sentence whole: none cut at the buffer's end. */
+		for (int i = 0; i < f->a->n_rationale; i++)
+			assert_true(strlen(f->a->rationale[i]) < RES_TEXT - 1);
 		/* An example kept to show an infeasible verdict is one the
 		 * mass loop gives up on: finite numbers, a ran-away run. */
 		if (strncmp(e->d_name, "infeasible_", 11) == 0) {

@@ -325,20 +325,17 @@ explain(const struct sizing_params *p, const struct res_run *o,
 		    o->opt.prop_diameter_in, o->opt.prop_pitch_in);
 	else if (p->prop_frac < 1.0)
 		res_rationale(r, "Propeller %.1f × %.1f in: %.0f %% of the largest the "
-		    "wheelbase admits (%.1f in), the lightest design that passes every "
-		    "check of the diameters tried (100 %% down to %.0f %%): a smaller rotor "
-		    "needs more power but turns faster, and motors weigh by their torque; "
-		    "pitch from the hover inflow angle plus 4° incidence.",
+		    "wheelbase admits (%.1f in), the lightest passing design of the "
+		    "diameters tried (a smaller rotor turns faster: lighter motors); "
+		    "pitch from the hover inflow plus 4° incidence.",
 		    o->opt.prop_diameter_in, o->opt.prop_pitch_in, 100.0 * p->prop_frac,
-		    o->overlap_limit_in, 100.0 * prop_frac(N_PROP_FRACS - 1));
+		    o->overlap_limit_in);
 	else
 		res_rationale(r, "Propeller %.1f × %.1f in: the largest the wheelbase "
-		    "admits with 5 %% tip clearance, of the diameters tried (100 %% down to "
-		    "%.0f %%) the lightest design that passes every check, or the paper's "
-		    "choice when none does; pitch from the hover inflow angle plus 4° "
-		    "incidence.",
-		    o->opt.prop_diameter_in, o->opt.prop_pitch_in,
-		    100.0 * prop_frac(N_PROP_FRACS - 1));
+		    "admits with 5 %% tip clearance, %s; pitch from the hover inflow "
+		    "plus 4° incidence.", o->opt.prop_diameter_in, o->opt.prop_pitch_in,
+		    o->feasible ? "the lightest passing design of the diameters tried"
+		    : "as no diameter tried passes every check");
 	res_rationale(r, "Hover throttle %.0f %% (thrust margin %.0f %%) gives a "
 	    "design thrust-to-weight ratio of %.2f.", 100.0 * o->hover_throttle,
 	    100.0 * (1.0 - o->hover_throttle), o->thrust_to_weight);
