@@ -99,6 +99,13 @@ parts_aim_from(const struct sizing_params *p, const struct res_run *custom,
 	aim->battery_kg = m->battery_kg;
 	aim->energy_wh = custom->energy_wh;
 	aim->hover_power_w = custom->phase[PHASE_HOVER].shaft_power_w / p->eta_drive;
+	/* A mission that drops or sprays its payload hovers lighter than it
+	 * takes off; the options' hover is worked out at the takeoff mass
+	 * (parts_drive), so the aim's is brought there too (P ~ M^1.5). */
+	const struct res_phase *hv = &custom->phase[PHASE_HOVER];
+	if (p->shed != SHED_NONE && hv->thrust_per_rotor_n > 0.0)
+		aim->hover_power_w *= pow(m->total_kg * G0_M_S2
+		    / ((double)p->n_rotors * hv->thrust_per_rotor_n), 1.5);
 	double l = custom->lipschitz;
 	l = l < 0.0 ? 0.0 : l > MAX_L ? MAX_L : l;
 	aim->growth = 1.0 / (1.0 - l);
