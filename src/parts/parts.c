@@ -177,16 +177,18 @@ struct pack_try {
 	double end_soc, reserve_soc;
 	bool completed;                /* the discharge flew the whole mission */
 	bool pack_failed;              /* it failed, and only on checks another
-	                                  pack of the bus may pass */
+	                                  pack of the bus may pass (pack_check) */
 };
 
-/* The checks a closing's pack alone decides (its plug, its sag, its
- * ratings and heat), the drive and the mass unchanged. */
+/* The checks a closing's pack decides with the drive unchanged: its plug,
+ * its ratings and heat, and its sag (the voltage floor, and the thrust at
+ * full throttle, which goes as the loaded bus voltage squared). */
 static bool
 pack_check(const char *code)
 {
 	static const char *const codes[] = { "CONNECTOR_CURRENT", "VOLTAGE_FLOOR",
-	    "BATTERY_CURRENT", "BATTERY_BURST", "BATTERY_POWER", "THERMAL_RUNAWAY" };
+	    "BATTERY_CURRENT", "BATTERY_BURST", "BATTERY_POWER", "THERMAL_RUNAWAY",
+	    "THRUST" };
 	for (size_t i = 0; i < sizeof codes / sizeof codes[0]; i++)
 		if (strcmp(code, codes[i]) == 0)
 			return true;
