@@ -242,9 +242,9 @@ connector_should_be_the_smallest_rating_that_carries_each_pack(void **state)
 }
 
 /* A pack mates only with its own plug's family: that pair is chosen when
- * the catalogue has it with a mass, whatever its rating (the connector
- * check then judges the current); else the smallest rating that carries
- * the current, as for a pack that names no plug. */
+ * the catalogue has it with a mass and it carries the pack's current; else
+ * the plug is re-terminated to the smallest rating that carries it, as for
+ * a pack that names no plug. */
 static void
 connector_should_mate_with_the_packs_own_plug(void **state)
 {
@@ -277,7 +277,8 @@ connector_should_mate_with_the_packs_own_plug(void **state)
 	pk.parallel = 2;
 	struct parts_kit kit;
 	const struct { const char *plug; double amps; const char *want; bool mates; } t[] = {
-		{ "XT30", 50.0, "t-xt30", true },    /* 25 A a pack on a 15 A plug: its own */
+		{ "XT30", 30.0, "t-xt30", true },    /* 15 A a pack on its own 15 A plug */
+		{ "XT30", 50.0, "t-xt90", false },   /* 25 A: re-terminated to the XT90 */
 		{ "xt90", 20.0, "t-xt90", true },    /* the XT30 would carry it, but does not mate */
 		{ "XT90S", 20.0, "t-xt90s", true },  /* "XT90-S" is the same family */
 		{ "AS150/XT150", 20.0, "t-as150", true },

@@ -265,11 +265,13 @@ pick_connector(const struct parts_ctx *x, double per_pack_a,
 {
 	const struct catalog_avionics *best = NULL, *largest = NULL;
 	const struct parts_kit_kind *kk = of_kind(x, "connector");
-	/* The pack's own family, one pair per pack (a pack has one plug). */
+	/* The pack's own family, one pair per pack (a pack has one plug),
+	 * when it carries the pack's current; else the plug is re-terminated
+	 * to a connector that does (below). */
 	for (int i = 0; pack_connector != NULL && pack_connector[0] != '\0'
 	    && kk != NULL && i < kk->n; i++)
 		if (mates_with(pack_connector, kk->items[i])
-		    && kk->items[i]->max_current_a > 0.0) {
+		    && kk->items[i]->max_current_a >= per_pack_a) {
 			kit->connector = kk->items[i];
 			kit->connector_mates = true;
 			kit->n_connectors = n_packs;
