@@ -490,11 +490,11 @@ run_finish(const struct sizing_params *p, const char *name, bool baseline,
 
 
 /* A continuous design's propeller: with a locked one the mass loop once;
- * else at each diameter prop_frac() gives, keeping the lightest that
- * converges and passes every check (judged on a scratch result) at the
- * thrust margin asked for, or the largest when none does (the paper's
- * choice), from the largest down until the mass rises again.  Fills *o (its checks not yet made) and p->prop_frac; returns
- * the loop's status. */
+ * else at each diameter prop_frac() gives, from the largest down until the
+ * mass rises again, keeping the lightest that converges and passes every
+ * check (judged on a scratch result) at the thrust margin asked for, or
+ * the largest when none does (the paper's choice).  Fills *o (its checks
+ * not yet made) and p->prop_frac; returns the loop's status. */
 static enum sizing_status
 prop_search(struct sizing_params *p, const char *name, struct res_run *o,
             const struct solve_result *r)
@@ -502,8 +502,9 @@ prop_search(struct sizing_params *p, const char *name, struct res_run *o,
 	p->prop_frac = 1.0;
 	if (p->prop_locked)
 		return sizing_run(p, o);
-	struct solve_result *scratch = xmalloc(sizeof *scratch);
+	struct solve_result *scratch = xcalloc(1, sizeof *scratch);
 	struct res_run *best = xmalloc(sizeof *best);
+	scratch->mission = r->mission;
 	enum sizing_status best_st = SIZING_RUNAWAY;
 	double best_frac = 1.0;
 	bool best_ok = false, best_full = false;
@@ -512,7 +513,6 @@ prop_search(struct sizing_params *p, const char *name, struct res_run *o,
 		struct res_run *t = &scratch->custom;
 		*t = *o;
 		enum sizing_status st = sizing_run(p, t);
-		scratch->mission = r->mission;
 		scratch->n_violations = 0;
 		bool ok = run_finite(t);
 		if (ok) {
