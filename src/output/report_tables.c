@@ -249,12 +249,21 @@ bom_table(struct rep *rp)
 }
 
 /* Section: the BOM lines with totals.  Without a parts selection it says
- * why, and lists what the continuous design asks of suppliers instead. */
+ * why, and lists what the continuous design asks of suppliers instead
+ * (when its loop converged). */
 void
 report_sec_bom(struct rep *rp, const char *title)
 {
 	const struct solve_result *r = rp->r;
 	report_heading(rp, title);
+	if (!rp->buildable && !r->custom.converged) {
+		/* A loop that did not converge specifies nothing to source. */
+		doc_callout(rp->d, DOC_CALLOUT_FAIL, "NOT BUILDABLE", report_no_parts_reason(rp));
+		doc_paragraph(rp->d, "There is no specification to source: the figures of the loop's last "
+		              "iterate are not a design. Relax the mission (see the checks section's fixes) "
+		              "and compile it again.");
+		return;
+	}
 	if (!rp->buildable) {
 		doc_callout(rp->d, DOC_CALLOUT_FAIL, "NOT BUILDABLE", report_no_parts_reason(rp));
 		report_subheading(rp, "Specification to source (continuous design)", REP_KEEP_PT);
