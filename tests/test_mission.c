@@ -153,6 +153,33 @@ mission_sweep_should_stop_v_max_at_the_thrust_limit(void **state)
 	assert_true(v_min <= v_max);
 }
 
+/* A thrust limit a hair above hover: the sweep's first speed (1 m/s) is
+ * already past it, and the top speed lies below the grid, bisected.  By
+ * hand: 4 L = W (1 + 1e-7), D = W sqrt((1 + 1e-7)² - 1) = 0.0192313 N,
+ * v = 13.85 sqrt(D / 9.190330453) = 0.633556 m/s.  Below hover: 0. */
+static void
+mission_top_speed_below_the_first_grid_point_should_be_bisected(void **state)
+{
+	(void)state;
+	struct mission_model m;
+	double v[64], pw[64], v_min, v_max, s_min, s_max;
+	fixture_hand_model(&m, false);
+	double w_n = 4.385 * G0_M_S2, limit_n = 0.25 * w_n * (1.0 + 1e-7);
+	(void)mission_speed_sweep(&m, 4.385, limit_n, v, pw, 64, &v_min, &v_max);
+	mission_speed_search(&m, 4.385, limit_n, &s_min, &s_max);
+	assert_rel(v_max, 0.633556, 0.01);
+	assert_rel(s_max, v_max, 0.0);
+	struct mission_power p;
+	mission_power(&m, 4.385, 0.0, v_max, &p);
+	assert_false(mission_beyond_limits(&p, limit_n));
+	mission_power(&m, 4.385, 0.0, v_max + 0.01, &p);
+	assert_true(mission_beyond_limits(&p, limit_n));
+	/* A requested 5 m/s is flown at that top speed, within full thrust. */
+	assert_rel(mission_forward_flown_ms(&m, 4.385, limit_n, 5.0, 0.0), v_max, 0.0);
+	(void)mission_speed_sweep(&m, 4.385, 0.24 * w_n, v, pw, 64, &v_min, &v_max);
+	assert_rel(v_max, 0.0, 0.0);
+}
+
 /* The bisection search lands on the sweep's speeds: 5000 random aircraft
  * from a 5-inch racer to a 30 kg sprayer, sea level to 5000 m, some of
  * them clipped by the thrust limit at every speed. */
@@ -241,6 +268,7 @@ main(void)
 		cmocka_unit_test(mission_sweep_should_cover_1_to_30_m_s_in_half_steps),
 		cmocka_unit_test(mission_max_climb_should_stop_where_the_climb_drag_meets_the_thrust),
 		cmocka_unit_test(mission_sweep_should_stop_v_max_at_the_thrust_limit),
+		cmocka_unit_test(mission_top_speed_below_the_first_grid_point_should_be_bisected),
 		cmocka_unit_test(mission_search_should_find_the_sweeps_speeds_on_random_aircraft),
 		cmocka_unit_test(mission_search_hint_should_name_the_grid_points_of_its_answers),
 	};

@@ -166,6 +166,29 @@ mission_beyond_limits(const struct mission_power *p,
 	    || p->pitch_deg > MISSION_PITCH_MAX_DEG;
 }
 
+/* The top speed below the sweep's first grid point, when that point is
+ * already past the limits: bisected, keeping the low end within them (0
+ * when hover itself is not). */
+static double
+below_grid_max_ms(const struct mission_model *m, double mass_kg,
+                  double s_fwd_m2, double max_thrust_per_rotor_n)
+{
+	struct mission_power p;
+	phase_power(m, mass_kg, 0.0, 0.0, s_fwd_m2, &p);
+	if (mission_beyond_limits(&p, max_thrust_per_rotor_n))
+		return 0.0;
+	double lo = 0.0, hi = MISSION_SWEEP_V0_MS;
+	for (int i = 0; i < 64 && hi - lo > 1e-3; i++) {
+		double mid = 0.5 * (lo + hi);
+		phase_power(m, mass_kg, 0.0, mid, s_fwd_m2, &p);
+		if (mission_beyond_limits(&p, max_thrust_per_rotor_n))
+			hi = mid;
+		else
+			lo = mid;
+	}
+	return lo;
+}
+
 int
 mission_speed_sweep(const struct mission_model *m, double mass_kg,
                     double max_thrust_per_rotor_n, double *v_ms,
@@ -191,7 +214,8 @@ mission_speed_sweep(const struct mission_model *m, double mass_kg,
 		bool over = mission_beyond_limits(&p, max_thrust_per_rotor_n);
 		if (over && !limited) {
 			limited = true;
-			*v_max_ms = v - MISSION_SWEEP_STEP_MS;
+			*v_max_ms = i > 0 ? v - MISSION_SWEEP_STEP_MS
+			    : below_grid_max_ms(m, mass_kg, s_fwd_m2, max_thrust_per_rotor_n);
 		}
 		if (!over && (i == 0 || p.electrical_w < best)) {
 			best = p.electrical_w;
@@ -300,8 +324,9 @@ mission_speed_search_hinted(const struct mission_model *m, double mass_kg,
 	bool hinted = hint != NULL && hint->set;
 	/* The speeds within the limits are a prefix 0..n_ok-1. */
 	int n_ok = first_true(&s, over_at, 0, last + 1, hinted ? hint->n_ok : -1);
-	*v_max_ms = n_ok <= last ? sweep_speed_ms(n_ok) - MISSION_SWEEP_STEP_MS
-	    : MISSION_SWEEP_V1_MS;
+	*v_max_ms = n_ok == 0 ? below_grid_max_ms(m, mass_kg, s.s_fwd_m2,
+	    max_thrust_per_rotor_n) : n_ok <= last
+	    ? sweep_speed_ms(n_ok) - MISSION_SWEEP_STEP_MS : MISSION_SWEEP_V1_MS;
 	*v_min_power_ms = MISSION_SWEEP_V0_MS;
 	int i_min = 0;
 	if (n_ok > 0) {
