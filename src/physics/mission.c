@@ -119,6 +119,32 @@ mission_forward_flown_ms(const struct mission_model *m, double mass_kg,
 	return fmin(v_fwd_ms, v_max_ms);
 }
 
+/* The top climb (climb) or forward speed in [0, hi_ms] whose point stays
+ * within the limits, for a speed hi_ms is past them: thrust (and pitch)
+ * grow with the speed's drag, so bisect to 1 mm/s keeping the low end
+ * within them; 0 when hover itself is not. */
+static double
+top_speed_within(const struct mission_model *m, double mass_kg,
+                 double s_fwd_m2, double max_thrust_per_rotor_n,
+                 double hi_ms, bool climb)
+{
+	struct mission_power p;
+	phase_power(m, mass_kg, 0.0, 0.0, 0.0, &p);
+	if (mission_beyond_limits(&p, max_thrust_per_rotor_n))
+		return 0.0;
+	double lo = 0.0, hi = hi_ms;
+	for (int i = 0; i < 64 && hi - lo > 1e-3; i++) {
+		double mid = 0.5 * (lo + hi);
+		phase_power(m, mass_kg, climb ? mid : 0.0, climb ? 0.0 : mid,
+		    climb ? 0.0 : s_fwd_m2, &p);
+		if (mission_beyond_limits(&p, max_thrust_per_rotor_n))
+			hi = mid;
+		else
+			lo = mid;
+	}
+	return lo;
+}
+
 double
 mission_max_climb_ms(const struct mission_model *m, double mass_kg,
                      double max_thrust_per_rotor_n, double v_hi_ms)
@@ -127,21 +153,8 @@ mission_max_climb_ms(const struct mission_model *m, double mass_kg,
 	mission_power(m, mass_kg, v_hi_ms, 0.0, &p);
 	if (!mission_beyond_limits(&p, max_thrust_per_rotor_n))
 		return v_hi_ms;
-	mission_power(m, mass_kg, 0.0, 0.0, &p);
-	if (mission_beyond_limits(&p, max_thrust_per_rotor_n))
-		return 0.0;
-	/* Thrust grows with the climb's drag: bisect on the speed, keeping
-	 * the low end within the limit. */
-	double lo = 0.0, hi = v_hi_ms;
-	for (int i = 0; i < 64 && hi - lo > 1e-3; i++) {
-		double mid = 0.5 * (lo + hi);
-		mission_power(m, mass_kg, mid, 0.0, &p);
-		if (mission_beyond_limits(&p, max_thrust_per_rotor_n))
-			hi = mid;
-		else
-			lo = mid;
-	}
-	return lo;
+	return top_speed_within(m, mass_kg, 0.0, max_thrust_per_rotor_n, v_hi_ms,
+	    true);
 }
 
 /* The sweep's grid: speed i of 0..mission_sweep_last(). */
@@ -164,29 +177,6 @@ mission_beyond_limits(const struct mission_power *p,
 {
 	return p->thrust_per_rotor_n > max_thrust_per_rotor_n
 	    || p->pitch_deg > MISSION_PITCH_MAX_DEG;
-}
-
-/* The top speed below the sweep's first grid point, when that point is
- * already past the limits: bisected, keeping the low end within them (0
- * when hover itself is not). */
-static double
-below_grid_max_ms(const struct mission_model *m, double mass_kg,
-                  double s_fwd_m2, double max_thrust_per_rotor_n)
-{
-	struct mission_power p;
-	phase_power(m, mass_kg, 0.0, 0.0, s_fwd_m2, &p);
-	if (mission_beyond_limits(&p, max_thrust_per_rotor_n))
-		return 0.0;
-	double lo = 0.0, hi = MISSION_SWEEP_V0_MS;
-	for (int i = 0; i < 64 && hi - lo > 1e-3; i++) {
-		double mid = 0.5 * (lo + hi);
-		phase_power(m, mass_kg, 0.0, mid, s_fwd_m2, &p);
-		if (mission_beyond_limits(&p, max_thrust_per_rotor_n))
-			hi = mid;
-		else
-			lo = mid;
-	}
-	return lo;
 }
 
 int
@@ -215,7 +205,8 @@ mission_speed_sweep(const struct mission_model *m, double mass_kg,
 		if (over && !limited) {
 			limited = true;
 			*v_max_ms = i > 0 ? v - MISSION_SWEEP_STEP_MS
-			    : below_grid_max_ms(m, mass_kg, s_fwd_m2, max_thrust_per_rotor_n);
+			    : top_speed_within(m, mass_kg, s_fwd_m2,
+			    max_thrust_per_rotor_n, MISSION_SWEEP_V0_MS, false);
 		}
 		if (!over && (i == 0 || p.electrical_w < best)) {
 			best = p.electrical_w;
@@ -324,8 +315,8 @@ mission_speed_search_hinted(const struct mission_model *m, double mass_kg,
 	bool hinted = hint != NULL && hint->set;
 	/* The speeds within the limits are a prefix 0..n_ok-1. */
 	int n_ok = first_true(&s, over_at, 0, last + 1, hinted ? hint->n_ok : -1);
-	*v_max_ms = n_ok == 0 ? below_grid_max_ms(m, mass_kg, s.s_fwd_m2,
-	    max_thrust_per_rotor_n) : n_ok <= last
+	*v_max_ms = n_ok == 0 ? top_speed_within(m, mass_kg, s.s_fwd_m2,
+	    max_thrust_per_rotor_n, MISSION_SWEEP_V0_MS, false) : n_ok <= last
 	    ? sweep_speed_ms(n_ok) - MISSION_SWEEP_STEP_MS : MISSION_SWEEP_V1_MS;
 	*v_min_power_ms = MISSION_SWEEP_V0_MS;
 	int i_min = 0;
