@@ -138,10 +138,10 @@ better(const struct parts_ctx *x, const struct parts_closed *a,
 }
 
 /* The lightest arrangement of the bus heavier than above_kg that holds
- * need_wh and carries the option's currents: hover within the continuous rating, full throttle
- * within the burst rating and with the pack's sag at most PARTS_MAX_SAG of
- * its voltage (else the thrust the ranking counted on is not there).  -1
- * when none does. */
+ * need_wh and carries the option's currents: hover within the continuous
+ * rating, full throttle within the burst rating and with the pack's sag at
+ * most max_sag of its voltage (else the thrust the ranking counted on is
+ * not there).  -1 when none does. */
 static int
 pick_pack(const struct parts_ctx *x, const struct parts_option *o,
           const struct parts_pack *pk, int n, double need_wh, double max_sag,
