@@ -366,12 +366,11 @@ option_limits(const struct parts_ctx *x, struct parts_option *o)
 	const struct perf_craft *c = &o->craft;
 	const struct catalog_motor *m = o->motor;
 	bool locked = x->lock_motor != NULL;
-	/* The thrust to lift the continuous design at the floor's T/W (and
-	 * with the largest payload aboard), with a little to spare: the
+	/* The thrust to lift the design at the floor's T/W (and with the
+	 * largest payload aboard), with a little to spare, at the mass the
+	 * option is estimated to close at (J): trusted below the continuous
+	 * design's only down to aim.lightest, at first not at all.  The
 	 * closing finds the real mass, and checks the real T/W there. */
-	/* The mass it is estimated to close at (J), trusted below the
-	 * continuous design's only down to aim.lightest: at first not at all,
-	 * so the thrust is screened at the continuous mass. */
 	double est = 1.0 + o->j / 100.0;
 	double screen = fmax(x->aim.lightest, fmin(1.0, est));
 	double mass = x->aim.mass_kg * screen;
