@@ -90,7 +90,8 @@ parts_packs_init(struct parts_ctx *x)
 			int cells = s * b->cells_series;
 			if (cells < x->cells_lo || cells > x->cells_hi)
 				continue;
-			for (int q = 1; q <= PARTS_MAX_PARALLEL; q++) {
+			for (int q = 1; q <= PARTS_MAX_PARALLEL
+			    && s * q <= PARTS_MAX_PACKS; q++) {
 				struct parts_pack *pk = &x->packs[x->n_packs];
 				pk->b = b;
 				pk->series = s;

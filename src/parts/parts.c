@@ -137,11 +137,12 @@ better(const struct parts_ctx *x, const struct parts_closed *a,
 	return strcmp(a->o.motor->id, b->o.motor->id) < 0;
 }
 
-/* The lightest arrangement of the bus heavier than above_kg that holds
- * need_wh and carries the option's currents: hover within the continuous
- * rating, full throttle within the burst rating and with the pack's sag at
- * most max_sag of its voltage (else the thrust the ranking counted on is
- * not there).  -1 when none does. */
+/* The lightest arrangement of the bus heavier than above_kg, of at most
+ * x->max_parallel packs in parallel, that holds need_wh and carries the
+ * option's currents: hover within the continuous rating, full throttle
+ * within the burst rating and with the pack's sag at most max_sag of its
+ * voltage (else the thrust the ranking counted on is not there).  -1 when
+ * none does. */
 static int
 pick_pack(const struct parts_ctx *x, const struct parts_option *o,
           const struct parts_pack *pk, int n, double need_wh, double max_sag,
@@ -158,6 +159,7 @@ pick_pack(const struct parts_ctx *x, const struct parts_option *o,
 		if (q->energy_wh >= need_wh && q->max_burst_a >= i_full
 		    && q->max_continuous_a >= i_hover
 		    && r_pack * i_full <= max_sag * v && q->mass_kg > above_kg
+		    && q->parallel <= x->max_parallel
 		    && (best < 0 || q->mass_kg < pk[best].mass_kg))
 			best = i;
 	}
@@ -255,8 +257,18 @@ close_option(const struct parts_ctx *x, const struct parts_option *o,
 			n_closed++;
 			double used = 1.0 - t.end_soc;
 			/* Enough charge, but its plug, sag or ratings fail: the
+			 * lighter pack its charge asks for, when there is one
+			 * (less mass to lift may pass the thrust check), then the
 			 * next heavier pack of the same need. */
 			if (t.end_soc >= t.reserve_soc && t.pack_failed) {
+				int fit = t.completed && used > 0.0 ? pick_pack(x, o, pk,
+				    n_pk, pk[at].energy_wh * used / (1.0 - t.reserve_soc),
+				    max_sag[tier], 0.0) : -1;
+				if (fit >= 0 && pk[fit].mass_kg < pk[at].mass_kg) {
+					passed |= close_on(x, o, &pk[fit], esc, n_esc, cur,
+					    pick, spare, &t);
+					n_closed++;
+				}
 				above_kg = pk[at].mass_kg;
 				continue;
 			}
@@ -284,6 +296,75 @@ close_option(const struct parts_ctx *x, const struct parts_option *o,
 			break;
 	}
 	return n_closed;
+}
+
+/* One search's trial buffers, its best closing and its tallies. */
+struct search {
+	struct parts_closed cur, pick;
+	struct solve_result *spare;
+	int n_closed, n_ranked;
+};
+
+/* Rank and close at the continuous design's mass; when no closing passes
+ * every check and the closest came out heavier, or landed short of the
+ * reserve (the battery it lacks, grown as the loop grows it), rank again at
+ * that mass (the parts a heavier aircraft needs), as the continuous loop
+ * would.  The best closing is kept in s->pick, across calls. */
+static void
+search_rounds(struct parts_ctx *x, struct solve_result *r, struct search *s)
+{
+	for (int round = 0; round < PARTS_ROUNDS; round++) {
+		if (round > 0 && s->pick.r != NULL && s->pick.failed == 0)
+			break;
+		double grown = 1.0;
+		if (round > 0 && s->pick.r != NULL) {
+			const struct res_run *cl = &s->pick.r->closed;
+			grown = cl->mass.total_kg / x->aim.mass_kg;
+			/* Short of the reserve: the energy it lacks, carried as
+			 * battery the loop grows around (aim.growth). */
+			if (cl->end_soc < cl->reserve_soc && cl->mass.total_kg > 0.0) {
+				double lack = (1.0 - cl->end_soc) / (1.0 - cl->reserve_soc) - 1.0;
+				grown = fmax(grown, cl->mass.total_kg / x->aim.mass_kg
+				    * (1.0 + x->aim.growth * lack * cl->mass.battery_kg
+				    / cl->mass.total_kg));
+			}
+		}
+		if (round > 0 && grown > 1.0 + PARTS_ROUND_MIN_GROWTH) {
+			parts_aim_regrow(&x->aim, grown);
+		} else if (round > 0) {
+			/* Nothing ranked, or the closest closing is not heavier:
+			 * the real parts may close lighter than the continuous
+			 * design (its laws fit the catalogue's median part, the
+			 * search finds the lightest), so the ranking may trust
+			 * an option's lighter estimate, once. */
+			if (x->aim.lightest < 1.0)
+				break;
+			x->aim.lightest = PARTS_LIGHTEST;
+		}
+		/* The census the report gives is the last ranking's. */
+		memset(x->n_census, 0, sizeof x->n_census);
+		x->n_examined = 0;
+		struct parts_option best[PARTS_KEEP + PARTS_KEEP_RELAXED
+		    + PARTS_KEEP_MARGINAL];
+		int n_best = parts_rank(x, best, PARTS_KEEP + PARTS_KEEP_RELAXED
+		    + PARTS_KEEP_MARGINAL,
+		    r->candidates, &r->n_candidates);
+		s->n_ranked += n_best;
+		/* Each on the lightest pack arrangement that fits it; the best
+		 * closing is kept. */
+		for (int i = 0; i < n_best; i++) {
+			const struct catalog_esc *esc;
+			int n_esc;
+			if (!parts_pick_esc(x, &best[i], &esc, &n_esc)) {
+				x->n_census[PARTS_NO_ESC]++;
+				continue;
+			}
+			s->n_closed += close_option(x, &best[i], esc, n_esc, &s->cur,
+			    &s->pick, &s->spare);
+		}
+		if (s->pick.r != NULL && !s->pick.finite)
+			break;
+	}
 }
 
 /* Frees the lists parts_packs_init() and parts_kit_init() built. */
@@ -332,71 +413,26 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 	parts_packs_init(&x);
 	parts_kit_init(&x);
 
-	/* Rank and close at the continuous design's mass; when no closing
-	 * passes every check and the closest came out heavier, or landed short
-	 * of the reserve (the battery it lacks, grown as the loop grows it),
-	 * rank again at that mass (the parts a heavier aircraft needs), as the
-	 * continuous loop would.  The trial buffers keep their violations'
-	 * codes only. */
-	struct parts_closed cur = { 0 }, pick = { 0 };
-	cur.r = xmalloc(sizeof *cur.r);
-	struct solve_result *spare = xmalloc(sizeof *spare);
-	cur.r->terse = spare->terse = true;
-	int n_closed = 0, n_ranked = 0;
-	for (int round = 0; round < PARTS_ROUNDS; round++) {
-		if (round > 0 && pick.r != NULL && pick.failed == 0)
-			break;
-		double grown = 1.0;
-		if (round > 0 && pick.r != NULL) {
-			const struct res_run *cl = &pick.r->closed;
-			grown = cl->mass.total_kg / x.aim.mass_kg;
-			/* Short of the reserve: the energy it lacks, carried as
-			 * battery the loop grows around (aim.growth). */
-			if (cl->end_soc < cl->reserve_soc && cl->mass.total_kg > 0.0) {
-				double lack = (1.0 - cl->end_soc) / (1.0 - cl->reserve_soc) - 1.0;
-				grown = fmax(grown, cl->mass.total_kg / x.aim.mass_kg
-				    * (1.0 + x.aim.growth * lack * cl->mass.battery_kg
-				    / cl->mass.total_kg));
-			}
-		}
-		if (round > 0 && grown > 1.0 + PARTS_ROUND_MIN_GROWTH) {
-			parts_aim_regrow(&x.aim, grown);
-		} else if (round > 0) {
-			/* Nothing ranked, or the closest closing is not heavier:
-			 * the real parts may close lighter than the continuous
-			 * design (its laws fit the catalogue's median part, the
-			 * search finds the lightest), so the ranking may trust
-			 * an option's lighter estimate, once. */
-			if (x.aim.lightest < 1.0)
-				break;
-			x.aim.lightest = PARTS_LIGHTEST;
-		}
-		/* The census the report gives is the last ranking's. */
-		memset(x.n_census, 0, sizeof x.n_census);
-		x.n_examined = 0;
-		struct parts_option best[PARTS_KEEP + PARTS_KEEP_RELAXED
-		    + PARTS_KEEP_MARGINAL];
-		int n_best = parts_rank(&x, best, PARTS_KEEP + PARTS_KEEP_RELAXED
-		    + PARTS_KEEP_MARGINAL,
-		    r->candidates, &r->n_candidates);
-		n_ranked += n_best;
-		/* Each on the lightest pack arrangement that fits it; the best
-		 * closing is kept. */
-		for (int i = 0; i < n_best; i++) {
-			const struct catalog_esc *esc;
-			int n_esc;
-			if (!parts_pick_esc(&x, &best[i], &esc, &n_esc)) {
-				x.n_census[PARTS_NO_ESC]++;
-				continue;
-			}
-			n_closed += close_option(&x, &best[i], esc, n_esc, &cur, &pick,
-			    &spare);
-		}
-		if (pick.r != NULL && !pick.finite)
-			break;
+	/* The trial buffers keep their violations' codes only.  Banks of at
+	 * most PARTS_BANK_PARALLEL packs in parallel first; wider ones (more
+	 * packs to wire, charge and swap: a builder's last resort) only when
+	 * no closing on those passes every check. */
+	struct search s = { 0 };
+	s.cur.r = xmalloc(sizeof *s.cur.r);
+	s.spare = xmalloc(sizeof *s.spare);
+	s.cur.r->terse = s.spare->terse = true;
+	const struct parts_aim aim = x.aim;
+	x.max_parallel = PARTS_BANK_PARALLEL;
+	search_rounds(&x, r, &s);
+	if (s.pick.r != NULL && s.pick.finite && s.pick.failed > 0) {
+		x.aim = aim;
+		x.max_parallel = PARTS_MAX_PARALLEL;
+		search_rounds(&x, r, &s);
 	}
-	free(spare);
-	free(cur.r);
+	free(s.spare);
+	free(s.cur.r);
+	struct parts_closed pick = s.pick;
+	int n_closed = s.n_closed, n_ranked = s.n_ranked;
 	if (n_ranked == 0 || pick.r == NULL || !pick.finite) {
 		/* Closings whose mass ran away are a verdict on the parts, not
 		 * a defect: said as one.  A closing that is no number is. */

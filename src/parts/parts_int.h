@@ -17,7 +17,11 @@
 #define PARTS_MAX_CELLS     18    /* the highest bus searched: the agricultural
                                      class's 18S (75.6 V LiPo) */
 #define PARTS_MAX_SERIES    4     /* catalogue packs in series ... */
-#define PARTS_MAX_PARALLEL  4     /* ... and in parallel */
+#define PARTS_BANK_PARALLEL 4     /* ... and in parallel, ... */
+#define PARTS_MAX_PARALLEL  6     /* ... six when no closing passes with four
+                                     (DJI's M600 flies six 6S packs in
+                                     parallel), ... */
+#define PARTS_MAX_PACKS     12    /* ... at most two such banks in all */
 #define PARTS_KEEP          32    /* ranked options closed that reach the
                                      continuous design's T/W ... */
 #define PARTS_KEEP_RELAXED  8     /* ... and that reach only the floor */
@@ -152,6 +156,7 @@ struct parts_ctx {
 	const struct catalog_battery *lock_battery;
 	const struct catalog_esc *lock_esc;
 	int cells_lo, cells_hi;            /* buses searched */
+	int max_parallel;                  /* packs in parallel the pick takes */
 	struct parts_pack *packs;          /* every arrangement, by bus then mass */
 	int n_packs;
 	struct parts_kit_kind kit_kinds[PARTS_KIT_KINDS];
