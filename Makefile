@@ -151,12 +151,13 @@ fuzz: deps
 bench: all $(BUILD)/bench
 	sh tests/bench.sh $(BUILD)
 
-# `closure`: the closure report alone (also the first part of `bench`):
+# `closure`: the closure reports alone (also the first part of `bench`):
 # 200 plausible missions from each of seeds 1-3, the share that closes on
-# real parts and the closed-vs-continuous takeoff-mass gap
-# (docs/performance.md).
+# real parts and the closed-vs-continuous takeoff-mass gap; then the
+# missions the calibration cohort's real aircraft fly (docs/performance.md).
 closure: all $(BUILD)/bench
 	$(BUILD)/bench closure 1-3 200 $(BIN) data/catalog
+	$(BUILD)/bench aircraft data/cohorts/calibration.csv data/catalog
 
 $(BUILD)/bench: tests/bench.c $(LIB)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -Itests -o $@ $< $(LIB) $(PKG_LIBS)

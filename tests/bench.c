@@ -25,6 +25,16 @@
  *   With CLOSURE_LIST=1 it also lists every mission that does not close.
  *   Deterministic: the same lines for the same SEED, binary and catalogue.
  *
+ * usage: build/bench aircraft COHORT [DB]
+ *   Closure on the missions real aircraft fly: each row of the cohort CSV
+ *   made into its mission as `validate` makes it (the endurance rule) but
+ *   with the propeller, bus, chemistry and pack count left to the search,
+ *   then solved with the parts catalogue DB (default data/catalog).  A line per
+ *   row (its real takeoff mass, the continuous design, the design of
+ *   record and its verdict with the codes of what fails), then how many
+ *   rows size continuously and how many of those close on real parts.
+ *   With CLOSURE_LIST=1 it also prints what fails, for each open row.
+ *
  * usage: build/bench catalog SRC DST FACTOR
  *   Writes into DST every .json catalogue file of SRC with each entry of its
  *   top-level array repeated FACTOR times, the copies' ids suffixed -x2,
@@ -43,6 +53,11 @@
 
 #include <cjson/cJSON.h>
 
+#include "cli/cli.h"
+#include "core/result.h"
+#include "engine/engine.h"
+#include "input/cohort.h"
+#include "study/validate.h"
 #include "util/file.h"
 
 /* xorshift64: a fixed sequence for a fixed seed, whatever the libc. */
@@ -533,6 +548,101 @@ closure_report(uint64_t lo, uint64_t hi, int n, const char *bin, const char *db)
 	return rc;
 }
 
+/* ---- closure on real aircraft's missions --------------------------------- */
+
+/* The codes of r's violations of run, comma-separated, into buf. */
+static int
+run_codes(const struct solve_result *r, const char *run, char *buf, size_t n)
+{
+	int count = 0;
+	size_t len = 0;
+	buf[0] = '\0';
+	for (int i = 0; i < r->n_violations; i++) {
+		if (strcmp(r->violations[i].run, run) != 0)
+			continue;
+		int w = snprintf(buf + len, n - len, "%s%s", count ? "," : "",
+		    r->violations[i].code);
+		if (w > 0 && (size_t)w < n - len)
+			len += (size_t)w;
+		count++;
+	}
+	return count;
+}
+
+static int
+aircraft_report(const char *cohort_path, const char *db)
+{
+	struct cli_env env;
+	if (cli_env_load(&env, db, 1, stderr) != 0)
+		return 2;
+	struct cohort co;
+	if (cohort_load(cohort_path, &co) != 0 || co.n_errors > 0) {
+		fprintf(stderr, "bench: %s: not a readable cohort\n", cohort_path);
+		cli_env_free(&env);
+		return 2;
+	}
+	bool list = getenv("CLOSURE_LIST") != NULL;
+	struct solve_result *r = malloc(sizeof *r);
+	int n_rows = 0, n_sized = 0, n_feasible = 0, n_closed = 0;
+	int n_feasible_closed = 0;
+	printf("%-32s %9s %11s %9s  %s\n", "aircraft", "real kg", "continuous",
+	    "record", "verdict");
+	for (size_t i = 0; r != NULL && i < co.n_rows; i++) {
+		struct mission_spec spec;
+		unsigned notes;
+		if (validate_mission_from_row(&co.rows[i], &env.model, &spec, &notes)
+		    != VALIDATE_SKIP_NONE)
+			continue;
+		/* The mission, not the maker's design: what the aircraft flies
+		 * on its frame; its propeller, bus, chemistry and packs are the
+		 * search's to choose (validate locks the published ones). */
+		spec.locks.is_prop_locked = false;
+		spec.given[SPECF_LOCK_PROP] = false;
+		spec.given[SPECF_LOCK_DIAMETER_IN] = false;
+		spec.given[SPECF_LOCK_PITCH_IN] = false;
+		spec.nominal_cell_count = 0;
+		spec.given[SPECF_NOMINAL_CELL_COUNT] = false;
+		spec.given[SPECF_BATTERY_CHEMISTRY] = false;
+		spec.battery_pack_count = 1;
+		spec.given[SPECF_BATTERY_PACK_COUNT] = false;
+		n_rows++;
+		memset(r, 0, sizeof *r);
+		engine_solve(&spec, &env.model, env.cat, r);
+		char codes[512];
+		if (!r->custom.ran || !r->custom.converged) {
+			run_codes(r, "custom", codes, sizeof codes);
+			printf("%-32.32s %9.3f %11s %9s  not sized (%s)\n",
+			    co.rows[i].name, co.rows[i].takeoff_mass_kg, "-", "-", codes);
+			continue;
+		}
+		n_sized++;
+		n_feasible += r->custom.feasible;
+		int failed = run_codes(r, "closed", codes, sizeof codes);
+		bool closed = r->parts_selected && failed == 0;
+		n_closed += closed;
+		n_feasible_closed += closed && r->custom.feasible;
+		printf("%-32.32s %9.3f %11.3f %9.3f  %s%s%s%s\n", co.rows[i].name,
+		    co.rows[i].takeoff_mass_kg, r->custom.mass.total_kg,
+		    r->parts_selected ? r->closed.mass.total_kg : 0.0,
+		    closed ? "closes" : "open (", closed ? "" : codes,
+		    closed ? "" : ")", r->custom.feasible ? ""
+		    : " [continuous design infeasible]");
+		for (int k = 0; list && !closed && k < r->n_violations; k++)
+			if (strcmp(r->violations[k].run, "closed") == 0)
+				printf("    %s\n", r->violations[k].message);
+	}
+	printf("aircraft %d with a mission, sized continuously %d, closed on real "
+	    "parts %d (%.1f %%)\n", n_rows, n_sized, n_closed,
+	    n_sized > 0 ? 100.0 * n_closed / n_sized : 0.0);
+	printf("of those, continuous design feasible %d, closed on real parts "
+	    "%d (%.1f %%)\n", n_feasible, n_feasible_closed,
+	    n_feasible > 0 ? 100.0 * n_feasible_closed / n_feasible : 0.0);
+	free(r);
+	cohort_free(&co);
+	cli_env_free(&env);
+	return 0;
+}
+
 int
 main(int argc, char **argv)
 {
@@ -549,12 +659,15 @@ main(int argc, char **argv)
 		return closure_report(lo, hi, atoi(argv[3]), argv[4],
 		    argc == 6 ? argv[5] : NULL);
 	}
+	if ((argc == 3 || argc == 4) && strcmp(argv[1], "aircraft") == 0)
+		return aircraft_report(argv[2], argc == 4 ? argv[3] : NULL);
 	if (argc == 5 && strcmp(argv[1], "missions") == 0)
 		return make_missions(strtoull(argv[2], NULL, 10), atoi(argv[3]), argv[4]);
 	if (argc == 5 && strcmp(argv[1], "catalog") == 0 && atoi(argv[4]) >= 1)
 		return grow_catalog(argv[2], argv[3], atoi(argv[4]));
 	fprintf(stderr, "usage: bench missions SEED N DIR\n"
 	                "       bench closure SEED|LO-HI N AEROEVAL [DB]\n"
+	                "       bench aircraft COHORT [DB]\n"
 	                "       bench catalog SRC DST FACTOR\n");
 	return 2;
 }

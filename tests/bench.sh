@@ -23,10 +23,11 @@
 #   4. with PAPER_ENGINE set (the paper's engine, as a command that takes a
 #      mission file as its last argument), the instructions of that engine on
 #      every example, beside aeroeval solve.
-#   0. the closure report first (BUILD/bench closure): CLOSURE (200)
+#   0. the closure reports first (BUILD/bench closure): CLOSURE (200)
 #      plausible missions of each seed of CLOSURE_SEEDS (1-3) solved, the
 #      share that closes on real parts and the closed-vs-continuous
-#      takeoff-mass gap (docs/performance.md).
+#      takeoff-mass gap; then (BUILD/bench aircraft) the missions of the
+#      calibration cohort's real aircraft (docs/performance.md).
 # Environment: BATCH, SEED, FACTOR, CLOSURE, CLOSURE_SEEDS, PAPER_ENGINE;
 # NO_BATCH=1 skips part 3.
 build=${1:-build}
@@ -41,6 +42,9 @@ trap 'rm -rf "$work"' EXIT
 
 echo "== closure on real parts ($CLOSURE missions per seed, seeds $CLOSURE_SEEDS)"
 "$build/bench" closure "$CLOSURE_SEEDS" "$CLOSURE" "$bin" data/catalog || exit 2
+echo
+echo "== closure on the missions real aircraft fly (data/cohorts/calibration.csv)"
+"$build/bench" aircraft data/cohorts/calibration.csv data/catalog || exit 2
 echo
 
 if ! command -v valgrind >/dev/null 2>&1; then
