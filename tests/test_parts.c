@@ -716,6 +716,17 @@ search_should_wire_a_wider_bank_of_packs_only_as_a_last_resort(void **state)
 	assert_true(r->battery_parallel_packs <= PARTS_MAX_PARALLEL);
 	assert_true(r->battery_series_packs * r->battery_parallel_packs
 	    <= PARTS_MAX_PACKS);
+	/* The BOM says how the packs are wired: banks in parallel, the banks
+	 * in series. */
+	char banks[64];
+	snprintf(banks, sizeof banks, "%d banks of %d packs in parallel",
+	    r->battery_series_packs, r->battery_parallel_packs);
+	const struct res_bom_line *lead = NULL;
+	for (int i = 0; i < r->n_bom; i++)
+		if (strcmp(r->bom[i].part_number, "Series-parallel lead") == 0)
+			lead = &r->bom[i];
+	assert_non_null(lead);
+	assert_non_null(strstr(lead->description, banks));
 	free(r);
 	cli_env_free(&env);
 }

@@ -290,11 +290,25 @@ fill_bom(const struct parts_ctx *x, const struct parts_closed *c,
 		    kit->connector->mass_kg, kit->connector->price_usd,
 		    kit->connector->price_date, kit->connector->source);
 	}
-	if (c->pack.series > 1) {
+	/* The leads that wire the packs into the bus: banks of packs in
+	 * parallel, joined in series. */
+	if (c->pack.series > 1 && c->pack.parallel > 1) {
+		snprintf(d, sizeof d, "Series-parallel lead: %d banks of %d packs in "
+		    "parallel, joined in series into %dS, rated for %.0f A (its "
+		    "mass is in the power harness)", c->pack.series,
+		    c->pack.parallel, c->o.cells, o->peak_current_a);
+		bom_add(r, 1, "custom", "custom", "Series-parallel lead", d, 0.0,
+		    0.0, "");
+	} else if (c->pack.series > 1) {
 		snprintf(d, sizeof d, "Series lead joining %d packs into %dS, rated "
 		    "for %.0f A (its mass is in the power harness)", c->pack.series,
 		    c->o.cells, o->peak_current_a);
 		bom_add(r, 1, "custom", "custom", "Series lead", d, 0.0, 0.0, "");
+	} else if (c->pack.parallel > 1) {
+		snprintf(d, sizeof d, "Parallel lead joining %d packs, rated for "
+		    "%.0f A (its mass is in the power harness)", c->pack.parallel,
+		    o->peak_current_a);
+		bom_add(r, 1, "custom", "custom", "Parallel lead", d, 0.0, 0.0, "");
 	}
 	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
 	if (kit->frame != NULL) {
