@@ -731,6 +731,35 @@ search_should_wire_a_wider_bank_of_packs_only_as_a_last_resort(void **state)
 	cli_env_free(&env);
 }
 
+/* An integrated system's full-throttle burst (longer than the seconds its
+ * ESC's peak rating allows) stays within that ESC's continuous rating:
+ * the Hobbywing X9 G2L, locked on a light six-rotor sprayer, would
+ * otherwise be flown to its published 24 kgf, 116 A a motor through a
+ * 30 A ESC (tests/fixtures/missions). */
+static void
+integrated_system_should_stay_within_its_esc_at_full_throttle(void **state)
+{
+	(void)state;
+	struct cli_env env;
+	assert_int_equal(cli_env_load(&env, NULL, 1, stderr), 0);
+	struct solve_result *r = xcalloc(1, sizeof *r);
+	solve_file(&env, "tests/fixtures/missions/integrated_esc_cap.json", r);
+	assert_true(r->parts_selected);
+	const struct catalog_motor *m = NULL;
+	for (size_t i = 0; i < catalog_n_motors(env.cat); i++)
+		if (strcmp(catalog_motor(env.cat, i)->id,
+		    "hobbywing-xrotor-x9-g2l-integrated-system") == 0)
+			m = catalog_motor(env.cat, i);
+	assert_non_null(m);
+	assert_true(m->integrated && m->integrated_esc_current_a > 0.0);
+	const struct res_op *full = &r->closed.perf.op[OP_FULL];
+	assert_true(full->valid);
+	assert_true(full->motor_current_a <= m->integrated_esc_current_a * 1.001);
+	assert_true(full->thrust_n > 0.0);
+	free(r);
+	cli_env_free(&env);
+}
+
 int
 main(void)
 {
@@ -751,6 +780,7 @@ main(void)
 		cmocka_unit_test(search_should_find_a_closing_much_lighter_than_the_continuous_design),
 		cmocka_unit_test(search_should_try_the_lighter_pack_a_closing_with_spare_charge_asks_for),
 		cmocka_unit_test(search_should_wire_a_wider_bank_of_packs_only_as_a_last_resort),
+		cmocka_unit_test(integrated_system_should_stay_within_its_esc_at_full_throttle),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

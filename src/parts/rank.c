@@ -311,8 +311,18 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 	o->full_power_w = full.power_in_w;
 	/* An integrated system is flown up to the thrust its maker publishes
 	 * and no further: where the model of its motor and propeller promises
-	 * more, the point at that thrust (on the same rotor) is full throttle. */
+	 * more, the point at that thrust (on the same rotor) is full throttle.
+	 * Nor past its own ESC's continuous rating (the full-throttle burst
+	 * lasts longer than the seconds a peak rating allows): the torque that
+	 * current gives, K (I - I0), meets the rotor's kq n^2 at n_esc. */
 	c->max_thrust_n = parts_published_thrust_n(x, m, cells);
+	if (m->integrated && m->integrated_esc_current_a > mp->i0_a) {
+		double n_esc = sqrt(motor_k_nm_a(m->kv_rpm_per_v)
+		    * (m->integrated_esc_current_a - mp->i0_a) / kq);
+		double t_esc = prop_thrust_d4_n(&c->prop, rho, n_esc, o->d4_m4);
+		if (!(c->max_thrust_n > 0.0) || t_esc < c->max_thrust_n)
+			c->max_thrust_n = t_esc;
+	}
 	if (c->max_thrust_n > 0.0 && o->full_thrust_n > c->max_thrust_n) {
 		double n_c = sqrt(c->max_thrust_n / (c->prop.ct * rho * o->d4_m4));
 		motor_at_shaft(&c->motor, t_w, kq * 2.0 * M_PI * n_c * n_c * n_c,
