@@ -256,14 +256,17 @@ close_option(const struct parts_ctx *x, const struct parts_option *o,
 			passed |= close_on(x, o, &pk[at], esc, n_esc, cur, pick, spare, &t);
 			n_closed++;
 			double used = 1.0 - t.end_soc;
-			/* Enough charge, but its plug, sag or ratings fail: the
-			 * lighter pack its charge asks for, when there is one
-			 * (less mass to lift may pass the thrust check), then the
-			 * next heavier pack of the same need. */
+			/* The pack a mission flown whole asks for by its charge
+			 * alone: this pack's energy times the charge it drew over
+			 * the charge it may draw. */
+			int fit = t.completed && used > 0.0 ? pick_pack(x, o, pk, n_pk,
+			    pk[at].energy_wh * used / (1.0 - t.reserve_soc),
+			    max_sag[tier], 0.0) : -1;
+			/* Enough charge, but its plug, sag or ratings fail: that
+			 * pack, when it is lighter (less mass to lift may pass the
+			 * thrust check), then the next heavier pack of the same
+			 * need. */
 			if (t.end_soc >= t.reserve_soc && t.pack_failed) {
-				int fit = t.completed && used > 0.0 ? pick_pack(x, o, pk,
-				    n_pk, pk[at].energy_wh * used / (1.0 - t.reserve_soc),
-				    max_sag[tier], 0.0) : -1;
 				if (fit >= 0 && pk[fit].mass_kg < pk[at].mass_kg) {
 					passed |= close_on(x, o, &pk[fit], esc, n_esc, cur,
 					    pick, spare, &t);
@@ -277,14 +280,9 @@ close_option(const struct parts_ctx *x, const struct parts_option *o,
 			/* Short of the reserve: the next pack holds at least
 			 * PARTS_PACK_STEP more (it carries its own mass, and a
 			 * mission cut short at the voltage floor drew less than it
-			 * needed).  A mission flown whole also tries the pack its
-			 * charge alone asks for, this pack's energy times the charge
-			 * it drew over the charge it may draw, when that is a
-			 * smaller step. */
+			 * needed).  The pack its charge asks for is tried too,
+			 * when that is a smaller step. */
 			need = pk[at].energy_wh * PARTS_PACK_STEP;
-			int fit = t.completed ? pick_pack(x, o, pk, n_pk,
-			    pk[at].energy_wh * used / (1.0 - t.reserve_soc),
-			    max_sag[tier], 0.0) : -1;
 			if (fit >= 0 && fit != at
 			    && fit != pick_pack(x, o, pk, n_pk, need, max_sag[tier], 0.0)) {
 				passed |= close_on(x, o, &pk[fit], esc, n_esc, cur, pick,
