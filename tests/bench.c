@@ -59,6 +59,7 @@
 #include "input/cohort.h"
 #include "study/validate.h"
 #include "util/file.h"
+#include "util/xalloc.h"
 
 /* xorshift64: a fixed sequence for a fixed seed, whatever the libc. */
 static uint64_t
@@ -428,6 +429,18 @@ closure_merge(struct closure *dst, const struct closure *src)
 			closure_count(dst, src->code[i]);
 }
 
+/* The line of a closure report that keeps the missions whose continuous
+ * design passes every check: a continuous design that fails one (tip
+ * Mach, most often) is a mission no aircraft flies, and real parts are not
+ * asked to close it. */
+static void
+print_feasible_rate(int n_feasible, int n_feasible_closed)
+{
+	printf("of those, continuous design feasible %d, closed on real parts "
+	    "%d (%.1f %%)\n", n_feasible, n_feasible_closed,
+	    n_feasible > 0 ? 100.0 * n_feasible_closed / n_feasible : 0.0);
+}
+
 /* The report's lines for c; seeds names the sample ("seed 1", "seeds 1-3"). */
 static void
 closure_print(struct closure *c, const char *seeds)
@@ -436,12 +449,7 @@ closure_print(struct closure *c, const char *seeds)
 	    "parts %d (%.1f %%)\n", c->n_missions, seeds, c->n_continuous,
 	    c->n_closed, c->n_continuous > 0
 	    ? 100.0 * c->n_closed / c->n_continuous : 0.0);
-	/* A continuous design that fails a check (tip Mach, most often) is a
-	 * mission no aircraft flies: real parts are not asked to close it. */
-	printf("of those, continuous design feasible %d, closed on real parts "
-	    "%d (%.1f %%)\n", c->n_feasible, c->n_feasible_closed,
-	    c->n_feasible > 0 ? 100.0 * c->n_feasible_closed / c->n_feasible
-	    : 0.0);
+	print_feasible_rate(c->n_feasible, c->n_feasible_closed);
 	printf("closed by continuous takeoff mass:");
 	for (size_t b = 0; b < CLOSURE_BANDS; b++) {
 		if (b == 0)
@@ -582,12 +590,12 @@ aircraft_report(const char *cohort_path, const char *db)
 		return 2;
 	}
 	bool list = getenv("CLOSURE_LIST") != NULL;
-	struct solve_result *r = malloc(sizeof *r);
+	struct solve_result *r = xmalloc(sizeof *r);
 	int n_rows = 0, n_sized = 0, n_feasible = 0, n_closed = 0;
 	int n_feasible_closed = 0;
 	printf("%-32s %9s %11s %9s  %s\n", "aircraft", "real kg", "continuous",
 	    "record", "verdict");
-	for (size_t i = 0; r != NULL && i < co.n_rows; i++) {
+	for (size_t i = 0; i < co.n_rows; i++) {
 		struct mission_spec spec;
 		unsigned notes;
 		if (validate_mission_from_row(&co.rows[i], &env.model, &spec, &notes)
@@ -634,9 +642,7 @@ aircraft_report(const char *cohort_path, const char *db)
 	printf("aircraft %d with a mission, sized continuously %d, closed on real "
 	    "parts %d (%.1f %%)\n", n_rows, n_sized, n_closed,
 	    n_sized > 0 ? 100.0 * n_closed / n_sized : 0.0);
-	printf("of those, continuous design feasible %d, closed on real parts "
-	    "%d (%.1f %%)\n", n_feasible, n_feasible_closed,
-	    n_feasible > 0 ? 100.0 * n_feasible_closed / n_feasible : 0.0);
+	print_feasible_rate(n_feasible, n_feasible_closed);
 	free(r);
 	cohort_free(&co);
 	cli_env_free(&env);

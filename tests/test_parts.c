@@ -745,11 +745,8 @@ integrated_system_should_stay_within_its_esc_at_full_throttle(void **state)
 	struct solve_result *r = xcalloc(1, sizeof *r);
 	solve_file(&env, "tests/fixtures/missions/integrated_esc_cap.json", r);
 	assert_true(r->parts_selected);
-	const struct catalog_motor *m = NULL;
-	for (size_t i = 0; i < catalog_n_motors(env.cat); i++)
-		if (strcmp(catalog_motor(env.cat, i)->id,
-		    "hobbywing-xrotor-x9-g2l-integrated-system") == 0)
-			m = catalog_motor(env.cat, i);
+	const struct catalog_motor *m = catalog_find_motor(env.cat,
+	    "hobbywing-xrotor-x9-g2l-integrated-system");
 	assert_non_null(m);
 	assert_true(m->integrated && m->integrated_esc_current_a > 0.0);
 	const struct res_op *full = &r->closed.perf.op[OP_FULL];
