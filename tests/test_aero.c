@@ -162,7 +162,13 @@ aero_fom_installed_should_divide_by_kappa_and_apply_the_reynolds_fit(void **stat
 	(void)state;
 	/* 0.72 / 1.25 · (1 - exp(-38500/20000)) = 0.576 · (1 - exp(-1.925))
 	 *   = 0.576 · (1 - 0.145875756) = 0.576 · 0.854124244 = 0.491975564 */
-	assert_rel(aero_fom_installed(0.72, 1.25, false, 38500.0), 0.491975564, 1e-9);
+	assert_rel(aero_fom_installed(0.72, 1.25, false, 38500.0, 0.0), 0.491975564, 1e-9);
+	assert_rel(aero_fom_installed(0.72, 1.25, false, 38500.0, AERO_RE_REF),
+	    0.491975564, 1e-9);
+	/* A calibrated reference: 0.576 (1 - exp(-38500/38500)) = 0.576 ·
+	 * 0.632120559 = 0.364101442 */
+	assert_rel(aero_fom_installed(0.72, 1.25, false, 38500.0, 38500.0),
+	    0.364101442, 1e-9);
 }
 
 static void
@@ -170,16 +176,19 @@ aero_fom_isolated_mode_should_skip_kappa(void **state)
 {
 	(void)state;
 	/* 0.72 · 0.854124244 = 0.614969455 */
-	assert_rel(aero_fom_installed(0.72, 1.25, true, 38500.0), 0.614969455, 1e-9);
+	assert_rel(aero_fom_installed(0.72, 1.25, true, 38500.0, 0.0), 0.614969455, 1e-9);
 }
 
 static void
-aero_fom_should_be_floored_at_0_38(void **state)
+aero_fom_should_be_floored_at_0_10(void **state)
 {
 	(void)state;
-	/* 0.576 · (1 - exp(-5000/20000)) = 0.576 · 0.221199217 = 0.12741 < 0.38 */
-	assert_rel(aero_fom_installed(0.72, 1.25, false, 5000.0), 0.38, 1e-15);
-	assert_rel(AERO_FOM_FLOOR, 0.38, 0.0);
+	/* 0.576 · (1 - exp(-5000/20000)) = 0.576 · 0.221199217 = 0.127411 > 0.10:
+	 * the paper's 0.38 floor would hide a tiny rotor's losses */
+	assert_rel(aero_fom_installed(0.72, 1.25, false, 5000.0, 0.0), 0.127410749, 1e-8);
+	/* 0.576 · (1 - exp(-2000/20000)) = 0.576 · 0.095162582 = 0.0548 < 0.10 */
+	assert_rel(aero_fom_installed(0.72, 1.25, false, 2000.0, 0.0), 0.10, 1e-15);
+	assert_rel(AERO_FOM_FLOOR, 0.10, 0.0);
 	assert_rel(AERO_RE_REF, 20000.0, 0.0);
 }
 
@@ -284,7 +293,7 @@ main(void)
 		cmocka_unit_test(aero_cd0_should_be_continuous_at_1e5),
 		cmocka_unit_test(aero_fom_installed_should_divide_by_kappa_and_apply_the_reynolds_fit),
 		cmocka_unit_test(aero_fom_isolated_mode_should_skip_kappa),
-		cmocka_unit_test(aero_fom_should_be_floored_at_0_38),
+		cmocka_unit_test(aero_fom_should_be_floored_at_0_10),
 		cmocka_unit_test(aero_interference_should_be_1_plus_c_wa_over_dp),
 		cmocka_unit_test(aero_interference_should_be_capped_at_1_15),
 		cmocka_unit_test(aero_profile_power_should_be_sigma_cd0_rho_a_vtip3_over_8),

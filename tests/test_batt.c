@@ -10,6 +10,11 @@
 #include "test_util.h"
 #include "test_fixtures.h"
 #include "physics/batt.h"
+#include "core/catalog.h"
+#include "core/diag.h"
+#include "core/model.h"
+#include "input/catalog_io.h"
+#include "input/model_io.h"
 
 #include <string.h>
 
@@ -223,24 +228,29 @@ static struct batt_chem
 fixture_pack_lipo(void)
 {
 	struct batt_chem c = fixture_lipo();
-	c.pack_wh_kg_100 = 151.0;   /* the LiPo fit of the catalogue's packs */
-	c.pack_exponent = 0.073;
+	c.pack_wh_kg_100 = 147.9;   /* the LiPo fit of the catalogue's packs */
+	c.pack_exponent = 0.104;
+	c.pack_series_exponent = 0.138;
 	return c;
 }
 
 static void
-batt_pack_wh_kg_should_follow_the_power_law_of_pack_energy(void **state)
+batt_pack_wh_kg_should_follow_the_power_law_of_pack_energy_and_cells(void **state)
 {
 	(void)state;
 	struct batt_chem c = fixture_pack_lipo();
-	/* 100 Wh: e_100 itself. */
-	assert_rel(batt_pack_wh_kg(&c, 100.0), 151.0, 1e-15);
-	/* 1000 Wh: 151 · 10^0.073 = 151 · 1.183041556 = 178.6392750 Wh/kg */
-	assert_rel(batt_pack_wh_kg(&c, 1000.0), 178.6392750, 1e-9);
-	/* 10 Wh: 151 / 1.183041556 = 127.6371056 Wh/kg */
-	assert_rel(batt_pack_wh_kg(&c, 10.0), 127.6371056, 1e-9);
+	/* 100 Wh at 6S: e_100 itself. */
+	assert_rel(batt_pack_wh_kg(&c, 100.0, 6), 147.9, 1e-15);
+	/* 1000 Wh, 6S: 147.9 · 10^0.104 = 147.9 · 1.270574105 = 187.9179101 */
+	assert_rel(batt_pack_wh_kg(&c, 1000.0, 6), 187.9179101, 1e-9);
+	/* 10 Wh, 6S: 147.9 / 1.270574105 = 116.4040723 */
+	assert_rel(batt_pack_wh_kg(&c, 10.0, 6), 116.4040723, 1e-9);
+	/* 100 Wh at 12S: smaller cells, 147.9 · 2^-0.138 = 147.9 · 0.908778792
+	 *   = 134.4082834 Wh/kg; at 3S: 147.9 / 0.908778792 = 162.7459963 */
+	assert_rel(batt_pack_wh_kg(&c, 100.0, 12), 134.4082834, 1e-9);
+	assert_rel(batt_pack_wh_kg(&c, 100.0, 3), 162.7459963, 1e-9);
 	/* Below 1 Wh the law is held at its 1 Wh value. */
-	assert_rel(batt_pack_wh_kg(&c, 0.2), batt_pack_wh_kg(&c, 1.0), 1e-15);
+	assert_rel(batt_pack_wh_kg(&c, 0.2, 1), batt_pack_wh_kg(&c, 1.0, 1), 1e-15);
 }
 
 static void
@@ -248,12 +258,12 @@ batt_pack_mass_should_split_the_energy_between_packs(void **state)
 {
 	(void)state;
 	struct batt_chem c = fixture_pack_lipo();
-	/* One 1000 Wh pack: 1000 / 178.6392750 = 5.597873 kg. */
-	assert_rel(batt_pack_mass_kg(&c, 1000.0, 1, 0.0), 5.597873, 1e-6);
-	/* Ten 100 Wh packs weigh more: 1000 / 151 = 6.622517 kg. */
-	assert_rel(batt_pack_mass_kg(&c, 1000.0, 10, 0.0), 6.622517, 1e-6);
+	/* One 1000 Wh 6S pack: 1000 / 187.9179101 = 5.321473 kg. */
+	assert_rel(batt_pack_mass_kg(&c, 1000.0, 1, 6, 0.0), 5.321473, 1e-6);
+	/* Ten 100 Wh packs weigh more: 1000 / 147.9 = 6.761325 kg. */
+	assert_rel(batt_pack_mass_kg(&c, 1000.0, 10, 6, 0.0), 6.761325, 1e-6);
 	/* The mission's pack specific energy is taken as given. */
-	assert_rel(batt_pack_mass_kg(&c, 1000.0, 1, 250.0), 4.0, 1e-15);
+	assert_rel(batt_pack_mass_kg(&c, 1000.0, 1, 6, 250.0), 4.0, 1e-15);
 }
 
 static void
@@ -262,12 +272,78 @@ batt_pack_energy_should_invert_the_pack_mass(void **state)
 	(void)state;
 	struct batt_chem c = fixture_pack_lipo();
 	const double e_wh[] = { 5.0, 77.7, 100.0, 1234.5 };
+	const int cells[] = { 1, 4, 6, 14 };
 	for (int n = 1; n <= 3; n++)
 		for (size_t i = 0; i < sizeof e_wh / sizeof e_wh[0]; i++) {
-			double m = batt_pack_mass_kg(&c, e_wh[i], n, 0.0);
-			assert_rel(batt_pack_energy_wh(&c, m, n, 0.0), e_wh[i], 1e-12);
+			double m = batt_pack_mass_kg(&c, e_wh[i], n, cells[i], 0.0);
+			assert_rel(batt_pack_energy_wh(&c, m, n, cells[i], 0.0), e_wh[i], 1e-12);
 		}
-	assert_rel(batt_pack_energy_wh(&c, 4.0, 1, 250.0), 1000.0, 1e-15);
+	assert_rel(batt_pack_energy_wh(&c, 4.0, 1, 6, 250.0), 1000.0, 1e-15);
+}
+
+/* Solves the 3x3 normal equations a x = b by elimination (a is symmetric
+ * positive definite: no pivoting needed). */
+static void
+solve3(double a[3][3], double b[3], double x[3])
+{
+	for (int i = 0; i < 3; i++)
+		for (int r = i + 1; r < 3; r++) {
+			double f = a[r][i] / a[i][i];
+			for (int k = i; k < 3; k++)
+				a[r][k] -= f * a[i][k];
+			b[r] -= f * b[i];
+		}
+	for (int i = 2; i >= 0; i--) {
+		double s = b[i];
+		for (int k = i + 1; k < 3; k++)
+			s -= a[i][k] * x[k];
+		x[i] = s / a[i][i];
+	}
+}
+
+/* The shipped pack laws of LiPo and LiHV are the least-squares fits of
+ * the catalogue's packs, ln e = ln e_100 + b ln(E / 100 Wh) - s ln(S / 6):
+ * refit them here from data/catalog/batteries.json. */
+static void
+batt_pack_law_should_be_the_fit_of_the_catalogue_packs(void **state)
+{
+	(void)state;
+	struct diag *dg = diag_alloc(stderr);
+	struct catalog *cat = catalog_io_load("data/catalog", NULL, dg);
+	struct model_data md;
+	assert_int_equal(model_io_load("data", &md, dg), 0);
+	diag_flush(dg);
+	diag_free(dg);
+	assert_non_null(cat);
+	const char *const names[] = { "LiPo", "LiHV" };
+	for (int k = 0; k < 2; k++) {
+		const struct batt_chem *ch = model_chem(&md, names[k]);
+		assert_non_null(ch);
+		double a[3][3] = { { 0 } }, b[3] = { 0 }, x[3];
+		int n = 0;
+		for (size_t i = 0; i < catalog_n_batteries(cat); i++) {
+			const struct catalog_battery *p = catalog_battery(cat, i);
+			if (strcmp(p->chemistry, names[k]) != 0 || p->cells_series < 1
+			    || !(p->capacity_ah > 0.0) || !(p->mass_kg > 0.0))
+				continue;
+			double e_wh = (double)p->cells_series * ch->v_nom * p->capacity_ah;
+			double row[3] = { 1.0, log(e_wh / 100.0),
+				log((double)p->cells_series / BATT_PACK_REF_CELLS) };
+			double y = log(e_wh / p->mass_kg);
+			for (int r = 0; r < 3; r++) {
+				for (int c = 0; c < 3; c++)
+					a[r][c] += row[r] * row[c];
+				b[r] += row[r] * y;
+			}
+			n++;
+		}
+		assert_true(n > 100);
+		solve3(a, b, x);
+		assert_rel(exp(x[0]), ch->pack_wh_kg_100, 0.005);
+		assert_true(fabs(x[1] - ch->pack_exponent) < 0.002);
+		assert_true(fabs(-x[2] - ch->pack_series_exponent) < 0.002);
+	}
+	catalog_free(cat);
 }
 
 int
@@ -288,7 +364,8 @@ main(void)
 		cmocka_unit_test(batt_current_should_detect_voltage_collapse),
 		cmocka_unit_test(batt_current_should_refuse_power_above_the_1e7_w_guard),
 		cmocka_unit_test(batt_current_should_be_p_over_v_for_an_ideal_source),
-		cmocka_unit_test(batt_pack_wh_kg_should_follow_the_power_law_of_pack_energy),
+		cmocka_unit_test(batt_pack_wh_kg_should_follow_the_power_law_of_pack_energy_and_cells),
+		cmocka_unit_test(batt_pack_law_should_be_the_fit_of_the_catalogue_packs),
 		cmocka_unit_test(batt_pack_mass_should_split_the_energy_between_packs),
 		cmocka_unit_test(batt_pack_energy_should_invert_the_pack_mass),
 		cmocka_unit_test(batt_r_sys_at_should_equal_batt_r_sys_ohm_at_every_temperature),

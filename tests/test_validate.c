@@ -155,8 +155,11 @@ rule_should_derive_the_wheelbase_from_the_overlap_limit(void **state)
 	assert_int_equal(s.nominal_cell_count, 6);
 	assert_int_equal(s.payload_role.type, ROLE_MAPPING);
 	assert_rel(s.payload_kg + 1.0, 1.0, 1e-15);
-	/* 0.8 x 25 min of advertised flight, brought to the reserve. */
-	assert_rel(s.t_hover_s, 0.8 * 25 * 60 / 1.2, 1e-12);
+	/* 25 min of advertised flight, flown level at the minimum-power speed
+	 * (no cruise speed given), brought to the reserve. */
+	assert_rel(s.t_forward_s, 25 * 60 / 1.2, 1e-12);
+	assert_rel(s.t_hover_s + 1.0, 1.0, 1e-15);
+	assert_true(s.v_forward_auto);
 	assert_int_equal(notes, VALIDATE_NOTE_WHEELBASE_PROP | VALIDATE_NOTE_CHEM_FAMILY
 	    | VALIDATE_NOTE_MAX_FLIGHT);
 
@@ -381,10 +384,10 @@ rule_should_name_the_fact_outside_the_mission_range(void **state)
 	cohort_free(&c);
 }
 
-/* A 5-inch racer row: the racing role's default T/W 25 cannot close, so
- * the row is sized at the relaxed target and says so. */
+/* A racer sized by the rule flies its role's T/W requirement (8): the
+ * requirement is never relaxed to make a row close. */
 static void
-solve_row_should_report_a_relaxed_role_thrust_target(void **state)
+solve_row_should_fly_the_role_thrust_requirement(void **state)
 {
 	(void)state;
 	struct cohort c;
@@ -407,9 +410,8 @@ solve_row_should_report_a_relaxed_role_thrust_target(void **state)
 	memset(&vr, 0, sizeof vr);
 	validate_solve_row(&s, &md, work, &vr);
 	assert_int_equal(vr.status, VALIDATE_ROW_OK);
-	assert_true(vr.thrust_relaxed);
-	assert_true(vr.thrust_to_weight >= 1.0 / (0.7 * 0.7) - 1e-9);
-	assert_true(vr.thrust_to_weight < 25.0);
+	double theta = 1.0 - md.role[ROLE_RACING].thrust_margin;
+	assert_rel(vr.thrust_to_weight, 1.0 / (theta * theta), 1e-9);
 	free(work);
 	cohort_free(&c);
 }
@@ -428,7 +430,7 @@ main(void)
 		cmocka_unit_test(rule_should_never_read_the_masses_it_predicts),
 		cmocka_unit_test(summarize_should_match_a_hand_worked_cohort),
 		cmocka_unit_test(cohort_should_solve_each_row_and_count_only_converged_rows),
-		cmocka_unit_test(solve_row_should_report_a_relaxed_role_thrust_target),
+		cmocka_unit_test(solve_row_should_fly_the_role_thrust_requirement),
 	};
 	return cmocka_run_group_tests(tests, setup, NULL);
 }

@@ -138,17 +138,7 @@ print_table(FILE *out, const struct cohort *c, const struct validate_report *v)
 		notes_line(vr->notes, buf, sizeof buf);
 		fprintf(out, "  %-28.28s %s\n", c->rows[i].name, buf);
 	}
-	header = 0;
-	for (size_t i = 0; i < v->n_rows; i++) {
-		const struct validate_row *vr = &v->rows[i];
-		if (vr->status != VALIDATE_ROW_OK || !vr->thrust_relaxed)
-			continue;
-		if (!header++)
-			fprintf(out, "\nRole thrust targets relaxed (the role's default "
-			    "did not close; docs/model.md, \"Thrust relaxation\"):\n");
-		fprintf(out, "  %-28.28s T/W %.1f\n", c->rows[i].name,
-		    vr->thrust_to_weight);
-	}
+
 	header = 0;
 	for (size_t i = 0; i < v->n_rows; i++) {
 		const struct validate_row *vr = &v->rows[i];
@@ -260,7 +250,6 @@ report_json(const char *path, const struct cohort *c, const struct validate_repo
 			cJSON_AddNumberToObject(o, "cells", vr->cells);
 			cJSON_AddNumberToObject(o, "capacity_mah", vr->capacity_mah);
 			cJSON_AddNumberToObject(o, "thrust_to_weight", vr->thrust_to_weight);
-			cJSON_AddBoolToObject(o, "thrust_relaxed", vr->thrust_relaxed);
 			cJSON_AddNumberToObject(o, "slope_at_real_mass", vr->slope_at_real);
 		}
 		if (vr->has_battery) {
@@ -530,19 +519,38 @@ cli_calibrate(int argc, char **argv)
 		double before[CAL_N_PARAMS];
 		calibrate_theta(&cr.before, before);
 		printf("Calibration on %s: %zu of %zu rows (the validate rule; rows it skips "
-		    "or that the model cannot fly at their real mass are left out)\n", path,
-		    cr.n_rows, c.n_rows);
-		printf("%-34s %10s %10s %10s %5s\n", "coefficient", "prior", "before", "after", "rows");
-		for (int j = 0; j < CAL_N_PARAMS; j++)
-			printf("%-34s %10.4g %10.4g %10.4g %5zu\n", calibrate_param_name(j),
-			    calibrate_prior[j], before[j], cr.theta[j], cr.n_per_param[j]);
+		    "are left out): %zu in the forward check, %zu with a published dry mass\n",
+		    path, cr.n_rows, c.n_rows, cr.n_forward, cr.n_dry);
+		printf("%-40s %10s %10s %10s %5s\n", "coefficient", "prior", "before", "after", "rows");
+		for (int j = 0; j < CAL_N_PARAMS; j++) {
+			if (j == 0)
+				printf("The power chain, fitted on the forward check's endurance:\n");
+			else if (j == CAL_FIRST_MASS)
+				printf("The mass laws, fitted on the dry mass at the real takeoff mass:\n");
+			printf("  %-38s %10.4g %10.4g %10.4g %5zu%s\n", calibrate_param_name(j),
+			    calibrate_prior[j], before[j], cr.theta[j], cr.n_per_param[j],
+			    calibrate_lo[j] == calibrate_hi[j] ? "  held"
+			    : cr.n_per_param[j] < CALIBRATE_MIN_ROWS ? "  prior (too few rows)"
+			    : cr.at_bound[j] ? "  AT ITS BOUND" : "");
+		}
 		printf("small-platform wiring coefficient: %.4g -> %.4g kg/(A m)\n",
 		    cr.before.wire_coef_small, cr.after.wire_coef_small);
-		printf("Open loop, the closure f(M)/M at the real mass: mean error "
-		    "%.1f %% at the priors, %.1f %% fitted (%zu LM iterations, %zu evaluations, mu %.2g)\n",
-		    cr.open_before_pct, cr.open_after_pct, cr.n_iter, cr.n_evals, CALIBRATE_MU);
-		printf("Closed loop, in sample: MTOW MAPE %.1f %% over %zu rows sized\n",
-		    cr.mtow_mape_pct, cr.n_sized);
+		printf("Forward check, in sample: endurance MAPE %.1f %% at the priors, "
+		    "%.1f %% fitted\n", cr.forward_before_pct, cr.forward_after_pct);
+		printf("Dry mass at the real mass, in sample: MAPE %.1f %% at the priors, "
+		    "%.1f %% fitted (%zu LM iterations, %zu evaluations, mu %.2g)\n",
+		    cr.dry_before_pct, cr.dry_after_pct, cr.n_iter, cr.n_evals, CALIBRATE_MU);
+		printf("Closed loop, in sample: MTOW MAPE %.1f %% over %zu of %zu rows sized\n",
+		    cr.mtow_mape_pct, cr.n_sized, cr.n_sizable);
+		const struct model_spread *sp[] = { &cr.after.forward, &cr.after.dry };
+		static const char *const sp_name[] = { "forward-check endurance",
+			"dry mass at the real mass" };
+		for (int i = 0; i < 2; i++)
+			if (sp[i]->n > 0)
+				printf("Leave-one-out, %s: MAPE %.1f %% over %d figures; %.0f %% "
+				    "interval x%.3f to x%.3f, %.0f %% of the figures inside\n",
+				    sp_name[i], sp[i]->mape_pct, sp[i]->n, 100.0 * CALIBRATE_LEVEL,
+				    exp(sp[i]->log_lo), exp(sp[i]->log_hi), 100.0 * sp[i]->coverage);
 		for (int b = 0; b < MODEL_BASIS_MAX; b++) {
 		const struct model_accuracy *a = &cr.after.accuracy[b];
 		printf("Leave-one-out, %s: MTOW MAPE %.1f %% over %d rows sized, battery "

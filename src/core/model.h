@@ -23,8 +23,9 @@ struct batt_chem {
 	double b;                   /* Tremblay exponential-zone constant B */
 	double k;                   /* Tremblay polarisation constant K, V */
 	bool pouch;                 /* pouch (LiPo family) vs cylindrical/exotic packaging */
-	double pack_wh_kg_100;      /* pack specific energy of a 100 Wh pack, Wh/kg */
+	double pack_wh_kg_100;      /* pack specific energy of a 100 Wh 6S pack, Wh/kg */
 	double pack_exponent;       /* its growth with pack energy (batt_pack_wh_kg) */
+	double pack_series_exponent;/* its fall with series cells at that energy */
 };
 
 #define MODEL_MAX_CHEM 32
@@ -36,6 +37,7 @@ struct model_role {
 	double thrust_margin;           /* 1 - hover throttle */
 	double load_factor;             /* arm design load factor, g */
 	double aux_power_w;             /* default auxiliary power, W */
+	double aux_ref_kg;              /* ... of an aircraft of this mass */
 	double added_drag_m2;           /* default payload drag area, m^2 */
 	double forward_drag_multiplier; /* S_ref multiplier in forward flight */
 	double integration_frac;        /* role hardware / payload mass */
@@ -80,6 +82,19 @@ struct model_accuracy {
 	struct model_interval cls[AF_CLASS_MAX]; /* n = 0: the pooled one serves */
 };
 
+/* How far a model's figure falls from the published one over a cohort:
+ * the spread of ln(model / published) by leave-one-out, and the
+ * split-conformal interval built from it (calibrate.c).  The forward
+ * check (endurance at a real aircraft's mass and pack) and the dry mass at
+ * a real aircraft's mass each have one. */
+struct model_spread {
+	bool valid;             /* calibration.json carries it */
+	int n;                  /* residuals behind it */
+	double mape_pct;        /* mean |model / published - 1| */
+	double log_lo, log_hi;  /* bounds on ln(published / model) */
+	double coverage;        /* share inside, out of sample */
+};
+
 /* data/calibration.json: the calibrated coefficients. */
 enum model_lambda { LAMBDA_MICRO, LAMBDA_CONSUMER, LAMBDA_ENTERPRISE_QUAD,
 	LAMBDA_ENTERPRISE_MULTI, LAMBDA_AGRI, LAMBDA_MAX };
@@ -92,8 +107,18 @@ struct model_calibration {
 	 * e_class (M_design / 1 kg)^exponent, kg (airframe.h). */
 	double equip_kg[AF_CLASS_MAX];
 	double equip_exponent;
-	double kappa[AF_CLASS_MAX];     /* installed-FoM penalty per class (paper) */
+	/* The power chain, fitted on the forward check's endurance residuals
+	 * alone (calibrate.h): */
+	double kappa;                   /* installed-FoM penalty (paper §IV-F) */
+	double eta_drive;               /* motor + ESC efficiency in flight */
+	double re_ref;                  /* Reynolds reference of FoM(Re) */
+	double aux_scale;               /* on the roles' auxiliary power */
+	double drag_scale;              /* on the body drag area S_ref */
+	double wake_share;              /* forward flight: the share of the
+	                                   hover induced power kept (mission.h) */
 	struct model_accuracy accuracy[MODEL_BASIS_MAX]; /* of this calibration */
+	struct model_spread forward;    /* endurance: the forward check */
+	struct model_spread dry;        /* dry mass at the real mass */
 };
 
 /* The interval of a class: its own when the cohort had enough rows of it,

@@ -12,12 +12,6 @@
 const char *const res_phase_name[PHASE_MAX] = { "climb", "forward", "hover" };
 const char *const res_op_name[OP_MAX] = { "hover", "climb", "cruise", "full throttle" };
 
-bool
-res_thrust_relaxed(const struct res_run *run)
-{
-	return run->thrust_margin < run->thrust_margin_requested;
-}
-
 const struct res_check *
 res_tightest_check(const struct res_run *run)
 {

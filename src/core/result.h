@@ -177,6 +177,16 @@ struct res_run {
 	bool converged;           /* mass loop met the 1 g tolerance */
 	double prop_frac;         /* an unlocked propeller's diameter over the
 	                             largest the wheelbase admits (engine.c) */
+	/* Why the rotor is not the largest the wheelbase admits, when it is
+	 * not (engine.c): the same mission on the largest rotor. */
+	struct res_largest_rotor {
+		bool tried;           /* the search flew it */
+		bool passes;          /* ... and it met every requirement */
+		double mass_kg;       /* its takeoff mass (when it passes) */
+		double motor_kg;      /* its motors */
+		double battery_kg;    /* its battery */
+		char fails[RES_TEXT]; /* the first check it failed, else "" */
+	} largest;
 	char termination[RES_TEXT]; /* why the discharge ended / the loop stopped */
 	int iterations;
 	double tolerance_kg;      /* the loop's convergence tolerance |ΔM| */
@@ -184,8 +194,8 @@ struct res_run {
 	double history_kg[RES_MAX_HISTORY];   /* takeoff mass per iteration */
 	double lipschitz;         /* dF/dM at the fixed point */
 	double time_scale;        /* goal relaxation γ (1 = as requested) */
-	double thrust_margin;     /* thrust margin flown, 1 - hover throttle */
-	double thrust_margin_requested; /* the role's or mission's target */
+	double thrust_margin;     /* the thrust requirement: T/W = 1 / (1 - margin)²
+	                             with the largest payload aboard */
 	double aux_power_w;       /* auxiliary power flown (sizing_aux_w()) */
 	struct res_fixed_point fixed;
 
@@ -381,11 +391,6 @@ struct solve_result {
  * construction (arm stress, propeller diameter, mission energy), or NULL:
  * what binds the design.  The rationale and the dossier cover both name it. */
 const struct res_check *res_tightest_check(const struct res_run *run);
-
-/* Did the run fly a lower thrust margin than its role's default target
- * (the thrust relaxation of sizing.h)?  The rationale, validate and the
- * sensitivity suite all ask. */
-bool res_thrust_relaxed(const struct res_run *run);
 
 /* Zero all of a run but its trace samples, which are most of its size
  * and of which only the first n_trace are ever read. */

@@ -241,13 +241,13 @@ X(STRUCT_ARM_CONFIG, "structural_overrides.arm_config", SPEC_ENUM, structural_ov
   "Arm position relative to the rotor: rotor-arm interference c = 0.6 offset, 1.5 under_rotor, 0 folding") \
 \
 X(AERO_FOM, "aerodynamic_overrides.figure_of_merit", SPEC_NUM, aerodynamic_overrides.figure_of_merit, "", 0, 0, 0.95, SPEC_F_ZERO_AUTO, NULL, \
-  "Installed figure of merit used as is (0 = model: isolated/kappa, Reynolds fit, floor 0.38)") \
+  "Installed figure of merit used as is (0 = model: isolated/kappa and the calibrated Reynolds fit)") \
 X(AERO_FOM_ISOLATED, "aerodynamic_overrides.figure_of_merit_isolated", SPEC_NUM, aerodynamic_overrides.figure_of_merit_isolated, "", 0.75, 0.3, 0.95, 0, NULL, \
   "Isolated (test-stand) figure of merit of the propeller") \
 X(AERO_FOM_MODE, "aerodynamic_overrides.figure_of_merit_mode", SPEC_ENUM, aerodynamic_overrides.figure_of_merit_mode, "", FOM_INSTALLED, 0, FOM_MODE_MAX - 1, 0, spec_enum_fom_mode, \
-  "installed: divide the isolated FoM by the class penalty kappa; isolated: use it undivided") \
-X(AERO_PROP_EFF, "aerodynamic_overrides.propulsive_efficiency", SPEC_NUM, aerodynamic_overrides.propulsive_efficiency, "", 0.85, 0.3, 1.0, 0, NULL, \
-  "Motor and ESC drive efficiency: electrical power = shaft power / efficiency") \
+  "installed: divide the isolated FoM by the calibrated installation penalty kappa; isolated: use it undivided") \
+X(AERO_PROP_EFF, "aerodynamic_overrides.propulsive_efficiency", SPEC_NUM, aerodynamic_overrides.propulsive_efficiency, "", 0, 0, 1.0, SPEC_F_ZERO_AUTO, NULL, \
+  "Motor and ESC drive efficiency: electrical power = shaft power / efficiency (0 = the calibrated value)") \
 X(AERO_CD_H, "aerodynamic_overrides.cd_horizontal", SPEC_NUM, aerodynamic_overrides.cd_horizontal, "", 1.0, 0.05, 3.0, 0, NULL, \
   "Body drag coefficient in forward flight, on S_ref") \
 X(AERO_CD_V, "aerodynamic_overrides.cd_vertical", SPEC_NUM, aerodynamic_overrides.cd_vertical, "", 1.2, 0.05, 3.0, 0, NULL, \

@@ -138,7 +138,7 @@ apply_defaults(struct mission_spec *s, const struct model_data *md)
 	const struct model_role *ro = &md->role[s->payload_role.type];
 	struct spec_role *pr = &s->payload_role;
 	if (!s->given[SPECF_ROLE_AUX_POWER_W])
-		pr->aux_power_w = ro->aux_power_w;
+		pr->aux_power_w = ro->aux_power_w * md->cal.aux_scale;
 	if (!s->given[SPECF_ROLE_ADDED_DRAG_M2])
 		pr->added_drag_m2 = ro->added_drag_m2;
 	if (!s->given[SPECF_ROLE_THRUST_MARGIN])
@@ -157,6 +157,8 @@ apply_defaults(struct mission_spec *s, const struct model_data *md)
 		s->baseline_t_forward_s = s->t_forward_s;
 	if (!s->given[SPECF_AMBIENT_TEMP_C])
 		s->ambient_temp_c = k_to_c(atmo_isa_temp_k(s->altitude_m));
+	if (!s->given[SPECF_AERO_PROP_EFF])
+		s->aerodynamic_overrides.propulsive_efficiency = md->cal.eta_drive;
 	if (!s->given[SPECF_STRUCT_BODY_MULT])
 		s->structural_overrides.body_mass_multiplier = md->cls[s->airframe_class].gamma;
 }
@@ -199,13 +201,10 @@ engine_params(const struct mission_spec *s, const struct model_data *md,
 
 	/* Baseline: null role, dead-weight hover math at θ = 0.60. */
 	p->thrust_margin = baseline ? md->role[ROLE_NONE].thrust_margin : pr->thrust_margin_override;
-	/* A role's default thrust target may be relaxed down to T/W 2 when it
-	 * cannot close; a margin the mission asked for never is. */
-	p->thrust_margin_floor = baseline || s->given[SPECF_ROLE_THRUST_MARGIN]
-	    ? 0.0 : SIZING_MIN_THRUST_MARGIN;
 	p->load_factor = role == ROLE_RACING ? pr->racing_load_factor : ro->load_factor;
 	p->aux_w = baseline ? 0.0 : pr->aux_power_w;
 	p->aux_scaled = !baseline && !s->given[SPECF_ROLE_AUX_POWER_W];
+	p->aux_ref_kg = ro->aux_ref_kg;
 	p->added_drag_m2 = baseline ? 0.0 : pr->added_drag_m2;
 	p->fwd_drag_mult = baseline ? 1.0 : pr->drag_area_multiplier;
 	p->cg_shift_m = baseline ? 0.0 : pr->cg_shift_m;
@@ -256,13 +255,15 @@ engine_params(const struct mission_spec *s, const struct model_data *md,
 	p->fom_override = ao->figure_of_merit;
 	p->fom_isolated = ao->figure_of_merit_isolated;
 	p->fom_isolated_mode = ao->figure_of_merit_mode == FOM_ISOLATED;
-	p->kappa = md->cal.kappa[s->airframe_class];
+	p->kappa = md->cal.kappa;
+	p->re_ref = md->cal.re_ref;
 	p->interference_c = arm_interference_c[so->arm_config];
 	p->eta_drive = ao->propulsive_efficiency;
 	p->cd_h = ao->cd_horizontal;
 	p->cd_v = ao->cd_vertical;
+	p->wake_share = md->cal.wake_share;
 	p->f_scale = ao->area_scaling_factor > 0.0 ? ao->area_scaling_factor
-	    : body_f_scale[ao->aero_body_class];
+	    : body_f_scale[ao->aero_body_class] * md->cal.drag_scale;
 	p->ct = ao->assumed_ct;
 
 	p->c_body = so->geometry_constant;
@@ -323,13 +324,21 @@ explain(const struct sizing_params *p, const struct res_run *o,
 	if (p->prop_locked)
 		res_rationale(r, "Propeller %.1f × %.1f in is locked by the mission.",
 		    o->opt.prop_diameter_in, o->opt.prop_pitch_in);
+	else if (p->prop_frac < 1.0 && o->largest.tried && o->largest.passes)
+		res_rationale(r, "Propeller %.1f × %.1f in, %.0f %% of the largest the "
+		    "wheelbase admits (%.1f in): motor mass argues for it.  On the "
+		    "largest the aircraft weighs %.2f kg, not %.2f: its slower, "
+		    "higher-torque motors alone weigh %.2f kg, not %.2f.",
+		    o->opt.prop_diameter_in, o->opt.prop_pitch_in,
+		    100.0 * p->prop_frac, o->overlap_limit_in, o->largest.mass_kg,
+		    o->mass.total_kg, o->largest.motor_kg, o->mass.motor_kg);
 	else if (p->prop_frac < 1.0)
-		res_rationale(r, "Propeller %.1f × %.1f in: %.0f %% of the largest the "
-		    "wheelbase admits (%.1f in), the lightest passing design of the "
-		    "diameters tried (a smaller rotor turns faster: lighter motors); "
-		    "pitch from the hover inflow plus 4° incidence.",
+		res_rationale(r, "Propeller %.1f × %.1f in, %.0f %% of the largest the "
+		    "wheelbase admits (%.1f in), the lightest that meets the mission: "
+		    "the largest does not (%.120s).",
 		    o->opt.prop_diameter_in, o->opt.prop_pitch_in, 100.0 * p->prop_frac,
-		    o->overlap_limit_in);
+		    o->overlap_limit_in, o->largest.fails[0] ? o->largest.fails
+		    : "it was not tried");
 	else
 		res_rationale(r, "Propeller %.1f × %.1f in: the largest the wheelbase "
 		    "admits with 5 %% tip clearance, %s; pitch from the hover inflow "
@@ -350,10 +359,12 @@ explain(const struct sizing_params *p, const struct res_run *o,
 	else {
 		double budget = SIZING_CURRENT_BUDGET_A * sqrt(o->mass.total_kg);
 		if (o->peak_current_a <= budget * 1.0001)
-			res_rationale(r, "%dS %s chosen: the smallest series count that "
-			    "keeps the full-throttle current (%.0f A) within the harness "
-			    "budget of %.0f A for a %.1f kg aircraft.", o->cell_count,
-			    o->chemistry, o->peak_current_a, budget, o->mass.total_kg);
+			res_rationale(r, "%dS %s: the lightest of the series counts "
+			    "keeping the full-throttle current (%.0f A) within the "
+			    "%.0f A harness budget of a %.1f kg aircraft (more cells: "
+			    "a lighter harness, smaller and heavier cells).",
+			    o->cell_count, o->chemistry, o->peak_current_a, budget,
+			    o->mass.total_kg);
 		else
 			res_rationale(r, "%dS %s: the %s class allows at most %dS, so "
 			    "the full-throttle current (%.0f A) stays above the %.0f A "
@@ -391,16 +402,6 @@ explain(const struct sizing_params *p, const struct res_run *o,
 	if (p->v_auto)
 		res_rationale(r, "Forward speed %.1f m/s: the minimum-power speed of "
 		    "the 1–30 m/s sweep.", o->optimal_speed_ms);
-	if (res_thrust_relaxed(o))
-		res_rationale(r, "Thrust relaxation: the %s role's default target "
-		    "T/W %.1f (hover throttle %.0f %%) does not close with real motor "
-		    "and battery masses, so the largest that closes is used: T/W %.1f "
-		    "(hover throttle %.0f %%).  Set thrust_margin_override to insist.",
-		    spec_enum_role[s->payload_role.type],
-		    1.0 / pow(1.0 - o->thrust_margin_requested, 2.0),
-		    100.0 * (1.0 - o->thrust_margin_requested),
-		    1.0 / pow(1.0 - o->thrust_margin, 2.0),
-		    100.0 * (1.0 - o->thrust_margin));
 	if (o->time_scale < 1.0)
 		res_rationale(r, "Goal relaxation: the requested mission could not "
 		    "close, so every phase was scaled to %.0f %% of its requested time.",
@@ -489,12 +490,81 @@ run_finish(const struct sizing_params *p, const char *name, bool baseline,
 }
 
 
+/* Does run t, a sizing_run() of p, stand as a continuous design: finite,
+ * converged and passing every check (judged on a scratch result)? */
+static bool
+design_passes(const struct sizing_params *p, enum sizing_status st,
+              const char *name, struct res_run *t, struct solve_result *scratch)
+{
+	if (!run_finite(t))
+		return false;
+	scratch->n_violations = 0;
+	feasibility_checks(p, st, name, t, scratch);
+	return t->converged && t->feasible;
+}
+
+/* What the largest rotor gave, for the rationale: kept in t->largest, so
+ * it travels with whichever run the search keeps (*best is a copy). */
+static void
+note_largest(struct res_run *t, bool ok, const struct solve_result *scratch)
+{
+	struct res_largest_rotor *l = &t->largest;
+	memset(l, 0, sizeof *l);
+	l->tried = true;
+	l->passes = ok;
+	l->mass_kg = t->mass.total_kg;
+	l->motor_kg = t->mass.motor_kg;
+	l->battery_kg = t->mass.battery_kg;
+	if (!ok)
+		snprintf(l->fails, sizeof l->fails, "%s", scratch->n_violations > 0
+		    ? scratch->violations[0].message : t->termination);
+}
+
+/* The lightest passing design over every diameter prop_frac() gives: the
+ * continuous design is the lightest aircraft that meets every requirement
+ * over its design variables, so every share is tried (the minimum over a
+ * fixed set of designs cannot rise when a requirement falls).  Fills *best
+ * (the largest share's run when none passes), *best_frac and *passes;
+ * returns that run's status. */
+static enum sizing_status
+lightest_share(struct sizing_params *p, const char *name, struct res_run *best,
+               double *best_frac, bool *passes, struct solve_result *scratch)
+{
+	struct res_run *t = &scratch->custom;
+	enum sizing_status best_st = SIZING_RUNAWAY;
+	struct res_largest_rotor largest;
+	memset(&largest, 0, sizeof largest);
+	*passes = false;
+	for (int k = 0; k < N_PROP_FRACS; k++) {
+		p->prop_frac = prop_frac(k);
+		*t = *best;
+		enum sizing_status st = sizing_run(p, t);
+		bool ok = design_passes(p, st, name, t, scratch);
+		if (k == 0)
+			note_largest(t, ok, scratch);
+		if (k > 0)
+			t->largest = largest;
+		else
+			largest = t->largest;
+		if (k == 0 || (ok && (!*passes
+		    || t->mass.total_kg < best->mass.total_kg))) {
+			*best = *t;
+			*best_frac = p->prop_frac;
+			best_st = st;
+			*passes = ok;
+		}
+	}
+	return best_st;
+}
+
 /* A continuous design's propeller: with a locked one the mass loop once;
- * else at each diameter prop_frac() gives, from the largest down until the
- * mass rises again, keeping the lightest that converges and passes every
- * check (judged on a scratch result) at the thrust margin asked for, or
- * the largest when none does (the paper's choice).  Fills *o (its checks
- * not yet made) and p->prop_frac; returns the loop's status. */
+ * else the lightest passing design over the diameters prop_frac() gives,
+ * or the largest (the paper's choice) when none passes.  A locked battery
+ * takes the diameter the mission's energy argues for: the one the same
+ * design with its battery sized to the mission chooses (with the pack
+ * fixed, a smaller rotor only spends the pack's spare energy on lighter
+ * motors, which no designer would do).  Fills *o (its checks not yet
+ * made) and p->prop_frac; returns the loop's status. */
 static enum sizing_status
 prop_search(struct sizing_params *p, const char *name, struct res_run *o,
             const struct solve_result *r)
@@ -505,41 +575,27 @@ prop_search(struct sizing_params *p, const char *name, struct res_run *o,
 	struct solve_result *scratch = xcalloc(1, sizeof *scratch);
 	struct res_run *best = xmalloc(sizeof *best);
 	scratch->mission = r->mission;
-	enum sizing_status best_st = SIZING_RUNAWAY;
-	double best_frac = 1.0;
-	bool best_ok = false, best_full = false;
-	for (int k = 0; k < N_PROP_FRACS; k++) {
-		p->prop_frac = prop_frac(k);
-		struct res_run *t = &scratch->custom;
-		*t = *o;
-		enum sizing_status st = sizing_run(p, t);
-		scratch->n_violations = 0;
-		bool ok = run_finite(t);
-		if (ok) {
-			feasibility_checks(p, st, name, t, scratch);
-			ok = t->converged && t->feasible;
-		}
-		bool full = t->thrust_margin >= t->thrust_margin_requested;
-		if (k == 0 || (ok && (!best_ok || (full && !best_full)
-		    || (full == best_full && t->mass.total_kg < best->mass.total_kg)))) {
-			*best = *t;
-			best_st = st;
-			best_frac = prop_frac(k);
-			best_ok = ok;
-			best_full = full;
-		} else if (ok && best_ok && full == best_full) {
-			/* The takeoff mass over the diameter falls to one
-			 * minimum (heavier motors one side, more power and
-			 * battery the other): past the first rise, no lighter
-			 * design follows. */
-			break;
-		}
+	double frac = 1.0;
+	bool passes;
+	enum sizing_status st;
+	*best = *o;
+	if (p->capacity_locked) {
+		struct sizing_params sized = *p;
+		sized.capacity_locked = false;
+		lightest_share(&sized, name, best, &frac, &passes, scratch);
+		if (!passes)
+			frac = 1.0;
+		p->prop_frac = frac;
+		*best = *o;
+		st = sizing_run(p, best);
+	} else {
+		st = lightest_share(p, name, best, &frac, &passes, scratch);
 	}
 	*o = *best;
-	p->prop_frac = best_frac;
+	p->prop_frac = frac;
 	free(best);
 	free(scratch);
-	return best_st;
+	return st;
 }
 
 /* The role overhead and its rationale line. */
@@ -664,6 +720,21 @@ engine_at_mass(const struct mission_spec *spec, const struct model_data *md,
 		out->prop_frac = 1.0;
 	}
 	return any;
+}
+
+bool
+engine_endurance_at_mass(const struct mission_spec *spec,
+                         const struct model_data *md, double mass_kg,
+                         double share, double v_forward_ms,
+                         struct sizing_endurance *out)
+{
+	struct mission_spec s = *spec;
+	engine_resolve(&s, md, NULL);
+	struct sizing_params p;
+	engine_params(&s, md, false, &p);
+	p.prop_frac = p.prop_locked || !(share > 0.0) ? 1.0 : share;
+	return p.capacity_locked && sizing_endurance_at_mass(&p, mass_kg,
+	    v_forward_ms, out);
 }
 
 void

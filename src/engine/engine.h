@@ -43,6 +43,15 @@ void engine_explore(struct solve_result *r, const struct model_data *md);
 bool engine_at_mass(const struct mission_spec *spec, const struct model_data *md,
                     double mass_kg, double share, struct sizing_open *out);
 
+/* The forward check of validate and calibrate (sizing_endurance_at_mass()):
+ * the endurance of the aircraft spec describes, its pack locked, at
+ * mass_kg; an unlocked propeller flown at share of the largest the
+ * wheelbase admits (0 reads as 1). */
+bool engine_endurance_at_mass(const struct mission_spec *spec,
+                              const struct model_data *md, double mass_kg,
+                              double share, double v_forward_ms,
+                              struct sizing_endurance *out);
+
 /* Resolve the mission into the custom-run parameters (after the
  * requirements layer has been applied to *spec).  Exposed for the
  * sensitivity study and the tests. */

@@ -173,7 +173,8 @@ load_chemistries(struct rd *r, struct model_data *m)
 	static const char *const keys[] = { "name", "specific_energy_wh_kg",
 		"specific_power_w_kg", "r_cell_mohm", "v_full_v", "v_nominal_v",
 		"v_exp_v", "b", "k_v", "v_cutoff_v", "packaging", "source",
-		"pack_specific_energy_wh_kg_at_100wh", "pack_energy_exponent",
+		"pack_specific_energy_wh_kg_at_100wh_6s", "pack_energy_exponent",
+		"pack_series_exponent",
 		"pack_source", NULL };
 	static const char *const pack[] = { "pouch", "cylindrical", NULL };
 	const cJSON *a = rd_array(r, "chemistries");
@@ -203,8 +204,9 @@ load_chemistries(struct rd *r, struct model_data *m)
 		c->k = rd_num(r, "k_v", 0, 1);
 		c->v_cutoff = rd_num(r, "v_cutoff_v", 0.5, 6);
 		c->pouch = rd_enum(r, "packaging", pack) == 0;
-		c->pack_wh_kg_100 = rd_num(r, "pack_specific_energy_wh_kg_at_100wh", 20, 1000);
+		c->pack_wh_kg_100 = rd_num(r, "pack_specific_energy_wh_kg_at_100wh_6s", 20, 1000);
 		c->pack_exponent = rd_num(r, "pack_energy_exponent", 0, 0.5);
+		c->pack_series_exponent = rd_num(r, "pack_series_exponent", 0, 0.5);
 		if (c->v_cutoff >= c->v_nom || c->v_nom >= c->v_full)
 			rd_error(r, DIAG_INCONSISTENT, "v_cutoff_v",
 			         ": the voltages must satisfy cutoff < nominal < full");
@@ -238,8 +240,9 @@ rd_all_present(struct rd *r, const char *array, const bool *seen,
 static void
 load_roles(struct rd *r, struct model_data *m)
 {
-	static const char *const keys[] = { "name", "thrust_margin", "load_factor",
-		"aux_power_w", "added_drag_m2", "forward_drag_multiplier",
+	static const char *const keys[] = { "name", "thrust_to_weight",
+		"thrust_to_weight_source", "load_factor", "aux_power_w",
+		"aux_reference_mass_kg", "added_drag_m2", "forward_drag_multiplier",
 		"integration_overhead_frac", "c_motor", "c_esc", "h_conv_w_m2k",
 		"battery_burst_factor", "shedding", "note", NULL };
 	static const char *const shed[] = { "none", "drop", "spray", NULL };
@@ -260,9 +263,14 @@ load_roles(struct rd *r, struct model_data *m)
 			         spec_enum_role[k]);
 		seen[k] = true;
 		struct model_role *ro = &m->role[k];
-		ro->thrust_margin = rd_num(r, "thrust_margin", 0.05, 0.8);
+		/* The requirement is stored as the T/W real aircraft of the role
+		 * fly; the engine works in the paper's thrust margin,
+		 * T/W = 1 / (1 - margin)². */
+		double tw = rd_num(r, "thrust_to_weight", 1.2, 25);
+		ro->thrust_margin = 1.0 - 1.0 / sqrt(tw);
 		ro->load_factor = rd_num(r, "load_factor", 1, 20);
 		ro->aux_power_w = rd_num(r, "aux_power_w", 0, 5000);
+		ro->aux_ref_kg = rd_num(r, "aux_reference_mass_kg", 0.01, 1000);
 		ro->added_drag_m2 = rd_num(r, "added_drag_m2", 0, 5);
 		ro->forward_drag_multiplier = rd_num(r, "forward_drag_multiplier", 0.1, 10);
 		ro->integration_frac = rd_num(r, "integration_overhead_frac", 0, 2);
@@ -382,13 +390,35 @@ load_accuracy(struct rd *r, const char *key, struct model_accuracy *a)
 	r->obj = root;
 }
 
+/* An optional spread block ("forward_check", "dry_mass") that
+ * `calibrate --write` adds. */
+static void
+load_spread(struct rd *r, const char *key, struct model_spread *sp)
+{
+	static const char *const keys[] = { "rows", "loo_mape_pct", "log_lo",
+		"log_hi", "coverage", NULL };
+	const cJSON *root = r->obj;
+	if (rd_enter(r, key, keys, false)) {
+		sp->valid = true;
+		sp->n = rd_int(r, "rows", 1, 1000000);
+		sp->mape_pct = rd_num(r, "loo_mape_pct", 0, 1000);
+		sp->log_lo = rd_num(r, "log_lo", -5, 0);
+		sp->log_hi = rd_num(r, "log_hi", 0, 5);
+		sp->coverage = rd_num(r, "coverage", 0, 1);
+	}
+	r->entry[0] = '\0';
+	r->obj = root;
+}
+
 static void
 load_calibration(struct rd *r, struct model_calibration *cal)
 {
 	static const char *const keys[] = { "lambda_class",
 		"wiring_coefficient_kg_per_a_m", "small_wiring_coefficient_kg_per_a_m",
-		"equipment_kg_at_1kg", "equipment_exponent", "kappa_class",
-		"accuracy_from_endurance", "accuracy_pack_locked", NULL };
+		"equipment_kg_at_1kg", "equipment_exponent", "kappa", "drive_efficiency",
+		"reynolds_reference", "aux_power_scale", "drag_area_scale", "forward_wake_share",
+		"accuracy_from_endurance", "accuracy_pack_locked", "forward_check",
+		"dry_mass", NULL };
 	const cJSON *root = json_in_root(r->ji);
 	memset(cal, 0, sizeof *cal);
 	r->entry[0] = '\0';
@@ -405,15 +435,18 @@ load_calibration(struct rd *r, struct model_calibration *cal)
 	r->entry[0] = '\0';
 	r->obj = root;
 	cal->equip_exponent = rd_num(r, "equipment_exponent", 0.3, 1.5);
-	if (rd_enter(r, "kappa_class", spec_enum_airframe, true))
-		for (int k = 0; k < AF_CLASS_MAX; k++)
-			cal->kappa[k] = rd_num(r, spec_enum_airframe[k], 1, 3);
-	r->entry[0] = '\0';
-	r->obj = root;
+	cal->kappa = rd_num(r, "kappa", 1, 3);
+	cal->eta_drive = rd_num(r, "drive_efficiency", 0.3, 1);
+	cal->re_ref = rd_num(r, "reynolds_reference", 1000, 1e7);
+	cal->aux_scale = rd_num(r, "aux_power_scale", 0.05, 20);
+	cal->drag_scale = rd_num(r, "drag_area_scale", 0.05, 20);
+	cal->wake_share = rd_num(r, "forward_wake_share", 0, 1);
 	cal->wire_coef = rd_num(r, "wiring_coefficient_kg_per_a_m", 0, 0.1);
 	cal->wire_coef_small = rd_num(r, "small_wiring_coefficient_kg_per_a_m", 0, 0.1);
 	for (int b = 0; b < MODEL_BASIS_MAX; b++)
 		load_accuracy(r, accuracy_keys[b], &cal->accuracy[b]);
+	load_spread(r, "forward_check", &cal->forward);
+	load_spread(r, "dry_mass", &cal->dry);
 }
 
 static void
@@ -559,9 +592,12 @@ model_io_calibration_json(const struct model_calibration *cal)
 	for (int k = 0; k < AF_CLASS_MAX; k++)
 		cJSON_AddNumberToObject(e, spec_enum_airframe[k], cal->equip_kg[k]);
 	cJSON_AddNumberToObject(root, "equipment_exponent", cal->equip_exponent);
-	cJSON *kc = cJSON_AddObjectToObject(root, "kappa_class");
-	for (int k = 0; k < AF_CLASS_MAX; k++)
-		cJSON_AddNumberToObject(kc, spec_enum_airframe[k], cal->kappa[k]);
+	cJSON_AddNumberToObject(root, "kappa", cal->kappa);
+	cJSON_AddNumberToObject(root, "drive_efficiency", cal->eta_drive);
+	cJSON_AddNumberToObject(root, "reynolds_reference", cal->re_ref);
+	cJSON_AddNumberToObject(root, "aux_power_scale", cal->aux_scale);
+	cJSON_AddNumberToObject(root, "drag_area_scale", cal->drag_scale);
+	cJSON_AddNumberToObject(root, "forward_wake_share", cal->wake_share);
 	for (int b = 0; b < MODEL_BASIS_MAX; b++) {
 		const struct model_accuracy *a = &cal->accuracy[b];
 		if (!a->valid)
@@ -578,6 +614,18 @@ model_io_calibration_json(const struct model_calibration *cal)
 		for (int k = 0; k < AF_CLASS_MAX; k++)
 			if (a->cls[k].n > 0)
 				add_interval(bc, spec_enum_airframe[k], &a->cls[k]);
+	}
+	const struct model_spread *sp[] = { &cal->forward, &cal->dry };
+	static const char *const sp_key[] = { "forward_check", "dry_mass" };
+	for (int i = 0; i < 2; i++) {
+		if (!sp[i]->valid)
+			continue;
+		cJSON *o = cJSON_AddObjectToObject(root, sp_key[i]);
+		cJSON_AddNumberToObject(o, "rows", sp[i]->n);
+		cJSON_AddNumberToObject(o, "loo_mape_pct", sp[i]->mape_pct);
+		cJSON_AddNumberToObject(o, "log_lo", sp[i]->log_lo);
+		cJSON_AddNumberToObject(o, "log_hi", sp[i]->log_hi);
+		cJSON_AddNumberToObject(o, "coverage", sp[i]->coverage);
 	}
 	char *txt = cJSON_Print(root);
 	cJSON_Delete(root);

@@ -330,7 +330,7 @@ performance(struct rep *rp)
 	v[n++] = xstrdup(report_sfmt(&sb, "%s° holding altitude at full throttle",
 	                             report_num(b1, sizeof b1, pf->max_tilt_deg, 0)));
 	/* The role's thrust-to-weight target, 1 / (1 - margin)² (paper §II-E). */
-	double theta = 1.0 - rec->thrust_margin_requested;
+	double theta = 1.0 - rec->thrust_margin;
 	double tw_target = report_div(1.0, theta * theta);
 	k[n] = "Spare payload";
 	if (pf->spare_payload_kg > 0.0)

@@ -605,7 +605,6 @@ put_run_fields(struct jw *w, const struct res_run *run,
 	jw_num(w, "lipschitz_estimate", run->lipschitz);
 	jw_num(w, "time_scale", run->time_scale);
 	jw_num(w, "thrust_margin", run->thrust_margin);
-	jw_num(w, "thrust_margin_requested", run->thrust_margin_requested);
 	jw_num(w, "aux_power_w", run->aux_power_w);
 
 	JW_STR(w, "chemistry", run->chemistry);

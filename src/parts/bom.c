@@ -431,18 +431,11 @@ parts_explain(const struct parts_ctx *x, const struct parts_closed *c,
 		    kit->n_connectors, kit->connector->id,
 		    kit->sized_for_a / (double)c->pack.parallel,
 		    kit->connector_kg * 1000.0);
-	/* Below the continuous T/W: within the relaxation a role's default
-	 * target allows, or short of what the mission requires. */
-	if (o->thrust_to_weight < x->aim.tw_required
-	    && o->thrust_to_weight >= x->aim.tw_floor)
-		res_rationale(r, "No closing on real parts reaches the continuous "
-		    "design's T/W of %.2f; the design of record flies %.2f, above "
-		    "the %.2f the continuous loop relaxes a role's default target "
-		    "to.", x->aim.tw_required, o->thrust_to_weight, x->aim.tw_floor);
-	else if (o->thrust_to_weight < x->aim.tw_required)
-		res_rationale(r, "No closing on real parts reaches the T/W of %.3f "
-		    "the design needs; the design of record flies %.3f (its thrust "
-		    "check gives the verdict).", x->aim.tw_floor, o->thrust_to_weight);
+	if (o->thrust_to_weight * o->mass.total_kg
+	    < x->aim.tw_required * (o->mass.total_kg + x->aim.extra_payload_kg))
+		res_rationale(r, "No closing on real parts reaches the required "
+		    "T/W of %.2f; the design of record falls short (its thrust check "
+		    "gives the verdict).", x->aim.tw_required / PARTS_TW_TOL);
 	if (n_better_failed > 0)
 		res_rationale(r, "%d better-scoring combination%s did not close the "
 		    "mission on real parts.", n_better_failed,

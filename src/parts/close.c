@@ -427,20 +427,22 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 			    100.0 * o->reserve_soc, o->termination);
 		violate(r, k, "discharge", "RESERVE", fx, msg);
 	}
-	/* The continuous design's T/W, or the floor it may relax to when no
-	 * closing reaches it (parts.c). */
-	double tw_need = o->thrust_to_weight >= x->aim.tw_required
-	    ? x->aim.tw_required : x->aim.tw_floor;
-	k = feasibility_add_check(o, "Thrust-to-weight at full throttle", "",
-	    o->thrust_to_weight, tw_need, false);
+	/* The T/W requirement holds with the largest payload aboard (the
+	 * mission's payload when it gives no larger one). */
+	double m_max = o->mass.total_kg + p->extra_payload_kg;
+	k = feasibility_add_check(o, p->extra_payload_kg > 0.0
+	    ? "Thrust-to-weight with the largest payload" : "Thrust-to-weight at full throttle",
+	    "", o->thrust_to_weight * o->mass.total_kg / m_max, x->aim.tw_required,
+	    false);
 	if (k && !k->pass) {
 		feasibility_fix(r, f1, "A stronger motor or a larger propeller (locks.motor_part, locks.prop_part)");
-		feasibility_fix(r, f2, "Reduce the thrust margin (payload_role.thrust_margin_override)");
+		feasibility_fix(r, f2, p->extra_payload_kg > 0.0 ? "A lower max_payload_kg"
+		    : "Reduce the thrust margin (payload_role.thrust_margin_override)");
 		feasibility_fix(r, f3, "Add series cells (nominal_cell_count)");
 		if (!r->terse)
 			snprintf(msg, sizeof msg, "The real motor and propeller give T/W "
-			    "%.3f at full throttle; the design needs %.3f.",
-			    o->thrust_to_weight, tw_need);
+			    "%.2f at full throttle with %.2f kg aboard; the requirement is %.2f.",
+			    k->value, p->payload_kg + p->extra_payload_kg, k->limit);
 		violate(r, k, "parts", "THRUST", fx, msg);
 	}
 
@@ -455,23 +457,6 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 	violate(r, k, "parts", "THROTTLE", fx, msg);
 	fx[2] = f3;
 
-	if (p->extra_payload_kg > 0.0) {
-		double m_max = o->mass.total_kg + p->extra_payload_kg;
-		double floor_tw = 1.0 / ((1.0 - SIZING_MIN_THRUST_MARGIN)
-		    * (1.0 - SIZING_MIN_THRUST_MARGIN));
-		k = feasibility_add_check(o, "Thrust-to-weight with the largest payload", "",
-		    o->thrust_to_weight * o->mass.total_kg / m_max, floor_tw * PARTS_TW_TOL,
-		    false);
-		feasibility_fix(r, f1, "A stronger motor or a larger propeller");
-		feasibility_fix(r, f2, "A lower max_payload_kg");
-		fx[2] = NULL;
-		if (k && !k->pass && !r->terse)
-			snprintf(msg, sizeof msg, "With the largest payload (%.2f kg) "
-			    "aboard, T/W is %.2f; flying it needs %.2f.",
-			    p->payload_kg + p->extra_payload_kg, k->value, k->limit);
-		violate(r, k, "parts", "THRUST_MAX_PAYLOAD", fx, msg);
-		fx[2] = f3;
-	}
 
 	/* Ratings of the real parts: the motor's through the mission and at
 	 * full throttle, each against the rating its maker's basis allows

@@ -107,18 +107,17 @@ report_none(const struct parts_ctx *x, struct solve_result *r)
 	feasibility_violation(r, "closed", "parts", "NO_PARTS", fx, "%s", msg);
 }
 
-/* Does closing c reach the continuous design's T/W? */
+/* Does closing c reach the required T/W with the largest payload aboard? */
 static bool
 at_parity(const struct parts_ctx *x, const struct parts_closed *c)
 {
-	return c->r->closed.thrust_to_weight >= x->aim.tw_required;
+	const struct res_run *o = &c->r->closed;
+	return o->thrust_to_weight * o->mass.total_kg
+	    >= x->aim.tw_required * (o->mass.total_kg + x->aim.extra_payload_kg);
 }
 
 /* Is closing a better than b?  Passing every check first (or the fewest
- * failed), then reaching the continuous design's T/W (the role's margin is
- * a requirement the continuous design held; the floor is the relaxation
- * the continuous loop would make when nothing reaches it), then the
- * lighter. */
+ * failed), then reaching the required T/W, then the lighter. */
 static bool
 better(const struct parts_ctx *x, const struct parts_closed *a,
        const struct parts_closed *b)
@@ -342,9 +341,9 @@ search_rounds(struct parts_ctx *x, struct solve_result *r, struct search *s)
 		/* The census the report gives is the last ranking's. */
 		memset(x->n_census, 0, sizeof x->n_census);
 		x->n_examined = 0;
-		struct parts_option best[PARTS_KEEP + PARTS_KEEP_RELAXED
+		struct parts_option best[PARTS_KEEP + PARTS_KEEP_SHORT
 		    + PARTS_KEEP_MARGINAL];
-		int n_best = parts_rank(x, best, PARTS_KEEP + PARTS_KEEP_RELAXED
+		int n_best = parts_rank(x, best, PARTS_KEEP + PARTS_KEEP_SHORT
 		    + PARTS_KEEP_MARGINAL,
 		    r->candidates, &r->n_candidates);
 		s->n_ranked += n_best;

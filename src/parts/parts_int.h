@@ -24,7 +24,8 @@
 #define PARTS_MAX_PACKS     12    /* ... at most two such banks in all */
 #define PARTS_KEEP          32    /* ranked options closed that reach the
                                      continuous design's T/W ... */
-#define PARTS_KEEP_RELAXED  8     /* ... and that reach only the floor */
+#define PARTS_KEEP_SHORT    8     /* ... and that may fall short of it once
+                                     their own estimated mass is aboard */
 #define PARTS_KEEP_MARGINAL 8     /* ... and within the motor's ratings only
                                      on the most-sagged bus (rank.c) */
 #define PARTS_CELL_PACK_FACTOR 1.12 /* a pack built from single cells: the
@@ -85,14 +86,11 @@ struct parts_aim {
 	double energy_wh;          /* its battery's nominal energy */
 	double hover_power_w;      /* its hover electrical power */
 	double growth;             /* 1 / (1 - L): mass growth per added kg */
-	double tw_required;        /* T/W the design of record must reach:
-	                              the continuous design's (the role's or
-	                              mission's target, or what the
-	                              continuous loop relaxed it to) */
-	double tw_floor;           /* ... or, for a role's default target
-	                              when no closing reaches it, the
-	                              relaxation floor of sizing.h, as the
-	                              continuous loop relaxes */
+	double tw_required;        /* T/W the design of record must reach with
+	                              the largest payload aboard: the role's
+	                              or the mission's requirement, never
+	                              relaxed (less PARTS_TW_TOL) */
+	double extra_payload_kg;   /* the largest payload over the mission's */
 	double downwash_cap_ms;    /* the role's downwash limit; 0 none */
 	double prop_diameter_in;   /* D* */
 	double prop_pitch_in;      /* p* */
@@ -121,7 +119,8 @@ struct parts_option {
 	                                      pack can bring (the ratings' prune) */
 	double sagged_winding_c;           /* ... and the winding there */
 	double j;                          /* estimated mass penalty, % */
-	bool parity;                       /* reaches tw_required at M* */
+	bool parity;                       /* reaches tw_required at its
+	                                      estimated mass */
 	bool marginal;                     /* within the motor's ratings only
 	                                      on the most-sagged bus */
 };

@@ -29,8 +29,8 @@
  *             (capped at 0.8): every kilogram added is carried by more
  *             battery, structure and thrust, as the loop carries it.
  *
- * Options that cannot lift the continuous design at the relaxation floor's
- * T/W, overrun a motor rating, break tip Mach or the propeller's rpm limit,
+ * Options that cannot lift the continuous design at the required T/W
+ * (with the largest payload aboard), overrun a motor rating, break tip Mach or the propeller's rpm limit,
  * heat the winding past its limit (steady in hover, then the record's
  * full-throttle burst: most makers publish only a peak current, so the
  * winding's heat is the motor's real rating) or blow a wake above the
@@ -40,7 +40,8 @@
  * pack's own sag, which lowers the current, so an option over a rating on
  * the ranking's bus may still pass there.  The rest are kept by J in three
  * lists, all closed: those that reach the continuous design's own T/W at
- * its mass, a few that reach only the floor, and a few within the motor's
+ * their estimated mass, a few that may fall short of it there (the closing
+ * checks the real T/W), and a few within the motor's
  * ratings only on the sagged bus (marginal: kept apart, so that they take
  * no place from the options the ranking's bus already admits).
  */
@@ -109,16 +110,11 @@ parts_aim_from(const struct sizing_params *p, const struct res_run *custom,
 	double l = custom->lipschitz;
 	l = l < 0.0 ? 0.0 : l > MAX_L ? MAX_L : l;
 	aim->growth = 1.0 / (1.0 - l);
-	/* The continuous run's T/W is the role's target (or the relaxed one
-	 * it flew).  A role's default target is a goal the parts search
-	 * prefers but may fall short of, down to the relaxation floor; a
-	 * target the mission sets is a requirement. */
-	double theta_floor = 1.0 - p->thrust_margin_floor;
-	aim->tw_required = custom->thrust_to_weight * PARTS_TW_TOL;
-	aim->tw_floor = p->thrust_margin_floor > 0.0
-	    ? PARTS_TW_TOL / (theta_floor * theta_floor) : aim->tw_required;
-	if (aim->tw_floor > aim->tw_required)
-		aim->tw_floor = aim->tw_required;
+	/* The T/W requirement (the role's or the mission's) holds with the
+	 * largest payload aboard; the continuous run flew exactly it. */
+	aim->extra_payload_kg = p->extra_payload_kg;
+	aim->tw_required = custom->thrust_to_weight * m->total_kg
+	    / (m->total_kg + p->extra_payload_kg) * PARTS_TW_TOL;
 	aim->downwash_cap_ms = p->downwash_cap_ms;
 	aim->prop_diameter_in = custom->opt.prop_diameter_in;
 	aim->prop_pitch_in = custom->opt.prop_pitch_in;
@@ -368,7 +364,7 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 }
 
 /* The first reason the option fails a hard limit, or PARTS_OK; o->parity
- * says whether it reaches the continuous design's T/W. */
+ * says whether it reaches the required T/W at its estimated mass. */
 static enum parts_reason
 option_limits(const struct parts_ctx *x, struct parts_option *o)
 {
@@ -376,25 +372,21 @@ option_limits(const struct parts_ctx *x, struct parts_option *o)
 	const struct perf_craft *c = &o->craft;
 	const struct catalog_motor *m = o->motor;
 	bool locked = x->lock_motor != NULL;
-	/* The thrust to lift the design at the floor's T/W (and with the
-	 * largest payload aboard), with a little to spare, at the mass the
-	 * option is estimated to close at (J): trusted below the continuous
-	 * design's only down to aim.lightest, at first not at all.  The
+	/* The thrust to lift the design at the required T/W with the largest
+	 * payload aboard, with a little to spare, at the lightest mass the
+	 * option may close at: its J estimate, trusted below the continuous
+	 * design's only down to aim.lightest (at first not at all).  The
 	 * closing finds the real mass, and checks the real T/W there. */
 	double est = 1.0 + o->j / 100.0;
 	double screen = fmax(x->aim.lightest, fmin(1.0, est));
 	double mass = x->aim.mass_kg * screen;
-	double theta_floor = 1.0 - SIZING_MIN_THRUST_MARGIN;
-	double max_payload_n = (mass + p->extra_payload_kg) * PARTS_TW_TOL
-	    / (theta_floor * theta_floor) * G0_M_S2;
 	double thrust = (double)p->n_rotors * o->full_thrust_n;
-	if (thrust < PARTS_TW_SPARE * fmax(x->aim.tw_floor * mass * G0_M_S2,
-	    max_payload_n))
+	double need_per_kg_n = PARTS_TW_SPARE * x->aim.tw_required * G0_M_S2;
+	if (thrust < need_per_kg_n * (mass + p->extra_payload_kg))
 		return PARTS_THRUST;
-	/* Parity at that estimate: an option that falls short of the T/W
-	 * once its own mass is aboard is a relaxed one. */
-	o->parity = thrust >= PARTS_TW_SPARE * fmax(est, x->aim.lightest)
-	    / screen * fmax(x->aim.tw_required * mass * G0_M_S2, max_payload_n);
+	/* Parity: the T/W is still reached at the option's own estimate. */
+	double mass_est = x->aim.mass_kg * fmax(est, x->aim.lightest);
+	o->parity = thrust >= need_per_kg_n * (mass_est + p->extra_payload_kg);
 	/* The motor's ratings on the ranking's bus; an option within them
 	 * only on the most-sagged bus is marginal (kept apart, see above). */
 	struct parts_motor_limits lim;
@@ -518,8 +510,8 @@ prop_locked_out(const struct parts_ctx *x, const struct catalog_prop *pr)
 struct kept {
 	struct parts_option parity[PARTS_KEEP];
 	int n_parity;
-	struct parts_option relaxed[PARTS_KEEP_RELAXED];
-	int n_relaxed;
+	struct parts_option short_of[PARTS_KEEP_SHORT];
+	int n_short;
 	struct parts_option marginal[PARTS_KEEP_MARGINAL];
 	int n_marginal;
 };
@@ -550,7 +542,7 @@ try_option(struct parts_ctx *x, const struct catalog_motor *m,
 	else if (o.parity)
 		keep(k->parity, &k->n_parity, PARTS_KEEP, &o);
 	else
-		keep(k->relaxed, &k->n_relaxed, PARTS_KEEP_RELAXED, &o);
+		keep(k->short_of, &k->n_short, PARTS_KEEP_SHORT, &o);
 }
 
 /* The catalogue's usable motors by KV, for the KV window of a bus and
@@ -603,8 +595,8 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 
 	struct kept *kept = xcalloc(1, sizeof *kept);
 	double rho = p->air.rho_kg_m3;
-	double t_req = x->aim.tw_required * x->aim.mass_kg * G0_M_S2
-	    / (double)p->n_rotors;
+	double t_req = x->aim.tw_required * (x->aim.mass_kg + p->extra_payload_kg)
+	    * G0_M_S2 / (double)p->n_rotors;
 	double d_min_in = MIN_DIAMETER_FRAC * x->aim.prop_diameter_in;
 	for (int s = x->cells_lo; s <= x->cells_hi; s++) {
 		if (!bus_has_pack(x, s)) {
@@ -692,12 +684,12 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 	free(mv);
 	free(mj);
 	free(mpre);
-	/* The options that reach the continuous T/W first. */
+	/* The options that reach the required T/W first. */
 	int n_best = 0;
 	for (int i = 0; i < kept->n_parity && n_best < max_best; i++)
 		best[n_best++] = kept->parity[i];
-	for (int i = 0; i < kept->n_relaxed && n_best < max_best; i++)
-		best[n_best++] = kept->relaxed[i];
+	for (int i = 0; i < kept->n_short && n_best < max_best; i++)
+		best[n_best++] = kept->short_of[i];
 	for (int i = 0; i < kept->n_marginal && n_best < max_best; i++)
 		best[n_best++] = kept->marginal[i];
 	free(kept);

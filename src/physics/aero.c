@@ -113,11 +113,12 @@ aero_profile_power_w(double cd0, double rho_kg_m3, double area_m2,
 
 double
 aero_fom_installed(double fom_isolated, double kappa, bool isolated_mode,
-                   double reynolds_tip)
+                   double reynolds_tip, double re_ref)
 {
 	double fom_max = isolated_mode ? fom_isolated : fom_isolated / kappa;
 	double re = reynolds_tip > 0.0 ? reynolds_tip : 0.0;
-	double fom = fom_max * (1.0 - exp(-re / AERO_RE_REF));
+	double ref = re_ref > 0.0 ? re_ref : AERO_RE_REF;
+	double fom = fom_max * (1.0 - exp(-re / ref));
 	return fom < AERO_FOM_FLOOR ? AERO_FOM_FLOOR : fom;
 }
 

@@ -30,7 +30,7 @@ struct atmo_state;
 #define AERO_OVERLAP_REL_TOL 1e-9
 #define AERO_TIP_MACH_MAX    0.75   /* tip-Mach pruning limit, - */
 #define AERO_SOLIDITY        (0.28 / M_PI) /* σ of the profile-power formula, - */
-#define AERO_FOM_FLOOR       0.38   /* minimum installed FoM, - */
+#define AERO_FOM_FLOOR       0.10   /* minimum installed FoM, - */
 #define AERO_RE_REF          20000.0 /* Re_ref of the FoM(Re) fit, - */
 #define AERO_INTERFERENCE_CAP 1.15  /* cap of k_int, - */
 
@@ -69,9 +69,10 @@ double aero_profile_power_w(double cd0, double rho_kg_m3, double area_m2,
                             double v_tip_ms);
 
 /* Installed figure of merit: iso / κ (installed mode) or iso (isolated),
- * times the Reynolds fit 1 - exp(-Re/Re_ref), floored at 0.38. */
+ * times the Reynolds fit 1 - exp(-Re/Re_ref) (re_ref <= 0: the paper's
+ * AERO_RE_REF; the engine's is calibrated), floored at 0.38. */
 double aero_fom_installed(double fom_isolated, double kappa, bool isolated_mode,
-                          double reynolds_tip);
+                          double reynolds_tip, double re_ref);
 
 /* Rotor–arm interference k_int = 1 + c w_a / D_p, capped at 1.15. */
 double aero_interference(double c_config, double arm_width_m, double diameter_m);

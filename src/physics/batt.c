@@ -83,35 +83,39 @@ batt_current_a(double v_oc, double r_ohm, double power_w, double *current_a)
 }
 
 double
-batt_pack_wh_kg(const struct batt_chem *c, double pack_wh)
+batt_pack_wh_kg(const struct batt_chem *c, double pack_wh, int cells)
 {
 	/* Below 1 Wh the catalogue has no packs: the law is held there. */
 	double e = pack_wh > 1.0 ? pack_wh : 1.0;
-	return c->pack_wh_kg_100 * pow(e / 100.0, c->pack_exponent);
+	double s = cells > 0 ? (double)cells : 1.0;
+	return c->pack_wh_kg_100 * pow(e / 100.0, c->pack_exponent)
+	    * pow(s / BATT_PACK_REF_CELLS, -c->pack_series_exponent);
 }
 
 double
 batt_pack_mass_kg(const struct batt_chem *c, double energy_wh, int n_packs,
-                  double e_override_wh_kg)
+                  int cells, double e_override_wh_kg)
 {
 	if (e_override_wh_kg > 0.0)
 		return energy_wh / e_override_wh_kg;
 	int n = n_packs > 0 ? n_packs : 1;
-	return energy_wh / batt_pack_wh_kg(c, energy_wh / (double)n);
+	return energy_wh / batt_pack_wh_kg(c, energy_wh / (double)n, cells);
 }
 
 double
 batt_pack_energy_wh(const struct batt_chem *c, double mass_kg, int n_packs,
-                    double e_override_wh_kg)
+                    int cells, double e_override_wh_kg)
 {
 	if (e_override_wh_kg > 0.0)
 		return mass_kg * e_override_wh_kg;
-	/* m = E / (e_100 (E / (100 n))^b) solved for E; the floor of
-	 * batt_pack_wh_kg() (1 Wh per pack) holds below. */
+	/* m = E / (e_S (E / (100 n))^b) solved for E, e_S the law's value at
+	 * 100 Wh for these cells; the floor of batt_pack_wh_kg() (1 Wh per
+	 * pack) holds below. */
 	double n = (double)(n_packs > 0 ? n_packs : 1);
 	double b = c->pack_exponent;
-	double e_wh = pow(mass_kg * c->pack_wh_kg_100 / pow(100.0 * n, b), 1.0 / (1.0 - b));
+	double e_s = batt_pack_wh_kg(c, 100.0, cells);
+	double e_wh = pow(mass_kg * e_s / pow(100.0 * n, b), 1.0 / (1.0 - b));
 	if (e_wh / n < 1.0)
-		e_wh = mass_kg * batt_pack_wh_kg(c, 1.0);
+		e_wh = mass_kg * batt_pack_wh_kg(c, 1.0, cells);
 	return e_wh;
 }

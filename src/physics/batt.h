@@ -73,19 +73,23 @@ enum batt_status batt_current_a(double v_oc, double r_ohm, double power_w,
                                 double *current_a);
 
 /* Pack-level specific energy (the whole pack: cells, wiring, case, BMS)
- * of one pack storing pack_wh, Wh/kg: e_100 (pack_wh / 100 Wh)^b, the
- * chemistry's fit to the catalogue's real packs (data/chemistries.json).
- * Larger packs carry less case and wiring per watt-hour. */
-double batt_pack_wh_kg(const struct batt_chem *c, double pack_wh);
+ * of one pack of `cells` in series storing pack_wh, Wh/kg:
+ * e_100 (pack_wh / 100 Wh)^b (cells / 6)^-s, the chemistry's fit to the
+ * catalogue's real packs (data/chemistries.json).  Larger packs carry
+ * less case and wiring per watt-hour; at a given energy more series cells
+ * means smaller cells, each with its own tabs, leads and separator. */
+#define BATT_PACK_REF_CELLS 6.0
+double batt_pack_wh_kg(const struct batt_chem *c, double pack_wh, int cells);
 
-/* Mass of n_packs equal packs storing energy_wh in all, kg; a positive
- * e_override_wh_kg (the mission's battery_specific_energy_wh_kg) is the
- * pack-level specific energy as given. */
+/* Mass of n_packs equal packs of `cells` in series storing energy_wh in
+ * all, kg; a positive e_override_wh_kg (the mission's
+ * battery_specific_energy_wh_kg) is the pack-level specific energy as
+ * given. */
 double batt_pack_mass_kg(const struct batt_chem *c, double energy_wh, int n_packs,
-                         double e_override_wh_kg);
+                         int cells, double e_override_wh_kg);
 
 /* The inverse: the energy that n_packs packs of mass_kg in all store, Wh. */
 double batt_pack_energy_wh(const struct batt_chem *c, double mass_kg, int n_packs,
-                           double e_override_wh_kg);
+                           int cells, double e_override_wh_kg);
 
 #endif

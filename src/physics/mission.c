@@ -36,6 +36,25 @@ apply_coaxial(const struct mission_model *m, struct aero_point *p)
 	p->p_shaft_w += extra;
 }
 
+/* Forward flight: Glauert's isolated rotor sheds induced power as the flow
+ * through it grows; a multirotor keeps the share m->wake_share of that
+ * relief back (its rear rotors fly in the front rotors' wake, the body in
+ * the wash).  The relief is measured against hover at the same thrust. */
+static void
+apply_wake(const struct mission_model *m, double thrust_per_rotor_n,
+           struct aero_point *p)
+{
+	struct aero_point hover;
+	aero_rotor_power(&m->rotor, &m->air, thrust_per_rotor_n, 0.0, 0.0, 0.0,
+	    &hover);
+	double relief = hover.p_induced_w - p->p_induced_w;
+	if (!(relief > 0.0))
+		return;
+	double extra = m->wake_share * relief;
+	p->p_induced_w += extra;
+	p->p_shaft_w += extra;
+}
+
 /* Drag reference area in forward flight at mass_kg, m² (a pow: the speed
  * sweep computes it once for all its speeds). */
 static double
@@ -75,6 +94,8 @@ phase_power(const struct mission_model *m, double mass_kg, double v_climb_ms,
 	aero_rotor_power(&m->rotor, &m->air, out->thrust_per_rotor_n,
 	    v_climb_ms > 0.0 && v_fwd_ms <= 0.0 ? v_climb_ms : 0.0,
 	    v_fwd_ms > 0.0 ? v_fwd_ms : 0.0, parasite_w, &out->rotor);
+	if (v_fwd_ms > 0.0 && m->wake_share > 0.0)
+		apply_wake(m, out->thrust_per_rotor_n, &out->rotor);
 	apply_coaxial(m, &out->rotor);
 	finish(m, out);
 }

@@ -42,6 +42,10 @@ struct mission_model {
 	double fwd_drag_mult;       /* role forward-flight multiplier */
 	double cd_h;                /* body Cd, forward */
 	double cd_v;                /* body Cd, climb */
+	double wake_share;          /* forward flight: the share of the hover
+	                               induced power the relief of Glauert's
+	                               isolated rotor does not bring (rear
+	                               rotors in the front rotors' wake) */
 	double eta_drive;           /* motor + ESC efficiency */
 	double aux_w;               /* auxiliary load, W */
 	double bus_voltage_v;       /* for the switching loss */

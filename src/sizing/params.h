@@ -43,12 +43,10 @@ struct sizing_params {
 	bool allow_relax;            /* locks.auto_reduce_flight_time */
 	/* role */
 	double thrust_margin;        /* hover throttle = 1 - margin */
-	double thrust_margin_floor;  /* > 0: the margin is the role's default
-	                              * target and may be relaxed down to this
-	                              * value when the loop cannot close */
 	double load_factor;
 	double aux_w;                /* auxiliary power, W (the role's at
-	                              * SIZING_AUX_REF_KG when aux_scaled) */
+	                              * aux_ref_kg when aux_scaled) */
+	double aux_ref_kg;           /* the role's reference aircraft */
 	bool aux_scaled;             /* the role's default: scales with the
 	                              * aircraft (sizing_aux_w()) */
 	double added_drag_m2;
@@ -92,9 +90,11 @@ struct sizing_params {
 	double fom_isolated;
 	bool fom_isolated_mode;
 	double kappa;
+	double re_ref;               /* Reynolds reference of FoM(Re) */
 	double interference_c;       /* 0.6 offset, 1.5 under-rotor, 0 folding */
 	double eta_drive;
 	double cd_h, cd_v;
+	double wake_share;           /* forward flight's kept induced power */
 	double f_scale;
 	double ct;
 	/* structure */

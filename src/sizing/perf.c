@@ -464,7 +464,6 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 	run->ran = true;
 	run->converged = true;
 	run->thrust_margin = p->thrust_margin;
-	run->thrust_margin_requested = p->thrust_margin;
 	run->aux_power_w = x.model.aux_w;
 	record_craft(&x, run);
 	double mass = c->mass.total_kg;

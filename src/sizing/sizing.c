@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "physics/aero.h"
@@ -82,22 +83,6 @@ sizing_seed_kg(double payload_kg, double rho_kg_m3)
 	double scale = sqrt(RHO_SL_KG_M3 / rho_kg_m3);
 	/* Paper: applied only when the factor exceeds 1. */
 	return base / SIZING_SEED_FRACTION * (scale > 1.0 ? scale : 1.0);
-}
-
-int
-sizing_auto_cells(double peak_power_w, double mass_kg, double v_nom_cell,
-                  int lo, int hi)
-{
-	double budget_a = SIZING_CURRENT_BUDGET_A * sqrt(mass_kg > 0.0 ? mass_kg : 0.0);
-	double s = budget_a > 0.0 ? peak_power_w / (v_nom_cell * budget_a) : hi;
-	int cells = (int)ceil(s);
-	if (cells > 6 && cells % 2 != 0)
-		cells++; /* packs above 6S come in even counts */
-	if (cells < lo)
-		cells = lo;
-	if (cells > hi)
-		cells = hi;
-	return cells;
 }
 
 double
@@ -198,105 +183,16 @@ eval_phases(const struct sizing_params *p, struct eval *e)
 	e->phases_done = true;
 }
 
-/*
- * Evaluate every subsystem at takeoff mass M with capacity C, all but the
- * discharge: the masses of the map f of eq. (implicit), which do not depend
- * on it.  The speed sweep is recorded into rec when given (the final
- * evaluation).
- */
+/* The masses of evaluation e (rotor, powers and thrusts already set by
+ * evaluate_masses()) that depend on its series cells: the bus, the KV, the
+ * currents, the battery storing energy_wh (unless locked or a real part),
+ * motors and propellers (diameter d_m), airframe, harness and ESCs. */
 static void
-evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
-                double mass_kg, double capacity_ah, struct res_run *rec,
-                struct eval *e)
+cells_masses(const struct sizing_params *p, int cells, double energy_wh,
+             double d, struct eval *e)
 {
-	const struct atmo_state *air = &p->air;
 	int nr = p->n_rotors;
-	memset(e, 0, sizeof *e);
-	e->mass_kg = mass_kg;
-
-	/* Propeller: the locked one, or the chosen share of the largest the
-	 * overlap limit allows (engine.c tries several). */
-	e->overlap_limit_m = aero_overlap_limit_m(p->wheelbase_m, n_arms(p),
-	    AERO_TIP_CLEARANCE);
-	double d = p->prop_locked ? p->prop_diameter_m : e->overlap_limit_m
-	    * (p->prop_frac > 0.0 ? p->prop_frac : 1.0);
-
-	/* Thrust targets: T/W = 1 / θ² at the mission's mass (paper §II-E),
-	 * and at least the relaxation floor's T/W with the largest payload
-	 * aboard: the load case motors and structure are built for. */
-	double theta = 1.0 - p->thrust_margin;
-	if (theta < MIN_THROTTLE)
-		theta = MIN_THROTTLE;
-	double theta_floor = 1.0 - SIZING_MIN_THRUST_MARGIN;
-	e->design_mass_kg = mass_kg + p->extra_payload_kg;
-	e->t_hover_n = mass_kg * G0_M_S2 / (double)nr;
-	e->t_peak_n = fmax(e->t_hover_n / (theta * theta), e->design_mass_kg
-	    * G0_M_S2 / (double)nr / (theta_floor * theta_floor));
-	e->throttle = sqrt(e->t_hover_n / e->t_peak_n);
-	e->rps_hover = aero_rps_for_thrust(e->t_hover_n, p->ct, air->rho_kg_m3, d);
-	e->rps_peak = e->rps_hover / e->throttle;
-
-	/* Installed FoM at the hover tip Reynolds number, with interference. */
-	double re = aero_tip_reynolds(air, M_PI * d * e->rps_hover,
-	    aero_chord_m(d, p->n_blades));
-	e->fom_inst = p->fom_override > 0.0 ? p->fom_override
-	    : aero_fom_installed(p->fom_isolated, p->kappa, p->fom_isolated_mode, re);
-	e->k_int = aero_interference(p->interference_c, ls->arm_width_m, d);
-
-	struct mission_model *m = &e->model;
-	sizing_mission_model(p, e->design_mass_kg, m);
-	m->rotor.diameter_m = d;
-	m->rotor.ct = p->ct;
-	m->rotor.fom = e->fom_inst / e->k_int;
-	m->rotor.n_blades = p->n_blades;
-	m->eta_drive = p->eta_drive;
-	m->bus_voltage_v = (double)ls->cells * p->chem->v_nom;
-
-	/* Forward speed: the minimum-power speed when "auto". */
-	e->v_fwd_ms = p->v_forward_ms;
-	if (rec != NULL)
-		rec->n_sweep = mission_speed_sweep(m, mass_kg, e->t_peak_n,
-		    rec->sweep_v_ms, rec->sweep_power_w, RES_MAX_SWEEP,
-		    &e->v_min_power_ms, &e->v_max_ms);
-	else if (p->v_auto)
-		/* The loop needs the speeds only. */
-		mission_speed_search_hinted(m, mass_kg, e->t_peak_n,
-		    &e->v_min_power_ms, &e->v_max_ms, ls->speed_hint);
-	if (p->v_auto)
-		e->v_fwd_ms = e->v_min_power_ms;
-	/* A forward speed or climb rate the thrust (or the pitch limit) does
-	 * not reach is flown at the fastest it does, so no phase runs above
-	 * full throttle; FORWARD_SPEED and CLIMB_SPEED report the shortfall
-	 * against what was asked. */
-	e->v_fwd_request_ms = e->v_fwd_ms;
-	if (e->v_fwd_ms > 0.0)
-		e->v_fwd_ms = mission_forward_flown_ms(m, mass_kg, e->t_peak_n,
-		    e->v_fwd_ms, 0.0);
-	e->v_climb_ms = p->v_climb_ms > 0.0 ? mission_max_climb_ms(m, mass_kg,
-	    e->t_peak_n, p->v_climb_ms) : p->v_climb_ms;
-	e->climb_limit_ms = e->v_climb_ms < p->v_climb_ms ? e->v_climb_ms : 0.0;
-
-	/* The phase powers size a free battery (the specific-power floor
-	 * below) and go into the record; a given capacity (locked, or a
-	 * catalogue battery) leaves them to the record, which asks for them
-	 * (eval_phases()): most loop evaluations are never recorded. */
-	mission_peak_power(m, e->t_peak_n, &e->peak);
-	if (p->prop_locked)
-		e->pitch_m = p->prop_pitch_m;
-	if (!capacity_given(p))
-		eval_phases(p, e);
-
-	/* Series cells: locked, set by a locked KV, or from the current budget. */
-	if (p->parts.active && p->parts.cells > 0)
-		e->cells = p->parts.cells;
-	else if (p->cells_fixed > 0)
-		e->cells = p->cells_fixed;
-	else if (p->kv_locked)
-		e->cells = (int)ceil(60.0 * e->rps_peak / (p->kv * p->chem->v_full));
-	else
-		e->cells = ls->cells;
-	if (e->cells < 1)
-		e->cells = 1;
+	e->cells = cells < 1 ? 1 : cells;
 	double v_nom = (double)e->cells * p->chem->v_nom;
 	e->kv = p->kv_locked ? p->kv
 	    : 60.0 * e->rps_peak / ((double)e->cells * p->chem->v_full);
@@ -304,7 +200,7 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 
 	/* Battery: energy-sized capacity, floored by the power the cells can
 	 * deliver (specific power), unless locked or a real part. */
-	e->capacity_ah = capacity_ah;
+	e->capacity_ah = energy_wh / v_nom;
 	if (battery_fixed(p))
 		e->capacity_ah = p->parts.capacity_ah;
 	else if (p->capacity_locked)
@@ -314,7 +210,7 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 	 * energy), which also brings the cells' specific power to the pack. */
 	double e_nom_wh = e->capacity_ah * v_nom;
 	double m_energy = batt_pack_mass_kg(p->chem, e_nom_wh, p->pack_count,
-	    p->e_pack_override_wh_kg);
+	    e->cells, p->e_pack_override_wh_kg);
 	e->eta_pkg = p->chem->e_spec_wh_kg * m_energy / e_nom_wh;
 	/* Cells deliver their specific power continuously and about twice it
 	 * in a 10 s burst: the pack must carry the highest sustained phase
@@ -332,7 +228,7 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 		e->power_binds = true;
 		e->mass.battery_kg = m_power;
 		e->capacity_ah = batt_pack_energy_wh(p->chem, m_power, p->pack_count,
-		    p->e_pack_override_wh_kg) / v_nom;
+		    e->cells, p->e_pack_override_wh_kg) / v_nom;
 	} else {
 		e->mass.battery_kg = m_energy;
 	}
@@ -380,6 +276,132 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 	    + e->mass.prop_kg + e->mass.esc_kg + e->mass.wiring_kg
 	    + e->mass.avionics_kg + e->mass.role_aux_kg + e->mass.other_kg;
 
+}
+
+/*
+ * Evaluate every subsystem at takeoff mass M with capacity C, all but the
+ * discharge: the masses of the map f of eq. (implicit), which do not depend
+ * on it.  The speed sweep is recorded into rec when given (the final
+ * evaluation).
+ */
+static void
+evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
+                double mass_kg, double capacity_ah, struct res_run *rec,
+                struct eval *e)
+{
+	const struct atmo_state *air = &p->air;
+	int nr = p->n_rotors;
+	memset(e, 0, sizeof *e);
+	e->mass_kg = mass_kg;
+
+	/* Propeller: the locked one, or the chosen share of the largest the
+	 * overlap limit allows (engine.c tries several). */
+	e->overlap_limit_m = aero_overlap_limit_m(p->wheelbase_m, n_arms(p),
+	    AERO_TIP_CLEARANCE);
+	double d = p->prop_locked ? p->prop_diameter_m : e->overlap_limit_m
+	    * (p->prop_frac > 0.0 ? p->prop_frac : 1.0);
+
+	/* Thrust target: T/W = 1 / θ² (paper §II-E) with the largest payload
+	 * aboard, the load case motors and structure are built for. */
+	double theta = 1.0 - p->thrust_margin;
+	if (theta < MIN_THROTTLE)
+		theta = MIN_THROTTLE;
+	e->design_mass_kg = mass_kg + p->extra_payload_kg;
+	e->t_hover_n = mass_kg * G0_M_S2 / (double)nr;
+	e->t_peak_n = e->design_mass_kg * G0_M_S2 / (double)nr / (theta * theta);
+	e->throttle = sqrt(e->t_hover_n / e->t_peak_n);
+	e->rps_hover = aero_rps_for_thrust(e->t_hover_n, p->ct, air->rho_kg_m3, d);
+	e->rps_peak = e->rps_hover / e->throttle;
+
+	/* Installed FoM at the hover tip Reynolds number, with interference. */
+	double re = aero_tip_reynolds(air, M_PI * d * e->rps_hover,
+	    aero_chord_m(d, p->n_blades));
+	e->fom_inst = p->fom_override > 0.0 ? p->fom_override
+	    : aero_fom_installed(p->fom_isolated, p->kappa, p->fom_isolated_mode, re,
+	        p->re_ref);
+	e->k_int = aero_interference(p->interference_c, ls->arm_width_m, d);
+
+	struct mission_model *m = &e->model;
+	sizing_mission_model(p, e->design_mass_kg, m);
+	m->rotor.diameter_m = d;
+	m->rotor.ct = p->ct;
+	m->rotor.fom = e->fom_inst / e->k_int;
+	m->rotor.n_blades = p->n_blades;
+	m->eta_drive = p->eta_drive;
+	m->bus_voltage_v = (double)ls->cells * p->chem->v_nom;
+
+	/* Forward speed: the minimum-power speed when "auto". */
+	e->v_fwd_ms = p->v_forward_ms;
+	if (rec != NULL)
+		rec->n_sweep = mission_speed_sweep(m, mass_kg, e->t_peak_n,
+		    rec->sweep_v_ms, rec->sweep_power_w, RES_MAX_SWEEP,
+		    &e->v_min_power_ms, &e->v_max_ms);
+	else if (p->v_auto)
+		/* The loop needs the speeds only. */
+		mission_speed_search_hinted(m, mass_kg, e->t_peak_n,
+		    &e->v_min_power_ms, &e->v_max_ms, ls->speed_hint);
+	if (p->v_auto)
+		e->v_fwd_ms = e->v_min_power_ms;
+	/* A forward speed or climb rate the thrust (or the pitch limit) does
+	 * not reach is flown at the fastest it does, so no phase runs above
+	 * full throttle; FORWARD_SPEED and CLIMB_SPEED report the shortfall
+	 * against what was asked. */
+	e->v_fwd_request_ms = e->v_fwd_ms;
+	if (e->v_fwd_ms > 0.0)
+		e->v_fwd_ms = mission_forward_flown_ms(m, mass_kg, e->t_peak_n,
+		    e->v_fwd_ms, 0.0);
+	e->v_climb_ms = p->v_climb_ms > 0.0 ? mission_max_climb_ms(m, mass_kg,
+	    e->t_peak_n, p->v_climb_ms) : p->v_climb_ms;
+	e->climb_limit_ms = e->v_climb_ms < p->v_climb_ms ? e->v_climb_ms : 0.0;
+
+	/* The phase powers size a free battery (the specific-power floor
+	 * below) and go into the record; a given capacity (locked, or a
+	 * catalogue battery) leaves them to the record, which asks for them
+	 * (eval_phases()): most loop evaluations are never recorded. */
+	mission_peak_power(m, e->t_peak_n, &e->peak);
+	if (p->prop_locked)
+		e->pitch_m = p->prop_pitch_m;
+	if (!capacity_given(p))
+		eval_phases(p, e);
+
+	/* Series cells: a part's, locked, set by a locked KV, or chosen. */
+	double energy_wh = capacity_ah * (double)ls->cells * p->chem->v_nom;
+	int fixed = 0;
+	if (p->parts.active && p->parts.cells > 0)
+		fixed = p->parts.cells;
+	else if (p->cells_fixed > 0)
+		fixed = p->cells_fixed;
+	else if (p->kv_locked)
+		fixed = (int)ceil(60.0 * e->rps_peak / (p->kv * p->chem->v_full));
+	if (fixed > 0 || p->cells_lo >= p->cells_hi) {
+		cells_masses(p, fixed > 0 ? fixed : p->cells_lo, energy_wh, d, e);
+		return;
+	}
+	/* The series count is a design variable: the lightest aircraft whose
+	 * full-throttle current stays within the harness budget (more cells
+	 * lighten the harness and ESCs, but at the same energy make smaller,
+	 * heavier cells: batt_pack_wh_kg).  Where no count keeps within the
+	 * budget, the most cells the class allows.  The budget only admits
+	 * fewer counts as a requirement grows, so the lightest admitted design
+	 * never gets lighter (docs/model.md, monotone sizing). */
+	double budget_a = SIZING_CURRENT_BUDGET_A * sqrt(mass_kg);
+	struct eval best, t;
+	bool found = false;
+	for (int cells = p->cells_lo; cells <= p->cells_hi; cells++) {
+		t = *e;
+		cells_masses(p, cells, energy_wh, d, &t);
+		if (t.peak_current_a > budget_a)
+			continue;
+		if (!found || t.mass.total_kg < best.mass.total_kg) {
+			best = t;
+			found = true;
+		}
+	}
+	if (!found) {
+		best = *e;
+		cells_masses(p, p->cells_hi, energy_wh, d, &best);
+	}
+	*e = best;
 }
 
 /* Fly the mission of an evaluate_masses() result e in `steps` steps at
@@ -458,15 +480,16 @@ sizing_mission_model(const struct sizing_params *p, double design_mass_kg,
 	m->fwd_drag_mult = p->fwd_drag_mult;
 	m->cd_h = p->cd_h;
 	m->cd_v = p->cd_v;
+	m->wake_share = p->wake_share;
 	m->aux_w = sizing_aux_w(p, design_mass_kg);
 }
 
 double
 sizing_aux_w(const struct sizing_params *p, double design_mass_kg)
 {
-	if (!p->aux_scaled || !(design_mass_kg > 0.0))
+	if (!p->aux_scaled || !(design_mass_kg > 0.0) || !(p->aux_ref_kg > 0.0))
 		return p->aux_w;
-	return p->aux_w * pow(design_mass_kg / SIZING_AUX_REF_KG, 2.0 / 3.0);
+	return p->aux_w * pow(design_mass_kg / p->aux_ref_kg, 2.0 / 3.0);
 }
 
 double
@@ -477,9 +500,10 @@ sizing_motor_kg(double power_max_w, double omega_max_rad_s)
 }
 
 
-/* Initial capacity: nominal energy of the mission at the seed mass. */
+/* Initial capacity: nominal energy of the mission at the seed mass, at
+ * the series count the evaluation chooses there (into ls->cells). */
 static double
-seed_capacity_ah(const struct sizing_params *p, const struct loop_state *ls,
+seed_capacity_ah(const struct sizing_params *p, struct loop_state *ls,
                  double mass_kg)
 {
 	/* The phase powers alone: no discharge (they are computed, the
@@ -490,60 +514,16 @@ seed_capacity_ah(const struct sizing_params *p, const struct loop_state *ls,
 	sizing_durations(p, ls->gamma_time, d);
 	for (int i = 0; i < PHASE_MAX; i++)
 		wh += e.ph[i].electrical_w * d[i] / S_PER_H;
-	double v = (double)ls->cells * p->chem->v_nom;
+	ls->cells = e.cells;
+	double v = (double)e.cells * p->chem->v_nom;
 	double c = SIZING_CAP_MARGIN * wh / v;
 	return c > 0.05 ? c : 0.05;
 }
 
-/* Initial cells from the peak power at the seed mass. */
-static int
-seed_cells(const struct sizing_params *p, int lo, int hi, double mass_kg,
-           struct loop_state *ls)
-{
-	ls->cells = lo;
-	struct eval e;
-	for (int k = 0; k < 3; k++) {
-		/* The peak power alone: no discharge. */
-		evaluate(p, ls, mass_kg, 1.0, 0, NULL, &e);
-		int cells = sizing_auto_cells(e.peak.electrical_w, mass_kg,
-		    p->chem->v_nom, lo, hi);
-		/* Unchanged: every further pass would repeat this one. */
-		if (cells == ls->cells)
-			break;
-		ls->cells = cells;
-	}
-	return ls->cells;
-}
-
-/* The series-cell count inside the loop.  Integer counts can limit-cycle
- * (paper §II-D: step discontinuities), so the count steps up as soon as
- * the current budget is exceeded but steps down only when the lower count
- * keeps the current 15 % inside it, and at most CELL_MAX_DOWN times; the
- * stored energy, not the charge, carries across a change. */
-#define CELL_DOWN_MARGIN 0.85
+/* The Aitken acceleration's guards (iterate()). */
 #define AITKEN_R_MIN   0.5   /* extrapolate only slow contractions */
 #define AITKEN_R_MAX   0.98  /* and never a ratio near 1 (divergence) */
 #define AITKEN_R_AGREE 0.05  /* successive ratios within 5 % */
-#define CELL_MAX_DOWN    2
-
-static int
-next_cells(const struct sizing_params *p, int cells, double peak_w,
-           double mass_kg, int cells_lo, int cells_hi, int *n_down)
-{
-	int want = sizing_auto_cells(peak_w, mass_kg, p->chem->v_nom, cells_lo,
-	    cells_hi);
-	if (want > cells)
-		return want;
-	if (want < cells && *n_down < CELL_MAX_DOWN) {
-		double budget_a = SIZING_CURRENT_BUDGET_A * sqrt(mass_kg);
-		double i_a = peak_w / ((double)want * p->chem->v_nom);
-		if (i_a <= CELL_DOWN_MARGIN * budget_a) {
-			(*n_down)++;
-			return want;
-		}
-	}
-	return cells;
-}
 
 /* Forget what a recording evaluation wrote into rec (the trace and the
  * speed sweep): the next one then starts from the record that sizing_run
@@ -611,8 +591,13 @@ loop_steady(const struct sizing_params *p, double gamma_time,
 }
 
 /* The fixed-point iteration at goal-relaxation factor gamma_time.  The
- * series-cell count is the locked one, or starts from the seed mass's
- * peak power and follows next_cells() inside the loop.
+ * series-cell count is the locked one, or the one each evaluation chooses
+ * (evaluate_masses()); the loop carries the capacity across a change of
+ * count as stored energy.  The least fixed point is the design: the map
+ * rises with the mass and with every requirement, so iterating from below
+ * it keeps every iterate below it (a seed the first evaluation finds above
+ * a fixed point is replaced by the payload alone) and a harder mission's
+ * fixed point is never lighter.
  *
  * A loop that converges on a flown mission confirms it at the final
  * resolution: that evaluation, at (*m_star, *c_star, *ls_out), goes to
@@ -632,24 +617,17 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 	out->iterations = 0;
 	/* Start from the seed of eq. (altcorrect). */
 	double m = sizing_seed_kg(p->payload_kg, p->air.rho_kg_m3);
-	bool auto_cells = p->cells_fixed <= 0 && !p->kv_locked
-	    && !(p->parts.active && p->parts.cells > 0);
-	int cells = p->cells_fixed > 0 ? p->cells_fixed : 1;
+	int cells = p->cells_fixed > 0 ? p->cells_fixed : p->cells_lo;
 	if (p->parts.active && p->parts.cells > 0)
 		cells = p->parts.cells;
-	if (auto_cells) {
-		struct loop_state seed = { p->cells_lo, 0.02 * p->wheelbase_m, gamma_time,
-		    NULL };
-		cells = seed_cells(p, p->cells_lo, p->cells_hi, m, &seed);
-	}
-	int n_down = 0;
 	struct mission_speed_hint hint = { false, 0, 0 };
 	struct loop_state ls = { cells, 0.02 * p->wheelbase_m, gamma_time, &hint };
 	/* A catalogue battery's capacity is the part's whatever c says (see
 	 * evaluate_masses()), so it needs no seed evaluation. */
 	double c = p->capacity_locked ? p->capacity_locked_ah
 	    : battery_fixed(p) ? p->parts.capacity_ah : seed_capacity_ah(p, &ls, m);
-	double c_failed = 0.0;
+	double c_failed_wh = 0.0;   /* the largest stored energy that failed */
+	bool reseeded = false;
 	int max_iter = p->max_iter > 0 ? p->max_iter : SIZING_MAX_ITER;
 	enum sizing_status st = SIZING_MAX_ITERATIONS;
 	/* A locked or catalogue capacity takes nothing from the flights: the
@@ -673,14 +651,28 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 			out->history_kg[out->n_history++] = f;
 		out->iterations++;
 		double c_used = e->capacity_ah;
+		double v_bus = (double)e->cells * p->chem->v_nom;
+		/* The first iterate lies below the seed: the seed is above a
+		 * fixed point.  Restart from the payload, below every fixed
+		 * point (from above, the loop could settle on a larger one
+		 * than the least, which is the design). */
+		if (k == 1 && f < m && !reseeded && p->payload_kg < m) {
+			reseeded = true;
+			m = p->payload_kg > 0.0 ? p->payload_kg : f;
+			out->n_history = 0;
+			out->iterations = 0;
+			k = 0;
+			continue;
+		}
 		if (!lazy) {
-			if (!loop_flown(p, gamma_time, &ring, k) && e->capacity_ah > c_failed)
-				c_failed = e->capacity_ah;
+			if (!loop_flown(p, gamma_time, &ring, k)
+			    && c_used * v_bus > c_failed_wh)
+				c_failed_wh = c_used * v_bus;
 			/* Eq. (relaxation) with the ratchet floor. */
 			c = SIZING_RELAX_ALPHA * e->c_target_ah
 			    + (1.0 - SIZING_RELAX_ALPHA) * c_used;
-			if (c_failed > 0.0 && c < SIZING_RATCHET * c_failed)
-				c = SIZING_RATCHET * c_failed;
+			if (c_failed_wh > 0.0 && c * v_bus < SIZING_RATCHET * c_failed_wh)
+				c = SIZING_RATCHET * c_failed_wh / v_bus;
 		}
 		if (!isfinite(f) || f > SIZING_RUNAWAY_KG) {
 			st = SIZING_RUNAWAY;
@@ -689,17 +681,8 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 		/* The next iteration sees this one's arm (rotor-arm interference)
 		 * and, when automatic, its series-cell count. */
 		ls.arm_width_m = e->arm.d_out_m;
-		bool cells_steady = true;
-		if (auto_cells) {
-			int nc = next_cells(p, ls.cells, e->peak.electrical_w, f,
-			    p->cells_lo, p->cells_hi, &n_down);
-			if (nc != ls.cells) {
-				c *= (double)ls.cells / (double)nc;
-				c_failed = 0.0;
-				ls.cells = nc;
-				cells_steady = false;
-			}
-		}
+		bool cells_steady = e->cells == ls.cells;
+		ls.cells = e->cells;
 		ring.cells_steady[k % LOOP_RING] = cells_steady;
 		/* A power-bound battery is as large as the peak power needs; its
 		 * energy target is then below it and has no further say. */
@@ -732,8 +715,9 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 						 * the final resolution, with this
 						 * capacity as failed. */
 						ring.steps = FINAL_STEPS;
-						c_failed = fmax(c_failed, e->capacity_ah);
-						c = fmax(c, SIZING_RATCHET * c_failed);
+						c_failed_wh = fmax(c_failed_wh,
+						    e->capacity_ah * v_bus);
+						c = fmax(c, SIZING_RATCHET * c_failed_wh / v_bus);
 						*fin_done = false;
 						last_jump = k;
 						continue;
@@ -787,11 +771,18 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 }
 
 /* dF/dM at the fixed point by central differences, with the capacity
- * re-targeted at each side (the full coupling of eq. lipschitz). */
+ * re-targeted at each side (the full coupling of eq. lipschitz).  The
+ * series count is held at the fixed point's: the design's own growth, not
+ * the step to the next bus a heavier aircraft would choose (a step the
+ * fixed point lies below, so the loop never crosses it). */
 static double
-lipschitz(const struct sizing_params *p, const struct loop_state *ls,
+lipschitz(const struct sizing_params *p_in, const struct loop_state *ls,
           double m_star, double c_star)
 {
+	struct sizing_params held = *p_in;
+	if (held.cells_fixed <= 0 && !held.kv_locked)
+		held.cells_fixed = ls->cells;
+	const struct sizing_params *p = &held;
 	double h = LIPSCHITZ_STEP * m_star;
 	struct eval a, b;
 	double ca = c_star, cb = c_star;
@@ -1112,83 +1103,24 @@ relax_time(const struct sizing_params *p, struct res_run *out,
 	    fin_done, m_star, c_star, ls);
 }
 
-/* Does the loop close at thrust margin t->thrust_margin as a clear
- * contraction?  Near L = 1 a fixed point exists but sits on the edge of the
- * mass snowball (every added gram multiplies), so a relaxed target must
- * leave L <= SIZING_RELAX_MAX_L.  Records nothing. */
-static bool
-closes_clearly(const struct sizing_params *t, struct res_run *out)
-{
-	struct loop_state l2;
-	double m2, c2;
-	if (trial(t, 1.0, out, &l2, &m2, &c2) != SIZING_CONVERGED)
-		return false;
-	return lipschitz(t, &l2, m2, c2) <= SIZING_RELAX_MAX_L;
-}
-
-/* Thrust relaxation: a role's default thrust target (racing's T/W 25,
- * inspection's T/W 4) is a goal, not a requirement, and with real motor
- * masses it can be out of reach: peak power, motors and the burst battery
- * then grow faster than the mass they lift.  Use the largest margin in
- * [floor, requested) that closes clearly (bisection: more margin, more
- * mass), else the floor itself if its loop closes at all.  Returns false
- * with *q unchanged when even the floor does not close; otherwise sets
- * q->thrust_margin, runs the loop at it, recording into out (its status
- * in *st), and leaves its state as iterate() does. */
-static bool
-relax_thrust(struct sizing_params *q, struct res_run *out, struct eval *last,
-             struct eval *fin, bool *fin_done, double *m_star, double *c_star,
-             struct loop_state *ls, enum sizing_status *st)
-{
-	double lo = q->thrust_margin_floor, hi = q->thrust_margin;
-	struct sizing_params t = *q;
-	t.thrust_margin = lo;
-	if (closes_clearly(&t, out)) {
-		for (int k = 0; k < SIZING_MARGIN_BISECT; k++) {
-			t.thrust_margin = 0.5 * (lo + hi);
-			if (closes_clearly(&t, out))
-				lo = t.thrust_margin;
-			else
-				hi = t.thrust_margin;
-		}
-	}
-	t.thrust_margin = lo;
-	*st = iterate(&t, 1.0, out, out, last, fin, fin_done, m_star, c_star, ls);
-	if (*st != SIZING_CONVERGED)
-		return false;
-	q->thrust_margin = lo;
-	return true;
-}
-
 enum sizing_status
-sizing_run(const struct sizing_params *p_in, struct res_run *out)
+sizing_run(const struct sizing_params *p, struct res_run *out)
 {
 	struct eval last, fin;
 	bool fin_done;
 	struct loop_state ls;
 	double m_star = 0.0, c_star = 0.0;
-	/* A private copy: the thrust relaxation changes the margin flown. */
-	struct sizing_params q = *p_in;
-	const struct sizing_params *p = &q;
 
 	res_run_clear_untraced(out);
 	out->ran = true;
-	out->thrust_margin_requested = q.thrust_margin;
+	out->thrust_margin = p->thrust_margin;
 	enum sizing_status st = iterate(p, 1.0, out, out, &last, &fin, &fin_done,
 	    &m_star, &c_star, &ls);
-
+	/* The thrust requirement is never relaxed: a mission that does not
+	 * close at it is reported unmet (the engine's ceiling says what is
+	 * reachable).  Only the mission's own opt-in shortens the flight. */
 	if (st != SIZING_CONVERGED && p->allow_relax)
 		st = relax_time(p, out, &last, &fin, &fin_done, &m_star, &c_star, &ls);
-	if ((st == SIZING_RUNAWAY || st == SIZING_MAX_ITERATIONS)
-	    && q.thrust_margin_floor > 0.0
-	    && q.thrust_margin_floor < q.thrust_margin) {
-		if (!relax_thrust(&q, out, &last, &fin, &fin_done, &m_star,
-		    &c_star, &ls, &st))
-			/* Nothing closes: report the run as requested. */
-			st = iterate(p, 1.0, out, out, &last, &fin, &fin_done,
-			    &m_star, &c_star, &ls);
-	}
-	out->thrust_margin = q.thrust_margin;
 	/* A confirming evaluation of an earlier iteration may have recorded
 	 * into out: only the last one's record stands. */
 	if (!fin_done)
@@ -1213,6 +1145,40 @@ sizing_run(const struct sizing_params *p_in, struct res_run *out)
 	return st;
 }
 
+bool
+sizing_endurance_at_mass(const struct sizing_params *p_in, double mass_kg,
+                         double v_forward_ms, struct sizing_endurance *out)
+{
+	memset(out, 0, sizeof *out);
+	struct sizing_params p = *p_in;
+	p.v_auto = !(v_forward_ms > 0.0);
+	p.v_forward_ms = v_forward_ms;
+	struct loop_state ls = { p.cells_fixed > 0 ? p.cells_fixed : p.cells_lo,
+		0.02 * p.wheelbase_m, 1.0, NULL };
+	struct eval e;
+	/* Twice: the second pass sees the arm the first one sized (rotor-arm
+	 * interference). */
+	for (int k = 0; k < 2; k++) {
+		evaluate_masses(&p, &ls, mass_kg, p.capacity_locked_ah, NULL, &e);
+		ls.arm_width_m = e.arm.d_out_m;
+		ls.cells = e.cells;
+	}
+	struct discharge_pack pk;
+	pack_of(&p, &e, &pk);
+	struct mission_power hv, fw;
+	mission_power(&e.model, mass_kg, 0.0, 0.0, &hv);
+	out->forward_speed_ms = p.v_auto ? e.v_min_power_ms : v_forward_ms;
+	mission_power(&e.model, mass_kg, 0.0, out->forward_speed_ms, &fw);
+	out->hover_power_w = hv.electrical_w;
+	out->forward_power_w = fw.electrical_w;
+	out->prop_diameter_m = e.model.rotor.diameter_m;
+	out->hover_s = discharge_power_endurance_s(&pk, hv.electrical_w, p.ambient_c,
+	    BATT_SOC_MIN, FINAL_STEPS);
+	out->forward_s = discharge_power_endurance_s(&pk, fw.electrical_w,
+	    p.ambient_c, BATT_SOC_MIN, FINAL_STEPS);
+	return out->hover_s > 0.0 && isfinite(out->hover_s) && isfinite(out->forward_s);
+}
+
 /* Open loop: f at a given M, the capacity re-targeted at that mass until
  * the mission's charge and the capacity agree (the masses then no longer
  * change with it).  No fixed point in M is sought. */
@@ -1222,14 +1188,10 @@ sizing_at_mass(const struct sizing_params *p, double mass_kg,
                struct sizing_open *out)
 {
 	memset(out, 0, sizeof *out);
-	bool auto_cells = p->cells_fixed <= 0 && !p->kv_locked
-	    && !(p->parts.active && p->parts.cells > 0);
-	struct loop_state ls = { p->cells_fixed > 0 ? p->cells_fixed : 1,
+	struct loop_state ls = { p->cells_fixed > 0 ? p->cells_fixed : p->cells_lo,
 		0.02 * p->wheelbase_m, 1.0, NULL };
 	if (p->parts.active && p->parts.cells > 0)
 		ls.cells = p->parts.cells;
-	if (auto_cells)
-		seed_cells(p, p->cells_lo, p->cells_hi, mass_kg, &ls);
 	double c = p->capacity_locked ? p->capacity_locked_ah
 	    : battery_fixed(p) ? p->parts.capacity_ah
 	    : seed_capacity_ah(p, &ls, mass_kg);
@@ -1238,6 +1200,7 @@ sizing_at_mass(const struct sizing_params *p, double mass_kg,
 	for (int k = 0; k < OPEN_LOOP_MAX_ITER && !settled; k++) {
 		evaluate(p, &ls, mass_kg, c, LOOP_STEPS, NULL, &e);
 		ls.arm_width_m = e.arm.d_out_m;
+		ls.cells = e.cells;
 		if (capacity_given(p) || (e.power_binds && e.c_target_ah <= e.capacity_ah)) {
 			settled = k > 0; /* one more pass with this arm width */
 			continue;

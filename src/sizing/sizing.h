@@ -31,11 +31,6 @@
                                        the discharge's integration accuracy */
 #define SIZING_RUNAWAY_KG    150.0  /* runaway-divergence flag, kg */
 #define SIZING_GAMMA_MIN     0.05   /* goal relaxation floor */
-#define SIZING_MARGIN_BISECT 8      /* bisection steps of the thrust relaxation */
-#define SIZING_RELAX_MAX_L   0.75   /* a relaxed thrust target keeps L below this */
-#define SIZING_MIN_THRUST_MARGIN 0.3 /* relaxation floor: hover throttle 70 %,
-                                      * T/W 2.0, the usual minimum for
-                                      * attitude authority in gusts */
 #define SIZING_SEED_FRACTION 0.60   /* M(0) = payload / 0.60 (eq. altcorrect) */
 /* Steps of a final, recorded flight: twice the loop's, so a limit the
  * loop's steps hide shows; each phase's count rounds down and is floored
@@ -77,14 +72,11 @@ enum sizing_status {
 
 
 /* Size one run.  Fills *out completely (history, masses, phases, trace,
- * sweep, checks are left to feasibility.c) and returns the status.  If the
- * run fails and p->allow_relax, the mission times are scaled down by the
- * largest γ >= 0.05 that closes; out->time_scale records it.  If it still
- * fails and p->thrust_margin_floor > 0 (a role's default thrust target, not
- * one the mission asked for), the thrust margin is lowered to the largest
- * value in [floor, requested) whose loop closes with a Lipschitz constant
- * <= SIZING_RELAX_MAX_L (else to the floor, if that closes at all);
- * out->thrust_margin and out->thrust_margin_requested record both. */
+ * sweep, checks are left to feasibility.c) and returns the status.  The
+ * thrust target (p->thrust_margin) is a requirement: it is never lowered.
+ * If the run fails and p->allow_relax (the mission's own opt-in), the
+ * mission times are scaled down by the largest γ >= 0.05 that closes;
+ * out->time_scale records it. */
 enum sizing_status sizing_run(const struct sizing_params *p, struct res_run *out);
 
 /* The phase durations of p after goal relaxation γ (d: PHASE_MAX), their
@@ -124,16 +116,32 @@ struct sizing_open {
 bool sizing_at_mass(const struct sizing_params *p, double mass_kg,
                     struct sizing_open *out);
 
+/* The forward check: the endurance of an aircraft p describes, its
+ * battery locked (a published pack), at its takeoff mass mass_kg, flown
+ * as makers quote it: to an empty pack (BATT_SOC_MIN), without the
+ * mission's reserve, in hover and in level flight at v_forward_ms (0: the
+ * minimum-power speed).  False when the pack cannot carry the aircraft at
+ * all (voltage collapse at the first step). */
+struct sizing_endurance {
+	double hover_s;              /* hover to empty */
+	double forward_s;            /* level flight to empty */
+	double forward_speed_ms;     /* at this speed */
+	double hover_power_w;        /* electrical, at mass_kg */
+	double forward_power_w;
+	double prop_diameter_m;      /* the rotor flown */
+};
+bool sizing_endurance_at_mass(const struct sizing_params *p, double mass_kg,
+                              double v_forward_ms, struct sizing_endurance *out);
+
 /* The altitude-corrected seed of eq. (altcorrect), kg. */
 double sizing_seed_kg(double payload_kg, double rho_kg_m3);
 
 /* Auxiliary power at a design mass: the role's default (paper Table
- * roles) describes the gimbal, sensors and links of an aircraft of about
- * SIZING_AUX_REF_KG; the equipment those loads power grows as M^(2/3)
- * (airframe.h), so a role default scales with it (a 249 g camera drone
- * draws a few watts, not the 22.5 W of a 5 kg one).  A value the mission
- * gave is used as is. */
-#define SIZING_AUX_REF_KG 5.0
+ * roles) describes the gimbal, sensors and links of the paper's case-study
+ * aircraft of that role (p->aux_ref_kg: data/roles.json); the equipment
+ * those loads power grows as M^(2/3) (airframe.h), so a role default
+ * scales with it (a 249 g camera drone draws a few watts, not the 22.5 W
+ * of a 5.6 kg one).  A value the mission gave is used as is. */
 double sizing_aux_w(const struct sizing_params *p, double design_mass_kg);
 
 /* The mission model's air, layout, drag and auxiliary load for p at a
@@ -144,12 +152,6 @@ void sizing_mission_model(const struct sizing_params *p, double design_mass_kg,
 
 /* Continuous motor mass law (see the constants above), kg per motor. */
 double sizing_motor_kg(double power_max_w, double omega_max_rad_s);
-
-/* Series cells for a peak battery power at mass_kg: the smallest count
- * keeping the peak current within 60 A × sqrt(M / 1 kg), clamped to
- * [lo, hi]. */
-int sizing_auto_cells(double peak_power_w, double mass_kg, double v_nom_cell,
-                      int lo, int hi);
 
 /* Propeller pitch for hover inflow: blade angle at 75 % radius =
  * inflow angle + 4° incidence, m. */

@@ -163,25 +163,8 @@ prepare(const struct mission_spec *spec, const struct model_data *md,
 		out->given[SPECF_ROLE_TYPE] = true;
 		substituted = true;
 	}
-	/* A role's default thrust target that the nominal design had to relax
-	 * (sizing.h) is pinned at the target it flies: otherwise a sweep that
-	 * crosses the relaxation boundary compares designs built to different
-	 * T/W requirements.  The pinned mission designs the same aircraft, so
-	 * the lock sweeps below reuse this solve. */
 	bool solved = false;
 	int rc = 0;
-	if (!out->given[SPECF_ROLE_THRUST_MARGIN]) {
-		rc = solve(out, md, r);
-		solved = true;
-		if (n_solves)
-			(*n_solves)++;
-		const struct res_run *o = &r->custom;
-		if (rc == 0 && o->ran && o->converged
-		    && res_thrust_relaxed(o)) {
-			out->payload_role.thrust_margin_override = o->thrust_margin;
-			out->given[SPECF_ROLE_THRUST_MARGIN] = true;
-		}
-	}
 	struct spec_locks *lk = &out->locks;
 	if ((id == SENS_BATT_LOCK && !lk->is_battery_locked)
 	    || (id == SENS_PROP_LOCK && !lk->is_prop_locked)) {

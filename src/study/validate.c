@@ -21,7 +21,7 @@ static const char *const note_text[VALIDATE_NOTE_COUNT] = {
 	"chemistry unknown: LiHV",
 	"coaxial unknown: flat layout",
 	"role unknown: none",
-	"endurance from the max flight time",
+	"endurance from the max flight time, flown level",
 	"the published pack locked",
 };
 
@@ -285,23 +285,38 @@ validate_mission_explained(const struct cohort_row *row, const struct model_data
 			                    SPECF_LOCK_CELL_COUNT, row->cell_count);
 	}
 
-	/* Endurance: one hover phase, the manufacturer's to-empty time brought
-	 * to the engine's reserve convention. */
-	double t_min = row->has_hover_time_min ? row->hover_time_min
-	    : VALIDATE_MAXFLIGHT_HOVER * row->max_flight_time_min;
-	if (!row->has_hover_time_min)
-		nt |= VALIDATE_NOTE_MAX_FLIGHT;
-	s->t_hover_s = t_min * 60.0 / SIZING_CAP_MARGIN;
+	/* Endurance: the manufacturer's to-empty time brought to the engine's
+	 * reserve convention, flown as the maker flew it: a hover time in
+	 * hover; a maximum flight time in level flight at the published
+	 * cruise speed, else at the minimum-power speed. */
 	s->t_climb_s = 0.0;
+	s->t_hover_s = 0.0;
 	s->t_forward_s = 0.0;
 	s->given[SPECF_T_HOVER_S] = true;
 	s->given[SPECF_T_CLIMB_S] = true;
 	s->given[SPECF_T_FORWARD_S] = true;
-	if (!in_range(SPECF_T_HOVER_S, s->t_hover_s))
-		return out_of_range(fact, row->has_hover_time_min ? "hover_time_min"
-		                    : "max_flight_time_min", row->has_hover_time_min ?
-		                    row->hover_time_min : row->max_flight_time_min,
-		                    SPECF_T_HOVER_S, s->t_hover_s);
+	if (row->has_hover_time_min) {
+		s->t_hover_s = row->hover_time_min * 60.0 / SIZING_CAP_MARGIN;
+		if (!in_range(SPECF_T_HOVER_S, s->t_hover_s))
+			return out_of_range(fact, "hover_time_min", row->hover_time_min,
+			                    SPECF_T_HOVER_S, s->t_hover_s);
+	} else {
+		nt |= VALIDATE_NOTE_MAX_FLIGHT;
+		s->t_forward_s = row->max_flight_time_min * 60.0 / SIZING_CAP_MARGIN;
+		if (!in_range(SPECF_T_FORWARD_S, s->t_forward_s))
+			return out_of_range(fact, "max_flight_time_min", row->max_flight_time_min,
+			                    SPECF_T_FORWARD_S, s->t_forward_s);
+		if (row->has_cruise_speed_ms) {
+			s->v_forward_ms = row->cruise_speed_ms;
+			s->v_forward_auto = false;
+			if (!in_range(SPECF_V_FORWARD_MS, s->v_forward_ms))
+				return out_of_range(fact, "cruise_speed_ms", row->cruise_speed_ms,
+				                    SPECF_V_FORWARD_MS, s->v_forward_ms);
+		} else {
+			s->v_forward_auto = true;
+		}
+		s->given[SPECF_V_FORWARD_MS] = true;
+	}
 
 	*notes = nt;
 	return VALIDATE_SKIP_NONE;
@@ -319,7 +334,6 @@ validate_solve_row(const struct mission_spec *spec, const struct model_data *md,
 	vr->cells = 0;
 	vr->capacity_mah = 0.0;
 	vr->thrust_to_weight = 0.0;
-	vr->thrust_relaxed = false;
 	if (rc != 0 || !o->ran || !isfinite(o->mass.total_kg) || !(o->mass.total_kg > 0.0)) {
 		vr->status = VALIDATE_ROW_NOT_RUN;
 		return;
@@ -329,7 +343,6 @@ validate_solve_row(const struct mission_spec *spec, const struct model_data *md,
 	vr->cells = o->cell_count;
 	vr->capacity_mah = o->capacity_mah;
 	vr->thrust_to_weight = o->thrust_to_weight;
-	vr->thrust_relaxed = res_thrust_relaxed(o);
 	vr->battery_pred_kg = o->mass.battery_kg;
 	vr->status = o->converged ? VALIDATE_ROW_OK : VALIDATE_ROW_NOT_CONVERGED;
 }

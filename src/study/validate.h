@@ -58,14 +58,13 @@
  *               battery both grow with M, the loop's slope at the real
  *               mass is near or above 1), so the two rules measure
  *               different things and both are reported (docs/validation.md).
- *   endurance   one hover phase (no climb, no forward flight).  The engine
- *               sizes capacity as 1.2 x the charge the mission draws, while
- *               manufacturer times run the pack to empty, so:
- *               t_hover = hover_time_min / 1.2, else
- *               t_hover = 0.8 x max_flight_time_min / 1.2 (noted): the
- *               advertised maximum is flown at the best-endurance forward
- *               speed, where a multirotor draws roughly 0.8 of its hover
- *               power; else skipped.
+ *   endurance   the maker's to-empty time brought to the engine's reserve
+ *               convention (the engine sizes capacity as 1.2 x the charge
+ *               the mission draws), flown as the maker flew it: a hover
+ *               time as one hover phase of hover_time_min / 1.2; else a
+ *               maximum flight time as one level-flight phase of
+ *               max_flight_time_min / 1.2 at cruise_speed_ms, else at the
+ *               minimum-power speed ("auto") (noted); else skipped.
  * Everything else keeps the mission defaults (sea level, ISA, role and
  * class defaults).  The prediction is the custom run's takeoff mass.
  */
@@ -82,7 +81,6 @@
 #include "util/stats.h"
 
 #define VALIDATE_PITCH_RATIO     0.45  /* pitch/diameter when only D is known */
-#define VALIDATE_MAXFLIGHT_HOVER 0.8   /* hover-equivalent share of the max flight time */
 #define VALIDATE_BOOT_RESAMPLES  2000  /* bootstrap resamples of the MAPE CI */
 #define VALIDATE_BOOT_SEED       20261122u /* fixed: the CI is reproducible */
 
@@ -192,8 +190,6 @@ struct validate_row {
 	int cells;                 /* series cells of the design (0 unless run) */
 	double capacity_mah;       /* capacity of the design (0 unless run) */
 	double thrust_to_weight;   /* T/W the design flies (0 unless run) */
-	bool thrust_relaxed;       /* the role's default target did not close
-	                            * and was relaxed (sizing.h) */
 };
 
 /* The whole validation. */
