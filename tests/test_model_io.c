@@ -241,6 +241,7 @@ model_io_calibration_json_should_load_back_unchanged(void **state)
 	a.forward.valid = true;
 	a.forward.n = 43;
 	a.forward.mape_pct = 10.75;
+	a.forward.level = 0.9;
 	a.forward.log_lo = -0.25;
 	a.forward.log_hi = 0.3125;
 	a.forward.coverage = 0.90625;
@@ -253,6 +254,9 @@ model_io_calibration_json_should_load_back_unchanged(void **state)
 	acc->loo_battery_mape_pct = 15.5;
 	acc->level = 0.9;
 	acc->coverage = 0.9375;
+	acc->design_rows = 35;
+	acc->design_coverage = 0.875;
+	acc->design_width = 2.5;
 	/* Field by field: a compound literal need not zero the padding that
 	 * the memory comparison below reads. */
 	acc->pooled.n = 37;

@@ -141,6 +141,7 @@ static bool
 sized(const struct mission_spec *s, double *mass_kg)
 {
 	memset(res, 0, sizeof *res);
+	res->skip_ceiling = true;
 	int rc = engine_solve(s, &env->model, NULL, res);
 	assert_int_equal(rc, 0);
 	const struct res_run *o = &res->custom;

@@ -402,7 +402,8 @@ result_json_should_hold_every_product_key_per_run(void **state)
 	(void)state;
 	static const char *const top[] = {
 		"aeroeval_version", "input_sha256", "catalogue_sha256", "status",
-		"buildable", "takeoff_mass_kg", "regulatory_class", "mtow_interval", "accuracy",
+		"buildable", "takeoff_mass_kg", "regulatory_class", "mtow_interval",
+		"hover_power_interval", "hover_endurance_interval", "accuracy", "ceiling",
 		"violations", "rationale", "mission", "baseline", "custom",
 		"role_overhead", "continuous_optimum", "design_of_record",
 		"selected", "bom", "candidates"

@@ -104,6 +104,26 @@ print_table(FILE *out, const struct cohort *c, const struct validate_report *v)
 		    "dry mass (all but battery and payload) mean error %.1f %% and battery "
 		    "%.1f %% over %zu rows with a published battery mass\n",
 		    v->open_dry_mape_pct, v->open_battery_mape_pct, v->n_open);
+	if (v->n_forward_rows > 0) {
+		fprintf(out, "Forward check, each aircraft flown at its real mass on its published "
+		    "pack to an empty pack: endurance MAPE %.1f %% over %zu published times of "
+		    "%zu rows\n", v->forward_mape_pct, v->n_forward_figures, v->n_forward_rows);
+		for (size_t i = 0; i < v->n_rows; i++) {
+			const struct validate_forward *f = &v->rows[i].forward;
+			if (!f->valid)
+				continue;
+			fprintf(out, "  %-28.28s", c->rows[i].name);
+			if (f->hover_pub_s > 0.0)
+				fprintf(out, "  hover %5.1f of %5.1f min (%+5.1f %%)",
+				    f->hover_model_s / 60.0, f->hover_pub_s / 60.0,
+				    100.0 * (f->hover_model_s / f->hover_pub_s - 1.0));
+			if (f->max_pub_s > 0.0)
+				fprintf(out, "  level at %4.1f m/s %5.1f of %5.1f min (%+5.1f %%)",
+				    f->speed_ms, f->max_model_s / 60.0, f->max_pub_s / 60.0,
+				    100.0 * (f->max_model_s / f->max_pub_s - 1.0));
+			fputc('\n', out);
+		}
+	}
 	if (v->has_interval)
 		fprintf(out, "Inside the shipped %.0f %% prediction interval: %zu of %zu rows\n",
 		    100.0 * v->interval_level, v->n_inside, v->n_ok);
@@ -208,6 +228,10 @@ report_json(const char *path, const struct cohort *c, const struct validate_repo
 	cJSON_AddItemToObject(root, "battery_mass", summary_json(&v->battery));
 	cJSON_AddStringToObject(root, "rule", v->rule == VALIDATE_PACK_LOCKED
 	    ? "pack_locked" : "from_endurance");
+	cJSON *fc = cJSON_AddObjectToObject(root, "forward_check");
+	cJSON_AddNumberToObject(fc, "rows", (double)v->n_forward_rows);
+	cJSON_AddNumberToObject(fc, "figures", (double)v->n_forward_figures);
+	cJSON_AddNumberToObject(fc, "mape_pct", v->forward_mape_pct);
 	cJSON *ol = cJSON_AddObjectToObject(root, "open_loop");
 	cJSON_AddNumberToObject(ol, "n", (double)v->n_open);
 	cJSON_AddNumberToObject(ol, "dry_mape_pct", v->open_dry_mape_pct);
@@ -256,6 +280,23 @@ report_json(const char *path, const struct cohort *c, const struct validate_repo
 			cJSON_AddNumberToObject(o, "battery_actual_kg", vr->battery_actual_kg);
 			cJSON_AddNumberToObject(o, "battery_predicted_kg", vr->battery_pred_kg);
 			cJSON_AddNumberToObject(o, "battery_error_pct", vr->battery_err_pct);
+		}
+		const struct validate_forward *f = &vr->forward;
+		if (f->valid) {
+			cJSON *fo = cJSON_AddObjectToObject(o, "forward_check");
+			if (f->hover_pub_s > 0.0) {
+				cJSON_AddNumberToObject(fo, "hover_published_s", f->hover_pub_s);
+				cJSON_AddNumberToObject(fo, "hover_model_s", f->hover_model_s);
+				cJSON_AddNumberToObject(fo, "hover_error_pct",
+				    100.0 * (f->hover_model_s / f->hover_pub_s - 1.0));
+			}
+			if (f->max_pub_s > 0.0) {
+				cJSON_AddNumberToObject(fo, "max_flight_published_s", f->max_pub_s);
+				cJSON_AddNumberToObject(fo, "max_flight_model_s", f->max_model_s);
+				cJSON_AddNumberToObject(fo, "max_flight_speed_ms", f->speed_ms);
+				cJSON_AddNumberToObject(fo, "max_flight_error_pct",
+				    100.0 * (f->max_model_s / f->max_pub_s - 1.0));
+			}
 		}
 		cJSON *nt = cJSON_AddArrayToObject(o, "rule_notes");
 		for (int b = 0; b < VALIDATE_NOTE_COUNT; b++)
@@ -566,6 +607,10 @@ cli_calibrate(int argc, char **argv)
 					printf("; %s x%.3f to x%.3f (%d rows)", spec_enum_airframe[k],
 					    exp(a->cls[k].log_lo), exp(a->cls[k].log_hi), a->cls[k].n);
 			printf("; %.0f %% of the rows inside\n", 100.0 * a->coverage);
+			printf("Each design's own interval (its loop gain and mass shares, "
+			    "the other rows' spreads): %.0f %% of %d rows inside, median width "
+			    "x%.2f end to end\n", 100.0 * a->design_coverage, a->design_rows,
+			    a->design_width);
 		} else {
 			printf("Too few rows sized for a %.0f %% interval\n", 100.0 * a->level);
 		}

@@ -80,6 +80,11 @@ struct model_accuracy {
 	double coverage;                   /* share of the rows inside (LOO) */
 	struct model_interval pooled;      /* every class together */
 	struct model_interval cls[AF_CLASS_MAX]; /* n = 0: the pooled one serves */
+	/* The design's own interval (engine_loop_interval()), each row's built
+	 * from the other rows' spreads, against the row's real mass: */
+	int design_rows;                   /* rows judged */
+	double design_coverage;            /* share inside */
+	double design_width;               /* median hi / lo */
 };
 
 /* How far a model's figure falls from the published one over a cohort:
@@ -91,6 +96,7 @@ struct model_spread {
 	bool valid;             /* calibration.json carries it */
 	int n;                  /* residuals behind it */
 	double mape_pct;        /* mean |model / published - 1| */
+	double level;           /* nominal coverage of the interval */
 	double log_lo, log_hi;  /* bounds on ln(published / model) */
 	double coverage;        /* share inside, out of sample */
 };

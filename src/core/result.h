@@ -216,6 +216,7 @@ struct res_run {
 	double approved_time_s[PHASE_MAX];
 	double flight_time_s;     /* total approved mission time */
 	double hover_endurance_s; /* hover-only endurance to the reserve */
+	double hover_power_w;     /* electrical, hovering at the takeoff mass */
 	double marketing_endurance_s; /* best case (0 unless requested) */
 	double optimal_speed_ms;  /* forward speed used (auto: minimum power) */
 	double v_min_power_ms;    /* minimum-power speed of the sweep */
@@ -342,6 +343,7 @@ struct res_accuracy {
 	                            * this mission's class */
 	int interval_rows;        /* leave-one-out residuals behind them */
 	double coverage;          /* the share of cohort rows inside (LOO) */
+	double design_coverage;   /* ... of their own design intervals */
 };
 
 /* A prediction interval on a takeoff mass. */
@@ -349,6 +351,38 @@ struct res_interval {
 	bool valid;
 	double level;             /* nominal coverage */
 	double lo_kg, hi_kg;
+};
+
+/* The intervals the design of record carries (engine.c, PRODUCT "The
+ * prediction intervals on a design"), each at the calibration's level. */
+struct res_design_intervals {
+	bool from_parts;          /* the mass one from the estimated lines of
+	                             the bill of materials; else the model's
+	                             error through the loop gain */
+	double estimated_kg;      /* the mass the model estimates (from_parts) */
+	double loop_gain;         /* 1 / (1 - L) used (not from_parts) */
+	bool power_valid;         /* hover power and endurance, from the
+	                             forward check's spread */
+	double hover_power_lo_w, hover_power_hi_w, hover_power_w;
+	double endurance_lo_s, endurance_hi_s, endurance_s;
+};
+
+/* A mission beyond what its geometry and class can reach (engine.c): what
+ * is reachable instead, and the limit that binds the mission as asked. */
+struct res_ceiling {
+	bool valid;               /* the mission as asked does not size */
+	char binds_code[32];      /* its first violation's code ("MASS_RUNAWAY") */
+	char binds[RES_TEXT];     /* ... and its message */
+	double min_time_scale;    /* the shortest share of the mission tried */
+	bool endurance_found;     /* a shorter flight sizes: */
+	double time_scale;        /* the largest share of every phase that does */
+	double flight_time_s;     /* that flight */
+	double hover_endurance_s; /* its aircraft's hover endurance to reserve */
+	double mass_kg;           /* its aircraft (r->custom when replaced) */
+	bool payload_found;       /* a lighter payload flies the mission as asked: */
+	double max_payload_kg;    /* the largest that does */
+	double mass_at_payload_kg;/* its aircraft */
+	bool shown;               /* r->custom holds the ceiling design */
 };
 
 struct solve_result {
@@ -385,6 +419,12 @@ struct solve_result {
 	char internal_error[RES_TEXT]; /* what broke when the solve returns 3 */
 	struct res_accuracy accuracy;  /* of the model, from the calibration */
 	struct res_interval mtow_interval; /* on the takeoff mass of record */
+	struct res_design_intervals intervals; /* how, and the other two */
+	struct res_ceiling ceiling;    /* when the mission is beyond reach */
+	bool skip_ceiling;             /* input: set by a caller that only
+	                                  classifies designs (the sensitivity
+	                                  sweeps, validate, the property
+	                                  tests): no ceiling search */
 };
 
 /* The tightest passing check of a run that is not at its limit by

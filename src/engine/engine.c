@@ -402,7 +402,7 @@ explain(const struct sizing_params *p, const struct res_run *o,
 	if (p->v_auto)
 		res_rationale(r, "Forward speed %.1f m/s: the minimum-power speed of "
 		    "the 1–30 m/s sweep.", o->optimal_speed_ms);
-	if (o->time_scale < 1.0)
+	if (o->time_scale < 1.0 && !r->ceiling.shown)
 		res_rationale(r, "Goal relaxation: the requested mission could not "
 		    "close, so every phase was scaled to %.0f %% of its requested time.",
 		    100.0 * o->time_scale);
@@ -485,7 +485,9 @@ run_finish(const struct sizing_params *p, const char *name, bool baseline,
 			*rc = 3;
 	}
 	feasibility_checks(p, st, name, o, r);
-	if (!baseline && o->ran)
+	/* A custom run that fails is explained by its ceiling instead
+	 * (engine_solve()): its own figures describe no aircraft. */
+	if (!baseline && o->ran && o->feasible)
 		explain(p, o, s, r);
 }
 
@@ -598,11 +600,172 @@ prop_search(struct sizing_params *p, const char *name, struct res_run *o,
 	return st;
 }
 
+/* ---- the ceiling of a mission beyond reach ------------------------------ */
+
+#define CEILING_BISECT 10   /* bisection steps: 1/1024 of the range */
+#define CEILING_TIGHT  0.02 /* a check within 2 % of its limit binds */
+
+/* Does a continuous design that passes every check exist for the custom
+ * parameters p with every phase at share gamma of its request and the
+ * payload (and the largest payload) at share payload_scale?  The design
+ * into *out (scratch holds its checks). */
+static bool
+reachable(const struct sizing_params *p0, double gamma, double payload_scale,
+          struct res_run *out, struct solve_result *scratch)
+{
+	struct sizing_params p = *p0;
+	p.time_scale = gamma;
+	p.allow_relax = false;
+	p.payload_kg *= payload_scale;
+	p.extra_payload_kg *= payload_scale;
+	p.drop_mass_kg *= payload_scale;
+	p.role_aux_kg *= payload_scale;
+	memset(out, 0, sizeof *out);
+	if (p.prop_locked || p.capacity_locked) {
+		enum sizing_status st = prop_search(&p, "custom", out, scratch);
+		out->prop_frac = p.prop_frac;
+		return design_passes(&p, st, "custom", out, scratch);
+	}
+	double frac = 1.0;
+	bool passes;
+	struct solve_result *inner = xcalloc(1, sizeof *inner);
+	inner->mission = scratch->mission;
+	lightest_share(&p, "custom", out, &frac, &passes, inner);
+	out->prop_frac = frac;
+	p.prop_frac = frac;
+	if (passes) {
+		/* The checks of the run kept, into scratch. */
+		scratch->n_violations = 0;
+		feasibility_checks(&p, SIZING_CONVERGED, "custom", out, scratch);
+	}
+	free(inner);
+	return passes;
+}
+
+/* The mission as asked does not size: find what does (PRODUCT "A mission
+ * beyond what its geometry can reach gets its ceiling").  The longest
+ * flight at the asked payload, as the largest share of every phase that
+ * sizes, and the largest payload that flies the whole mission, each by
+ * bisection (a shorter flight or a lighter payload is an easier mission,
+ * and the sized designs are monotone in both: test_monotone.c).  The
+ * longest flight's design replaces the run that failed in r->custom, so
+ * that no page shows a diverged iterate; its violations stay. */
+static void
+ceiling(const struct sizing_params *p, struct solve_result *r)
+{
+	struct res_ceiling *c = &r->ceiling;
+	memset(c, 0, sizeof *c);
+	c->valid = true;
+	c->min_time_scale = SIZING_GAMMA_MIN;
+	for (int i = 0; i < r->n_violations; i++)
+		if (strcmp(r->violations[i].run, "custom") == 0) {
+			const char *msg = r->violations[i].message;
+			snprintf(c->binds_code, sizeof c->binds_code, "%s", r->violations[i].code);
+			snprintf(c->binds, sizeof c->binds, "%s", msg);
+			/* It follows a colon: "The takeoff mass ..." -> "the ...",
+			 * an acronym ("RPM ...") kept. */
+			if (c->binds[0] >= 'A' && c->binds[0] <= 'Z' && c->binds[1] >= 'a'
+			    && c->binds[1] <= 'z')
+				c->binds[0] = (char)(c->binds[0] - 'A' + 'a');
+			break;
+		}
+	struct solve_result *scratch = xcalloc(1, sizeof *scratch);
+	struct res_run *t = xmalloc(sizeof *t), *best = xmalloc(sizeof *best);
+	scratch->mission = r->mission;
+
+	/* The longest flight at the asked payload. */
+	double lo = SIZING_GAMMA_MIN, hi = 1.0;
+	if (reachable(p, lo, 1.0, best, scratch)) {
+		c->endurance_found = true;
+		for (int k = 0; k < CEILING_BISECT; k++) {
+			double mid = 0.5 * (lo + hi);
+			if (reachable(p, mid, 1.0, t, scratch)) {
+				lo = mid;
+				*best = *t;
+			} else {
+				hi = mid;
+			}
+		}
+		c->time_scale = lo;
+		/* What binds there: a check the longest flight meets with
+		 * (almost) no margin, else what stopped the mission as asked. */
+		const struct res_check *tight = res_tightest_check(best);
+		if (tight != NULL && tight->margin < CEILING_TIGHT) {
+			snprintf(c->binds_code, sizeof c->binds_code, "CHECK");
+			snprintf(c->binds, sizeof c->binds, "%s reaches its limit (%.3g%s%s "
+			    "against %.3g) on the longest flight that sizes; beyond it the "
+			    "mission fails.", tight->name, tight->value,
+			    tight->unit[0] ? " " : "", tight->unit, tight->limit);
+		}
+		c->flight_time_s = best->flight_time_s;
+		c->hover_endurance_s = best->hover_endurance_s;
+		c->mass_kg = best->mass.total_kg;
+		/* The ceiling design stands in the custom run's place, with its
+		 * own checks (all passed); the asked mission's violations stay. */
+		r->custom = *best;
+		c->shown = true;
+	}
+
+	/* The largest payload that flies the whole mission. */
+	if (r->mission.payload_kg > 0.0 && reachable(p, 1.0, 0.0, t, scratch)) {
+		c->payload_found = true;
+		double plo = 0.0, phi = 1.0, m = t->mass.total_kg;
+		for (int k = 0; k < CEILING_BISECT; k++) {
+			double mid = 0.5 * (plo + phi);
+			if (reachable(p, 1.0, mid, t, scratch)) {
+				plo = mid;
+				m = t->mass.total_kg;
+			} else {
+				phi = mid;
+			}
+		}
+		c->max_payload_kg = plo * r->mission.payload_kg;
+		c->mass_at_payload_kg = m;
+	}
+	free(best);
+	free(t);
+	free(scratch);
+}
+
+/* The ceiling's sentences, then the shown design's own (explain()). */
+static void
+explain_ceiling(const struct sizing_params *p0, struct solve_result *r)
+{
+	const struct res_ceiling *c = &r->ceiling;
+	const struct mission_spec *s = &r->mission;
+	res_rationale(r, "Beyond reach as asked: %s", c->binds[0] ? c->binds
+	    : "the continuous design fails a check.");
+	if (c->endurance_found)
+		res_rationale(r, "The longest flight that sizes at the asked payload "
+		    "is %.0f %% of the mission (%.1f of %.1f min), on a %.2f kg "
+		    "aircraft; the design shown is that aircraft.",
+		    100.0 * c->time_scale, c->flight_time_s / 60.0,
+		    c->flight_time_s / c->time_scale / 60.0, c->mass_kg);
+	else
+		res_rationale(r, "No shorter flight sizes either: not even %.0f %% of "
+		    "the mission at the asked payload.", 100.0 * SIZING_GAMMA_MIN);
+	if (c->payload_found)
+		res_rationale(r, "The largest payload that flies the whole mission is "
+		    "%.2f kg of the %.2f kg asked, on a %.2f kg aircraft.",
+		    c->max_payload_kg, s->payload_kg, c->mass_at_payload_kg);
+	else if (s->payload_kg > 0.0)
+		res_rationale(r, "Without any payload the mission does not size "
+		    "either: the geometry and class bind, not the payload.");
+	if (c->shown) {
+		struct sizing_params p = *p0;
+		p.prop_frac = r->custom.prop_frac;
+		explain(&p, &r->custom, s, r);
+	}
+}
+
 /* The role overhead and its rationale line. */
 static void
 role_overhead(struct solve_result *r)
 {
-	if (!r->baseline.ran || !r->custom.ran)
+	/* Only between two designs of the same mission: not against a
+	 * diverged run, nor against the ceiling's shorter flight. */
+	if (!r->baseline.ran || !r->custom.ran || !r->baseline.converged
+	    || !r->custom.converged || r->ceiling.valid)
 		return;
 	mass_diff(&r->custom.mass, &r->baseline.mass, &r->role_overhead);
 	res_rationale(r, "The %s role adds %.2f kg over the dead-weight "
@@ -612,9 +775,28 @@ role_overhead(struct solve_result *r)
 	    r->custom.mass.total_kg);
 }
 
-/* The model's calibrated accuracy for a mission like this one (its class,
- * its battery sized or locked) and the interval it puts around the takeoff
- * mass of record. */
+void
+engine_loop_interval(double dry_share, double battery_share, double lipschitz,
+                     const struct model_spread *dry, const struct model_spread *fwd,
+                     double *log_lo, double *log_hi)
+{
+	double l = lipschitz < 0.0 ? 0.0 : lipschitz > ENGINE_MAX_L ? ENGINE_MAX_L
+	    : lipschitz;
+	double gain = 1.0 / (1.0 - l);
+	/* A real endurance longer than the model's (fwd > 0) means less power
+	 * and so a lighter battery: the forward spread enters reversed. */
+	*log_lo = gain * (dry_share * dry->log_lo - battery_share * fwd->log_hi);
+	*log_hi = gain * (dry_share * dry->log_hi - battery_share * fwd->log_lo);
+}
+
+/* The model's calibrated accuracy for a mission like this one (its battery
+ * sized or locked), and the intervals of the design of record, each its
+ * own: the takeoff mass of an aircraft its bill of materials builds is the
+ * published mass of its parts plus the lines the model estimates (frame,
+ * arms, harness, allowances), whose uncertainty is the dry-mass model's;
+ * a continuous design's carries the open-loop errors through its own loop
+ * gain (engine_loop_interval()).  Hover power and endurance carry the
+ * forward check's spread. */
 static void
 accuracy(struct solve_result *r, const struct model_data *md)
 {
@@ -622,30 +804,65 @@ accuracy(struct solve_result *r, const struct model_data *md)
 	bool locked = s->locks.is_battery_locked;
 	const struct model_accuracy *a = &md->cal.accuracy[locked ? MODEL_PACK_LOCKED
 	    : MODEL_FROM_ENDURANCE];
+	const struct model_spread *dry = &md->cal.dry, *fwd = &md->cal.forward;
 	struct res_accuracy *o = &r->accuracy;
+	struct res_design_intervals *di = &r->intervals;
 	memset(o, 0, sizeof *o);
+	memset(di, 0, sizeof *di);
 	memset(&r->mtow_interval, 0, sizeof r->mtow_interval);
-	if (!a->valid)
+	if (a->valid) {
+		const struct model_interval *iv = model_interval_for(a, s->airframe_class);
+		o->valid = true;
+		o->pack_locked = locked;
+		o->n_rows = a->n_rows;
+		o->mape = a->loo_mape_pct / 100.0;
+		o->battery_mape = a->loo_battery_mape_pct / 100.0;
+		o->level = a->level;
+		o->ratio_lo = exp(iv->log_lo);
+		o->ratio_hi = exp(iv->log_hi);
+		o->interval_rows = iv->n;
+		o->coverage = a->coverage;
+		o->design_coverage = a->design_coverage;
+	}
+	bool buildable;
+	const struct res_run *rec = res_record(r, &buildable);
+	/* No interval around a loop's last iterate, nor around the ceiling's
+	 * shorter flight: neither is the aircraft asked for. */
+	if (rec == NULL || !rec->ran || !rec->converged || !(rec->mass.total_kg > 0.0)
+	    || !dry->valid || !fwd->valid || r->ceiling.valid)
 		return;
-	const struct model_interval *iv = model_interval_for(a, s->airframe_class);
-	o->valid = true;
-	o->pack_locked = locked;
-	o->n_rows = a->n_rows;
-	o->mape = a->loo_mape_pct / 100.0;
-	o->battery_mape = a->loo_battery_mape_pct / 100.0;
-	o->level = a->level;
-	o->ratio_lo = exp(iv->log_lo);
-	o->ratio_hi = exp(iv->log_hi);
-	o->interval_rows = iv->n;
-	o->coverage = a->coverage;
-	const struct res_run *rec = res_record(r, NULL);
-	/* No interval around a loop's last iterate: it predicts nothing. */
-	if (rec == NULL || !rec->ran || !rec->converged || !(rec->mass.total_kg > 0.0))
-		return;
+	double m = rec->mass.total_kg;
 	r->mtow_interval.valid = true;
-	r->mtow_interval.level = a->level;
-	r->mtow_interval.lo_kg = rec->mass.total_kg * o->ratio_lo;
-	r->mtow_interval.hi_kg = rec->mass.total_kg * o->ratio_hi;
+	r->mtow_interval.level = dry->level;
+	if (buildable) {
+		double est = 0.0;
+		for (int i = 0; i < r->n_bom && i < RES_MAX_BOM; i++)
+			if (r->bom[i].catalogue_id[0] == '\0'
+			    && strcmp(r->bom[i].category, "payload") != 0)
+				est += r->bom[i].total_mass_kg;
+		di->from_parts = true;
+		di->estimated_kg = est;
+		r->mtow_interval.lo_kg = m - est + est * exp(dry->log_lo);
+		r->mtow_interval.hi_kg = m - est + est * exp(dry->log_hi);
+	} else {
+		double lo, hi;
+		engine_loop_interval((m - rec->mass.payload_kg - rec->mass.battery_kg) / m,
+		    rec->mass.battery_kg / m, rec->lipschitz, dry, fwd, &lo, &hi);
+		di->loop_gain = 1.0 / (1.0 - fmin(fmax(rec->lipschitz, 0.0), ENGINE_MAX_L));
+		r->mtow_interval.lo_kg = m * exp(lo);
+		r->mtow_interval.hi_kg = m * exp(hi);
+	}
+	if (rec->hover_power_w > 0.0 && rec->hover_endurance_s > 0.0) {
+		di->power_valid = true;
+		di->hover_power_w = rec->hover_power_w;
+		di->endurance_s = rec->hover_endurance_s;
+		/* The spread is on ln(published / model) endurance: the power
+		 * moves the other way. */
+		di->endurance_lo_s = rec->hover_endurance_s * exp(fwd->log_lo);
+		di->endurance_hi_s = rec->hover_endurance_s * exp(fwd->log_hi);
+		di->hover_power_lo_w = rec->hover_power_w * exp(-fwd->log_hi);
+		di->hover_power_hi_w = rec->hover_power_w * exp(-fwd->log_lo);
+	}
 }
 
 int
@@ -669,11 +886,16 @@ engine_solve(const struct mission_spec *spec, const struct model_data *md,
 		enum sizing_status st = prop_search(&p, "custom", &r->custom, r);
 		run_finish(&p, "custom", false, st, &r->mission, &r->custom, r, &rc);
 		r->custom.prop_frac = p.prop_frac;
+		if (rc == 0 && !r->custom.feasible && !r->skip_ceiling) {
+			ceiling(&p, r);
+			explain_ceiling(&p, r);
+		}
 	}
 	role_overhead(r);
 
-	/* Real parts on top of a converged custom run (parts.h). */
-	if (cat != NULL && r->custom.ran && r->custom.converged
+	/* Real parts on top of a custom run that meets the mission as asked
+	 * (parts.h); a mission beyond reach has none to match. */
+	if (cat != NULL && r->custom.ran && r->custom.converged && !r->ceiling.valid
 	    && parts_select(&r->mission, &p, md, cat, r) != 0)
 		rc = 3;
 	r->feasible = r->n_violations == 0 && r->custom.ran && r->custom.feasible;

@@ -52,6 +52,17 @@ bool engine_endurance_at_mass(const struct mission_spec *spec,
                               double share, double v_forward_ms,
                               struct sizing_endurance *out);
 
+/* The interval on ln(real / model) of a continuous design's takeoff mass
+ * (PRODUCT "The prediction intervals on a design"): the dry-mass model's
+ * spread on its dry share and the forward check's on its battery share,
+ * carried through the loop's gain 1 / (1 - L), L capped at ENGINE_MAX_L.
+ * Shared by the engine and the calibration's coverage measure. */
+#define ENGINE_MAX_L 0.9
+void engine_loop_interval(double dry_share, double battery_share, double lipschitz,
+                          const struct model_spread *dry,
+                          const struct model_spread *fwd,
+                          double *log_lo, double *log_hi);
+
 /* Resolve the mission into the custom-run parameters (after the
  * requirements layer has been applied to *spec).  Exposed for the
  * sensitivity study and the tests. */

@@ -360,7 +360,7 @@ load_accuracy(struct rd *r, const char *key, struct model_accuracy *a)
 {
 	static const char *const keys[] = { "cohort_rows", "loo_mtow_mape_pct",
 		"battery_rows", "loo_battery_mape_pct", "level", "coverage", "pooled",
-		"by_class", NULL };
+		"by_class", "design_rows", "design_coverage", "design_width", NULL };
 	static const char *const iv_keys[] = { "n", "log_lo", "log_hi", NULL };
 	const cJSON *root = r->obj;
 	if (!rd_enter(r, key, keys, false))
@@ -373,6 +373,9 @@ load_accuracy(struct rd *r, const char *key, struct model_accuracy *a)
 	a->loo_battery_mape_pct = rd_num(r, "loo_battery_mape_pct", 0, 1000);
 	a->level = rd_num(r, "level", 0.5, 0.99);
 	a->coverage = rd_num(r, "coverage", 0, 1);
+	a->design_rows = rd_int(r, "design_rows", 0, 1000000);
+	a->design_coverage = rd_num(r, "design_coverage", 0, 1);
+	a->design_width = rd_num(r, "design_width", 0, 1e6);
 	if (rd_enter(r, "pooled", iv_keys, true))
 		load_interval(r, &a->pooled);
 	snprintf(r->entry, sizeof r->entry, "%s", key);
@@ -395,13 +398,14 @@ load_accuracy(struct rd *r, const char *key, struct model_accuracy *a)
 static void
 load_spread(struct rd *r, const char *key, struct model_spread *sp)
 {
-	static const char *const keys[] = { "rows", "loo_mape_pct", "log_lo",
-		"log_hi", "coverage", NULL };
+	static const char *const keys[] = { "rows", "loo_mape_pct", "level",
+		"log_lo", "log_hi", "coverage", NULL };
 	const cJSON *root = r->obj;
 	if (rd_enter(r, key, keys, false)) {
 		sp->valid = true;
 		sp->n = rd_int(r, "rows", 1, 1000000);
 		sp->mape_pct = rd_num(r, "loo_mape_pct", 0, 1000);
+		sp->level = rd_num(r, "level", 0.5, 0.99);
 		sp->log_lo = rd_num(r, "log_lo", -5, 0);
 		sp->log_hi = rd_num(r, "log_hi", 0, 5);
 		sp->coverage = rd_num(r, "coverage", 0, 1);
@@ -609,6 +613,9 @@ model_io_calibration_json(const struct model_calibration *cal)
 		cJSON_AddNumberToObject(o, "loo_battery_mape_pct", a->loo_battery_mape_pct);
 		cJSON_AddNumberToObject(o, "level", a->level);
 		cJSON_AddNumberToObject(o, "coverage", a->coverage);
+		cJSON_AddNumberToObject(o, "design_rows", a->design_rows);
+		cJSON_AddNumberToObject(o, "design_coverage", a->design_coverage);
+		cJSON_AddNumberToObject(o, "design_width", a->design_width);
 		add_interval(o, "pooled", &a->pooled);
 		cJSON *bc = cJSON_AddObjectToObject(o, "by_class");
 		for (int k = 0; k < AF_CLASS_MAX; k++)
@@ -623,6 +630,7 @@ model_io_calibration_json(const struct model_calibration *cal)
 		cJSON *o = cJSON_AddObjectToObject(root, sp_key[i]);
 		cJSON_AddNumberToObject(o, "rows", sp[i]->n);
 		cJSON_AddNumberToObject(o, "loo_mape_pct", sp[i]->mape_pct);
+		cJSON_AddNumberToObject(o, "level", sp[i]->level);
 		cJSON_AddNumberToObject(o, "log_lo", sp[i]->log_lo);
 		cJSON_AddNumberToObject(o, "log_hi", sp[i]->log_hi);
 		cJSON_AddNumberToObject(o, "coverage", sp[i]->coverage);

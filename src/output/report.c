@@ -103,12 +103,16 @@ report_role_name(const struct solve_result *r)
 const char *
 report_record_name(const struct rep *rp)
 {
+	if (rp->r->ceiling.shown)
+		return "Ceiling design (a shorter flight)";
 	return rp->buildable ? REP_NAME_RECORD : "Continuous design (not buildable)";
 }
 
 const char *
 report_continuous_name(const struct rep *rp)
 {
+	if (rp->r->ceiling.shown)
+		return "Ceiling design (a shorter flight)";
 	if (!rp->buildable)
 		return "Continuous design (not buildable)";
 	return rp->rec_ok ? REP_NAME_CONTINUOUS : REP_NAME_CONTINUOUS " (not buildable)";
@@ -336,10 +340,18 @@ report_render(const struct report_input *in, unsigned char **pdf, size_t *n,
 	};
 	rp.d = doc_alloc(in->tpl, &info);
 
+	/* A mission beyond reach with no shorter flight that sizes has no
+	 * aircraft to describe: the pages of a design are left out rather
+	 * than filled with a diverged iterate's figures. */
+	bool no_design = r->ceiling.valid && !r->ceiling.shown;
 	int first = 1;
 	for (int i = 0; i < in->tpl->n_sections; i++) {
 		const struct template_section *s = &in->tpl->sections[i];
 		if (!s->enabled)
+			continue;
+		if (no_design && s->id != TEMPLATE_SEC_COVER && s->id != TEMPLATE_SEC_RATIONALE
+		    && s->id != TEMPLATE_SEC_CONVERGENCE && s->id != TEMPLATE_SEC_CHECKS
+		    && s->id != TEMPLATE_SEC_APPENDIX)
 			continue;
 		switch (s->id) {
 		case TEMPLATE_SEC_COVER:

@@ -64,11 +64,41 @@ cover_status(struct rep *rp)
 	const struct solve_result *r = rp->r;
 	const struct res_run *rec = rp->rec;
 	struct strbuf sb = STRBUF_INIT;
-	char b1[48];
+	char b1[48], b2[48], b3[48], b4[48];
 	int n_fail = 0;
 	for (int i = 0; i < rec->n_checks && i < RES_MAX_CHECKS; i++)
 		n_fail += !rec->checks[i].pass;
-	if (!rp->buildable && r->custom.ran && !r->custom.converged) {
+	const struct res_ceiling *cl = &r->ceiling;
+	if (cl->valid) {
+		report_sfmt(&sb, "This mission is beyond what a %d-rotor aircraft on a %s" NBSP "mm "
+		            "wheelbase in the %s class can fly: %s", r->mission.num_rotors,
+		            report_num(b1, sizeof b1, 1000.0 * r->mission.max_diameter_m, 0),
+		            spec_enum_airframe[r->mission.airframe_class],
+		            cl->binds[0] ? cl->binds : "it fails a check.");
+		if (cl->endurance_found)
+			strbuf_printf(&sb, " The longest flight that sizes at the asked payload is %s of the "
+			              "%s" NBSP "min asked (%s" NBSP "%%), on a %s" NBSP "kg aircraft: the pages "
+			              "that follow describe that aircraft, not one that flies the mission as "
+			              "asked.", report_auto(b1, sizeof b1, cl->flight_time_s / 60.0),
+			              report_auto(b2, sizeof b2, cl->flight_time_s / cl->time_scale / 60.0),
+			              report_num(b3, sizeof b3, 100.0 * cl->time_scale, 0),
+			              report_num(b4, sizeof b4, cl->mass_kg, 2));
+		else
+			strbuf_printf(&sb, " Not even %s" NBSP "%% of the mission sizes at the asked payload, "
+			              "so this dossier shows no aircraft.",
+			              report_num(b1, sizeof b1, 100.0 * cl->min_time_scale, 0));
+		if (cl->payload_found)
+			strbuf_printf(&sb, " The largest payload that flies the whole mission is %s of the "
+			              "%s" NBSP "kg asked, on a %s" NBSP "kg aircraft.",
+			              report_num(b1, sizeof b1, cl->max_payload_kg, 2),
+			              report_num(b2, sizeof b2, r->mission.payload_kg, 2),
+			              report_num(b3, sizeof b3, cl->mass_at_payload_kg, 2));
+		else if (r->mission.payload_kg > 0.0)
+			strbuf_append_str(&sb, " Even without payload the whole mission does not size.");
+		strbuf_append_str(&sb, " The checks section lists what stops the mission as asked, with "
+		                  "the fixes.");
+		doc_callout(rp->d, DOC_CALLOUT_FAIL, "BEYOND REACH", strbuf_str(&sb));
+	} else if (!rp->buildable && r->custom.ran && !r->custom.converged) {
 		/* No parts were searched: the physics gave no design to match. */
 		report_sfmt(&sb, "This mission cannot be sized: the mass loop did not converge (%s), so "
 		            "there is no design and no bill of materials. The figures in this dossier are "
@@ -173,6 +203,10 @@ gap_lines(struct strbuf *sb, const struct res_mass *rec, const struct res_mass *
 static void
 cover_key_figures(struct rep *rp)
 {
+	/* No aircraft sizes (report_render() leaves the design pages out):
+	 * no figures to key. */
+	if (rp->r->ceiling.valid && !rp->r->ceiling.shown)
+		return;
 	const struct solve_result *r = rp->r;
 	const struct res_run *rec = rp->rec, *c = &r->custom;
 	struct strbuf s1 = STRBUF_INIT, s2 = STRBUF_INIT;
@@ -193,8 +227,9 @@ cover_key_figures(struct rep *rp)
 		        report_sfmt(&s1, "%s + %s" NBSP "kg", report_num(b1, sizeof b1, r->bom_mass_kg, 3),
 		                    report_num(b2, sizeof b2, mtow - r->bom_mass_kg, 3)), "—");
 	if (r->mtow_interval.valid)
-		key_row(rp, &t, report_sfmt(&s2, "  %s" NBSP "%% prediction interval",
-		                            report_num(b3, sizeof b3, 100.0 * r->mtow_interval.level, 0)),
+		key_row(rp, &t, report_sfmt(&s2, "  %s" NBSP "%% interval (%s)",
+		                            report_num(b3, sizeof b3, 100.0 * r->mtow_interval.level, 0),
+		                            r->intervals.from_parts ? "estimated lines" : "model error"),
 		        report_sfmt(&s1, "%s–%s" NBSP "kg", report_num(b1, sizeof b1, r->mtow_interval.lo_kg, 2),
 		                    report_num(b2, sizeof b2, r->mtow_interval.hi_kg, 2)), "—");
 	key_row(rp, &t, "Battery", battery_text(&s1, rec), battery_text(&s2, c));
@@ -210,9 +245,23 @@ cover_key_figures(struct rep *rp)
 	                    report_num(b4, sizeof b4, c->opt.prop_pitch_in, 1)));
 	key_row(rp, &t, "Mission flight time (min)", report_num(b1, sizeof b1, minutes(rec->flight_time_s), 1),
 	        report_num(b2, sizeof b2, minutes(c->flight_time_s), 1));
-	key_row(rp, &t, "Hover endurance to reserve (min)",
-	        report_num(b1, sizeof b1, minutes(hover_endurance_s(rp, rec)), 1),
-	        report_num(b2, sizeof b2, minutes(c->hover_endurance_s), 1));
+	const struct res_design_intervals *di = &r->intervals;
+	if (di->power_valid) {
+		key_row(rp, &t, "Hover power (W)",
+		        report_sfmt(&s1, "%s (%s–%s)", report_num(b1, sizeof b1, di->hover_power_w, 0),
+		                    report_num(b2, sizeof b2, di->hover_power_lo_w, 0),
+		                    report_num(b3, sizeof b3, di->hover_power_hi_w, 0)),
+		        report_num(b4, sizeof b4, c->hover_power_w, 0));
+		key_row(rp, &t, "Hover endurance to reserve (min)",
+		        report_sfmt(&s1, "%s (%s–%s)", report_num(b1, sizeof b1, minutes(di->endurance_s), 1),
+		                    report_num(b2, sizeof b2, minutes(di->endurance_lo_s), 1),
+		                    report_num(b3, sizeof b3, minutes(di->endurance_hi_s), 1)),
+		        report_num(b4, sizeof b4, minutes(c->hover_endurance_s), 1));
+	} else {
+		key_row(rp, &t, "Hover endurance to reserve (min)",
+		        report_num(b1, sizeof b1, minutes(hover_endurance_s(rp, rec)), 1),
+		        report_num(b2, sizeof b2, minutes(c->hover_endurance_s), 1));
+	}
 	key_row(rp, &t, "Thrust-to-weight ratio", report_num(b1, sizeof b1, rec->thrust_to_weight, 2),
 	        report_num(b2, sizeof b2, c->thrust_to_weight, 2));
 	key_row(rp, &t, "Battery peak temperature (°C)", report_num(b1, sizeof b1, rec->max_battery_temp_c, 1),
@@ -447,7 +496,7 @@ assumptions(struct rep *rp)
 	const struct solve_result *r = rp->r;
 	const struct res_accuracy *a = &r->accuracy;
 	struct strbuf sb = STRBUF_INIT;
-	char b1[48], b2[48], b3[48], b4[48], b5[48], b6[48];
+	char b1[48], b2[48], b3[48], b4[48], b5[48];
 	doc_paragraph(rp->d, "The continuous design comes from the coupled mass, battery, aerodynamic and "
 	              "structural model of the aeroeval paper: ISA atmosphere at the mission altitude, steady "
 	              "flight phases, the pack discharged in a time simulation with its heating. The design of "
@@ -455,23 +504,43 @@ assumptions(struct rep *rp)
 	              "motor constants and propeller coefficients, or on estimates where the catalogue has "
 	              "none (the propulsion section says which). Masses of the parts the model sizes (arms, "
 	              "frame, harness, body) are estimates. Prices are store snapshots, not quotations.");
-	if (a->valid) {
+	const struct res_design_intervals *di = &r->intervals;
+	if (a->valid && r->mtow_interval.valid) {
 		strbuf_reset(&sb);
-		strbuf_printf(&sb, "Accuracy: on its calibration cohort of %d aircraft the model predicts the "
-		              "takeoff mass with a mean absolute error of %s" NBSP "%% (leave-one-out; battery "
-		              "mass %s" NBSP "%%). %s" NBSP "%% of real aircraft weigh between %s and %s times "
-		              "the prediction (%s" NBSP "%% of the cohort, leave-one-out).", a->n_rows,
-		              report_num(b1, sizeof b1, 100.0 * a->mape, 1),
-		              report_num(b2, sizeof b2, 100.0 * a->battery_mape, 1),
-		              report_num(b3, sizeof b3, 100.0 * a->level, 0),
-		              report_num(b4, sizeof b4, a->ratio_lo, 2), report_num(b5, sizeof b5, a->ratio_hi, 2),
-		              report_num(b6, sizeof b6, 100.0 * a->coverage, 0));
-		if (r->mtow_interval.valid)
-			strbuf_printf(&sb, " For this design that puts the takeoff mass between %s and %s" NBSP
-			              "kg (%s" NBSP "%% prediction interval).",
+		if (di->from_parts)
+			strbuf_printf(&sb, "Accuracy of this design: its takeoff mass lies between %s and %s"
+			              NBSP "kg (%s" NBSP "%% interval). The catalogue parts weigh as "
+			              "published; the %s" NBSP "kg the model estimates (frame, arms, harness, "
+			              "body and allowances) carry the error of its dry-mass model on real "
+			              "aircraft.",
 			              report_num(b1, sizeof b1, r->mtow_interval.lo_kg, 2),
 			              report_num(b2, sizeof b2, r->mtow_interval.hi_kg, 2),
-			              report_num(b3, sizeof b3, 100.0 * r->mtow_interval.level, 0));
+			              report_num(b3, sizeof b3, 100.0 * r->mtow_interval.level, 0),
+			              report_num(b4, sizeof b4, di->estimated_kg, 3));
+		else
+			strbuf_printf(&sb, "Accuracy of this design: its takeoff mass lies between %s and %s"
+			              NBSP "kg (%s" NBSP "%% interval): the model's errors on the dry mass "
+			              "and on the energy of real aircraft, carried through this design's own "
+			              "mass loop (each error grows by %s times as the loop closes).",
+			              report_num(b1, sizeof b1, r->mtow_interval.lo_kg, 2),
+			              report_num(b2, sizeof b2, r->mtow_interval.hi_kg, 2),
+			              report_num(b3, sizeof b3, 100.0 * r->mtow_interval.level, 0),
+			              report_num(b4, sizeof b4, di->loop_gain, 1));
+		if (di->power_valid)
+			strbuf_printf(&sb, " Its hover power lies between %s and %s" NBSP "W and its hover "
+			              "endurance between %s and %s" NBSP "min: the error of the model's power "
+			              "chain on the published flight times of real aircraft.",
+			              report_num(b1, sizeof b1, di->hover_power_lo_w, 0),
+			              report_num(b2, sizeof b2, di->hover_power_hi_w, 0),
+			              report_num(b3, sizeof b3, minutes(di->endurance_lo_s), 1),
+			              report_num(b4, sizeof b4, minutes(di->endurance_hi_s), 1));
+		strbuf_printf(&sb, " On its calibration cohort (%d aircraft, leave-one-out) the model's own "
+		              "designs hold %s" NBSP "%% of the real aircraft inside intervals built this "
+		              "way; a continuous design sized from the same facts as this one misses their "
+		              "takeoff mass by %s" NBSP "%% on average (battery mass %s" NBSP "%%).",
+		              a->n_rows, report_num(b5, sizeof b5, 100.0 * a->design_coverage, 0),
+		              report_num(b1, sizeof b1, 100.0 * a->mape, 1),
+		              report_num(b2, sizeof b2, 100.0 * a->battery_mape, 1));
 		doc_paragraph(rp->d, strbuf_str(&sb));
 	} else {
 		doc_paragraph(rp->d, "Accuracy: the model's accuracy on real aircraft is documented in "

@@ -878,14 +878,37 @@ static void
 put_accuracy(struct jw *w, const struct solve_result *r)
 {
 	const struct res_interval *iv = &r->mtow_interval;
+	const struct res_design_intervals *di = &r->intervals;
 	if (iv->valid) {
 		jw_obj(w, "mtow_interval");
 		jw_num(w, "level", iv->level);
 		jw_num(w, "lo_kg", iv->lo_kg);
 		jw_num(w, "hi_kg", iv->hi_kg);
+		jw_lit(w, "basis", di->from_parts ? "estimated_lines" : "loop_gain");
+		if (di->from_parts)
+			jw_num(w, "estimated_kg", di->estimated_kg);
+		else
+			jw_num(w, "loop_gain", di->loop_gain);
 		jw_close(w);
 	} else {
 		jw_null(w, "mtow_interval");
+	}
+	if (di->power_valid) {
+		jw_obj(w, "hover_power_interval");
+		jw_num(w, "level", iv->level);
+		jw_num(w, "hover_power_w", di->hover_power_w);
+		jw_num(w, "lo_w", di->hover_power_lo_w);
+		jw_num(w, "hi_w", di->hover_power_hi_w);
+		jw_close(w);
+		jw_obj(w, "hover_endurance_interval");
+		jw_num(w, "level", iv->level);
+		jw_num(w, "hover_endurance_s", di->endurance_s);
+		jw_num(w, "lo_s", di->endurance_lo_s);
+		jw_num(w, "hi_s", di->endurance_hi_s);
+		jw_close(w);
+	} else {
+		jw_null(w, "hover_power_interval");
+		jw_null(w, "hover_endurance_interval");
 	}
 	const struct res_accuracy *a = &r->accuracy;
 	if (!a->valid) {
@@ -901,6 +924,31 @@ put_accuracy(struct jw *w, const struct solve_result *r)
 	jw_num(w, "interval_ratio_hi", a->ratio_hi);
 	jw_int(w, "interval_rows", a->interval_rows);
 	jw_num(w, "coverage", a->coverage);
+	jw_num(w, "design_interval_coverage", a->design_coverage);
+	jw_close(w);
+}
+
+/* A mission beyond reach: what is reachable instead (null otherwise). */
+static void
+put_ceiling(struct jw *w, const struct solve_result *r)
+{
+	const struct res_ceiling *c = &r->ceiling;
+	if (!c->valid) {
+		jw_null(w, "ceiling");
+		return;
+	}
+	jw_obj(w, "ceiling");
+	jw_lit(w, "binds_code", c->binds_code);
+	JW_STR(w, "binds", c->binds);
+	jw_bool(w, "endurance_found", c->endurance_found);
+	jw_num(w, "time_scale", c->time_scale);
+	jw_num(w, "flight_time_s", c->flight_time_s);
+	jw_num(w, "hover_endurance_s", c->hover_endurance_s);
+	jw_num(w, "mass_kg", c->mass_kg);
+	jw_bool(w, "payload_found", c->payload_found);
+	jw_num(w, "max_payload_kg", c->max_payload_kg);
+	jw_num(w, "mass_at_max_payload_kg", c->mass_at_payload_kg);
+	jw_bool(w, "custom_is_ceiling_design", c->shown);
 	jw_close(w);
 }
 
@@ -951,6 +999,7 @@ result_json_render_checked(const struct solve_result *r,
 	jw_bool(&w, "us_part_107_small_uas", rec->mass.total_kg < RES_US_107_KG);
 	jw_close(&w);
 	put_accuracy(&w, r);
+	put_ceiling(&w, r);
 	put_violations(&w, r);
 	int nr = jw_count(&w, "rationale", r->n_rationale, RES_MAX_RATIONALE);
 	jw_arr(&w, "rationale");

@@ -41,6 +41,8 @@ struct sizing_params {
 	double v_forward_ms;
 	bool v_auto;
 	bool allow_relax;            /* locks.auto_reduce_flight_time */
+	double time_scale;           /* every phase flown at this share of its
+	                                request (the engine's ceiling); 0 = 1 */
 	/* role */
 	double thrust_margin;        /* hover throttle = 1 - margin */
 	double load_factor;

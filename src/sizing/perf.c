@@ -333,7 +333,7 @@ max_climb_ms(struct perf_ctx *x, double mass_kg, const struct res_op *full)
 
 /* The performance figures beyond the mission. */
 static void
-figures(struct perf_ctx *x, const struct res_run *run, struct res_perf *pf)
+figures(struct perf_ctx *x, struct res_run *run, struct res_perf *pf)
 {
 	const struct sizing_params *p = x->p;
 	double mass = x->c->mass.total_kg;
@@ -344,6 +344,9 @@ figures(struct perf_ctx *x, const struct res_run *run, struct res_perf *pf)
 
 	pf->hover_time_s = discharge_hover_endurance_steps_s(&x->pack, &x->model,
 	    mass, p->ambient_c, reserve, ENDURANCE_STEPS);
+	/* The run's own figures: one number each, on every page and file. */
+	run->hover_endurance_s = pf->hover_time_s;
+	run->hover_power_w = pf->op[OP_HOVER].electrical_w;
 	pf->full_throttle_time_s = discharge_power_endurance_s(&x->pack,
 	    full->electrical_w, p->ambient_c, reserve, ENDURANCE_STEPS);
 	/* The mission's mix repeated to the reserve: its time scaled by the

@@ -1056,6 +1056,9 @@ record_fixed_point(const struct sizing_params *p, enum sizing_status st,
 	record_at(p, fin, ls, m_star, c_star, out);
 	out->lipschitz = lipschitz(p, ls, m_star, c_star);
 	out->hover_endurance_s = hover_endurance_s(p, fin, m_star);
+	struct mission_power hover;
+	mission_power(&fin->model, m_star, 0.0, 0.0, &hover);
+	out->hover_power_w = hover.electrical_w;
 	if (p->marketing)
 		out->marketing_endurance_s = marketing_endurance_s(p, fin, m_star);
 	if (st == SIZING_MAX_ITERATIONS)
@@ -1114,7 +1117,8 @@ sizing_run(const struct sizing_params *p, struct res_run *out)
 	res_run_clear_untraced(out);
 	out->ran = true;
 	out->thrust_margin = p->thrust_margin;
-	enum sizing_status st = iterate(p, 1.0, out, out, &last, &fin, &fin_done,
+	double gamma = p->time_scale > 0.0 ? p->time_scale : 1.0;
+	enum sizing_status st = iterate(p, gamma, out, out, &last, &fin, &fin_done,
 	    &m_star, &c_star, &ls);
 	/* The thrust requirement is never relaxed: a mission that does not
 	 * close at it is reported unmet (the engine's ceiling says what is

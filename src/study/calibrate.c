@@ -135,14 +135,25 @@ calibrate_forward(const struct calibrate_row *row, const struct model_data *md,
                   double r[2])
 {
 	r[0] = r[1] = NAN;
-	struct sizing_endurance e;
-	if (!engine_endurance_at_mass(&row->pack_spec, md, row->actual_kg, 1.0,
-	    row->cruise_ms, &e))
+	struct cohort_row cr;
+	memset(&cr, 0, sizeof cr);
+	cr.takeoff_mass_kg = row->actual_kg;
+	cr.has_hover_time_min = row->hover_s > 0.0;
+	cr.hover_time_min = row->hover_s / 60.0;
+	cr.has_max_flight_time_min = row->max_flight_s > 0.0;
+	cr.max_flight_time_min = row->max_flight_s / 60.0;
+	cr.has_cruise_speed_ms = row->cruise_ms > 0.0;
+	cr.cruise_speed_ms = row->cruise_ms;
+	cr.has_role = row->racing;
+	cr.role = row->racing ? ROLE_RACING : ROLE_NONE;
+	struct validate_forward f;
+	validate_forward(&cr, &row->pack_spec, md, &f);
+	if (!f.valid)
 		return false;
-	if (row->hover_s > 0.0 && e.hover_s > 0.0)
-		r[0] = log(e.hover_s / row->hover_s);
-	if (row->max_flight_s > 0.0 && e.forward_s > 0.0)
-		r[1] = log(e.forward_s / row->max_flight_s);
+	if (f.hover_pub_s > 0.0 && f.hover_model_s > 0.0)
+		r[0] = log(f.hover_model_s / f.hover_pub_s);
+	if (f.max_pub_s > 0.0 && f.max_model_s > 0.0)
+		r[1] = log(f.max_model_s / f.max_pub_s);
 	return true;
 }
 
@@ -472,6 +483,7 @@ spread_of(const double *resid, size_t n, struct model_spread *sp)
 		r[i] = -resid[i];
 	}
 	sp->n = (int)n;
+	sp->level = CALIBRATE_LEVEL;
 	sp->mape_pct = n ? 100.0 * ape / (double)n : 0.0;
 	sp->coverage = loo_coverage(r, n, NULL, NULL);
 	sp->valid = calibrate_conformal(r, n, CALIBRATE_LEVEL, &sp->log_lo, &sp->log_hi);
@@ -528,6 +540,73 @@ accuracy_of(const struct calibrate_row *rows, size_t n,
 	free(res);
 }
 
+/* The spread of the leave-one-out residuals in key (forward: both of a
+ * row's figures; dry) of every row but `skip`, into sp. */
+static void
+spread_without(const struct calibrate_loo *loo, size_t n, size_t skip, bool forward,
+               struct model_spread *sp)
+{
+	double *v = xmalloc((2 * n + 1) * sizeof *v);
+	size_t k = 0;
+	for (size_t i = 0; i < n; i++) {
+		if (i == skip)
+			continue;
+		if (forward) {
+			for (int j = 0; j < 2; j++)
+				if (isfinite(loo[i].forward[j]))
+					v[k++] = loo[i].forward[j];
+		} else if (isfinite(loo[i].dry)) {
+			v[k++] = loo[i].dry;
+		}
+	}
+	spread_of(v, k, sp);
+	free(v);
+}
+
+static int
+cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
+}
+
+/* The design intervals' coverage, out of sample: each sized row's own
+ * interval (engine_loop_interval(), its loop gain and shares, the spreads
+ * of the other rows) against its real takeoff mass, and their median
+ * width hi / lo. */
+static void
+design_coverage(const struct calibrate_row *rows, size_t n,
+                const struct calibrate_loo *loo, int b, struct model_accuracy *a)
+{
+	double *width = xmalloc((n ? n : 1) * sizeof *width);
+	size_t judged = 0, inside = 0;
+	for (size_t i = 0; i < n; i++) {
+		const struct calibrate_loo *l = &loo[i];
+		double m = l->predicted_kg[b];
+		if (!rows[i].sized || !l->sized[b] || !(m > 0.0))
+			continue;
+		struct model_spread dry, fwd;
+		spread_without(loo, n, i, false, &dry);
+		spread_without(loo, n, i, true, &fwd);
+		if (!dry.valid || !fwd.valid)
+			continue;
+		double lo, hi;
+		engine_loop_interval(l->dry_pred_kg[b] / m, l->battery_pred_kg[b] / m,
+		    l->lipschitz[b], &dry, &fwd, &lo, &hi);
+		double r = log(rows[i].actual_kg / m);
+		inside += r >= lo && r <= hi;
+		width[judged++] = exp(hi - lo);
+	}
+	a->design_rows = (int)judged;
+	a->design_coverage = judged ? (double)inside / (double)judged : 0.0;
+	if (judged > 0) {
+		qsort(width, judged, sizeof *width, cmp_double);
+		a->design_width = judged % 2 ? width[judged / 2]
+		    : 0.5 * (width[judged / 2 - 1] + width[judged / 2]);
+	}
+	free(width);
+}
+
 /* Leave each row out in turn, redo both fits on the rest, and predict the
  * row: its forward check, dry mass and closed-loop takeoff mass from its
  * endurance and around its published pack.  The accuracy into
@@ -565,6 +644,8 @@ leave_one_out(struct fit_ctx *cx, const struct calibrate_row *rows, size_t n,
 			    : &row->spec, &cal, work, &vr);
 			l->predicted_kg[b] = vr.predicted_kg;
 			l->battery_pred_kg[b] = vr.battery_pred_kg;
+			l->dry_pred_kg[b] = vr.dry_pred_kg;
+			l->lipschitz[b] = vr.lipschitz;
 		}
 	}
 	cx->left_out = NULL;
@@ -581,6 +662,8 @@ leave_one_out(struct fit_ctx *cx, const struct calibrate_row *rows, size_t n,
 	}
 	spread_of(fw, nf, &out->after.forward);
 	spread_of(dr, nd, &out->after.dry);
+	for (int b = 0; b < MODEL_BASIS_MAX; b++)
+		design_coverage(rows, n, out->loo, b, &out->after.accuracy[b]);
 	free(fw);
 	free(dr);
 	free(left);

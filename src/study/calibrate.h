@@ -132,6 +132,8 @@ struct calibrate_loo {
 	bool sized[MODEL_BASIS_MAX];             /* the closed loop converged */
 	double predicted_kg[MODEL_BASIS_MAX];    /* takeoff mass, the row left out */
 	double battery_pred_kg[MODEL_BASIS_MAX]; /* its battery */
+	double dry_pred_kg[MODEL_BASIS_MAX];     /* its dry mass */
+	double lipschitz[MODEL_BASIS_MAX];       /* its loop's L */
 	double forward[2];                       /* forward residuals, NAN if none */
 	double dry;                              /* ln(dry_model / dry_real), NAN */
 };

@@ -76,6 +76,7 @@ solve(const struct mission_spec *s, const struct model_data *md,
       struct solve_result *r)
 {
 	memset(r, 0, sizeof *r);
+	r->skip_ceiling = true; /* a point is classified, not explained */
 	return engine_solve(s, md, NULL, r);
 }
 

@@ -323,10 +323,31 @@ validate_mission_explained(const struct cohort_row *row, const struct model_data
 }
 
 void
+validate_forward(const struct cohort_row *row, const struct mission_spec *pack_spec,
+                 const struct model_data *md, struct validate_forward *out)
+{
+	memset(out, 0, sizeof *out);
+	out->hover_pub_s = row->has_hover_time_min ? 60.0 * row->hover_time_min : 0.0;
+	out->max_pub_s = row->has_max_flight_time_min ? 60.0 * row->max_flight_time_min : 0.0;
+	if (!pack_spec->locks.is_battery_locked || (row->has_role && row->role == ROLE_RACING)
+	    || !(out->hover_pub_s > 0.0 || out->max_pub_s > 0.0))
+		return;
+	struct sizing_endurance e;
+	if (!engine_endurance_at_mass(pack_spec, md, row->takeoff_mass_kg, 1.0,
+	    row->has_cruise_speed_ms ? row->cruise_speed_ms : 0.0, &e))
+		return;
+	out->valid = true;
+	out->hover_model_s = out->hover_pub_s > 0.0 ? e.hover_s : 0.0;
+	out->max_model_s = out->max_pub_s > 0.0 ? e.forward_s : 0.0;
+	out->speed_ms = e.forward_speed_ms;
+}
+
+void
 validate_solve_row(const struct mission_spec *spec, const struct model_data *md,
                    struct solve_result *work, struct validate_row *vr)
 {
 	memset(work, 0, sizeof *work);
+	work->skip_ceiling = true; /* a row that does not size is listed so */
 	int rc = engine_solve(spec, md, NULL, work);
 	const struct res_run *o = &work->custom;
 	vr->predicted_kg = 0.0;
@@ -344,6 +365,8 @@ validate_solve_row(const struct mission_spec *spec, const struct model_data *md,
 	vr->capacity_mah = o->capacity_mah;
 	vr->thrust_to_weight = o->thrust_to_weight;
 	vr->battery_pred_kg = o->mass.battery_kg;
+	vr->lipschitz = o->lipschitz;
+	vr->dry_pred_kg = o->mass.total_kg - o->mass.payload_kg - o->mass.battery_kg;
 	vr->status = o->converged ? VALIDATE_ROW_OK : VALIDATE_ROW_NOT_CONVERGED;
 }
 
@@ -370,13 +393,31 @@ validate_cohort(const struct cohort *c, const struct model_data *md,
 	    ? MODEL_PACK_LOCKED : MODEL_FROM_ENDURANCE];
 	out->has_interval = acc->valid;
 	out->interval_level = acc->level;
-	double open_dry = 0.0, open_batt = 0.0;
+	double open_dry = 0.0, open_batt = 0.0, fw_ape = 0.0;
 	for (size_t i = 0; i < c->n_rows; i++) {
 		struct validate_row *vr = &out->rows[i];
 		const struct cohort_row *row = &c->rows[i];
 		vr->index = i;
 		vr->actual_kg = row->takeoff_mass_kg;
 		vr->skip = validate_mission_explained(row, md, rule, &vr->spec, &vr->notes, &vr->fact);
+		struct mission_spec pack;
+		unsigned pack_notes;
+		if (validate_mission_explained(row, md, VALIDATE_PACK_LOCKED, &pack,
+		    &pack_notes, NULL) == VALIDATE_SKIP_NONE) {
+			validate_forward(row, &pack, md, &vr->forward);
+			const struct validate_forward *f = &vr->forward;
+			if (f->valid) {
+				out->n_forward_rows++;
+				if (f->hover_pub_s > 0.0) {
+					fw_ape += fabs(f->hover_model_s / f->hover_pub_s - 1.0);
+					out->n_forward_figures++;
+				}
+				if (f->max_pub_s > 0.0) {
+					fw_ape += fabs(f->max_model_s / f->max_pub_s - 1.0);
+					out->n_forward_figures++;
+				}
+			}
+		}
 		if (vr->skip != VALIDATE_SKIP_NONE) {
 			vr->status = VALIDATE_ROW_SKIPPED;
 			continue;
@@ -420,6 +461,8 @@ validate_cohort(const struct cohort *c, const struct model_data *md,
 		}
 	}
 	free(work);
+	out->forward_mape_pct = out->n_forward_figures > 0
+	    ? 100.0 * fw_ape / (double)out->n_forward_figures : 0.0;
 	if (out->n_open > 0) {
 		out->open_dry_mape_pct = 100.0 * open_dry / (double)out->n_open;
 		out->open_battery_mape_pct = 100.0 * open_batt / (double)out->n_open;

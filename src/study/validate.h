@@ -165,6 +165,28 @@ enum validate_skip validate_mission_explained(const struct cohort_row *row,
                                               unsigned *notes,
                                               struct validate_fact *fact);
 
+/* THE FORWARD CHECK (validate_forward()): the aircraft a row describes,
+ * its published pack locked (the VALIDATE_PACK_LOCKED mission), flown at
+ * its published takeoff mass as makers quote a flight time: to an empty
+ * pack, without the mission's reserve, in hover for the hover time and in
+ * level flight at the published cruise speed (else the minimum-power
+ * speed) for the maximum flight time (engine_endurance_at_mass()).  An
+ * unlocked propeller is the largest the wheelbase admits.  Racing rows
+ * are left out: their flight times are flown at race throttle, neither in
+ * hover nor at a stated speed. */
+struct validate_forward {
+	bool valid;                /* the row has a pack, a time and is no racer,
+	                              and the model flew it */
+	double hover_model_s, hover_pub_s;   /* 0 when not published */
+	double max_model_s, max_pub_s;       /* 0 when not published */
+	double speed_ms;           /* the level flight's speed */
+};
+
+/* The forward check of a row; pack_spec is its VALIDATE_PACK_LOCKED
+ * mission (battery locked, else the check is not valid). */
+void validate_forward(const struct cohort_row *row, const struct mission_spec *pack_spec,
+                      const struct model_data *md, struct validate_forward *out);
+
 /* One row's result. */
 struct validate_row {
 	size_t index;              /* row in the cohort */
@@ -188,6 +210,9 @@ struct validate_row {
 	                            * >= 1: the real aircraft is no stable fixed
 	                            * point of the model, 0 when not evaluated */
 	int cells;                 /* series cells of the design (0 unless run) */
+	double lipschitz;          /* its loop's dF/dM at the fixed point */
+	struct validate_forward forward; /* the forward check (any rule) */
+	double dry_pred_kg;        /* its mass less payload and battery */
 	double capacity_mah;       /* capacity of the design (0 unless run) */
 	double thrust_to_weight;   /* T/W the design flies (0 unless run) */
 };
@@ -209,6 +234,12 @@ struct validate_report {
 	size_t n_open;
 	double open_dry_mape_pct;
 	double open_battery_mape_pct;
+	/* The forward check over the rows it applies to: the MAPE of the
+	 * model's endurance against every published figure (hover and
+	 * maximum flight times). */
+	size_t n_forward_rows;
+	size_t n_forward_figures;
+	double forward_mape_pct;
 	/* The shipped calibration's prediction interval for this rule: the OK
 	 * rows whose actual mass lies inside it. */
 	bool has_interval;
