@@ -44,6 +44,21 @@ load_inputs(const char *path, struct cli_env *env, struct cohort *c)
 	return 0;
 }
 
+/* A cohort with rejected rows (their error lines printed by load_inputs)
+ * still gets its report, over the rows that were read, but the run ends
+ * with exit status 2 like any other input error: a script must not take
+ * statistics over a part of its cohort for the whole.  Returns 2 or 0. */
+static int
+rows_rejected(const char *path, const struct cohort *c)
+{
+	if (c->n_errors == 0)
+		return 0;
+	fprintf(stderr, "%s: error: %zu problem%s in the cohort (above); the figures cover "
+	    "only the %zu rows read\n", path, c->n_errors, c->n_errors == 1 ? "" : "s",
+	    c->n_rows);
+	return 2;
+}
+
 /* Why a row was skipped, naming the fact when one was out of range. */
 static void
 skip_line(const struct validate_row *vr, char *buf, size_t n)
@@ -437,6 +452,8 @@ cli_validate(int argc, char **argv)
 			rc = 2;
 		if (report != NULL && write_report(report, path, &c, &v, &env->model.cal) != 0)
 			rc = 2;
+		if (rc == 0)
+			rc = rows_rejected(path, &c);
 	}
 	validate_report_free(&v);
 	cohort_free(&c);
@@ -573,6 +590,8 @@ cli_calibrate(int argc, char **argv)
 			}
 			free(txt);
 		}
+		if (rc == 0)
+			rc = rows_rejected(path, &c);
 	}
 	calibrate_result_free(&cr);
 	cohort_free(&c);
