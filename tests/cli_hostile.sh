@@ -262,27 +262,14 @@ mkdir -p fs
 # verdict.
 printf '{"name": "File-system probe", "payload_kg": 1.5, "max_diameter_m": 0.7, "t_hover_s": 600, "payload_role": {"type": "delivery"}}\n' >fs/zz_fs25.json
 sed 's/"t_hover_s": [0-9]*/"t_hover_s": 95/' fs/zz_fs25.json >fs/new.json
-# set_of DIR: the digests of a set's three outputs, "" if one is missing.
-set_of() {
-	[ -f "$1/bom.csv" ] && [ -f "$1/result.json" ] && [ -f "$1/dossier.pdf" ] &&
-	    sha256sum "$1/bom.csv" "$1/result.json" "$1/dossier.pdf" | cut -c1-64 | tr '\n' ' '
-}
-# stamp_vouches DIR: every "sha256 HEX FILE" line of the stamp holds.
-stamp_vouches() {
-	[ -f "$1/.aeroeval-stamp" ] || return 1
-	grep '^sha256 ' "$1/.aeroeval-stamp" | while read -r _ h f; do
-		[ "$(sha256sum <"$1/$f" | cut -c1-64)" = "$h" ] || echo bad
-	done | grep -q bad && return 1
-	return 0
-}
+# set_of, stamp_vouches, temps_in.
+. "$root/tests/lib_sets.sh"
 # one_error PATH: stderr has one error line, naming PATH once, and no
 # internal error.
 one_error() {
 	[ "$(grep -c ': error: ' err.txt)" -eq 1 ] && [ "$(grep -o -F "$1" err.txt | wc -l)" -eq 1 ] &&
 	    ! grep -q ': internal error' err.txt
 }
-# temps_in DIR: hidden entries left beside the output folders.
-temps_in() { ls -A "$1" | grep '^\.' ; }
 
 # -o "" once wrote /zz_fs25/; the root, however spelled, is refused too.
 run build -o "" fs/zz_fs25.json

@@ -550,17 +550,32 @@ pick_shard(struct build *b)
 	b->missions.n = k;
 }
 
-/* After a run that changed a mission folder (or found the table missing,
- * or a killed writer's leftovers), the design-space table of the output
- * folder is rebuilt (cli_summary.h); returns the run's exit status, raised
- * to the refresh's (2 or 3) when that failed. */
+/* After a run that changed a mission folder, finished or interrupted, or
+ * when the table no longer matches the folders (cli_summary_stale(): a
+ * table missing, damaged or older than a row, a killed writer's
+ * leftovers), the design-space table of the output folder is rebuilt
+ * (cli_summary.h).  SIGINT and SIGTERM wait until it is written whole; one
+ * that came meanwhile makes the status 128 + its number.  Returns the
+ * run's exit status, raised to the refresh's (2 or 3) when that failed. */
 static int
 refresh_index(const struct build *b, int rc)
 {
-	if (b->n_ok + b->n_inf == 0 && (b->n_utd == 0 || !cli_summary_stale(b->out_dir)))
+	if (b->n_ok + b->n_inf == 0 && !cli_summary_stale(b->out_dir))
 		return rc;
+	sigset_t stop, old;
+	sigemptyset(&stop);
+	sigaddset(&stop, SIGINT);
+	sigaddset(&stop, SIGTERM);
+	sigprocmask(SIG_BLOCK, &stop, &old);
 	int irc = cli_summary_refresh(b->out_dir, b->tpl, stderr);
-	return irc > rc ? irc : rc;
+	/* Take a signal that came during the refresh instead of dying of it
+	 * when the mask is restored; an ignored one is dropped there anyway. */
+	struct timespec now = { 0, 0 };
+	int sig = sigtimedwait(&stop, NULL, &now);
+	sigprocmask(SIG_SETMASK, &old, NULL);
+	if (irc > rc && rc < 128)
+		rc = irc;
+	return sig > 0 && rc < 128 ? 128 + sig : rc;
 }
 
 int
@@ -679,8 +694,9 @@ cli_build(int argc, char **argv)
 			rc = 128 + sig;
 		else
 			rc = b.n_int ? 3 : b.n_rej + b.n_unw ? 2 : b.n_inf + b.n_utd_inf ? 1 : 0;
-		if (sig == 0)
-			rc = refresh_index(&b, rc);
+		/* Interrupted too: the missions compiled before the signal are
+		 * new rows. */
+		rc = refresh_index(&b, rc);
 	}
 out:
 	template_free(b.tpl);
