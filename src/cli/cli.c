@@ -153,6 +153,38 @@ cli_env_free(struct cli_env *env)
 }
 
 int
+cli_out_dir(const char *cmd, const char *opt, const char *value, char *out, size_t n,
+            FILE *err)
+{
+	struct stat st, root;
+	size_t len = strlen(value);
+	while (len > 1 && value[len - 1] == '/')
+		len--;
+	if (len == 0) {
+		fprintf(err, "aeroeval %s: error: %s: the output folder name is empty\n", cmd, opt);
+		return 2;
+	}
+	if (len >= n) {
+		fprintf(err, "aeroeval %s: error: %s: the output folder name is too long\n", cmd, opt);
+		return 2;
+	}
+	memcpy(out, value, len);
+	out[len] = '\0';
+	if (stat(out, &st) != 0)
+		return 0;  /* made later; mkdir says what is wrong with it */
+	if (!S_ISDIR(st.st_mode)) {
+		fprintf(err, "%s: error: %s names a file, not a folder\n", out, opt);
+		return 2;
+	}
+	if (stat("/", &root) == 0 && st.st_dev == root.st_dev && st.st_ino == root.st_ino) {
+		fprintf(err, "%s: error: %s names the root folder; give the outputs "
+		    "a folder of their own\n", out, opt);
+		return 2;
+	}
+	return 0;
+}
+
+int
 cli_close_stdout(int status)
 {
 	/* fflush reports a failure of the writes still buffered, ferror one

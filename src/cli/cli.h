@@ -50,6 +50,13 @@ struct sha256_ctx;
  * holds "PATH: why". */
 int cli_hash_file(struct sha256_ctx *c, const char *path, char *err, size_t errlen);
 
+/* The output folder an option of command cmd names (build and sensitivity
+ * -o, validate --missions): not "" (which once wrote /NAME/), not the root
+ * however spelled, not an existing file.  Kept without trailing slashes
+ * in out.  Returns 0, or 2 after one message on err. */
+int cli_out_dir(const char *cmd, const char *opt, const char *value, char *out, size_t n,
+                FILE *err);
+
 /* The close_stdout habit (coreutils): flushes and closes standard output
  * and returns the exit status the program ends with: status as it is, or
  * at least 2 after one message on stderr when a write to stdout failed

@@ -15,6 +15,7 @@
 #include "cli/cli.h"
 #include "input/cohort.h"
 #include "output/doc.h"
+#include "output/fsfolder.h"
 #include "output/fsout.h"
 #include "input/mission_io.h"
 #include "input/model_io.h"
@@ -348,30 +349,56 @@ prune_to_given(cJSON *root, const struct mission_spec *s)
 	}
 }
 
+/* The lock of --missions DIR is waited for this long (another validate). */
+#define MISSIONS_LOCK_WAIT_S 30.0
+
+/* --missions DIR: the rows' missions as DIR/NN-NAME.json, DIR being a folder
+ * of their own replaced as a whole through the output layer (fsfolder.h),
+ * as `build` replaces a mission's folder: not "" or the root, no link at
+ * DIR, nothing in it but missions an earlier run wrote ("*.json"), one new
+ * set swapped in.  Returns 0, or -1 after one message. */
 static int
-write_missions(const char *dir, const struct cohort *c, const struct validate_report *v)
+write_missions(const char *dir_opt, const struct cohort *c, const struct validate_report *v)
 {
-	char err[512];
-	if (fsout_mkdirs(dir, err, sizeof err) != 0) {
-		fprintf(stderr, "error: %s\n", err);
+	char dir[4096], parent[4096], err[5000];
+	if (cli_out_dir("validate", "--missions", dir_opt, dir, sizeof dir, stderr) != 0)
+		return -1;
+	const char *slash = strrchr(dir, '/');
+	const char *base = slash != NULL ? slash + 1 : dir;
+	if (slash == NULL)
+		snprintf(parent, sizeof parent, ".");
+	else
+		snprintf(parent, sizeof parent, "%.*s", slash == dir ? 1 : (int)(slash - dir), dir);
+	if (fsout_mkdirs(parent, err, sizeof err) != 0) {
+		fprintf(stderr, "aeroeval: error: %s\n", err);
 		return -1;
 	}
-	for (size_t i = 0; i < v->n_rows; i++) {
+	static const char *const mission_files[] = { "*.json", NULL };
+	struct fsfolder f;
+	int bad = fsfolder_open(&f, parent, base, mission_files, 0, MISSIONS_LOCK_WAIT_S,
+	    err, sizeof err) != 0;
+	if (!bad) {
+		fsfolder_clean(&f, FSFOLDER_STALE_S);
+		bad = fsfolder_begin(&f, err, sizeof err) != 0;
+	}
+	for (size_t i = 0; !bad && i < v->n_rows; i++) {
 		if (v->rows[i].status == VALIDATE_ROW_SKIPPED)
 			continue;
-		char file[160], path[4400];
+		char file[160];
 		mission_file_name(i, c->rows[i].name, file, sizeof file);
-		snprintf(path, sizeof path, "%s/%s", dir, file);
 		cJSON *j = mission_io_to_json(&v->rows[i].spec);
 		prune_to_given(j, &v->rows[i].spec);
 		char *txt = cJSON_Print(j);
 		cJSON_Delete(j);
-		int rc = fsout_write_atomic(path, txt, strlen(txt), err, sizeof err);
+		bad = fsfolder_put(&f, file, txt, strlen(txt), 1, err, sizeof err) != 0;
 		free(txt);
-		if (rc != 0) {
-			fprintf(stderr, "error: %s\n", err);
-			return -1;
-		}
+	}
+	if (!bad)
+		bad = fsfolder_commit(&f, err, sizeof err) != 0;
+	fsfolder_close(&f);
+	if (bad) {
+		fprintf(stderr, "%s\n", err);
+		return -1;
 	}
 	return 0;
 }
