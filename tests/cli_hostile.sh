@@ -262,27 +262,14 @@ mkdir -p fs
 # verdict.
 printf '{"name": "File-system probe", "payload_kg": 1.5, "max_diameter_m": 0.7, "t_hover_s": 600, "payload_role": {"type": "delivery"}}\n' >fs/zz_fs25.json
 sed 's/"t_hover_s": [0-9]*/"t_hover_s": 95/' fs/zz_fs25.json >fs/new.json
-# set_of DIR: the digests of a set's three outputs, "" if one is missing.
-set_of() {
-	[ -f "$1/bom.csv" ] && [ -f "$1/result.json" ] && [ -f "$1/dossier.pdf" ] &&
-	    sha256sum "$1/bom.csv" "$1/result.json" "$1/dossier.pdf" | cut -c1-64 | tr '\n' ' '
-}
-# stamp_vouches DIR: every "sha256 HEX FILE" line of the stamp holds.
-stamp_vouches() {
-	[ -f "$1/.aeroeval-stamp" ] || return 1
-	grep '^sha256 ' "$1/.aeroeval-stamp" | while read -r _ h f; do
-		[ "$(sha256sum <"$1/$f" | cut -c1-64)" = "$h" ] || echo bad
-	done | grep -q bad && return 1
-	return 0
-}
+# set_of, stamp_vouches, temps_in.
+. "$root/tests/lib_sets.sh"
 # one_error PATH: stderr has one error line, naming PATH once, and no
 # internal error.
 one_error() {
 	[ "$(grep -c ': error: ' err.txt)" -eq 1 ] && [ "$(grep -o -F "$1" err.txt | wc -l)" -eq 1 ] &&
 	    ! grep -q ': internal error' err.txt
 }
-# temps_in DIR: hidden entries left beside the output folders.
-temps_in() { ls -A "$1" | grep '^\.' ; }
 
 # -o "" once wrote /zz_fs25/; the root, however spelled, is refused too.
 run build -o "" fs/zz_fs25.json
@@ -671,9 +658,10 @@ fails empty_directory_build_names_it "emptydir: error: no mission file (*.json) 
     build -o out emptydir
 
 # Cohorts: valid JSON out whatever the names, a clear end when nothing validates.
+# A rejected row is an error: the report covers the others, exit 2.
 { cat "$root/tests/fixtures/validate/tiny.csv"; printf 'Caf\351 racer,0.6,4,0,220,5,5,MicroAIO,inspection,0.1,\n'; } >latin1.csv
 run validate --json latin1.csv
-if [ "$rc" -ne 0 ]; then
+if [ "$rc" -ne 2 ]; then
 	notok validate_json_with_a_latin1_row "exit $rc"
 elif ! grep -q 'latin1.csv:[0-9]*: error: name: not valid UTF-8' err.txt; then
 	notok validate_json_with_a_latin1_row "the row is not named"

@@ -6,8 +6,9 @@
 # sensitivity suite, and prints our numbers beside the paper's with a
 # one-line reason where the difference is understood.  Differences are
 # reported as they are; nothing here tunes anything.  Results stay in
-# $PAPER_OUT (default out/paper): result JSON per example, sensitivity.json
-# and sensitivity.pdf.
+# $PAPER_OUT (default out/paper): result JSON per example, and
+# sensitivity.json and sensitivity.pdf in the folder of the sensitivity
+# mission (as `build` would name it).
 #
 # No JSON tool is needed: `aeroeval sensitivity --case-row RESULT.json`
 # reads the result.json `solve` printed, `--compare-shedding` solves the
@@ -130,5 +131,6 @@ delivery_drop_time_ratio	+0.033	0.000	0.1 ratio	on a delivery copy; a later drop
 spray_rate	-0.490	0.000	0.005 kg/s	on an agriculture copy; the nominal rate is payload / mission time; faster spraying sheds the tank sooner, so less energy and mass
 EOF
 echo
-echo "Outputs: $out/sensitivity.json, $out/sensitivity.pdf, $out/*.result.json"
+sens_dir="$out/$(basename "$sens_mission" .json)"
+echo "Outputs: $sens_dir/sensitivity.json, $sens_dir/sensitivity.pdf, $out/*.result.json"
 exit $status

@@ -221,14 +221,17 @@ cohort_should_refuse_text_that_is_not_utf8_or_holds_control_characters(void **st
 	(void)state;
 	struct cohort c;
 	assert_int_equal(parse("name,takeoff_mass_kg,notes\nCaf\xe9 one,1.2,\n"
-	                       "Tab\tbed,2.3,\nGood \xc3\xa9,3.4,\"two\nlines\"\n", &c), -1);
+	                       "Tab\tbed,2.3,\nGood \xc3\xa9,3.4,\"two\nlines\"\n"
+	                       "Evil\xe2\x80\xaegnp,4.5,\n", &c), -1);
 	assert_int_equal(c.n_rows, 1);
 	assert_string_equal(c.rows[0].name, "Good \xc3\xa9");
 	assert_string_equal(c.rows[0].notes, "two\nlines");
-	assert_int_equal(c.n_errors, 2);
+	assert_int_equal(c.n_errors, 3);
 	assert_string_equal(c.errors[0], "t.csv:2: error: name: not valid UTF-8 (byte 0xe9 at "
 	                                 "offset 3); save the file as UTF-8");
 	assert_string_equal(c.errors[1], "t.csv:3: error: name: control character 0x09 at offset 3");
+	/* A bidirectional override, refused as in mission files (issue 36). */
+	assert_string_equal(c.errors[2], "t.csv:6: error: name: control character U+202E at offset 4");
 	cohort_free(&c);
 }
 

@@ -194,12 +194,12 @@ fsout_failed_rename_should_remove_the_temporary_file(void **state)
 {
 	struct fixture *fx = *state;
 	char p[128], err[256] = "";
-	/* The target is a directory: the temp file is written and synced,
-	 * then rename(2) refuses, and the temp file must go. */
+	/* The target is a directory: refused before a temporary file is
+	 * made (rename(2) once refused it after the write), nothing left. */
 	path_in(fx, "result.json", p, sizeof p);
 	assert_int_equal(mkdir(p, 0755), 0);
 	assert_int_equal(fsout_write_atomic(p, "{}", 2, err, sizeof err), -1);
-	assert_non_null(strstr(err, "rename failed"));
+	assert_non_null(strstr(err, "is a folder"));
 	assert_int_equal(count_entries(fx->dir), 1);
 	/* A file where the directory should be. */
 	path_in(fx, "plain", p, sizeof p);
@@ -408,6 +408,63 @@ fsout_safe_name_should_keep_only_a_harmless_base_name(void **state)
 	assert_int_equal(fsout_safe_name("abcdefgh.json", out, 8), -2);  /* too long for n */
 	assert_int_equal(fsout_safe_name("abcdefg.json", out, 8), 0);
 	assert_string_equal(out, "abcdefg");
+}
+
+static void
+fsout_write_atomic_should_replace_only_a_regular_file(void **state)
+{
+	struct fixture *fx = *state;
+	char p[128], target[128], err[256] = "";
+	/* A link is neither followed nor replaced: its target keeps its
+	 * bytes and the link stays (issue 36: every writer refuses links). */
+	path_in(fx, "target.json", target, sizeof target);
+	assert_int_equal(fsout_write_atomic(target, "mine", 4, err, sizeof err), 0);
+	path_in(fx, "cal.json", p, sizeof p);
+	assert_int_equal(symlink(target, p), 0);
+	assert_int_equal(fsout_write_atomic(p, "new", 3, err, sizeof err), -1);
+	assert_non_null(strstr(err, "symbolic link"));
+	assert_file_is(target, "mine");
+	struct stat st;
+	assert_int_equal(lstat(p, &st), 0);
+	assert_true(S_ISLNK(st.st_mode));
+	/* A FIFO (a device as root would be the same) is not replaced. */
+	path_in(fx, "fifo", p, sizeof p);
+	assert_int_equal(mkfifo(p, 0644), 0);
+	assert_int_equal(fsout_write_atomic(p, "new", 3, err, sizeof err), -1);
+	assert_non_null(strstr(err, "not a regular file"));
+	assert_int_equal(lstat(p, &st), 0);
+	assert_true(S_ISFIFO(st.st_mode));
+	assert_int_equal(count_entries(fx->dir), 3);  /* no temporary left */
+}
+
+static void
+fsout_safe_name_should_refuse_hidden_and_reserved_names(void **state)
+{
+	(void)state;
+	char out[64];
+	/* Hidden names are the program's temporaries, locks and stamps (-1):
+	 * a mission ".x.tmp.999999.0" looked like a dead writer's temporary
+	 * of mission "x" and was deleted by its next build.  The table's
+	 * files beside the mission folders are the program's too (-3). */
+	static const struct {
+		const char *path;
+		int want;
+	} refused[] = {
+		{ ".x.tmp.999999.0.json", -1 }, { ".hidden.json", -1 },
+		{ "m/.aeroeval-index-stamp.json", -1 }, { ".m.lock.json", -1 },
+		{ "index.csv.json", -3 }, { "dir/index.json.json", -3 },
+		{ "overview.pdf.json", -3 }, { "index.csv", -3 },
+	};
+	for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
+		strcpy(out, "junk");
+		assert_int_equal(fsout_safe_name(refused[i].path, out, sizeof out), refused[i].want);
+		assert_string_equal(out, "");
+	}
+	/* Near them is fine. */
+	assert_int_equal(fsout_safe_name("index.json", out, sizeof out), 0);
+	assert_string_equal(out, "index");
+	assert_int_equal(fsout_safe_name("index.csv2.json", out, sizeof out), 0);
+	assert_string_equal(out, "index.csv2");
 }
 
 /* ---- fsfolder ------------------------------------------------------------ */
@@ -672,6 +729,116 @@ fsfolder_clean_should_remove_only_its_own_stale_temporaries(void **state)
 	assert_true(exists_in(fx, dead_longer));  /* mission "m.tmp.5"'s */
 }
 
+/* Sets fx->dir/m aside as a killed two-rename swap leaves it: m missing,
+ * the old set at ".m.old.PID.0" of a writer that is gone, and its new set
+ * (whole or not) at ".m.tmp.PID.0". */
+static void
+leave_swap_half_done(const struct fixture *fx, long pid)
+{
+	char from[160], to[160];
+	snprintf(from, sizeof from, "%s/m", fx->dir);
+	snprintf(to, sizeof to, "%s/.m.old.%ld.0", fx->dir, pid);
+	assert_int_equal(rename(from, to), 0);
+	snprintf(to, sizeof to, ".m.tmp.%ld.0", pid);
+	make_temp(fx, to, 0.0);
+}
+
+static void
+fsfolder_open_should_put_back_an_old_set_a_killed_swap_left_aside(void **state)
+{
+	struct fixture *fx = *state;
+	write_set(fx, "old");
+	long gone = dead_pid();
+	leave_swap_half_done(fx, gone);
+	/* Issue 36: the clean-up of the build's parent deleted the aside,
+	 * the only copy of the old set.  Now the next writer (here one that
+	 * only looks, as the parent's clean-up does) puts it back first. */
+	struct fsfolder f;
+	char err[256], tmp[64];
+	assert_int_equal(fsfolder_open(&f, fx->dir, "m", set_files, FSFOLDER_NOWAIT, 0.0,
+	    err, sizeof err), 0);
+	assert_true(fsfolder_exists(&f));
+	assert_int_equal(fsfolder_clean(&f, FSFOLDER_STALE_S), 1);  /* the new set */
+	fsfolder_close(&f);
+	assert_set(fx, "old");
+	snprintf(tmp, sizeof tmp, ".m.tmp.%ld.0", gone);
+	assert_false(exists_in(fx, tmp));
+	assert_int_equal(count_entries(fx->dir), 1);
+}
+
+static void
+fsfolder_clean_should_keep_an_aside_while_the_set_is_missing(void **state)
+{
+	struct fixture *fx = *state;
+	write_set(fx, "old");
+	long gone = dead_pid();
+	char aside[64], p[160];
+	leave_swap_half_done(fx, gone);
+	snprintf(aside, sizeof aside, ".m.old.%ld.0", gone);
+	/* Whatever happens to m meanwhile, a clean never removes the only
+	 * copy: with m missing it leaves the aside (here recover() is kept
+	 * from running by a regular file "m" that then goes). */
+	snprintf(p, sizeof p, "%s/m", fx->dir);
+	assert_int_equal(close(open(p, O_CREAT | O_WRONLY, 0644)), 0);
+	struct fsfolder f;
+	char err[256];
+	assert_int_equal(fsfolder_open(&f, fx->dir, "m", set_files, 0, 1.0, err, sizeof err), -1);
+	assert_int_equal(unlink(p), 0);
+	fsfolder_clean(&f, FSFOLDER_STALE_S);
+	fsfolder_close(&f);
+	assert_true(exists_in(fx, aside));
+	/* A set at m again: the aside is an old copy, and goes. */
+	write_set(fx, "new");
+	assert_set(fx, "new");
+	assert_false(exists_in(fx, aside));
+}
+
+static void
+fsfolder_carry_should_keep_the_files_it_is_asked_to(void **state)
+{
+	struct fixture *fx = *state;
+	write_set(fx, "one");
+	struct fsfolder f;
+	char err[256];
+	assert_int_equal(fsfolder_open(&f, fx->dir, "m", set_files, 0, 1.0, err, sizeof err), 0);
+	assert_int_equal(fsfolder_begin(&f, err, sizeof err), 0);
+	assert_int_equal(fsfolder_carry(&f, "a.json", err, sizeof err), 0);
+	assert_int_equal(fsfolder_carry(&f, "absent.txt", err, sizeof err), 0);
+	assert_int_equal(fsfolder_put(&f, "b.csv", "two-b", 5, 1, err, sizeof err), 0);
+	assert_int_equal(fsfolder_commit(&f, err, sizeof err), 0);
+	fsfolder_close(&f);
+	char p[160];
+	snprintf(p, sizeof p, "%s/m/a.json", fx->dir);
+	assert_file_is(p, "one-a");
+	snprintf(p, sizeof p, "%s/m/b.csv", fx->dir);
+	assert_file_is(p, "two-b");
+}
+
+static void
+fsfolder_open_should_take_a_pattern_for_a_folder_of_missions(void **state)
+{
+	struct fixture *fx = *state;
+	static const char *const missions[] = { "*.json", NULL };
+	char p[160], err[512] = "";
+	snprintf(p, sizeof p, "%s/m", fx->dir);
+	assert_int_equal(mkdir(p, 0755), 0);
+	snprintf(p, sizeof p, "%s/m/01-Some_thing.v2.json", fx->dir);
+	assert_int_equal(close(open(p, O_CREAT | O_WRONLY, 0644)), 0);
+	struct fsfolder f;
+	assert_int_equal(fsfolder_open(&f, fx->dir, "m", missions, 0, 1.0, err, sizeof err), 0);
+	fsfolder_close(&f);
+	/* Not a mission file: another suffix, hidden, or a byte outside. */
+	static const char *const foreign[] = { "notes.txt", ".x.json", "a b.json", "json" };
+	for (size_t i = 0; i < sizeof foreign / sizeof foreign[0]; i++) {
+		snprintf(p, sizeof p, "%s/m/%s", fx->dir, foreign[i]);
+		assert_int_equal(close(open(p, O_CREAT | O_WRONLY, 0644)), 0);
+		assert_int_equal(fsfolder_open(&f, fx->dir, "m", missions, 0, 1.0, err, sizeof err), -1);
+		assert_non_null(strstr(err, "not an output of aeroeval"));
+		fsfolder_close(&f);
+		assert_int_equal(unlink(p), 0);
+	}
+}
+
 static void
 fsfolder_lock_should_keep_a_second_writer_out_until_released(void **state)
 {
@@ -765,6 +932,12 @@ main(void)
 		cmocka_unit_test_setup_teardown(fsout_resolve_date_should_reject_bad_dates_instead_of_falling_through, setup, teardown),
 		cmocka_unit_test(fsout_safe_name_should_keep_only_a_harmless_base_name),
 		cmocka_unit_test(fsout_safe_name_should_refuse_a_name_too_long_for_its_temporaries),
+		cmocka_unit_test(fsout_safe_name_should_refuse_hidden_and_reserved_names),
+		cmocka_unit_test_setup_teardown(fsout_write_atomic_should_replace_only_a_regular_file, setup, teardown),
+		cmocka_unit_test_setup_teardown(fsfolder_open_should_put_back_an_old_set_a_killed_swap_left_aside, setup, teardown),
+		cmocka_unit_test_setup_teardown(fsfolder_clean_should_keep_an_aside_while_the_set_is_missing, setup, teardown),
+		cmocka_unit_test_setup_teardown(fsfolder_carry_should_keep_the_files_it_is_asked_to, setup, teardown),
+		cmocka_unit_test_setup_teardown(fsfolder_open_should_take_a_pattern_for_a_folder_of_missions, setup, teardown),
 		cmocka_unit_test_setup_teardown(fsfolder_commit_should_replace_the_whole_set_and_leave_nothing_beside_it, setup, teardown),
 		cmocka_unit_test_setup_teardown(fsfolder_commit_without_exchange_should_swap_by_two_renames, setup, teardown),
 		cmocka_unit_test_setup_teardown(fsfolder_failed_write_should_leave_the_old_set_whole, setup, teardown),

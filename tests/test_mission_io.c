@@ -493,8 +493,10 @@ mission_io_should_reject_raw_control_characters_in_strings(void **state)
 	       "strings must be escaped)\n"
 	       "m.json:2:26: error: malformed JSON near byte 0x0a (control characters in "
 	       "strings must be escaped)\n", 2);
-	parse_ok("{\"name\": \"a\\tb\"}", &s); /* escaped: fine */
-	assert_string_equal(s.name, "a\tb");
+	/* Escaped, the JSON is good, but the text holds a control character
+	 * all the same (issue 36). */
+	expect("{\"name\": \"a\\tb\"}",
+	       "m.json:1:10: error: name: string contains a control character (U+0009 at offset 1)\n", 1);
 	expect("{\"report\": {\"title\": \"ab\\u0000cd\"}}",
 	       "m.json:1:22: error: report.title: string contains a NUL character (\\u0000)\n", 1);
 	parse_ok("{\"name\": \"x\\\\u0000\"}", &s); /* an escaped backslash, then text */
@@ -558,6 +560,67 @@ mission_io_should_report_every_error_of_a_file_in_one_pass(void **state)
 	       "m.json:6:22: error: report.date: invalid date \"2026-02-30\" "
 	       "(expected a calendar date YYYY-MM-DD)\n",
 	       6);
+}
+
+static void
+mission_io_should_refuse_control_characters_in_text(void **state)
+{
+	(void)state;
+	/* Issue 36: an ESC, a line break or a bidirectional override reached
+	 * the dossier raw; the cohort reader already refused them. */
+	expect("{\"name\": \"red\\u001b[31m\",\n"
+	       " \"report\": {\"title\": \"a\\r\\nb\", \"client\": \"x\xe2\x80\xaegnp.exe\",\n"
+	       " \"author\": \"c1\xc2\x85\", \"checked_by\": \"\\u2067iso\"}}",
+	       "m.json:1:10: error: name: string contains a control character (U+001B at offset 3)\n"
+	       "m.json:2:22: error: report.title: string contains a control character (U+000D at offset 1)\n"
+	       "m.json:2:42: error: report.client: string contains a control character (U+202E at offset 1)\n"
+	       "m.json:3:12: error: report.author: string contains a control character (U+0085 at offset 2)\n"
+	       "m.json:3:33: error: report.checked_by: string contains a control character (U+2067 at offset 0)\n",
+	       5);
+	/* Letters of every script stay, joiners included. */
+	struct mission_spec sp;
+	parse_ok("{\"name\": \"\xd7\xa9\xd7\x9c\xd7\x95\xd7\x9d \xe2\x80\x8d caf\xc3\xa9\"}", &sp);
+}
+
+static void
+mission_io_should_refuse_too_many_values_before_building_a_tree(void **state)
+{
+	(void)state;
+	/* A 3.8 MB array took 278 MB: counted, refused, never parsed. */
+	size_t n = 2 * (size_t)MISSION_IO_MAX_VALUES + 16;
+	char *text = malloc(n + 1);
+	assert_non_null(text);
+	size_t k = 0;
+	text[k++] = '[';
+	while (k + 3 < n) {
+		text[k++] = '0';
+		text[k++] = ',';
+	}
+	text[k++] = '0';
+	text[k++] = ']';
+	text[k] = '\0';
+	char want[160];
+	snprintf(want, sizeof want, "m.json: error: too many entries: more than %d JSON values "
+	    "(a mission has about 100)\n", MISSION_IO_MAX_VALUES);
+	expect(text, want, 1);
+	free(text);
+	/* Keys are no values, and strings hold no structure: 140 000 members
+	 * (280 000 strings, a million brackets and commas inside them) are
+	 * read, and each unknown key reported. */
+	int n_keys = 140000;
+	text = malloc((size_t)n_keys * 32);
+	assert_non_null(text);
+	k = 0;
+	text[k++] = '{';
+	for (int i = 0; i < n_keys; i++)
+		k += (size_t)sprintf(text + k, "%s\"k%d\": \"[,{:\\\"\"", i ? "," : "", i);
+	text[k++] = '}';
+	text[k] = '\0';
+	struct diag *dg = diag_alloc(NULL);
+	struct mission_spec sp;
+	assert_int_equal(mission_io_parse("m.json", text, k, chems, dg, &sp), n_keys);
+	diag_free(dg);
+	free(text);
 }
 
 static void
@@ -736,6 +799,8 @@ main(void)
 		cmocka_unit_test(mission_io_should_reject_a_group_that_is_not_an_object),
 		cmocka_unit_test(mission_io_should_reject_a_top_level_that_is_not_an_object),
 		cmocka_unit_test(mission_io_should_report_every_error_of_a_file_in_one_pass),
+		cmocka_unit_test(mission_io_should_refuse_control_characters_in_text),
+		cmocka_unit_test(mission_io_should_refuse_too_many_values_before_building_a_tree),
 		cmocka_unit_test(mission_io_load_should_report_an_unreadable_file),
 		cmocka_unit_test(mission_io_load_should_read_a_file),
 		cmocka_unit_test(mission_io_to_json_should_round_trip),

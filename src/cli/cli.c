@@ -114,6 +114,11 @@ cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
              FILE *err)
 {
 	memset(env, 0, sizeof *env);
+	/* "" once read "/motors.json": refused as -o "" is. */
+	if (db_dir != NULL && db_dir[0] == '\0') {
+		fprintf(err, "aeroeval: error: --db: the catalogue folder name is empty\n");
+		return 2;
+	}
 	cli_data_dir(env->data_dir, sizeof env->data_dir);
 	if (db_dir != NULL)
 		snprintf(env->db_dir, sizeof env->db_dir, "%s", db_dir);
@@ -145,6 +150,58 @@ cli_env_free(struct cli_env *env)
 {
 	catalog_free(env->cat);
 	env->cat = NULL;
+}
+
+int
+cli_out_dir(const char *cmd, const char *opt, const char *value, char *out, size_t n,
+            FILE *err)
+{
+	struct stat st, root;
+	size_t len = strlen(value);
+	while (len > 1 && value[len - 1] == '/')
+		len--;
+	if (len == 0) {
+		fprintf(err, "aeroeval %s: error: %s: the output folder name is empty\n", cmd, opt);
+		return 2;
+	}
+	if (len >= n) {
+		fprintf(err, "aeroeval %s: error: %s: the output folder name is too long\n", cmd, opt);
+		return 2;
+	}
+	memcpy(out, value, len);
+	out[len] = '\0';
+	if (stat(out, &st) != 0)
+		return 0;  /* made later; mkdir says what is wrong with it */
+	if (!S_ISDIR(st.st_mode)) {
+		fprintf(err, "%s: error: %s names a file, not a folder\n", out, opt);
+		return 2;
+	}
+	if (stat("/", &root) == 0 && st.st_dev == root.st_dev && st.st_ino == root.st_ino) {
+		fprintf(err, "%s: error: %s names the root folder; give the outputs "
+		    "a folder of their own\n", out, opt);
+		return 2;
+	}
+	return 0;
+}
+
+int
+cli_close_stdout(int status)
+{
+	/* fflush reports a failure of the writes still buffered, ferror one
+	 * of an earlier write, fclose one the kernel reports only at close
+	 * (NFS).  EBADF at close alone means stdout was never open. */
+	int failed = fflush(stdout) != 0;
+	int e = failed ? errno : 0;  /* else unknown: an earlier write failed */
+	failed |= ferror(stdout) != 0;
+	if (fclose(stdout) != 0 && (failed || errno != EBADF)) {
+		e = failed ? e : errno;
+		failed = 1;
+	}
+	if (!failed)
+		return status;
+	fprintf(stderr, "aeroeval: error: cannot write to standard output: %s\n",
+	    e != 0 ? strerror(e) : "write error");
+	return status > 2 ? status : 2;
 }
 
 struct template *

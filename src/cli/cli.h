@@ -25,7 +25,8 @@ struct cli_env {
 void cli_data_dir(char *out, size_t n);
 
 /* Load the reference tables and, when want_catalog, the catalogue from
- * db_dir (NULL = data/catalog).  Errors go to err; returns 0 or 2. */
+ * db_dir (NULL = data/catalog; "" is refused).  Errors go to err; returns
+ * 0 or 2. */
 int cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
                  FILE *err);
 
@@ -48,6 +49,21 @@ struct sha256_ctx;
  * is read (c then holds part of it and must be discarded).  On failure err
  * holds "PATH: why". */
 int cli_hash_file(struct sha256_ctx *c, const char *path, char *err, size_t errlen);
+
+/* The output folder an option of command cmd names (build and sensitivity
+ * -o, validate --missions): not "" (which once wrote /NAME/), not the root
+ * however spelled, not an existing file.  Kept without trailing slashes
+ * in out.  Returns 0, or 2 after one message on err. */
+int cli_out_dir(const char *cmd, const char *opt, const char *value, char *out, size_t n,
+                FILE *err);
+
+/* The close_stdout habit (coreutils): flushes and closes standard output
+ * and returns the exit status the program ends with: status as it is, or
+ * at least 2 after one message on stderr when a write to stdout failed
+ * (a full disk, /dev/full, a closed pipe's EPIPE), so a truncated
+ * result.json or table is never an exit 0.  A stdout closed before the
+ * program ran (>&-) is no error while nothing was written to it. */
+int cli_close_stdout(int status);
 
 struct template;
 

@@ -24,6 +24,7 @@
 #include "cli/cli_help.h"
 #include "cli/cli_summary.h"
 #include "output/fsout.h"
+#include "output/index.h"
 #include "cli/pipeline.h"
 #include "cli/shard.h"
 #include "util/sha256.h"
@@ -97,9 +98,25 @@ ends_with_json(const char *s)
 	return n > 5 && strcmp(s + n - 5, ".json") == 0;
 }
 
-/* The *.json files of dir (no hidden ones), sorted for a stable order. */
+/* True when the file name is one the design-space table writes into an
+ * output folder (index.json), and dir is that output folder: a build given
+ * its own output folder as input (build -o . .) read its index.json as a
+ * mission. */
 static int
-list_json(const char *dir, struct path_list *l)
+is_own_table(const char *dir, const char *name, const char *out_dir)
+{
+	struct stat a, b;
+	for (size_t i = 0; out_dir != NULL && index_file_names[i] != NULL; i++)
+		if (strcmp(name, index_file_names[i]) == 0)
+			return stat(dir, &a) == 0 && stat(out_dir, &b) == 0
+			    && a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+	return 0;
+}
+
+/* The *.json files of dir (no hidden ones, none of the table's files when
+ * dir is out_dir; out_dir may be NULL), sorted for a stable order. */
+static int
+list_json(const char *dir, struct path_list *l, const char *out_dir)
 {
 	DIR *d = opendir(dir);
 	if (d == NULL)
@@ -108,7 +125,8 @@ list_json(const char *dir, struct path_list *l)
 	const char *sep = len > 0 && dir[len - 1] == '/' ? "" : "/";
 	struct dirent *e;
 	while ((e = readdir(d)) != NULL) {
-		if (e->d_name[0] == '.' || !ends_with_json(e->d_name))
+		if (e->d_name[0] == '.' || !ends_with_json(e->d_name)
+		    || is_own_table(dir, e->d_name, out_dir))
 			continue;
 		char p[4400];
 		snprintf(p, sizeof p, "%s%s%s", dir, sep, e->d_name);
@@ -123,9 +141,9 @@ list_json(const char *dir, struct path_list *l)
 }
 
 /* A directory contributes its *.json files (one without any is noted in
- * empty); a file is taken as given. */
+ * empty; out_dir as for list_json()); a file is taken as given. */
 static int
-expand(const char *arg, struct path_list *l, struct path_list *empty)
+expand(const char *arg, struct path_list *l, struct path_list *empty, const char *out_dir)
 {
 	struct stat st;
 	if (stat(arg, &st) != 0) {
@@ -133,7 +151,7 @@ expand(const char *arg, struct path_list *l, struct path_list *empty)
 		return -1;
 	}
 	size_t before = l->n;
-	if (S_ISDIR(st.st_mode) && list_json(arg, l) != 0) {
+	if (S_ISDIR(st.st_mode) && list_json(arg, l, out_dir) != 0) {
 		fprintf(stderr, "%s: error: cannot read the directory: %s\n", arg,
 		    strerror(errno));
 		return -1;
@@ -229,7 +247,7 @@ base_fingerprint(struct build *b, const char *tpl_path)
 	}
 	hash_str(&c, b->env->catalogue_sha256);
 	struct path_list data = { 0 };
-	list_json(b->env->data_dir, &data);
+	list_json(b->env->data_dir, &data, NULL);
 	for (size_t i = 0; i < data.n; i++) {
 		/* The name relative to data/, so a moved installation is the same. */
 		const char *slash = strrchr(data.v[i], '/');
@@ -251,11 +269,13 @@ base_fingerprint(struct build *b, const char *tpl_path)
 	hex_final(&c, b->base_fp);
 }
 
-/* The mission's fingerprint: the base, its bytes (all of them, streamed)
- * and, unless SOURCE_DATE_EPOCH is set, its mtime (the dossier date falls
- * back to it; with SOURCE_DATE_EPOCH set it never does, so a copy or a
- * checkout that changes only the mtime stays up to date).  Returns -1 when
- * unreadable. */
+/* The mission's fingerprint: the base, its output name (it is printed in
+ * the dossier and the hand-off: a folder copied over another mission's
+ * with the same bytes and time was called up to date), its bytes (all of
+ * them, streamed) and, unless SOURCE_DATE_EPOCH is set, its mtime (the
+ * dossier date falls back to it; with SOURCE_DATE_EPOCH set it never does,
+ * so a copy or a checkout that changes only the mtime stays up to date).
+ * Returns -1 when unreadable. */
 static int
 mission_fingerprint(const struct build *b, size_t i, char out[SHA256_HEX_LEN])
 {
@@ -274,6 +294,7 @@ mission_fingerprint(const struct build *b, size_t i, char out[SHA256_HEX_LEN])
 		    (long)st.st_mtim.tv_nsec);
 	sha256_init(&c);
 	hash_str(&c, b->base_fp);
+	hash_str(&c, b->names[i]);
 	if (cli_hash_file(&c, path, why, sizeof why) != 0)
 		return -1;
 	hash_str(&c, mtime);
@@ -449,39 +470,6 @@ timeout_s(void)
 	return s && end != s && *end == '\0' && v > 0.0 && v < 1e6 ? v : BUILD_TIMEOUT_S;
 }
 
-/* -o must name a folder of its own: not "" (which once wrote /NAME/), not
- * the root, not a file.  The name is kept without trailing slashes. */
-static int
-check_out_dir(const char *opt, char *out, size_t n)
-{
-	struct stat st, root;
-	size_t len = strlen(opt);
-	while (len > 1 && opt[len - 1] == '/')
-		len--;
-	if (len == 0) {
-		fprintf(stderr, "aeroeval build: error: -o: the output folder name is empty\n");
-		return 2;
-	}
-	if (len >= n) {
-		fprintf(stderr, "aeroeval build: error: -o: the output folder name is too long\n");
-		return 2;
-	}
-	memcpy(out, opt, len);
-	out[len] = '\0';
-	if (stat(out, &st) != 0)
-		return 0;  /* made later; mkdir says what is wrong with it */
-	if (!S_ISDIR(st.st_mode)) {
-		fprintf(stderr, "%s: error: -o names a file, not a folder\n", out);
-		return 2;
-	}
-	if (stat("/", &root) == 0 && st.st_dev == root.st_dev && st.st_ino == root.st_ino) {
-		fprintf(stderr, "%s: error: -o names the root folder; give the outputs "
-		    "a folder of their own\n", out);
-		return 2;
-	}
-	return 0;
-}
-
 /* Name clashes are an error before anything is written. */
 static int
 check_names(struct build *b)
@@ -550,17 +538,32 @@ pick_shard(struct build *b)
 	b->missions.n = k;
 }
 
-/* After a run that changed a mission folder (or found the table missing,
- * or a killed writer's leftovers), the design-space table of the output
- * folder is rebuilt (cli_summary.h); returns the run's exit status, raised
- * to the refresh's (2 or 3) when that failed. */
+/* After a run that changed a mission folder, finished or interrupted, or
+ * when the table no longer matches the folders (cli_summary_stale(): a
+ * table missing, damaged or older than a row, a killed writer's
+ * leftovers), the design-space table of the output folder is rebuilt
+ * (cli_summary.h).  SIGINT and SIGTERM wait until it is written whole; one
+ * that came meanwhile makes the status 128 + its number.  Returns the
+ * run's exit status, raised to the refresh's (2 or 3) when that failed. */
 static int
 refresh_index(const struct build *b, int rc)
 {
-	if (b->n_ok + b->n_inf == 0 && (b->n_utd == 0 || !cli_summary_stale(b->out_dir)))
+	if (b->n_ok + b->n_inf == 0 && !cli_summary_stale(b->out_dir))
 		return rc;
+	sigset_t stop, old;
+	sigemptyset(&stop);
+	sigaddset(&stop, SIGINT);
+	sigaddset(&stop, SIGTERM);
+	sigprocmask(SIG_BLOCK, &stop, &old);
 	int irc = cli_summary_refresh(b->out_dir, b->tpl, stderr);
-	return irc > rc ? irc : rc;
+	/* Take a signal that came during the refresh instead of dying of it
+	 * when the mask is restored; an ignored one is dropped there anyway. */
+	struct timespec now = { 0, 0 };
+	int sig = sigtimedwait(&stop, NULL, &now);
+	sigprocmask(SIG_SETMASK, &old, NULL);
+	if (irc > rc && rc < 128)
+		rc = irc;
+	return sig > 0 && rc < 128 ? 128 + sig : rc;
 }
 
 int
@@ -569,6 +572,8 @@ cli_build(int argc, char **argv)
 	double t0 = batch_now_s();
 	struct build b = { 0 };
 	struct path_list empty_dirs = { 0 };   /* directories without a mission */
+	struct path_list operands = { 0 };     /* files and directories, expanded
+	                                        * once -o is known */
 	const char *db = NULL, *tpl_path = NULL;
 	long n_cpu = sysconf(_SC_NPROCESSORS_ONLN);
 	int n_workers = n_cpu >= 1 && n_cpu <= BUILD_MAX_JOBS ? (int)n_cpu : 1;
@@ -578,14 +583,12 @@ cli_build(int argc, char **argv)
 		const char *a = argv[i];
 		int has_val = i + 1 < argc;
 		if (opts_done || a[0] != '-' || a[1] == '\0') {
-			if (expand(a, &b.missions, &empty_dirs) != 0)
-				rc = 2;
+			list_add(&operands, a);
 		} else if (strcmp(a, "--") == 0) {
 			opts_done = 1;
 		} else if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
 			cli_help_command("build", stdout);
-			list_free(&b.missions);
-			list_free(&empty_dirs);
+			list_free(&operands);
 			return 0;
 		} else if (strcmp(a, "-q") == 0) {
 			b.quiet = 1;
@@ -614,11 +617,14 @@ cli_build(int argc, char **argv)
 		} else {
 			fprintf(stderr, "aeroeval build: unknown option or missing value: %s\n%s",
 			    a, BUILD_USAGE);
-			list_free(&b.missions);
-			list_free(&empty_dirs);
+			list_free(&operands);
 			return 2;
 		}
 	}
+	for (size_t i = 0; i < operands.n; i++)
+		if (expand(operands.v[i], &b.missions, &empty_dirs, out_opt) != 0)
+			rc = 2;
+	list_free(&operands);
 	if (b.missions.n == 0 && rc == 0 && empty_dirs.n > 0) {
 		for (size_t i = 0; i < empty_dirs.n; i++)
 			fprintf(stderr, "%s: error: no mission file (*.json) in this directory\n",
@@ -634,7 +640,7 @@ cli_build(int argc, char **argv)
 	b.fp = xcalloc(b.missions.n + 1, sizeof *b.fp);
 	b.env = xcalloc(1, sizeof *b.env);
 	if (rc == 0)
-		rc = check_out_dir(out_opt, b.out_dir, sizeof b.out_dir);
+		rc = cli_out_dir("build", "-o", out_opt, b.out_dir, sizeof b.out_dir, stderr);
 	if (rc == 0 && b.missions.n == 0) {
 		/* Nothing of this machine's: not an error, the others compile. */
 		if (!b.quiet)
@@ -679,8 +685,9 @@ cli_build(int argc, char **argv)
 			rc = 128 + sig;
 		else
 			rc = b.n_int ? 3 : b.n_rej + b.n_unw ? 2 : b.n_inf + b.n_utd_inf ? 1 : 0;
-		if (sig == 0)
-			rc = refresh_index(&b, rc);
+		/* Interrupted too: the missions compiled before the signal are
+		 * new rows. */
+		rc = refresh_index(&b, rc);
 	}
 out:
 	template_free(b.tpl);

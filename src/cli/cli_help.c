@@ -59,7 +59,10 @@ static const struct help_cmd help_cmds[] = {
 	  "                      instead of sizing the battery from its endurance\n"
 	  "  --report FILE.pdf   also write a validation dossier\n"
 	  "  --json              print the report as JSON\n"
-	  "  --missions DIR      write each row's mission file into DIR\n" },
+	  "  --missions DIR      write each row's mission file into DIR, a folder of\n"
+	  "                      its own replaced as a whole\n"
+	  "\n"
+	  "Exit status 2 also when a row of the cohort was rejected.\n" },
 	{ "calibrate",
 	  "calibrate [--write FILE] COHORT.csv",
 	  "fit the calibration coefficients to a cohort of real aircraft",
@@ -68,9 +71,14 @@ static const struct help_cmd help_cmds[] = {
 	  "locked, and derives the 90 % prediction interval (docs/validation.md).\n"
 	  "  --write FILE   write the fit and its accuracy as data/calibration.json\n" },
 	{ "sensitivity",
-	  "sensitivity [-o DIR] MISSION.json",
+	  "sensitivity [-o DIR] [--template FILE] [--tsv] MISSION.json",
 	  "the 14-parameter sensitivity table of one mission",
-	  "  -o DIR   output folder (default: out)\n" },
+	  "Prints the table and writes sensitivity.json and sensitivity.pdf into\n"
+	  "DIR/<name>/ beside the mission's build outputs, by build's rules (the\n"
+	  "folder replaced as a whole, its other files kept).\n"
+	  "  -o DIR           output folder (default: out)\n"
+	  "  --template FILE  template of sensitivity.pdf (default: the built-in one)\n"
+	  "  --tsv            print the table as tab-separated fields\n" },
 	{ "summary",
 	  "summary [-q] [--stdout] [--no-pdf] [--template FILE] DIR",
 	  "tabulate every compiled mission of DIR: index.csv, index.json, overview.pdf",

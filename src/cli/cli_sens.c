@@ -9,6 +9,7 @@
 #include <cjson/cJSON.h>
 
 #include "cli/cli.h"
+#include "cli/pipeline.h"
 #include "core/diag.h"
 #include "output/doc.h"
 #include "output/fsout.h"
@@ -25,6 +26,7 @@
 	"       aeroeval sensitivity --case-row RESULT.json\n"
 
 #define RESULT_MAX_BYTES (64u << 20) /* a result.json is a few hundred kB */
+#define SENS_LOCK_WAIT_S 30.0  /* a build writing the same mission, as build waits */
 
 /* Loads a mission; diagnostics on stderr.  0 or 2. */
 static int
@@ -37,18 +39,11 @@ load_mission(const char *path, const struct cli_env *env, struct mission_spec *s
 	return n_err > 0 ? 2 : 0;
 }
 
-static int
-write_out(const char *dir, const char *name, const void *data, size_t n)
-{
-	char path[4400], err[512];
-	snprintf(path, sizeof path, "%s/%s", dir, name);
-	if (fsout_write_atomic(path, data, n, err, sizeof err) != 0) {
-		fprintf(stderr, "aeroeval: error: %s\n", err);
-		return -1;
-	}
-	return 0;
-}
-
+/* The study of the mission at path: the table on stdout, then
+ * sensitivity.json and sensitivity.pdf into DIR/<name>/ beside the
+ * mission's build outputs, through the same output layer as `build`
+ * (pipeline_add()): the same refusals, one set swapped in whole, and a
+ * folder `build` still calls its own. */
 static int
 run_suite(const struct cli_env *env, const char *path, const char *dir_opt,
           const char *tpl_path, int tsv)
@@ -56,17 +51,10 @@ run_suite(const struct cli_env *env, const char *path, const char *dir_opt,
 	struct mission_spec spec;
 	if (load_mission(path, env, &spec) != 0)
 		return 2;
-	char dir[4200], name[256], err[512], date[11];
-	if (dir_opt != NULL)
-		snprintf(dir, sizeof dir, "%s", dir_opt);
-	else {
-		if (fsout_safe_name(path, name, sizeof name) != 0) {
-			fprintf(stderr, "%s: error: cannot name an output folder after "
-			    "this file\n", path);
-			return 2;
-		}
-		snprintf(dir, sizeof dir, "out/%s", name);
-	}
+	char dir[4096], name[256], err[512], date[11];
+	if (cli_out_dir("sensitivity", "-o", dir_opt != NULL ? dir_opt : "out", dir,
+	    sizeof dir, stderr) != 0 || pipeline_name_checked(path, name, sizeof name, stderr) != 0)
+		return 2;
 	if (fsout_resolve_date(spec.report.date, path, date, err, sizeof err) < 0) {
 		fprintf(stderr, "%s: error: %s\n", path, err);
 		return 2;
@@ -88,29 +76,27 @@ run_suite(const struct cli_env *env, const char *path, const char *dir_opt,
 	/* A file-system problem is exit 2, like bad input (PRODUCT.md §2);
 	 * only a failed render is an internal error. */
 	int rc = nominal_bad ? 1 : 0, bad = 0;
-	if (fsout_mkdirs(dir, err, sizeof err) != 0) {
+	char *json = sens_report_json(s, AEROEVAL_VERSION);
+	unsigned char *pdf = NULL;
+	size_t n = 0;
+	if (sens_report_pdf(s, tpl, date, &pdf, &n, err, sizeof err) != 0) {
+		fprintf(stderr, "aeroeval: internal error: %s\n", err);
+		bad = 3;
+	} else if (fsout_mkdirs(dir, err, sizeof err) != 0) {
 		fprintf(stderr, "aeroeval: error: %s\n", err);
 		bad = 2;
-	}
-	if (bad == 0) {
-		char *json = sens_report_json(s, AEROEVAL_VERSION);
-		if (write_out(dir, "sensitivity.json", json, strlen(json)) != 0)
+	} else {
+		struct pipeline_opts po = { dir, tpl, SENS_LOCK_WAIT_S };
+		struct pipeline_extra x[] = { { PIPELINE_SENS_JSON, json, strlen(json) },
+			{ PIPELINE_SENS_PDF, pdf, n } };
+		if (pipeline_add(&po, name, x, 2, stderr) != PIPE_FEASIBLE)
 			bad = 2;
-		free(json);
 	}
-	if (bad == 0) {
-		unsigned char *pdf = NULL;
-		size_t n = 0;
-		if (sens_report_pdf(s, tpl, date, &pdf, &n, err, sizeof err) != 0) {
-			fprintf(stderr, "aeroeval: internal error: %s\n", err);
-			bad = 3;
-		} else if (write_out(dir, "sensitivity.pdf", pdf, n) != 0)
-			bad = 2;
-		free(pdf);
-	}
+	free(json);
+	free(pdf);
 	if (bad == 0)
-		fprintf(stderr, "sensitivity: wrote %s/sensitivity.json and "
-		    "%s/sensitivity.pdf\n", dir, dir);
+		fprintf(stderr, "sensitivity: wrote %s/%s/%s and %s\n", dir, name,
+		    PIPELINE_SENS_JSON, PIPELINE_SENS_PDF);
 	else
 		rc = bad;
 	free(s);

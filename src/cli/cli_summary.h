@@ -2,7 +2,9 @@
  *
  * Both rebuild the design-space table (core/summary.h) from every
  * DIR/<name>/result.json and write DIR/index.csv and DIR/index.json
- * (output/index.h), each atomically and only when its bytes change.  The
+ * (output/index.h), each atomically and only when its bytes change, then
+ * the stamp DIR/.aeroeval-index-stamp that vouches for both and for the
+ * rows they were made from (cli_summary_stale()).  The
  * command also draws DIR/overview.pdf (output/index_pdf.h), which `build`
  * then keeps current too.  Builds of
  * several machines into one shared DIR take turns through a lock,
@@ -29,9 +31,13 @@ struct template;
  * result.json was unreadable. */
 int cli_summary_refresh(const char *dir, const struct template *tpl, FILE *err);
 
-/* True when DIR has no index.csv yet, or holds what a killed writer of
- * the table left (a temporary, the lock file): an up-to-date build then
- * refreshes the table, which removes them. */
+/* True when DIR's table is not what `summary` would write: index.csv or
+ * index.json missing, damaged or older than a row (the stamp
+ * DIR/.aeroeval-index-stamp, written last by every refresh, vouches for
+ * neither them nor the rows there are), or what a killed writer of the
+ * table left (a temporary, the lock file).  A build then refreshes the
+ * table, which mends all of it.  Reads the mission stamps, not every
+ * result.json: quick beside an up-to-date check. */
 int cli_summary_stale(const char *dir);
 
 #endif

@@ -15,6 +15,7 @@
 #include "cli/cli.h"
 #include "input/cohort.h"
 #include "output/doc.h"
+#include "output/fsfolder.h"
 #include "output/fsout.h"
 #include "input/mission_io.h"
 #include "input/model_io.h"
@@ -42,6 +43,21 @@ load_inputs(const char *path, struct cli_env *env, struct cohort *c)
 		return 2;
 	}
 	return 0;
+}
+
+/* A cohort with rejected rows (their error lines printed by load_inputs)
+ * still gets its report, over the rows that were read, but the run ends
+ * with exit status 2 like any other input error: a script must not take
+ * statistics over a part of its cohort for the whole.  Returns 2 or 0. */
+static int
+rows_rejected(const char *path, const struct cohort *c)
+{
+	if (c->n_errors == 0)
+		return 0;
+	fprintf(stderr, "%s: error: %zu problem%s in the cohort (above); the figures cover "
+	    "only the %zu rows read\n", path, c->n_errors, c->n_errors == 1 ? "" : "s",
+	    c->n_rows);
+	return 2;
 }
 
 /* Why a row was skipped, naming the fact when one was out of range. */
@@ -363,30 +379,56 @@ prune_to_given(cJSON *root, const struct mission_spec *s)
 	}
 }
 
+/* The lock of --missions DIR is waited for this long (another validate). */
+#define MISSIONS_LOCK_WAIT_S 30.0
+
+/* --missions DIR: the rows' missions as DIR/NN-NAME.json, DIR being a folder
+ * of their own replaced as a whole through the output layer (fsfolder.h),
+ * as `build` replaces a mission's folder: not "" or the root, no link at
+ * DIR, nothing in it but missions an earlier run wrote ("*.json"), one new
+ * set swapped in.  Returns 0, or -1 after one message. */
 static int
-write_missions(const char *dir, const struct cohort *c, const struct validate_report *v)
+write_missions(const char *dir_opt, const struct cohort *c, const struct validate_report *v)
 {
-	char err[512];
-	if (fsout_mkdirs(dir, err, sizeof err) != 0) {
-		fprintf(stderr, "error: %s\n", err);
+	char dir[4096], parent[4096], err[5000];
+	if (cli_out_dir("validate", "--missions", dir_opt, dir, sizeof dir, stderr) != 0)
+		return -1;
+	const char *slash = strrchr(dir, '/');
+	const char *base = slash != NULL ? slash + 1 : dir;
+	if (slash == NULL)
+		snprintf(parent, sizeof parent, ".");
+	else
+		snprintf(parent, sizeof parent, "%.*s", slash == dir ? 1 : (int)(slash - dir), dir);
+	if (fsout_mkdirs(parent, err, sizeof err) != 0) {
+		fprintf(stderr, "aeroeval: error: %s\n", err);
 		return -1;
 	}
-	for (size_t i = 0; i < v->n_rows; i++) {
+	static const char *const mission_files[] = { "*.json", NULL };
+	struct fsfolder f;
+	int bad = fsfolder_open(&f, parent, base, mission_files, 0, MISSIONS_LOCK_WAIT_S,
+	    err, sizeof err) != 0;
+	if (!bad) {
+		fsfolder_clean(&f, FSFOLDER_STALE_S);
+		bad = fsfolder_begin(&f, err, sizeof err) != 0;
+	}
+	for (size_t i = 0; !bad && i < v->n_rows; i++) {
 		if (v->rows[i].status == VALIDATE_ROW_SKIPPED)
 			continue;
-		char file[160], path[4400];
+		char file[160];
 		mission_file_name(i, c->rows[i].name, file, sizeof file);
-		snprintf(path, sizeof path, "%s/%s", dir, file);
 		cJSON *j = mission_io_to_json(&v->rows[i].spec);
 		prune_to_given(j, &v->rows[i].spec);
 		char *txt = cJSON_Print(j);
 		cJSON_Delete(j);
-		int rc = fsout_write_atomic(path, txt, strlen(txt), err, sizeof err);
+		bad = fsfolder_put(&f, file, txt, strlen(txt), 1, err, sizeof err) != 0;
 		free(txt);
-		if (rc != 0) {
-			fprintf(stderr, "error: %s\n", err);
-			return -1;
-		}
+	}
+	if (!bad)
+		bad = fsfolder_commit(&f, err, sizeof err) != 0;
+	fsfolder_close(&f);
+	if (bad) {
+		fprintf(stderr, "%s\n", err);
+		return -1;
 	}
 	return 0;
 }
@@ -467,6 +509,8 @@ cli_validate(int argc, char **argv)
 			rc = 2;
 		if (report != NULL && write_report(report, path, &c, &v, &env->model.cal) != 0)
 			rc = 2;
+		if (rc == 0)
+			rc = rows_rejected(path, &c);
 	}
 	validate_report_free(&v);
 	cohort_free(&c);
@@ -626,6 +670,8 @@ cli_calibrate(int argc, char **argv)
 			}
 			free(txt);
 		}
+		if (rc == 0)
+			rc = rows_rejected(path, &c);
 	}
 	calibrate_result_free(&cr);
 	cohort_free(&c);

@@ -40,12 +40,10 @@ is_help(const char *a)
 /* The shipped catalogue's snapshot, from snapshot.S. */
 extern const unsigned char aeroeval_snapshot[], aeroeval_snapshot_end[];
 
-int
-main(int argc, char **argv)
+/* Runs the command argv names; returns its exit status. */
+static int
+run(int argc, char **argv)
 {
-	cli_use_snapshot(aeroeval_snapshot,
-	                 (size_t)(aeroeval_snapshot_end - aeroeval_snapshot));
-	atexit(doc_global_cleanup); /* fontconfig/cairo caches: valgrind-clean exit */
 	if (argc < 2) {
 		cli_help_overview(stderr);
 		return 2;
@@ -73,4 +71,14 @@ main(int argc, char **argv)
 			return commands[i].run(argc - 1, argv + 1);
 	fprintf(stderr, "aeroeval: no command \"%s\"; 'aeroeval --help' lists them\n", cmd);
 	return 2;
+}
+
+int
+main(int argc, char **argv)
+{
+	cli_use_snapshot(aeroeval_snapshot,
+	                 (size_t)(aeroeval_snapshot_end - aeroeval_snapshot));
+	atexit(doc_global_cleanup); /* fontconfig/cairo caches: valgrind-clean exit */
+	/* Every command's output is checked once here, after its last write. */
+	return cli_close_stdout(run(argc, argv));
 }

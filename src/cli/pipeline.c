@@ -10,6 +10,7 @@
 #include "engine/engine.h"
 #include "output/fsfolder.h"
 #include "output/fsout.h"
+#include "output/index.h"
 #include "input/mission_io.h"
 #include "output/report.h"
 #include "study/sens.h"
@@ -19,12 +20,32 @@
 #include "util/sha256.h"
 #include "util/file.h"
 #include "util/strbuf.h"
+#include "util/text.h"
 #include "util/xalloc.h"
 
 int
 pipeline_name(const char *path, char *out, size_t n)
 {
 	return fsout_safe_name(path, out, n);
+}
+
+int
+pipeline_name_checked(const char *path, char *out, size_t n, FILE *err)
+{
+	int nr = pipeline_name(path, out, n);
+	if (nr == -2)
+		fprintf(err, "%s: error: the file name is too long to name an output "
+		    "folder (at most %d characters before \".json\")\n", path, FSOUT_NAME_MAX);
+	else if (nr == -3) {
+		char list[128];
+		text_join(index_file_names, list, sizeof list);
+		fprintf(err, "%s: error: the file name would name the output folder after one "
+		    "of the table's files beside it (%s); rename the mission\n", path, list);
+	}
+	else if (nr != 0)
+		fprintf(err, "%s: error: the file name cannot name an output folder "
+		    "(use letters, digits, '.', '_' and '-', not first a '.')\n", path);
+	return nr;
 }
 
 enum pipeline_status
@@ -70,15 +91,17 @@ pipeline_solve(const struct cli_env *env, const char *path,
 }
 
 /* The files of DIR/<name>/: the outputs in the order they are written,
- * then the stamp that vouches for them.  Not every set has every output:
- * no dossier without a template, no ArduPilot hand-off for a design that
- * is not buildable (output/ardupilot.h). */
+ * the stamp that vouches for them, then the sensitivity study's files
+ * (pipeline_add()).  Not every set has every output: no dossier without a
+ * template, no ArduPilot hand-off for a design that is not buildable
+ * (output/ardupilot.h). */
 enum pipeline_output { OUT_BOM, OUT_RESULT, OUT_DOSSIER, OUT_COMPONENTS, OUT_PARAMS,
 	N_OUTPUTS };
 static const char *const pipeline_files[] = { "bom.csv", "result.json",
-	"dossier.pdf", "vehicle_components.json", "ardupilot.param", PIPELINE_STAMP, NULL };
-_Static_assert(sizeof pipeline_files / sizeof pipeline_files[0] == N_OUTPUTS + 2,
-               "one name per output, the stamp, NULL");
+	"dossier.pdf", "vehicle_components.json", "ardupilot.param", PIPELINE_STAMP,
+	PIPELINE_SENS_JSON, PIPELINE_SENS_PDF, NULL };
+_Static_assert(sizeof pipeline_files / sizeof pipeline_files[0] == N_OUTPUTS + 4,
+               "one name per output, the stamp, the study's two, NULL");
 
 /* One set of outputs; data[i] is NULL for an output not in the set. */
 struct out_set {
@@ -145,45 +168,83 @@ pipeline_clean(const struct pipeline_opts *o, const char *name)
 	fsfolder_close(&f);
 }
 
-/* Writes the rendered outputs and the stamp as one new set of out_dir/name
- * (fsfolder.h); a file-system problem is PIPE_UNWRITTEN, with the folder
+/* True when file is the name of one of the n files of x. */
+static bool
+is_among(const char *file, const struct pipeline_extra *x, size_t n)
+{
+	for (size_t i = 0; i < n; i++)
+		if (strcmp(x[i].file, file) == 0)
+			return true;
+	return false;
+}
+
+/* Writes the n files of x as one new set of out_dir/name (fsfolder.h), each
+ * synced but the stamp (a stamp lost in a power cut costs a recompile
+ * only); with keep, the folder's other files are carried over as they
+ * are.  A file-system problem is one line on err and -1, with the folder
  * as it was. */
-static enum pipeline_status
-write_set(const struct pipeline_opts *o, const char *name, const char *fp,
-          int infeasible, const struct out_set *set, FILE *err)
+static int
+replace_set(const struct pipeline_opts *o, const char *name,
+            const struct pipeline_extra *x, size_t n, bool keep, FILE *err)
 {
 	struct fsfolder f;
-	char msg[5000], hex[N_OUTPUTS][SHA256_HEX_LEN];
-	bool present[N_OUTPUTS];
+	char msg[5000];
 	int bad = fsfolder_open(&f, o->out_dir, name, pipeline_files, 0, o->lock_wait_s,
 	    msg, sizeof msg) != 0;
 	if (!bad) {
 		fsfolder_clean(&f, FSFOLDER_STALE_S);
 		bad = fsfolder_begin(&f, msg, sizeof msg) != 0;
 	}
-	for (int i = 0; i < N_OUTPUTS; i++) {
-		present[i] = set->data[i] != NULL;
-		if (!present[i] || bad)
-			continue;
-		bad = fsfolder_put(&f, pipeline_files[i], set->data[i], set->len[i], 1, msg,
-		    sizeof msg) != 0;
-		sha256_hex(set->data[i], set->len[i], hex[i]);
-	}
-	if (!bad && fp != NULL && fp[0] != '\0') {
-		/* Not synced: a stamp lost in a power cut costs a recompile only. */
-		struct strbuf sb = STRBUF_INIT;
-		stamp_text(&sb, fp, infeasible, hex, present);
-		bad = fsfolder_put(&f, PIPELINE_STAMP, sb.data, sb.len, 0, msg, sizeof msg) != 0;
-		strbuf_free(&sb);
-	}
+	for (size_t i = 0; keep && !bad && pipeline_files[i] != NULL; i++)
+		if (!is_among(pipeline_files[i], x, n))
+			bad = fsfolder_carry(&f, pipeline_files[i], msg, sizeof msg) != 0;
+	for (size_t i = 0; !bad && i < n; i++)
+		bad = fsfolder_put(&f, x[i].file, x[i].data, x[i].n,
+		    strcmp(x[i].file, PIPELINE_STAMP) != 0, msg, sizeof msg) != 0;
 	if (!bad)
 		bad = fsfolder_commit(&f, msg, sizeof msg) != 0;
 	fsfolder_close(&f);
-	if (bad) {
+	if (bad)
 		fprintf(err, "%s\n", msg);
-		return PIPE_UNWRITTEN;
+	return bad ? -1 : 0;
+}
+
+/* Writes the rendered outputs and the stamp as one new set of out_dir/name;
+ * a file-system problem is PIPE_UNWRITTEN, with the folder as it was. */
+static enum pipeline_status
+write_set(const struct pipeline_opts *o, const char *name, const char *fp,
+          int infeasible, const struct out_set *set, FILE *err)
+{
+	char hex[N_OUTPUTS][SHA256_HEX_LEN];
+	bool present[N_OUTPUTS];
+	struct pipeline_extra x[N_OUTPUTS + 1];
+	size_t n = 0;
+	for (int i = 0; i < N_OUTPUTS; i++) {
+		present[i] = set->data[i] != NULL;
+		if (!present[i])
+			continue;
+		sha256_hex(set->data[i], set->len[i], hex[i]);
+		x[n++] = (struct pipeline_extra){ pipeline_files[i], set->data[i], set->len[i] };
 	}
+	struct strbuf sb = STRBUF_INIT;
+	if (fp != NULL && fp[0] != '\0') {
+		stamp_text(&sb, fp, infeasible, hex, present);
+		x[n++] = (struct pipeline_extra){ PIPELINE_STAMP, sb.data, sb.len };
+	}
+	int bad = replace_set(o, name, x, n, false, err);
+	strbuf_free(&sb);
+	if (bad)
+		return PIPE_UNWRITTEN;
 	return infeasible ? PIPE_INFEASIBLE : PIPE_FEASIBLE;
+}
+
+enum pipeline_status
+pipeline_add(const struct pipeline_opts *o, const char *name,
+             const struct pipeline_extra *x, size_t n_x, FILE *err)
+{
+	/* The folder's other files as they are: a build's outputs keep the
+	 * stamp that vouches for them, so the mission stays up to date. */
+	return replace_set(o, name, x, n_x, true, err) != 0 ? PIPE_UNWRITTEN : PIPE_FEASIBLE;
 }
 
 /* The dossier's trade-study section (report_section_fn). */
@@ -198,17 +259,8 @@ pipeline_build(const struct cli_env *env, const struct pipeline_opts *o,
                const char *path, const char *fp, FILE *err)
 {
 	char name[256], msg[512];
-	int nr = pipeline_name(path, name, sizeof name);
-	if (nr != 0) {
-		if (nr == -2)
-			fprintf(err, "%s: error: the file name is too long to name an output "
-			    "folder (at most %d characters before \".json\")\n", path,
-			    FSOUT_NAME_MAX);
-		else
-			fprintf(err, "%s: error: the file name cannot name an output folder "
-			    "(use letters, digits, '.', '_' and '-')\n", path);
+	if (pipeline_name_checked(path, name, sizeof name, err) != 0)
 		return PIPE_REJECTED;
-	}
 	struct solve_result *r = xmalloc(sizeof *r);
 	unsigned char *bytes = NULL;
 	size_t n_bytes = 0;

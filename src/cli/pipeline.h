@@ -35,6 +35,12 @@ enum pipeline_status {
 #define PIPELINE_STAMP ".aeroeval-stamp"
 #define PIPELINE_STAMP_MAGIC "aeroeval-stamp 3\n"
 
+/* The files `sensitivity` adds to DIR/<name>/ (pipeline_add()); a build
+ * recognises them as the program's, and drops them when it replaces the
+ * set (a new set is the outputs of the mission as it now is). */
+#define PIPELINE_SENS_JSON "sensitivity.json"
+#define PIPELINE_SENS_PDF "sensitivity.pdf"
+
 struct pipeline_opts {
 	const char *out_dir;          /* DIR of DIR/<name>/; must exist */
 	const struct template *tpl;   /* dossier template (NULL: no dossier) */
@@ -71,7 +77,29 @@ int pipeline_current(const struct pipeline_opts *o, const char *name, const char
 void pipeline_clean(const struct pipeline_opts *o, const char *name);
 
 /* The output folder name of a mission path; -1 when unsafe, -2 when longer
- * than FSOUT_NAME_MAX. */
+ * than FSOUT_NAME_MAX, -3 when the name is one of the table's files
+ * (fsout_safe_name()). */
 int pipeline_name(const char *path, char *out, size_t n);
+
+/* pipeline_name(), and on refusal one line on err saying why, "PATH:
+ * error: ...", before anything is solved or written. */
+int pipeline_name_checked(const char *path, char *out, size_t n, FILE *err);
+
+/* One file added to a mission's folder by pipeline_add(). */
+struct pipeline_extra {
+	const char *file;    /* PIPELINE_SENS_JSON or PIPELINE_SENS_PDF */
+	const void *data;
+	size_t n;
+};
+
+/* Adds (or replaces) the n_x files x in out_dir/name, keeping every other
+ * file of the folder as it is, by the same rules as pipeline_build(): the
+ * lock, the refusals (a link, a non-folder, a foreign file), one new set
+ * swapped in whole.  A build's outputs and their stamp stay valid (the
+ * mission stays up to date).  PIPE_FEASIBLE, or PIPE_UNWRITTEN after one
+ * line on err. */
+enum pipeline_status pipeline_add(const struct pipeline_opts *o, const char *name,
+                                  const struct pipeline_extra *x, size_t n_x,
+                                  FILE *err);
 
 #endif

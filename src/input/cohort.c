@@ -250,7 +250,8 @@ read_cell(struct cohort *c, const char *file, size_t line, const struct col *cl,
 
 /* Text cells end up in reports, JSON and file names: valid UTF-8 (a
  * Latin-1 "é" made `validate --json` print invalid JSON) and no control
- * character, except line breaks and tabs in the free-text columns.
+ * character (text_is_control(): bidirectional ones too, as mission files),
+ * except line breaks and tabs in the free-text columns.
  * Returns 0, or -1 after adding an error. */
 static int
 check_text(struct cohort *c, const char *file, size_t line, const struct col *cl,
@@ -266,9 +267,14 @@ check_text(struct cohort *c, const char *file, size_t line, const struct col *cl
 			          "offset %zu); save the file as UTF-8", ch, i);
 			return -1;
 		}
-		if ((ch < 0x20 || ch == 0x7f) && !(free_text && strchr("\t\r\n", ch) != NULL)) {
-			add_error(c, file, line, cl->name, "control character 0x%02x at offset %zu",
-			          ch, i);
+		unsigned long cp = text_utf8_cp(s + i, seq);
+		if (text_is_control(cp) && !(free_text && strchr("\t\r\n", ch) != NULL)) {
+			if (cp < 0x80)
+				add_error(c, file, line, cl->name, "control character 0x%02x at "
+				          "offset %zu", ch, i);
+			else
+				add_error(c, file, line, cl->name, "control character U+%04lX at "
+				          "offset %zu", cp, i);
 			return -1;
 		}
 		i += seq;

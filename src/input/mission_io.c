@@ -105,6 +105,27 @@ mio_date_ok(const char *s)
 	return d <= mdays[mo - 1] + (mo == 2 && mio_leap(y));
 }
 
+/* Text fields reach the dossier, result.json, the index and file
+ * metadata: no control character (an ESC or CR/LF once reached the
+ * dossier raw) and no bidirectional control (text_is_control()), as the
+ * cohort reader refuses them.  s is valid UTF-8 (checked before). */
+static bool
+mio_check_text(struct mio *m, const cJSON *item, const char *path)
+{
+	const char *s = item->valuestring;
+	size_t len = strlen(s);
+	for (size_t i = 0, seq; i < len; i += seq) {
+		seq = text_utf8_seq(s + i, len - i);
+		unsigned long cp = text_utf8_cp(s + i, seq);
+		if (text_is_control(cp)) {
+			json_in_report(m->ji, DIAG_CONTROL_CHAR, item, JSON_IN_VALUE, path,
+			               " (U+%04lX at offset %zu)", cp, i);
+			return false;
+		}
+	}
+	return true;
+}
+
 /* Check item against field f and store it in m->out.  Returns true when
  * the value was valid and stored. */
 static bool
@@ -191,7 +212,8 @@ mio_field(struct mio *m, const struct spec_field_info *f, const cJSON *item,
 	case SPEC_STR:
 	case SPEC_DATE: {
 		const char *s = item->valuestring;
-		if (!json_in_check_string(m->ji, item, path, SPEC_STR_MAX - 1, 0))
+		if (!json_in_check_string(m->ji, item, path, SPEC_STR_MAX - 1, 0)
+		    || !mio_check_text(m, item, path))
 			return false;
 		if (f->type == SPEC_DATE && s[0] != '\0' && !mio_date_ok(s)) {
 			diag_quote(s, strlen(s), 40, q, sizeof q);
@@ -270,6 +292,45 @@ mio_object(struct mio *m, const cJSON *obj, const char *group)
 
 /* ---- entry points -------------------------------------------------------- */
 
+static bool
+mio_blank(char c)
+{
+	return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
+
+/* The JSON values in b[0..n), counted up to just past cap without building
+ * anything: each '{' and '[', each number or literal, each string that is
+ * not a key (a key is a string followed by ':').  Exact for valid JSON; on
+ * malformed text only an estimate, which is all the cap needs. */
+static size_t
+mio_count_values(const char *b, size_t n, size_t cap)
+{
+	size_t k = 0;
+	for (size_t i = 0; i < n && k <= cap;) {
+		char c = b[i];
+		if (c == '"') {
+			for (i++; i < n && b[i] != '"'; i++)
+				i += b[i] == '\\';  /* an escape takes the next byte with it */
+			size_t t = ++i;
+			while (t < n && mio_blank(b[t]))
+				t++;
+			k += t >= n || b[t] != ':';
+		} else if (c == '{' || c == '[' || c == '-' || (c >= '0' && c <= '9')
+		    || c == 't' || c == 'f' || c == 'n') {
+			k++;
+			i++;
+			if (c == '{' || c == '[')
+				continue;
+			while (i < n && ((b[i] >= '0' && b[i] <= '9') || (b[i] >= 'a' && b[i] <= 'z')
+			    || (b[i] >= 'A' && b[i] <= 'Z') || b[i] == '.' || b[i] == '+' || b[i] == '-'))
+				i++;
+		} else {
+			i++;
+		}
+	}
+	return k;
+}
+
 int
 mission_io_parse(const char *file, const char *buf, size_t len,
                  const char *const *known_chemistries, struct diag *dg,
@@ -277,6 +338,16 @@ mission_io_parse(const char *file, const char *buf, size_t len,
 {
 	int errors_before = diag_n_errors(dg);
 	spec_defaults(out);
+	/* The tree and its positions cost about 140 bytes per value, so a
+	 * 3.8 MB array of zeros took 278 MB before any check could refuse it.
+	 * Counting first bounds the memory of any mission file. */
+	size_t n_values = mio_count_values(buf, len, MISSION_IO_MAX_VALUES);
+	if (n_values > MISSION_IO_MAX_VALUES) {
+		struct diag_loc loc = { file, 0, 0 };
+		diag_report(dg, DIAG_TOO_MANY, &loc, NULL, ": more than %d JSON values "
+		            "(a mission has about 100)", MISSION_IO_MAX_VALUES);
+		return diag_n_errors(dg) - errors_before;
+	}
 	struct json_in *ji = json_in_parse(file, buf, len, dg);
 	if (ji != NULL) {
 		struct mio m = { ji, known_chemistries, out };

@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include "output/fsout_int.h"
+#include "util/file.h"
 
 #define LOCK_POLL_MS 20  /* how often a waiting writer tries the lock again */
 #define MAX_TEMP_TRIES 100 /* temporary names tried before giving up */
@@ -149,13 +150,53 @@ is_old_temp(const char *s)
 	return d2 > 0 && t[d2] == '\0';
 }
 
+/* s matches the file list entry pat: the same name, or, for "*SUFFIX", a
+ * name ending in SUFFIX, not hidden, of the bytes fsout_safe_name() allows. */
+static int
+matches(const char *pat, const char *s)
+{
+	if (pat[0] != '*')
+		return strcmp(pat, s) == 0;
+	size_t n = strlen(s), k = strlen(pat + 1);
+	return s[0] != '.' && n > k && strcmp(s + n - k, pat + 1) == 0
+	    && strspn(s, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789._-") == n;
+}
+
 static int
 is_listed(const struct fsfolder *f, const char *s)
 {
 	for (size_t i = 0; f->files[i] != NULL; i++)
-		if (strcmp(f->files[i], s) == 0)
+		if (matches(f->files[i], s))
 			return 1;
 	return 0;
+}
+
+/* The kinds of folder a writer of NAME leaves beside DIR/NAME. */
+enum temp_kind {
+	TEMP_NEW,  /* ".NAME.tmp.PID.SEQ": a new set being written */
+	TEMP_OLD   /* ".NAME.old.PID.SEQ": the old set set aside by the two-rename
+	            * swap, the only copy of it until the new set is in */
+};
+
+static const char *const temp_tag[] = { "tmp", "old" };
+
+/* The pid of ".NAME.<tag>.PID.SEQ" for the kind's tag, or 0 when s is not
+ * such a name. */
+static long
+temp_owner(const struct fsfolder *f, const char *s, enum temp_kind kind)
+{
+	size_t nl = strlen(f->name);
+	if (s[0] != '.' || strncmp(s + 1, f->name, nl) != 0 || s[1 + nl] != '.'
+	    || strncmp(s + 2 + nl, temp_tag[kind], 3) != 0 || s[5 + nl] != '.')
+		return 0;
+	const char *p = s + 6 + nl;
+	size_t d1 = strspn(p, "0123456789");
+	if (d1 == 0 || d1 > 9 || p[d1] != '.')
+		return 0;
+	size_t d2 = strspn(p + d1 + 1, "0123456789");
+	if (d2 == 0 || p[d1 + 1 + d2] != '\0')
+		return 0;
+	return strtol(p, NULL, 10);
 }
 
 /* Opens DIR/NAME when it exists and checks that it holds only our files. */
@@ -178,15 +219,11 @@ inspect(struct fsfolder *f, char *err, size_t errlen)
 		return -1;
 	}
 	f->cur_fd = openat(f->dir_fd, f->name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
-	int dfd = f->cur_fd >= 0 ? dup(f->cur_fd) : -1;
-	DIR *d = dfd >= 0 ? fdopendir(dfd) : NULL;
+	DIR *d = f->cur_fd >= 0 ? file_dir_stream(f->cur_fd) : NULL;
 	if (d == NULL) {
 		fail(f, AT_FOLDER, NULL, err, errlen, "cannot read the folder: %s", why(errno));
-		if (dfd >= 0)
-			close(dfd);
 		return -1;
 	}
-	rewinddir(d);  /* the duplicate shares cur_fd's position */
 	int rc = 0;
 	struct dirent *e;
 	while (rc == 0 && (e = readdir(d)) != NULL) {
@@ -210,6 +247,41 @@ inspect(struct fsfolder *f, char *err, size_t errlen)
 	}
 	closedir(d);
 	return rc;
+}
+
+/* Puts back an old set that a writer killed between the two renames of
+ * swap_in() left set aside, where DIR/NAME is missing: with the lock held
+ * no live writer is swapping, so the aside is the only copy of the last
+ * whole set (the newest, should there be several).  The new set of that
+ * writer, whole or not, stays a temporary that fsfolder_clean() removes. */
+static void
+recover(struct fsfolder *f)
+{
+	struct stat st;
+	if (f->lock_fd < 0 || fstatat(f->dir_fd, f->name, &st, AT_SYMLINK_NOFOLLOW) == 0
+	    || errno != ENOENT)
+		return;
+	DIR *d = file_dir_stream(f->dir_fd);
+	if (d == NULL)
+		return;
+	char best[sizeof f->tmp] = "";
+	struct timespec t_best = { 0, 0 };
+	struct dirent *e;
+	while ((e = readdir(d)) != NULL) {
+		if (temp_owner(f, e->d_name, TEMP_OLD) <= 0
+		    || fstatat(f->dir_fd, e->d_name, &st, AT_SYMLINK_NOFOLLOW) != 0
+		    || !S_ISDIR(st.st_mode) || strlen(e->d_name) >= sizeof best)
+			continue;
+		/* The rename that set it aside changed its ctime. */
+		if (best[0] == '\0' || st.st_ctim.tv_sec > t_best.tv_sec
+		    || (st.st_ctim.tv_sec == t_best.tv_sec && st.st_ctim.tv_nsec > t_best.tv_nsec)) {
+			strcpy(best, e->d_name);
+			t_best = st.st_ctim;
+		}
+	}
+	closedir(d);
+	if (best[0] != '\0')
+		renameat(f->dir_fd, best, f->dir_fd, f->name);
 }
 
 int
@@ -236,6 +308,7 @@ fsfolder_open(struct fsfolder *f, const char *dir, const char *name,
 	int rc = lock_take(f, flags, wait_s, err, errlen);
 	if (rc != 0)
 		return rc;
+	recover(f);
 	return inspect(f, err, errlen);
 }
 
@@ -324,23 +397,6 @@ remove_tree(int parent_fd, const char *name)
 	return unlinkat(parent_fd, name, AT_REMOVEDIR);
 }
 
-/* The pid of ".NAME.tmp.PID.SEQ", or 0 when s is not such a name. */
-static long
-temp_owner(const struct fsfolder *f, const char *s)
-{
-	size_t nl = strlen(f->name);
-	if (s[0] != '.' || strncmp(s + 1, f->name, nl) != 0 || strncmp(s + 1 + nl, ".tmp.", 5) != 0)
-		return 0;
-	const char *p = s + 1 + nl + 5;
-	size_t d1 = strspn(p, "0123456789");
-	if (d1 == 0 || d1 > 9 || p[d1] != '.')
-		return 0;
-	size_t d2 = strspn(p + d1 + 1, "0123456789");
-	if (d2 == 0 || p[d1 + 1 + d2] != '\0')
-		return 0;
-	return strtol(p, NULL, 10);
-}
-
 /* True when process pid has ended: no such process, or a zombie (dead but
  * not reaped, as orphans stay where pid 1 does not reap them; a zombie
  * writes nothing more).  /proc is read only on Linux, where it exists. */
@@ -369,20 +425,20 @@ fsfolder_clean(struct fsfolder *f, double max_age_s)
 {
 	if (f->lock_fd < 0)
 		return 0;
-	int dfd = dup(f->dir_fd);
-	DIR *d = dfd >= 0 ? fdopendir(dfd) : NULL;
-	if (d == NULL) {
-		if (dfd >= 0)
-			close(dfd);
+	DIR *d = file_dir_stream(f->dir_fd);
+	if (d == NULL)
 		return 0;
-	}
-	rewinddir(d);
 	int n = 0;
 	time_t now = time(NULL);
+	struct stat st;
+	/* A set-aside old set goes only while DIR/NAME holds a set:
+	 * fsfolder_open() has put it back where DIR/NAME was missing. */
+	int have_set = fstatat(f->dir_fd, f->name, &st, AT_SYMLINK_NOFOLLOW) == 0;
 	struct dirent *e;
 	while ((e = readdir(d)) != NULL) {
-		long pid = temp_owner(f, e->d_name);
-		struct stat st;
+		long pid = temp_owner(f, e->d_name, TEMP_NEW);
+		if (pid == 0 && have_set)
+			pid = temp_owner(f, e->d_name, TEMP_OLD);
 		if (pid <= 0 || pid == (long)getpid() || strcmp(e->d_name, f->tmp) == 0
 		    || fstatat(f->dir_fd, e->d_name, &st, AT_SYMLINK_NOFOLLOW) != 0
 		    || !S_ISDIR(st.st_mode))
@@ -395,13 +451,15 @@ fsfolder_clean(struct fsfolder *f, double max_age_s)
 	return n;
 }
 
-/* A free ".NAME.tmp.PID.SEQ" made by mkdir (begin) or only named (aside). */
+/* A free ".NAME.tmp.PID.SEQ" made by mkdir (begin), or a free
+ * ".NAME.old.PID.SEQ" only named (the aside of the two-rename swap). */
 static int
 new_temp(struct fsfolder *f, char *out, size_t n, int make)
 {
 	struct stat st;
 	for (unsigned seq = 0; seq < MAX_TEMP_TRIES; seq++) {
-		snprintf(out, n, ".%s.tmp.%ld.%u", f->name, (long)getpid(), seq);
+		snprintf(out, n, ".%s.%s.%ld.%u", f->name, temp_tag[make ? TEMP_NEW : TEMP_OLD],
+		    (long)getpid(), seq);
 		if (make ? mkdirat(f->dir_fd, out, 0755) == 0
 		    : fstatat(f->dir_fd, out, &st, AT_SYMLINK_NOFOLLOW) != 0 && errno == ENOENT)
 			return 0;
@@ -467,6 +525,48 @@ fsfolder_put(struct fsfolder *f, const char *file, const void *data, size_t n,
 	return rc;
 }
 
+int
+fsfolder_carry(struct fsfolder *f, const char *file, char *err, size_t errlen)
+{
+	if (f->tmp_fd < 0) {
+		fail(f, IN_FOLDER, file, err, errlen, "no new set begun");
+		return -1;
+	}
+	int in = open_current(f, file);
+	if (in < 0)
+		return 0;  /* not in the current set: nothing to keep */
+	int inject = fsout_fault_take();
+	int fd = openat(f->tmp_fd, file, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+	int rc = fd >= 0 ? fchmod(fd, 0644) : -1;
+	if (rc == 0 && inject) {
+		errno = inject;
+		rc = -1;
+	}
+	char buf[1 << 16];
+	while (rc == 0) {
+		ssize_t k = read(in, buf, sizeof buf);
+		if (k < 0 && errno == EINTR)
+			continue;
+		if (k <= 0) {
+			rc = k < 0 ? -1 : 0;
+			break;
+		}
+		rc = fsout_write_all(fd, buf, (size_t)k);
+	}
+	if (rc == 0)
+		rc = fsync(fd);
+	int e = errno;
+	if (fd >= 0 && close(fd) != 0 && rc == 0) {
+		rc = -1;
+		e = errno;
+	}
+	close(in);
+	if (rc != 0)
+		fail(f, IN_FOLDER, file, err, errlen, "cannot write: %s%s", why(e),
+		    inject ? " (AEROEVAL_FAIL_WRITE)" : "");
+	return rc;
+}
+
 /* Ignores what a file system cannot do for a directory fsync. */
 static int
 sync_dir(int fd)
@@ -495,21 +595,38 @@ swap_in(struct fsfolder *f, char *err, size_t errlen)
 		return -1;
 	}
 #endif
+	/* Old set aside, new set in.  Between the two renames DIR/NAME is
+	 * missing and the aside holds the only copy of the old set, so the
+	 * signals that stop a build (^C, the SIGTERM batch.c sends its
+	 * workers, a hang-up) wait until the new set is in and the old one
+	 * gone.  SIGKILL cannot wait: the next writer puts the aside back
+	 * (recover()). */
+	sigset_t stop, old_mask;
+	sigemptyset(&stop);
+	sigaddset(&stop, SIGINT);
+	sigaddset(&stop, SIGTERM);
+	sigaddset(&stop, SIGHUP);
+	sigaddset(&stop, SIGQUIT);
+	sigprocmask(SIG_BLOCK, &stop, &old_mask);
 	char aside[sizeof f->tmp];
+	int rc = -1, e = 0;
 	if (new_temp(f, aside, sizeof aside, 0) != 0
 	    || renameat(f->dir_fd, f->name, f->dir_fd, aside) != 0) {
-		fail(f, AT_FOLDER, NULL, err, errlen, "cannot replace: %s", strerror(errno));
-		return -1;
+		e = errno;
+	} else {
+		fsout_test_delay();
+		if (renameat(f->dir_fd, f->tmp, f->dir_fd, f->name) != 0) {
+			e = errno;
+			renameat(f->dir_fd, aside, f->dir_fd, f->name);
+		} else {
+			remove_tree(f->dir_fd, aside);
+			rc = 0;
+		}
 	}
-	fsout_test_delay();
-	if (renameat(f->dir_fd, f->tmp, f->dir_fd, f->name) != 0) {
-		int e = errno;
-		renameat(f->dir_fd, aside, f->dir_fd, f->name);
+	sigprocmask(SIG_SETMASK, &old_mask, NULL);
+	if (rc != 0)
 		fail(f, AT_FOLDER, NULL, err, errlen, "cannot replace: %s", strerror(e));
-		return -1;
-	}
-	remove_tree(f->dir_fd, aside);
-	return 0;
+	return rc;
 }
 
 int

@@ -6,15 +6,20 @@
  * (renameat2 RENAME_EXCHANGE); then the old set is removed.  So after any
  * fault (kill -9 at any instant, a full disk, an I/O error) DIR/NAME holds
  * the whole old set or the whole new one.  Where the file system cannot
- * exchange, two renames do it (old aside, new in): a kill between them
- * leaves DIR/NAME missing, never mixed, and the next writer removes both
- * temporaries.
+ * exchange (NFS, some others), two renames do it: the old set aside to
+ * DIR/.NAME.old.PID.SEQ/, the new set in.  SIGINT, SIGTERM, SIGHUP and
+ * SIGQUIT wait until both are done; a kill -9 between them leaves DIR/NAME
+ * missing, never mixed, and the next writer of NAME (fsfolder_open())
+ * renames the set-aside old set back before anything else, so no clean-up
+ * ever deletes the only copy of a set.
  *
  * Nothing under DIR is followed: every file is opened relative to DIR's
  * descriptor with O_NOFOLLOW, and created with O_CREAT|O_EXCL.  A symbolic
  * link, FIFO or any other non-regular file at DIR/NAME or inside it, and a
  * file there that is not one of the caller's, is an error naming it (the
- * folder is replaced as a whole, so nothing foreign may live in it).  DIR
+ * folder is replaced as a whole, so nothing foreign may live in it).  The
+ * caller's files are a NULL-ended list of names; an entry "*SUFFIX" stands
+ * for every plain name ending in SUFFIX (a folder of missions: "*.json").  DIR
  * itself may be a link: it is the user's choice of place.
  *
  * Writers of one NAME exclude each other with flock(2) on DIR/.NAME.lock,
@@ -54,7 +59,8 @@ struct fsfolder {
 	const char *const *files;      /* the names DIR/NAME may hold, NULL-ended */
 };
 
-/* Opens DIR (which must exist), takes the lock of NAME and inspects
+/* Opens DIR (which must exist), takes the lock of NAME, puts back an old
+ * set a killed two-rename swap left aside (see above), and inspects
  * DIR/NAME: absent is fine; a real folder holding only regular files named
  * in files (or temporaries ".FILE.tmp.PID.SEQ" of an older aeroeval) is
  * fine; anything else is an error.  Without FSFOLDER_NOWAIT the lock is
@@ -81,7 +87,8 @@ int fsfolder_read(const struct fsfolder *f, const char *file, char *buf,
                   size_t cap, size_t *n);
 
 /* Removes the temporaries of NAME in DIR that a killed writer left behind:
- * folders ".NAME.tmp.PID.SEQ" whose process is gone or which are older
+ * folders ".NAME.tmp.PID.SEQ" (and, while DIR/NAME exists, set-aside old
+ * sets ".NAME.old.PID.SEQ") whose process is gone or which are older
  * than max_age_s.  Only with the lock held (else does nothing); only
  * folders, and only the regular files, links and FIFOs in them, are
  * removed.  Returns how many were removed. */
@@ -94,6 +101,11 @@ int fsfolder_begin(struct fsfolder *f, char *err, size_t errlen);
  * it durable (fsync) before returning. */
 int fsfolder_put(struct fsfolder *f, const char *file, const void *data,
                  size_t n, int sync, char *err, size_t errlen);
+
+/* Copies DIR/NAME/file of the current set into the new set unchanged and
+ * synced, for a writer that replaces some files of a folder and keeps the
+ * others; a file the current set lacks is no error (nothing is copied). */
+int fsfolder_carry(struct fsfolder *f, const char *file, char *err, size_t errlen);
 
 /* Swaps the new set in for DIR/NAME, removes the old set and syncs DIR.
  * On failure DIR/NAME is as it was. */

@@ -13,6 +13,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "output/index.h"
 #include "util/strbuf.h"
 #include "util/text.h"
 #include "util/xalloc.h"
@@ -118,6 +119,17 @@ fsout_write_atomic(const char *path, const void *data, size_t n,
 
 	if (*base == '\0') {
 		text_errf(err, errlen, "%s: not a file name", path);
+		goto done;
+	}
+	/* Only a regular file is replaced: rename(2) would put the output in
+	 * place of a link (not where it points), a device such as /dev/null
+	 * (as root) or a FIFO, and fail late on a folder. */
+	struct stat st;
+	if (lstat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+		text_errf(err, errlen, "%s: %s", path, S_ISLNK(st.st_mode)
+		    ? "is a symbolic link, which aeroeval never follows or replaces"
+		    : S_ISDIR(st.st_mode) ? "is a folder, not a file"
+		    : "is not a regular file; aeroeval replaces only its own files");
 		goto done;
 	}
 	if (slash == NULL)
@@ -349,7 +361,10 @@ fsout_safe_name(const char *mission_path, char *out, size_t n)
 		return -1;
 	if (len > FSOUT_NAME_MAX || len >= n)
 		return -2;
-	if ((len == 1 && base[0] == '.') || (len == 2 && base[0] == '.' && base[1] == '.'))
+	/* A hidden name is the program's (temporaries ".NAME.tmp.PID.SEQ",
+	 * locks, stamps) and a summary never lists it: refused, "." and ".."
+	 * with it. */
+	if (base[0] == '.')
 		return -1;
 	for (size_t i = 0; i < len; i++) {
 		char c = base[i];
@@ -358,6 +373,9 @@ fsout_safe_name(const char *mission_path, char *out, size_t n)
 		if (!ok)
 			return -1;
 	}
+	for (size_t i = 0; index_file_names[i] != NULL; i++)
+		if (strlen(index_file_names[i]) == len && memcmp(index_file_names[i], base, len) == 0)
+			return -3;
 	memcpy(out, base, len);
 	out[len] = '\0';
 	return 0;

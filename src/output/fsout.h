@@ -13,8 +13,9 @@
  * if the disk were full (ENOSPC), or with the error NAME of N:NAME (ENOSPC,
  * EIO, EDQUOT, EROFS, EFBIG), so tests can prove that the previous output
  * survives and no temporary file is left behind.  AEROEVAL_TEST_WRITE_DELAY_MS=T
- * makes fsfolder sleep T ms before each file and before the swap, so a test
- * can kill a build while it writes; AEROEVAL_TEST_NO_EXCHANGE (any value)
+ * makes fsfolder sleep T ms before each file, before the swap and between
+ * the two renames of the fallback swap, so a test can signal or kill a
+ * build at each of those moments; AEROEVAL_TEST_NO_EXCHANGE (any value)
  * makes fsfolder swap by two renames, as where renameat2 is missing.
  */
 #ifndef AEROEVAL_FSOUT_H
@@ -23,8 +24,10 @@
 #include <stddef.h>
 
 /* Writes data[0..n) to path so that, whatever happens, path holds either its
- * previous content or the complete new content, never a truncated mix:
- * a temporary file ".NAME.tmp.PID.SEQ" is created in the same directory
+ * previous content or the complete new content, never a truncated mix.
+ * Only a regular file is replaced: an existing link (never followed),
+ * folder, device or FIFO at path is an error before anything is written.
+ * A temporary file ".NAME.tmp.PID.SEQ" is created in the same directory
  * (O_EXCL, mode 0644), written, fsync'ed, renamed over path, and then the
  * directory is fsync'ed so the rename itself is durable.  On any failure the
  * temporary file is removed and path is untouched.  The directory must
@@ -61,11 +64,15 @@ int fsout_resolve_date(const char *report_date, const char *mission_path,
 
 /* The output folder name for a mission file: its base name (after the last
  * '/') without a final ".json".  Rejected (-1, out = "") when that is empty,
- * "." or "..", or contains a byte outside [A-Za-z0-9._-], so the name is
- * always one harmless path component and a write under DIR/<name>/ cannot
- * leave DIR; -2 (out = "") when it is longer than FSOUT_NAME_MAX bytes or
- * does not fit in n.  "../../etc.json" gives "etc"; the directories of the
- * mission path never reach the output path. */
+ * starts with '.' (hidden names are the program's: temporaries, locks,
+ * stamps; "." and ".." with them), or contains a byte outside
+ * [A-Za-z0-9._-], so the name is always one harmless path component and a
+ * write under DIR/<name>/ cannot leave DIR; -2 (out = "") when it is longer
+ * than FSOUT_NAME_MAX bytes or does not fit in n; -3 (out = "") when it is
+ * one of the files of the design-space table beside the mission folders
+ * (index_file_names: "index.csv.json" would name the folder index.csv).
+ * "../../etc.json" gives "etc"; the directories of the mission path never
+ * reach the output path. */
 int fsout_safe_name(const char *mission_path, char *out, size_t n);
 
 /* Test support only: restarts the AEROEVAL_FAIL_WRITE count at zero so a

@@ -9,6 +9,8 @@
 #include "util/strbuf.h"
 #include "util/text.h"
 
+const char *const index_file_names[] = { "index.csv", "index.json", "overview.pdf", NULL };
+
 /* ---- index.csv ------------------------------------------------------------- */
 
 static const char *const csv_header[] = {

@@ -33,6 +33,12 @@
 
 #include "core/summary.h"
 
+/* The files the design-space table puts beside the mission folders of an
+ * output folder (index.csv, index.json, overview.pdf), NULL-ended.  They
+ * are the program's: no mission may be named after one (fsout_safe_name()),
+ * and a build that reads missions from its own output folder skips them. */
+extern const char *const index_file_names[];
+
 /* index.csv of the rows.  Ownership: free(). */
 char *index_csv(const struct summary *s);
 

@@ -65,6 +65,20 @@ mission_time_s(const struct sizing_params *p)
 	return t;
 }
 
+/* The payload CG limit d_y (m): the distance from the centre to the nearest
+ * side of the rotor polygon, half the wheelbase times cos(pi / arms).  A
+ * coaxial layout has n/2 arms only when its rotors pair up on 3 or more
+ * arms; a layout that cannot (COAXIAL_LAYOUT says so) is judged flat, as
+ * the fix "coaxial_layout false" would build it: 3 coaxial rotors once
+ * gave one arm and a limit of -0.5 wheelbase. */
+static double
+cg_limit_m(const struct sizing_params *p)
+{
+	int pairs = p->n_rotors / 2;
+	int arms = p->coaxial && p->n_rotors % 2 == 0 && pairs >= 3 ? pairs : p->n_rotors;
+	return 0.5 * p->wheelbase_m * cos(M_PI / (double)arms);
+}
+
 bool
 feasibility_gate(const struct sizing_params *p, const char *run,
                  struct solve_result *r)
@@ -99,11 +113,11 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 		    m_to_in(limit));
 		ok = false;
 	}
-	double d_y = 0.5 * p->wheelbase_m * cos(M_PI / (double)arms);
+	double d_y = cg_limit_m(p);
 	if (p->cg_shift_m >= d_y) {
 		feasibility_fix(r, f1, "Mount the payload within %.3f m of the centre", d_y);
 		feasibility_fix(r, f2, "Increase max_diameter_m above %.3f m",
-		    2.0 * p->cg_shift_m / cos(M_PI / (double)arms));
+		    p->cg_shift_m * p->wheelbase_m / d_y);
 		fx[2] = NULL;
 		feasibility_violation(r, run, "feasibility", "CG_OFFSET", fx,
 		    "The payload CG offset of %.3f m lies outside the rotor polygon "
@@ -325,9 +339,7 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 		    o->arm_natural_frequency_hz, o->blade_pass_low_hz,
 		    o->blade_pass_frequency_hz);
 	}
-	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
-	double d_y = 0.5 * p->wheelbase_m * cos(M_PI / (double)arms);
-	feasibility_add_check(o, "Payload CG offset", "m", p->cg_shift_m, d_y, true);
+	feasibility_add_check(o, "Payload CG offset", "m", p->cg_shift_m, cg_limit_m(p), true);
 
 	/* Role-specific limits. */
 	if (p->downwash_cap_ms > 0.0) {

@@ -66,6 +66,22 @@ fail:
 	return -1;
 }
 
+DIR *
+file_dir_stream(int dir_fd)
+{
+	int fd = fcntl(dir_fd, F_DUPFD_CLOEXEC, 0);
+	DIR *d = fd >= 0 ? fdopendir(fd) : NULL;
+	if (d == NULL) {
+		int e = errno;
+		if (fd >= 0)
+			close(fd);
+		errno = e;
+		return NULL;
+	}
+	rewinddir(d);  /* the duplicate shares dir_fd's position */
+	return d;
+}
+
 int
 file_read(const char *path, size_t max_n, unsigned char **out,
                 size_t *n, char *err, size_t errlen)

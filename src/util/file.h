@@ -9,6 +9,7 @@
 #ifndef AEROEVAL_FILE_H
 #define AEROEVAL_FILE_H
 
+#include <dirent.h>
 #include <stddef.h>
 
 /* Reads the whole regular file at path.  On success *out is a heap buffer
@@ -24,6 +25,12 @@ int file_read(const char *path, size_t max_n, unsigned char **out,
  * an output folder is followed, fsfolder.h); path names it in messages. */
 int file_read_at(int dir_fd, const char *name, const char *path, size_t max_n,
                  unsigned char **out, size_t *n, char *err, size_t errlen);
+
+/* A directory stream over the folder open at dir_fd, from its first entry,
+ * on a duplicate of the descriptor: closedir() closes the duplicate, never
+ * dir_fd, which stays usable for the *at() calls on the entries.  NULL with
+ * errno set when it cannot be made. */
+DIR *file_dir_stream(int dir_fd);
 
 /* Finds the directory `name` (data, templates) that ships with the program:
  * next to the build tree (<program dir>/../name), installed

@@ -45,6 +45,27 @@ text_utf8_seq(const char *s, size_t left)
 	return n;
 }
 
+unsigned long
+text_utf8_cp(const char *s, size_t seq)
+{
+	const unsigned char *u = (const unsigned char *)s;
+	if (seq <= 1)
+		return u[0];
+	/* The lead byte keeps 7 - seq bits (5, 4 or 3), each continuation 6. */
+	unsigned long cp = u[0] & (0x7fu >> seq);
+	for (size_t i = 1; i < seq; i++)
+		cp = (cp << 6) | (u[i] & 0x3fu);
+	return cp;
+}
+
+int
+text_is_control(unsigned long cp)
+{
+	return cp < 0x20 || (cp >= 0x7f && cp <= 0x9f) || cp == 0x061c
+	    || cp == 0x200e || cp == 0x200f || (cp >= 0x202a && cp <= 0x202e)
+	    || (cp >= 0x2066 && cp <= 0x2069);
+}
+
 size_t
 text_bom(const char *b, size_t len)
 {

@@ -16,6 +16,17 @@
  * surrogates and code points above U+10FFFF are invalid). */
 size_t text_utf8_seq(const char *s, size_t left);
 
+/* The code point of the valid UTF-8 sequence of seq bytes at s (seq from
+ * text_utf8_seq(), > 0). */
+unsigned long text_utf8_cp(const char *s, size_t seq);
+
+/* True for a code point no text field may hold: the C0 controls
+ * (U+0000-U+001F: ESC, CR, LF, ...), DEL, the C1 controls (U+0080-U+009F)
+ * and the bidirectional controls (U+061C, U+200E, U+200F, U+202A-U+202E,
+ * U+2066-U+2069), which make a name read differently from what it holds
+ * (U+202E turns "exe.pdf" into "fdp.exe"). */
+int text_is_control(unsigned long cp);
+
 /* Length of a UTF-8 byte-order mark at the start of b[0..len), or 0. */
 size_t text_bom(const char *b, size_t len);
 
