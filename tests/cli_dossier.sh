@@ -1,6 +1,6 @@
 #!/bin/sh
 # cli_dossier.sh — every example's dossier read as its client reads it
-# (pdftotext), against its own result.json and bom.csv: one design of
+# (pdftotext), against its own result.json and bom_totals.csv: one design of
 # record on the cover (its MTOW is the bill of materials plus the payload,
 # its regulatory class follows that mass), nothing from the catalogue's
 # provenance notes, no price of an unknown part printed as zero, no number
@@ -47,11 +47,10 @@ first_status() {
 	grep -m 1 -E '^ *(FEASIBLE|NOT FEASIBLE AS BUILT|NOT BUILDABLE)$' "$1" | sed 's/^ *//'
 }
 
-# The bill of materials' mass in kg, parts plus payload, from bom.csv: the
-# total line carries the parts, the payload line the payload (total_mass_g
-# is the fourth field from the end, whatever the quoted descriptions hold).
+# The bill of materials' mass in kg, parts plus payload, from
+# bom_totals.csv: its one record's parts_mass_g and payload_mass_g.
 bom_plus_payload_kg() {
-	awk -F, '$3 == "total" || $3 == "payload" { g += $(NF - 3) } END { printf "%.4f\n", g / 1000 }' "$1"
+	awk -F, 'NR == 2 { printf "%.4f\n", ($1 + $2) / 1000 }' "$1"
 }
 
 for f in examples/*.json; do
@@ -69,7 +68,7 @@ for f in examples/*.json; do
 	# A design the parts do not close has no BOM aircraft: its cover mass
 	# is the continuous design's, which result.json's top level names.
 	cover=$(awk '/^Takeoff mass \(MTOW\)/ { print $4; exit }' "$d/cover.txt")
-	bom=$(bom_plus_payload_kg "$d/bom.csv")
+	bom=$(bom_plus_payload_kg "$d/bom_totals.csv")
 	rec=$(sed -n 's/^  "takeoff_mass_kg": *\([0-9.e+-]*\),$/\1/p' "$d/result.json" | head -n 1)
 	grep -q '"buildable": false' "$d/result.json" && bom=$rec
 	if [ -n "$cover" ] && awk -v c="$cover" -v b="$bom" -v r="$rec" \
