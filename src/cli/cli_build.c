@@ -251,32 +251,21 @@ base_fingerprint(struct build *b, const char *tpl_path)
 	hex_final(&c, b->base_fp);
 }
 
-/* The mission's fingerprint: the base, its bytes (all of them, streamed)
- * and, unless SOURCE_DATE_EPOCH is set, its mtime (the dossier date falls
- * back to it; with SOURCE_DATE_EPOCH set it never does, so a copy or a
- * checkout that changes only the mtime stays up to date).  Returns -1 when
- * unreadable. */
+/* The mission's fingerprint: the base and its bytes (all of them,
+ * streamed); not its file times, which no output depends on (the dossier
+ * date is report.date, SOURCE_DATE_EPOCH or none: fsout_resolve_date), so a
+ * copy or a checkout that changes only the mtime stays up to date.
+ * Returns -1 when unreadable. */
 static int
 mission_fingerprint(const struct build *b, size_t i, char out[SHA256_HEX_LEN])
 {
 	const char *path = b->missions.v[i];
 	char why[256];
-	struct stat st;
-	if (stat(path, &st) != 0)
-		return -1;
 	struct sha256_ctx c;
-	char mtime[64];
-	const char *epoch = getenv("SOURCE_DATE_EPOCH");
-	if (epoch != NULL && *epoch != '\0')
-		snprintf(mtime, sizeof mtime, "-");
-	else
-		snprintf(mtime, sizeof mtime, "%lld.%09ld", (long long)st.st_mtim.tv_sec,
-		    (long)st.st_mtim.tv_nsec);
 	sha256_init(&c);
 	hash_str(&c, b->base_fp);
 	if (cli_hash_file(&c, path, why, sizeof why) != 0)
 		return -1;
-	hash_str(&c, mtime);
 	hex_final(&c, out);
 	return 0;
 }

@@ -67,7 +67,7 @@ run_suite(const struct cli_env *env, const char *path, const char *dir_opt,
 		}
 		snprintf(dir, sizeof dir, "out/%s", name);
 	}
-	if (fsout_resolve_date(spec.report.date, path, date, err, sizeof err) < 0) {
+	if (fsout_resolve_date(spec.report.date, date, err, sizeof err) < 0) {
 		fprintf(stderr, "%s: error: %s\n", path, err);
 		return 2;
 	}

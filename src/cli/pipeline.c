@@ -43,7 +43,7 @@ pipeline_solve(const struct cli_env *env, const char *path,
 		return PIPE_REJECTED;
 	}
 	struct mission_spec spec;
-	int n_err = mission_io_parse(path, (const char *)buf, n,
+	int n_err = mission_io_parse_mission(path, (const char *)buf, n,
 	    env->model.chem_names, dg, &spec);
 	diag_flush(dg);
 	diag_free(dg);
@@ -233,11 +233,10 @@ pipeline_build(const struct cli_env *env, const struct pipeline_opts *o,
 		goto written;
 	}
 	if (o->tpl != NULL) {
-		/* The dossier date: report.date, else SOURCE_DATE_EPOCH, else the
-		 * mission file's mtime — never the wall clock. */
+		/* The dossier date: report.date, else SOURCE_DATE_EPOCH, else
+		 * none ("undated") — never a file time or the wall clock. */
 		char date[16];
-		if (fsout_resolve_date(r->mission.report.date, path, date, msg,
-		    sizeof msg) < 0) {
+		if (fsout_resolve_date(r->mission.report.date, date, msg, sizeof msg) < 0) {
 			fprintf(err, "%s: error: %s\n", path, msg);
 			st = PIPE_REJECTED;
 			goto written;

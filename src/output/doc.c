@@ -586,7 +586,7 @@ set_info(struct doc *d, const struct doc_info *info)
 	if (info->subject != NULL)
 		HPDF_SetInfoAttr(d->pdf, HPDF_INFO_SUBJECT, info->subject);
 	HPDF_SetInfoAttr(d->pdf, HPDF_INFO_CREATOR, "aeroeval " AEROEVAL_VERSION);
-	if (info->date != NULL) {
+	if (info->date != NULL && info->date[0] != '\0') {
 		HPDF_Date date;
 		if (parse_date(info->date, &date) != 0) {
 			doc_fail(d, "bad document date \"%s\" (want YYYY-MM-DD)", info->date);

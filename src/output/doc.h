@@ -77,7 +77,7 @@ struct doc_info {
 	const char *author;   /* PDF /Author */
 	const char *subject;  /* PDF /Subject */
 	const char *date;     /* "YYYY-MM-DD" -> /CreationDate and /ModDate;
-	                         NULL: no date (never the clock) */
+	                         NULL or "": no date (never the clock) */
 };
 
 enum doc_align {

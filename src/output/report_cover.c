@@ -237,6 +237,14 @@ cover_key_figures(struct rep *rp)
 	strbuf_free(&s2);
 }
 
+/* The issue date, or "undated" when the mission gives none and
+ * SOURCE_DATE_EPOCH is unset (fsout_resolve_date). */
+static const char *
+report_date_text(const struct rep *rp)
+{
+	return rp->in->date != NULL && rp->in->date[0] != '\0' ? rp->in->date : "undated";
+}
+
 /* The document number: from the input's fingerprint, so that the same
  * mission file always carries the same number ("AE-4FBB-C60E"). */
 static const char *
@@ -279,7 +287,7 @@ report_sec_cover(struct rep *rp, int first)
 		"Project", m->report.project_id,
 		"Document number", doc_number(rp, b1, sizeof b1),
 		"Revision", m->report.revision,
-		"Date", rp->in->date,
+		"Date", report_date_text(rp),
 		"Prepared by", m->report.author,
 		"Mission", report_sfmt(&sb2, "%s (%s role, %d rotors, %s" NBSP "%s payload); the file %s is "
 		                       "attached to this PDF", report_or_absent(mname), report_role_name(r),
@@ -318,7 +326,7 @@ report_sec_control(struct rep *rp)
 		"Document number", doc_number(rp, num, sizeof num),
 		"Title", m->report.title[0] != '\0' ? m->report.title : "Design dossier",
 		"Revision", m->report.revision,
-		"Issue date", rp->in->date,
+		"Issue date", report_date_text(rp),
 		"Prepared by", signatory(m->report.author),
 		"Checked by", signatory(m->report.checked_by),
 		"Approved by", signatory(m->report.approved_by),
@@ -334,7 +342,7 @@ report_sec_control(struct rep *rp)
 	struct doc_table t;
 	doc_table_init(&t, hcols, 4);
 	doc_table_cell(&t, DOC_CELL_NORMAL, "%s", report_or_absent(m->report.revision));
-	doc_table_cell(&t, DOC_CELL_NORMAL, "%s", report_or_absent(rp->in->date));
+	doc_table_cell(&t, DOC_CELL_NORMAL, "%s", report_date_text(rp));
 	doc_table_cell(&t, DOC_CELL_NORMAL, "%s", report_sfmt(&sb, "Issued: compiled by aeroeval %s from %s "
 	               "(input SHA-256 %.12s…)", report_or_absent(rp->in->engine_version),
 	               report_or_absent(rp->in->mission_file_name), r->input_sha256));
