@@ -64,6 +64,18 @@ for f in examples/*.json; do
 	check "dossier_${n}_text_extracts_without_tounicode_warning" \
 		sh -c "[ ! -s '$d/warn.txt' ] && ! pdftotext '$pdf' - 2>&1 >/dev/null | grep -q ."
 
+	# PDF/A-3b as poppler reads it (tests/test_pdfa.c checks the objects):
+	# the XMP stream declares it, every font is embedded, no encryption,
+	# the mission is attached.
+	check "dossier_${n}_declares_pdfa_3b" sh -c "pdfinfo -meta '$pdf' \
+		| grep -q '<pdfaid:part>3</pdfaid:part>' && pdfinfo -meta '$pdf' \
+		| grep -q '<pdfaid:conformance>B</pdfaid:conformance>'"
+	check "dossier_${n}_has_metadata_and_no_encryption" sh -c "pdfinfo '$pdf' \
+		| grep -q '^Metadata Stream: *yes' && pdfinfo '$pdf' | grep -q '^Encrypted: *no'"
+	check "dossier_${n}_embeds_every_font" sh -c "pdffonts '$pdf' | awk 'NR > 2 { n++; \
+		if (\$(NF - 4) != \"yes\") bad++ } END { exit !(n > 0 && bad == 0) }'"
+	check "dossier_${n}_attaches_its_mission" sh -c "pdfdetach -list '$pdf' | grep -q '$n.json'"
+
 	# One design of record: the cover's MTOW is the BOM plus the payload.
 	# A design the parts do not close has no BOM aircraft: its cover mass
 	# is the continuous design's, which result.json's top level names.

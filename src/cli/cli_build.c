@@ -208,10 +208,10 @@ hex_final(struct sha256_ctx *c, char out[SHA256_HEX_LEN])
 /* Everything a mission's outputs depend on besides the mission file: the
  * engine (its version and the program file's identity, so a rebuilt
  * compiler recompiles), the catalogue, the reference tables, the template
- * with its fonts and logo, and SOURCE_DATE_EPOCH (it can set the dossier
- * date).  The data and the template are hashed by content (a checkout
- * that only touches them stays up to date), the program and the fonts by
- * identity (hash_file_identity()). */
+ * with its fonts, logo and ICC profile, and SOURCE_DATE_EPOCH (it can set
+ * the dossier date).  The data, the template and the profile are hashed by
+ * content (a checkout that only touches them stays up to date), the
+ * program and the fonts by identity (hash_file_identity()). */
 static void
 base_fingerprint(struct build *b, const char *tpl_path)
 {
@@ -246,6 +246,8 @@ base_fingerprint(struct build *b, const char *tpl_path)
 	hash_file_identity(&c, b->tpl->font_mono);
 	if (b->tpl->logo[0] != '\0')
 		hash_file(&c, b->tpl->logo);
+	if (b->tpl->icc_profile[0] != '\0')
+		hash_file(&c, b->tpl->icc_profile);   /* the PDF/A output intent */
 	const char *epoch = getenv("SOURCE_DATE_EPOCH");
 	hash_str(&c, epoch ? epoch : "");
 	hex_final(&c, b->base_fp);

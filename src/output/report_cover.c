@@ -247,10 +247,10 @@ report_date_text(const struct rep *rp)
 
 /* The document number: from the input's fingerprint, so that the same
  * mission file always carries the same number ("AE-4FBB-C60E"). */
-static const char *
-doc_number(const struct rep *rp, char *buf, size_t n)
+const char *
+report_doc_number(const struct solve_result *r, char *buf, size_t n)
 {
-	const char *h = rp->r->input_sha256;
+	const char *h = r->input_sha256;
 	char u[9];
 	for (int i = 0; i < 8; i++) {
 		char c = h[0] != '\0' && (int)strlen(h) > i ? h[i] : '0';
@@ -285,7 +285,7 @@ report_sec_cover(struct rep *rp, int first)
 	const char *kv[] = {
 		"Client", m->report.client,
 		"Project", m->report.project_id,
-		"Document number", doc_number(rp, b1, sizeof b1),
+		"Document number", report_doc_number(rp->r, b1, sizeof b1),
 		"Revision", m->report.revision,
 		"Date", report_date_text(rp),
 		"Prepared by", m->report.author,
@@ -323,7 +323,7 @@ report_sec_control(struct rep *rp)
 	doc_new_page(rp->d);
 	report_subheading(rp, "Document control", REP_KEEP_PT);
 	const char *kv[] = {
-		"Document number", doc_number(rp, num, sizeof num),
+		"Document number", report_doc_number(rp->r, num, sizeof num),
 		"Title", m->report.title[0] != '\0' ? m->report.title : "Design dossier",
 		"Revision", m->report.revision,
 		"Issue date", report_date_text(rp),
