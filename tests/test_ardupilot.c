@@ -152,11 +152,12 @@ bom_line(const struct solve_result *r, const char *category)
 
 /* ---- vehicle_components.json -------------------------------------------------- */
 
+/* The schema's required fields and types (the list above) in a
+ * vehicle_components.json text. */
 static void
-components_should_hold_every_field_the_schema_requires(void **state)
+assert_schema_shape(const char *json)
 {
-	struct fixture *fx = *state;
-	cJSON *root = cJSON_Parse(fx->components);
+	cJSON *root = cJSON_Parse(json);
 	assert_non_null(root);
 	assert_required(root, top_required);
 	assert_only(root, top_allowed);
@@ -184,7 +185,22 @@ components_should_hold_every_field_the_schema_requires(void **state)
 	assert_true(cJSON_IsNumber(get(frame, "TOW max Kg")));
 	assert_true(cJSON_IsNumber(get(get(get(comps, "Propellers"), "Specifications"),
 	    "Diameter_inches")));
+	/* connectionComponent: FC Connection {Type, Protocol} strings. */
+	cJSON_ArrayForEach(c, comps) {
+		const cJSON *fc = cJSON_GetObjectItemCaseSensitive(c, "FC Connection");
+		if (fc != NULL) {
+			assert_true(cJSON_IsString(get(fc, "Type")));
+			assert_true(cJSON_IsString(get(fc, "Protocol")));
+		}
+	}
 	cJSON_Delete(root);
+}
+
+static void
+components_should_hold_every_field_the_schema_requires(void **state)
+{
+	struct fixture *fx = *state;
+	assert_schema_shape(fx->components);
 }
 
 static void
@@ -764,6 +780,7 @@ every_example_handoff_should_load_in_full_in_every_tool(void **state)
 		/* BATT_MONITOR is the bought monitor's, and only then written. */
 		assert_int_equal(index_of(&want, "BATT_MONITOR") >= 0, d.batt_monitor >= 0);
 		assert_int_equal(d.batt_monitor >= 0, d.line[AP_ROLE_MONITOR] >= 0);
+		assert_schema_shape(comps);
 		assert_components_are_the_bill(r, comps, fx->env.cat);
 		free(params);
 		free(qgc);
