@@ -319,8 +319,8 @@ derive_bom(const struct solve_result *r, const struct catalog *cat,
 		d->line[AP_ROLE_ESC] = d->line[AP_ROLE_MOTOR];
 	int m = d->line[AP_ROLE_MONITOR];
 	if (m >= 0)
-		snprintf(d->monitor_part, sizeof d->monitor_part, "%s %s (bill of materials item "
-		    "%d)", r->bom[m].manufacturer, r->bom[m].part_number, r->bom[m].item);
+		snprintf(d->monitor_part, sizeof d->monitor_part, "%s %s, bill of materials item "
+		    "%d", r->bom[m].manufacturer, r->bom[m].part_number, r->bom[m].item);
 }
 
 /* The notch at the hover rotor speed, within what the gyro loop allows.
@@ -784,9 +784,9 @@ battery_params(struct params *ps, const struct ardupilot_design *d)
 	int n = d->cells;
 	section(ps, "Battery monitor");
 	if (d->batt_monitor >= 0)
-		set(ps, "BATT_MONITOR", d->batt_monitor, MAV_INT8, true, "%s: the %s the bill of "
-		    "materials buys; the BATT_ parameters below exist once it is set",
-		    d->link[AP_ROLE_MONITOR].protocol, d->monitor_part);
+		set(ps, "BATT_MONITOR", d->batt_monitor, MAV_INT8, true, "%s, the power module "
+		    "the bill of materials buys (%s); the BATT_ parameters below exist once it "
+		    "is set", d->link[AP_ROLE_MONITOR].protocol, d->monitor_part);
 	set(ps, "BATT_CAPACITY", d->capacity_mah, MAV_INT32, false, "pack of record: %dS %d mAh",
 	    n, d->capacity_mah);
 	if (d->reserve_mah > 0.0)
