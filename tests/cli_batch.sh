@@ -62,15 +62,26 @@ sed 's/"t_hover_s": [0-9]*/"t_hover_s": 95/' examples/lidar_mapping_quad.json >"
 summary "$T/m.err" | grep -q "^build: 1 compiled (0 infeasible), $((n_ex - 1)) up to date" \
 	&& grep -q "lidar_mapping_quad.json: compiled" "$T/m.err"
 check $? "changed_mission_alone_rebuilds"
-# The mtime can set the dossier date, unless SOURCE_DATE_EPOCH does.
-touch -d 2001-01-01 "$T/ex/lidar_mapping_quad.json"
-"$AE" build -o "$T/m" "$T/ex" 2>"$T/m.err"
-summary "$T/m.err" | grep -q "^build: 1 compiled"; check $? "touched_mission_rebuilds"
-SOURCE_DATE_EPOCH=1700000000 "$AE" build -q -o "$T/sde" "$T/ex" 2>/dev/null
-touch -d 2002-02-02 "$T/ex/lidar_mapping_quad.json"
-SOURCE_DATE_EPOCH=1700000000 "$AE" build -o "$T/sde" "$T/ex" 2>"$T/sde.err"
-summary "$T/sde.err" | grep -q "^build: 0 compiled"
-check $? "touched_mission_stays_up_to_date_with_source_date_epoch"
+# No output depends on a file's times (the dossier date is report.date,
+# SOURCE_DATE_EPOCH or "undated"): a touched mission stays up to date, and
+# rebuilt by force it gives the same bytes, every output and the stamp,
+# with report.date and without (the SAR quad's removed: "undated").
+unset SOURCE_DATE_EPOCH
+mkdir -p "$T/tx"; cp examples/*.json "$T/tx/"
+sed 's/"date": "[0-9-]*"/"date": ""/' examples/sar_imaging_quad.json >"$T/tx/undated.json"
+"$AE" build -q -o "$T/t1" "$T/tx" 2>/dev/null
+cp -R "$T/t1" "$T/t1.before"
+touch -d 2001-01-01 "$T/tx/"*.json
+"$AE" build -o "$T/t1" "$T/tx" 2>"$T/t1.err"
+summary "$T/t1.err" | grep -q "^build: 0 compiled"; check $? "touched_missions_stay_up_to_date"
+"$AE" build -q --force -o "$T/t1" "$T/tx" 2>/dev/null
+diff -r "$T/t1.before" "$T/t1" >/dev/null; check $? "touched_missions_give_the_same_bytes"
+touch -d 2031-07-07 "$T/tx/"*.json
+"$AE" build -q -o "$T/t2" "$T/tx" 2>/dev/null
+diff -r "$T/t1.before" "$T/t2" >/dev/null; check $? "missions_of_any_file_time_give_the_same_bytes"
+pdftotext -f 1 -l 1 "$T/t2/undated/dossier.pdf" - 2>/dev/null | grep -q "undated" \
+	&& ! pdfinfo "$T/t2/undated/dossier.pdf" 2>/dev/null | grep -q "^CreationDate"
+check $? "mission_without_a_date_is_undated"
 
 # rebuilds_after_change NAME OPTION ARG FILE: build twice with OPTION ARG (the
 # second run is up to date), change FILE, and expect every mission rebuilt.

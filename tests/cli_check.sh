@@ -77,6 +77,26 @@ else
 	notok check_reports_every_file "exit $rc"
 fi
 
+# A mission without its essentials is refused by check and by solve, which
+# prints nothing (tests/bad/empty_object.json is `check {}`); one complete
+# through requirements{} passes.
+printf '{}\n' >empty.json
+run solve empty.json
+if [ "$rc" -eq 2 ] && [ ! -s out.txt ] && grep -q '^empty.json:1:1: error: payload_kg: missing field' err.txt
+then
+	ok solve_without_essentials_is_refused
+else
+	notok solve_without_essentials_is_refused "exit $rc"
+fi
+printf '{"requirements": {"payload_preset": "survey_lidar", "transport": "car_trunk"}, "t_forward_s": 600}\n' \
+	>req.json
+run check req.json
+if [ "$rc" -eq 0 ] && [ ! -s err.txt ]; then
+	ok check_requirements_first_mission_passes
+else
+	notok check_requirements_first_mission_passes "exit $rc"
+fi
+
 run check no_such_mission.json
 if [ "$rc" -eq 2 ] && [ "$(cat err.txt)" = \
    "no_such_mission.json: error: cannot read file: No such file or directory" ]; then

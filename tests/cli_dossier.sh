@@ -1,6 +1,6 @@
 #!/bin/sh
 # cli_dossier.sh — every example's dossier read as its client reads it
-# (pdftotext), against its own result.json and bom.csv: one design of
+# (pdftotext), against its own result.json and bom_totals.csv: one design of
 # record on the cover (its MTOW is the bill of materials plus the payload,
 # its regulatory class follows that mass), nothing from the catalogue's
 # provenance notes, no price of an unknown part printed as zero, no number
@@ -47,11 +47,10 @@ first_status() {
 	grep -m 1 -E '^ *(FEASIBLE|NOT FEASIBLE AS BUILT|NOT BUILDABLE)$' "$1" | sed 's/^ *//'
 }
 
-# The bill of materials' mass in kg, parts plus payload, from bom.csv: the
-# total line carries the parts, the payload line the payload (total_mass_g
-# is the fourth field from the end, whatever the quoted descriptions hold).
+# The bill of materials' mass in kg, parts plus payload, from
+# bom_totals.csv: its one record's parts_mass_g and payload_mass_g.
 bom_plus_payload_kg() {
-	awk -F, '$3 == "total" || $3 == "payload" { g += $(NF - 3) } END { printf "%.4f\n", g / 1000 }' "$1"
+	awk -F, 'NR == 2 { printf "%.4f\n", ($1 + $2) / 1000 }' "$1"
 }
 
 for f in examples/*.json; do
@@ -65,11 +64,23 @@ for f in examples/*.json; do
 	check "dossier_${n}_text_extracts_without_tounicode_warning" \
 		sh -c "[ ! -s '$d/warn.txt' ] && ! pdftotext '$pdf' - 2>&1 >/dev/null | grep -q ."
 
+	# PDF/A-3b as poppler reads it (tests/test_pdfa.c checks the objects):
+	# the XMP stream declares it, every font is embedded, no encryption,
+	# the mission is attached.
+	check "dossier_${n}_declares_pdfa_3b" sh -c "pdfinfo -meta '$pdf' \
+		| grep -q '<pdfaid:part>3</pdfaid:part>' && pdfinfo -meta '$pdf' \
+		| grep -q '<pdfaid:conformance>B</pdfaid:conformance>'"
+	check "dossier_${n}_has_metadata_and_no_encryption" sh -c "pdfinfo '$pdf' \
+		| grep -q '^Metadata Stream: *yes' && pdfinfo '$pdf' | grep -q '^Encrypted: *no'"
+	check "dossier_${n}_embeds_every_font" sh -c "pdffonts '$pdf' | awk 'NR > 2 { n++; \
+		if (\$(NF - 4) != \"yes\") bad++ } END { exit !(n > 0 && bad == 0) }'"
+	check "dossier_${n}_attaches_its_mission" sh -c "pdfdetach -list '$pdf' | grep -q '$n.json'"
+
 	# One design of record: the cover's MTOW is the BOM plus the payload.
 	# A design the parts do not close has no BOM aircraft: its cover mass
 	# is the continuous design's, which result.json's top level names.
 	cover=$(awk '/^Takeoff mass \(MTOW\)/ { print $4; exit }' "$d/cover.txt")
-	bom=$(bom_plus_payload_kg "$d/bom.csv")
+	bom=$(bom_plus_payload_kg "$d/bom_totals.csv")
 	rec=$(sed -n 's/^  "takeoff_mass_kg": *\([0-9.e+-]*\),$/\1/p' "$d/result.json" | head -n 1)
 	grep -q '"buildable": false' "$d/result.json" && bom=$rec
 	if [ -n "$cover" ] && awk -v c="$cover" -v b="$bom" -v r="$rec" \

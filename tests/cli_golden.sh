@@ -1,7 +1,8 @@
 #!/bin/sh
-# Golden outputs of every example: result.json, bom.csv, the dossier's
-# text (pdftotext -layout) and, for a buildable design, the ArduPilot
-# hand-off (vehicle_components.json, ardupilot.param) are pinned under
+# Golden outputs of every example: result.json, bom.csv, bom_totals.csv,
+# the dossier's text (pdftotext -layout) and, for a buildable design, the
+# ArduPilot hand-off (vehicle_components.json, ardupilot.param,
+# qgroundcontrol.params) are pinned under
 # tests/golden/NAME/, so that a changed number is a visible diff in review.
 # A hand-off file must exist in both places or in neither.
 #
@@ -22,7 +23,8 @@ fi
 for f in examples/*.json; do
 	n=$(basename "$f" .json)
 	pdftotext -layout "$T/out/$n/dossier.pdf" "$T/out/$n/dossier.txt" 2>/dev/null
-	for g in result.json bom.csv dossier.txt vehicle_components.json ardupilot.param; do
+	for g in result.json bom.csv bom_totals.csv dossier.txt vehicle_components.json \
+	    ardupilot.param qgroundcontrol.params; do
 		if [ ! -e "$T/out/$n/$g" ] && [ ! -e "tests/golden/$n/$g" ]; then
 			continue  # no hand-off for a design that is not buildable
 		fi

@@ -44,7 +44,7 @@ solve_check(int engine_rc, const struct solve_result *r, char *detail, size_t n)
 		return "result.json holds a non-finite or out-of-range value";
 	}
 	int csv_bad = 0;
-	free(bom_csv_render_checked(r, &csv_bad));
+	free(bom_csv_render_checked(r, NULL, &csv_bad));
 	if (csv_bad != 0)
 		return "bom.csv holds a non-finite value";
 	for (int i = 0; i < r->n_violations; i++)

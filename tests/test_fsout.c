@@ -307,33 +307,25 @@ fsout_read_file_should_add_a_nul_and_respect_the_cap(void **state)
 }
 
 static void
-fsout_resolve_date_should_prefer_report_then_epoch_then_mtime(void **state)
+fsout_resolve_date_should_prefer_report_then_epoch_then_none(void **state)
 {
-	struct fixture *fx = *state;
-	char p[128], err[256] = "", d[11];
-	path_in(fx, "m.json", p, sizeof p);
-	assert_int_equal(fsout_write_atomic(p, "{}", 2, err, sizeof err), 0);
-	/* mtime 951782400 s = 11016 days = 2000-02-29T00:00:00Z (leap day). */
-	struct timeval tv[2] = { { 951782400, 0 }, { 951782400, 0 } };
-	assert_int_equal(utimes(p, tv), 0);
-
+	(void)state;
+	char err[256] = "", d[11];
 	setenv("SOURCE_DATE_EPOCH", "1700000000", 1); /* 2023-11-14T22:13:20Z */
-	assert_int_equal(fsout_resolve_date("2026-03-17", p, d, err, sizeof err),
-	                 FSOUT_DATE_REPORT);
+	assert_int_equal(fsout_resolve_date("2026-03-17", d, err, sizeof err), FSOUT_DATE_REPORT);
 	assert_string_equal(d, "2026-03-17");
-	assert_int_equal(fsout_resolve_date("", p, d, err, sizeof err), FSOUT_DATE_EPOCH_ENV);
+	assert_int_equal(fsout_resolve_date("", d, err, sizeof err), FSOUT_DATE_EPOCH_ENV);
 	assert_string_equal(d, "2023-11-14");
+	/* Neither: undated, whatever the files' times or the clock say. */
 	setenv("SOURCE_DATE_EPOCH", "", 1); /* empty counts as unset */
-	assert_int_equal(fsout_resolve_date("", p, d, err, sizeof err),
-	                 FSOUT_DATE_MISSION_MTIME);
-	assert_string_equal(d, "2000-02-29");
+	assert_int_equal(fsout_resolve_date("", d, err, sizeof err), FSOUT_DATE_NONE);
+	assert_string_equal(d, "");
 	unsetenv("SOURCE_DATE_EPOCH");
-	assert_int_equal(fsout_resolve_date(NULL, p, d, err, sizeof err),
-	                 FSOUT_DATE_MISSION_MTIME);
-	assert_string_equal(d, "2000-02-29");
+	assert_int_equal(fsout_resolve_date(NULL, d, err, sizeof err), FSOUT_DATE_NONE);
+	assert_string_equal(d, "");
 	/* SOURCE_DATE_EPOCH = 0 is the epoch itself, not "unset". */
 	setenv("SOURCE_DATE_EPOCH", "0", 1);
-	assert_int_equal(fsout_resolve_date("", p, d, err, sizeof err), FSOUT_DATE_EPOCH_ENV);
+	assert_int_equal(fsout_resolve_date("", d, err, sizeof err), FSOUT_DATE_EPOCH_ENV);
 	assert_string_equal(d, "1970-01-01");
 	unsetenv("SOURCE_DATE_EPOCH");
 }
@@ -341,21 +333,19 @@ fsout_resolve_date_should_prefer_report_then_epoch_then_mtime(void **state)
 static void
 fsout_resolve_date_should_reject_bad_dates_instead_of_falling_through(void **state)
 {
-	struct fixture *fx = *state;
-	char p[128], err[256] = "", d[11];
-	path_in(fx, "m.json", p, sizeof p);
-	assert_int_equal(fsout_write_atomic(p, "{}", 2, err, sizeof err), 0);
+	(void)state;
+	char err[256] = "", d[11];
 
 	static const char *const bad_dates[] = {
 		"2026-02-29", "2100-02-29", "2026-13-01", "2026-04-31", "26-03-17",
 		"2026/03/17", "2026-03-17T00:00", "0000-01-01", "2026-3-170",
 	};
 	for (size_t i = 0; i < sizeof bad_dates / sizeof bad_dates[0]; i++) {
-		assert_int_equal(fsout_resolve_date(bad_dates[i], p, d, err, sizeof err), -1);
+		assert_int_equal(fsout_resolve_date(bad_dates[i], d, err, sizeof err), -1);
 		assert_non_null(strstr(err, "report.date"));
 		assert_string_equal(d, "");
 	}
-	assert_int_equal(fsout_resolve_date("2024-02-29", p, d, err, sizeof err),
+	assert_int_equal(fsout_resolve_date("2024-02-29", d, err, sizeof err),
 	                 FSOUT_DATE_REPORT);
 
 	static const char *const bad_epochs[] = {
@@ -364,17 +354,13 @@ fsout_resolve_date_should_reject_bad_dates_instead_of_falling_through(void **sta
 	};
 	for (size_t i = 0; i < sizeof bad_epochs / sizeof bad_epochs[0]; i++) {
 		setenv("SOURCE_DATE_EPOCH", bad_epochs[i], 1);
-		assert_int_equal(fsout_resolve_date("", p, d, err, sizeof err), -1);
+		assert_int_equal(fsout_resolve_date("", d, err, sizeof err), -1);
 		assert_non_null(strstr(err, "SOURCE_DATE_EPOCH"));
 	}
 	setenv("SOURCE_DATE_EPOCH", "253402300799", 1); /* the last second of 9999 */
-	assert_int_equal(fsout_resolve_date("", p, d, err, sizeof err), FSOUT_DATE_EPOCH_ENV);
+	assert_int_equal(fsout_resolve_date("", d, err, sizeof err), FSOUT_DATE_EPOCH_ENV);
 	assert_string_equal(d, "9999-12-31");
 	unsetenv("SOURCE_DATE_EPOCH");
-
-	path_in(fx, "gone.json", p, sizeof p);
-	assert_int_equal(fsout_resolve_date("", p, d, err, sizeof err), -1);
-	assert_non_null(strstr(err, "modification time"));
 }
 
 static void
@@ -928,7 +914,7 @@ main(void)
 		cmocka_unit_test_setup_teardown(fsout_concurrent_writers_should_never_mix_or_leave_temps, setup, teardown),
 		cmocka_unit_test_setup_teardown(fsout_mkdirs_should_create_every_missing_parent, setup, teardown),
 		cmocka_unit_test_setup_teardown(fsout_read_file_should_add_a_nul_and_respect_the_cap, setup, teardown),
-		cmocka_unit_test_setup_teardown(fsout_resolve_date_should_prefer_report_then_epoch_then_mtime, setup, teardown),
+		cmocka_unit_test_setup_teardown(fsout_resolve_date_should_prefer_report_then_epoch_then_none, setup, teardown),
 		cmocka_unit_test_setup_teardown(fsout_resolve_date_should_reject_bad_dates_instead_of_falling_through, setup, teardown),
 		cmocka_unit_test(fsout_safe_name_should_keep_only_a_harmless_base_name),
 		cmocka_unit_test(fsout_safe_name_should_refuse_a_name_too_long_for_its_temporaries),

@@ -14,8 +14,10 @@
 #include "output/index.h"
 #include "util/file.h"
 
-#define HEADER "name,status,takeoff_mass_kg,mtow_interval_level,mtow_lo_kg," \
-	"mtow_hi_kg,payload_kg,flight_time_s,hover_endurance_s,cost_usd,prices_missing," \
+#define HEADER "name,status,role,rotors,coaxial,wheelbase_m,airframe_class," \
+	"battery_chemistry,altitude_m,ambient_temp_c,t_hover_s,t_forward_s,t_climb_s," \
+	"payload_kg,max_payload_kg,takeoff_mass_kg,mtow_interval_level,mtow_lo_kg," \
+	"mtow_hi_kg,flight_time_s,hover_endurance_s,cost_usd,prices_missing," \
 	"cells,capacity_mah,motor,propeller,battery,tightest_check,tightest_margin\r\n"
 
 /* Parses text as the result.json of name; returns parse's result, the
@@ -80,6 +82,47 @@ row_should_carry_the_design_of_record(void **state)
 	free(text);
 }
 
+/* The mission as asked stands beside the results: a study plots payload,
+ * wheelbase or endurance asked against the takeoff mass straight from the
+ * table, without the mission files. */
+static void
+row_should_carry_the_mission_inputs(void **state)
+{
+	(void)state;
+	static const struct { const char *example, *csv; } cases[] = {
+		{ "sar_imaging_quad", "sar_imaging_quad,feasible,imaging,4,false,1.000,"
+		  "EnterpriseRugged,LiPo,1500,5.25,900,600,60,1.500,1.500," },
+		{ "coaxial_inspection_quad", "coaxial_inspection_quad,feasible,inspection,8,true,"
+		  "0.600,EnterpriseRugged,LiPo,0,15.00,900,240,60,1.200,1.200," },
+		{ "workspace_backpack_inspection", "workspace_backpack_inspection,feasible,"
+		  "inspection,4,false,0.450,ConsumerFolding,LiPo_premium,0,15.00,120,1200,45,"
+		  "0.900,0.900," },
+	};
+	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+		char *text = golden(cases[i].example), msg[512];
+		struct summary_row w;
+		assert_int_equal(parse_text(text, cases[i].example, &w, msg, sizeof msg), 0);
+		assert_true(w.has_inputs);
+		struct summary s = { 0 };
+		summary_add(&s, &w);
+		char *csv = index_csv(&s);
+		if (strstr(csv, cases[i].csv) == NULL)
+			fail_msg("%s: want \"%s\" in\n%s", cases[i].example, cases[i].csv, csv);
+		char *json = index_json(&s, "9.8.7");
+		cJSON *root = cJSON_Parse(json);
+		const cJSON *m = cJSON_GetArrayItem(cJSON_GetObjectItemCaseSensitive(root, "missions"), 0);
+		assert_int_equal(cJSON_GetObjectItemCaseSensitive(m, "rotors")->valueint, w.rotors);
+		assert_true(cJSON_IsBool(cJSON_GetObjectItemCaseSensitive(m, "coaxial")));
+		assert_rel(cJSON_GetObjectItemCaseSensitive(m, "t_hover_s")->valuedouble, w.t_hover_s, 0);
+		assert_string_equal(cJSON_GetObjectItemCaseSensitive(m, "role")->valuestring, w.role);
+		cJSON_Delete(root);
+		free(json);
+		free(csv);
+		summary_free(&s);
+		free(text);
+	}
+}
+
 static void
 row_should_read_a_prediction_interval_when_there_is_one(void **state)
 {
@@ -142,7 +185,7 @@ result_without_what_a_row_needs_should_be_an_error_naming_it(void **state)
 	struct summary s = { 0 };
 	summary_add(&s, &w);
 	char *csv = index_csv(&s);
-	assert_string_equal(csv, HEADER "m,infeasible,2.385,,,,0.500,,,,0,,,,,,,\r\n");
+	assert_string_equal(csv, HEADER "m,infeasible,,,,,,,,,,,,0.500,,2.385,,,,,,,0,,,,,,,\r\n");
 	free(csv);
 	summary_free(&s);
 }
@@ -232,6 +275,7 @@ main(void)
 	const struct CMUnitTest tests[] = {
 		cmocka_unit_test(row_should_carry_the_design_of_record),
 		cmocka_unit_test(row_should_read_a_prediction_interval_when_there_is_one),
+		cmocka_unit_test(row_should_carry_the_mission_inputs),
 		cmocka_unit_test(result_without_what_a_row_needs_should_be_an_error_naming_it),
 		cmocka_unit_test(csv_cells_should_never_start_like_a_formula),
 		cmocka_unit_test(table_should_be_the_same_bytes_whatever_order_the_rows_came_in),

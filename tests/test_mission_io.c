@@ -769,6 +769,54 @@ spec_format_value_should_give_text_with_unit(void **state)
 	assert_string_equal(buf, "15 ");
 }
 
+/* ---- the essentials ------------------------------------------------------ */
+
+/* mission_io_parse_mission's diagnostics for text ("m.json"). */
+static const char *
+essentials(const char *text, int want_errors)
+{
+	static char out[2048];
+	struct diag *dg = diag_alloc(NULL);
+	struct mission_spec s;
+	assert_int_equal(mission_io_parse_mission("m.json", text, strlen(text), chems, dg, &s),
+	                 want_errors);
+	snprintf(out, sizeof out, "%s", diag_text(dg));
+	diag_free(dg);
+	return out;
+}
+
+static void
+mission_without_its_essentials_should_be_refused_at_its_object(void **state)
+{
+	(void)state;
+	/* `check {}`: each essential, at the object's brace. */
+	assert_string_equal(essentials("{}", 3),
+	    "m.json:1:1: error: payload_kg: missing field; a mission gives payload_kg, or "
+	    "requirements.payload_preset to derive it\n"
+	    "m.json:1:1: error: max_diameter_m: missing field; a mission gives max_diameter_m, "
+	    "or requirements.transport to derive it\n"
+	    "m.json:1:1: error: t_hover_s: missing field; a mission needs a mission time: one "
+	    "of t_hover_s, t_forward_s, t_climb_s above 0\n");
+	assert_non_null(strstr(essentials("\n  {\"payload_kg\": 1, \"max_diameter_m\": 1}", 1),
+	                       "m.json:2:3: error: t_hover_s: missing field"));
+	/* Any one mission time above 0; a time of 0 is no mission. */
+	assert_string_equal(essentials("{\"payload_kg\": 1, \"max_diameter_m\": 1, "
+	                               "\"t_climb_s\": 30}", 0), "");
+	assert_non_null(strstr(essentials("{\"payload_kg\": 1, \"max_diameter_m\": 1, "
+	                                  "\"t_hover_s\": 0}", 1), "t_hover_s: missing field"));
+	/* requirements{} derives payload and wheelbase; "none" derives nothing. */
+	assert_string_equal(essentials("{\"requirements\": {\"payload_preset\": \"dslr_camera\", "
+	                               "\"transport\": \"backpack\"}, \"t_forward_s\": 600}", 0), "");
+	assert_non_null(strstr(essentials("{\"requirements\": {\"payload_preset\": \"none\", "
+	                                  "\"transport\": \"backpack\"}, \"t_hover_s\": 60}", 1),
+	                       "payload_kg: missing field"));
+	/* A mission already wrong gets its own errors only. */
+	assert_null(strstr(essentials("{\"payload_kgs\": 1}", 1), "missing field"));
+	/* mission_io_parse itself reads fields only: {} is valid there. */
+	struct mission_spec s;
+	parse_ok("{}", &s);
+}
+
 int
 main(void)
 {
@@ -801,6 +849,7 @@ main(void)
 		cmocka_unit_test(mission_io_should_report_every_error_of_a_file_in_one_pass),
 		cmocka_unit_test(mission_io_should_refuse_control_characters_in_text),
 		cmocka_unit_test(mission_io_should_refuse_too_many_values_before_building_a_tree),
+		cmocka_unit_test(mission_without_its_essentials_should_be_refused_at_its_object),
 		cmocka_unit_test(mission_io_load_should_report_an_unreadable_file),
 		cmocka_unit_test(mission_io_load_should_read_a_file),
 		cmocka_unit_test(mission_io_to_json_should_round_trip),

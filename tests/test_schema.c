@@ -1,11 +1,26 @@
 /* test_schema.c — suggestions, `aeroeval schema` text and the JSON Schema,
  * all checked against the field table. */
 #include "test_util.h"
+#include "cli/cli.h"
 #include "input/schema.h"
 #include "input/mission_io.h"
 
 #include <stdlib.h>
 #include <string.h>
+
+/* The chemistry names of data/chemistries.json, as `aeroeval schema`
+ * loads them (run from the repository root). */
+static const char *const *
+chemistries(void)
+{
+	static struct cli_env env;
+	static bool loaded;
+	if (!loaded) {
+		assert_int_equal(cli_env_load(&env, NULL, 0, stderr), 0);
+		loaded = true;
+	}
+	return env.model.chem_names;
+}
 
 static void
 expect_suggestion(const char *path, const char *want)
@@ -89,7 +104,7 @@ static void
 schema_json_should_list_exactly_the_table_fields(void **state)
 {
 	(void)state;
-	cJSON *root = schema_json_schema();
+	cJSON *root = schema_json_schema(chemistries());
 	struct mission_spec def;
 	spec_defaults(&def);
 	cJSON *defaults = mission_io_to_json(&def);
@@ -180,6 +195,43 @@ schema_json_should_list_exactly_the_table_fields(void **state)
 	cJSON_Delete(root);
 }
 
+/* The closed sets are enums, battery_chemistry's from data/chemistries.json;
+ * what every mission gives is the "allOf" of the essentials, each an
+ * "anyOf" of its fields and the requirements field that derives it. */
+static void
+schema_json_should_state_the_essentials_and_the_chemistries(void **state)
+{
+	(void)state;
+	cJSON *root = schema_json_schema(chemistries());
+	const cJSON *e = cJSON_GetObjectItemCaseSensitive(schema_node(root, "battery_chemistry"),
+	                                                  "enum");
+	int k = 0;
+	for (const char *const *c = chemistries(); *c != NULL; c++, k++)
+		assert_string_equal(cJSON_GetArrayItem(e, k)->valuestring, *c);
+	assert_int_equal(cJSON_GetArraySize(e), k);
+	assert_true(k >= 12);
+	const cJSON *all = cJSON_GetObjectItemCaseSensitive(root, "allOf");
+	assert_int_equal(cJSON_GetArraySize(all), SPEC_N_ESSENTIALS);
+	for (int i = 0; i < SPEC_N_ESSENTIALS; i++) {
+		const struct spec_essential *es = &spec_essentials[i];
+		const cJSON *any = cJSON_GetObjectItemCaseSensitive(cJSON_GetArrayItem(all, i), "anyOf");
+		int n = 0;
+		while (n < SPEC_ESSENTIAL_FIELDS && es->any_of[n] != SPEC_N_FIELDS) {
+			const cJSON *req = cJSON_GetObjectItemCaseSensitive(cJSON_GetArrayItem(any, n),
+			                                                    "required");
+			assert_string_equal(cJSON_GetArrayItem(req, 0)->valuestring,
+			                    spec_fields[es->any_of[n]].path);
+			n++;
+		}
+		assert_int_equal(cJSON_GetArraySize(any), n + (es->derived_by != SPEC_N_FIELDS));
+	}
+	/* Without a chemistry list the set stays open. */
+	cJSON *open = schema_json_schema(NULL);
+	assert_null(cJSON_GetObjectItemCaseSensitive(schema_node(open, "battery_chemistry"), "enum"));
+	cJSON_Delete(open);
+	cJSON_Delete(root);
+}
+
 /* Read a whole file into a NUL-terminated string, or NULL. */
 static char *
 slurp(const char *path)
@@ -205,7 +257,7 @@ schema_committed_file_should_equal_the_generated_schema(void **state)
 	char *committed = slurp("data/mission.schema.json");
 	if (committed == NULL)
 		fail_msg("cannot read data/mission.schema.json (run from the repository root)");
-	cJSON *root = schema_json_schema();
+	cJSON *root = schema_json_schema(chemistries());
 	char *text = cJSON_Print(root);
 	size_t n = strlen(text);
 	assert_int_equal(strlen(committed), n + 1);
@@ -256,6 +308,7 @@ main(void)
 		cmocka_unit_test(spec_is_group_should_know_the_group_objects),
 		cmocka_unit_test(spec_range_text_should_mark_an_exclusive_minimum),
 		cmocka_unit_test(schema_json_should_list_exactly_the_table_fields),
+		cmocka_unit_test(schema_json_should_state_the_essentials_and_the_chemistries),
 		cmocka_unit_test(schema_committed_file_should_equal_the_generated_schema),
 		cmocka_unit_test(schema_text_should_list_every_field_with_its_range),
 	};

@@ -226,10 +226,10 @@ hex_final(struct sha256_ctx *c, char out[SHA256_HEX_LEN])
 /* Everything a mission's outputs depend on besides the mission file: the
  * engine (its version and the program file's identity, so a rebuilt
  * compiler recompiles), the catalogue, the reference tables, the template
- * with its fonts and logo, and SOURCE_DATE_EPOCH (it can set the dossier
- * date).  The data and the template are hashed by content (a checkout
- * that only touches them stays up to date), the program and the fonts by
- * identity (hash_file_identity()). */
+ * with its fonts, logo and ICC profile, and SOURCE_DATE_EPOCH (it can set
+ * the dossier date).  The data, the template and the profile are hashed by
+ * content (a checkout that only touches them stays up to date), the
+ * program and the fonts by identity (hash_file_identity()). */
 static void
 base_fingerprint(struct build *b, const char *tpl_path)
 {
@@ -264,6 +264,8 @@ base_fingerprint(struct build *b, const char *tpl_path)
 	hash_file_identity(&c, b->tpl->font_mono);
 	if (b->tpl->logo[0] != '\0')
 		hash_file(&c, b->tpl->logo);
+	if (b->tpl->icc_profile[0] != '\0')
+		hash_file(&c, b->tpl->icc_profile);   /* the PDF/A output intent */
 	const char *epoch = getenv("SOURCE_DATE_EPOCH");
 	hash_str(&c, epoch ? epoch : "");
 	hex_final(&c, b->base_fp);
@@ -271,33 +273,22 @@ base_fingerprint(struct build *b, const char *tpl_path)
 
 /* The mission's fingerprint: the base, its output name (it is printed in
  * the dossier and the hand-off: a folder copied over another mission's
- * with the same bytes and time was called up to date), its bytes (all of
- * them, streamed) and, unless SOURCE_DATE_EPOCH is set, its mtime (the
- * dossier date falls back to it; with SOURCE_DATE_EPOCH set it never does,
- * so a copy or a checkout that changes only the mtime stays up to date).
+ * with the same bytes was called up to date) and its bytes (all of them,
+ * streamed); not its file times, which no output depends on (the dossier
+ * date is report.date, SOURCE_DATE_EPOCH or none: fsout_resolve_date), so a
+ * copy or a checkout that changes only the mtime stays up to date.
  * Returns -1 when unreadable. */
 static int
 mission_fingerprint(const struct build *b, size_t i, char out[SHA256_HEX_LEN])
 {
 	const char *path = b->missions.v[i];
 	char why[256];
-	struct stat st;
-	if (stat(path, &st) != 0)
-		return -1;
 	struct sha256_ctx c;
-	char mtime[64];
-	const char *epoch = getenv("SOURCE_DATE_EPOCH");
-	if (epoch != NULL && *epoch != '\0')
-		snprintf(mtime, sizeof mtime, "-");
-	else
-		snprintf(mtime, sizeof mtime, "%lld.%09ld", (long long)st.st_mtim.tv_sec,
-		    (long)st.st_mtim.tv_nsec);
 	sha256_init(&c);
 	hash_str(&c, b->base_fp);
 	hash_str(&c, b->names[i]);
 	if (cli_hash_file(&c, path, why, sizeof why) != 0)
 		return -1;
-	hash_str(&c, mtime);
 	hex_final(&c, out);
 	return 0;
 }

@@ -63,9 +63,19 @@ cli_schema(int argc, char **argv)
 		schema_print_text(stdout);
 		return 0;
 	}
-	cJSON *s = schema_json_schema();
+	/* battery_chemistry's enum: the profiles of data/chemistries.json. */
+	struct cli_env *env = xcalloc(1, sizeof *env);
+	int status = cli_env_load(env, NULL, 0, stderr);
+	if (status != 0) {
+		cli_env_free(env);
+		free(env);
+		return status;
+	}
+	cJSON *s = schema_json_schema(env->model.chem_names);
 	char *text = cJSON_Print(s);
 	cJSON_Delete(s);
+	cli_env_free(env);
+	free(env);
 	if (text == NULL) {
 		fprintf(stderr, "aeroeval: internal error: cannot print the schema\n");
 		return 3;

@@ -34,7 +34,8 @@ static const struct help_cmd help_cmds[] = {
 	  "^C stops the run: finished outputs stay, no partial file is left.\n"
 	  "A mission's outputs are replaced as one set: old or new, never a mix.\n"
 	  "A buildable design also gets vehicle_components.json (ArduPilot\n"
-	  "Methodic Configurator) and ardupilot.param.  DIR/index.csv and\n"
+	  "Methodic Configurator), ardupilot.param (Mission Planner, MAVProxy,\n"
+	  "the configurator) and qgroundcontrol.params.  DIR/index.csv and\n"
 	  "DIR/index.json, the table of every mission in DIR, are kept current.\n"
 	  "Exit status: 0 all feasible, 1 some design infeasible, 2 bad usage,\n"
 	  "input or a file-system problem, 3 internal error, 130/143 interrupted.\n" },

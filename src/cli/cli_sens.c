@@ -55,7 +55,7 @@ run_suite(const struct cli_env *env, const char *path, const char *dir_opt,
 	if (cli_out_dir("sensitivity", "-o", dir_opt != NULL ? dir_opt : "out", dir,
 	    sizeof dir, stderr) != 0 || pipeline_name_checked(path, name, sizeof name, stderr) != 0)
 		return 2;
-	if (fsout_resolve_date(spec.report.date, path, date, err, sizeof err) < 0) {
+	if (fsout_resolve_date(spec.report.date, date, err, sizeof err) < 0) {
 		fprintf(stderr, "%s: error: %s\n", path, err);
 		return 2;
 	}

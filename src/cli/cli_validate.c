@@ -438,7 +438,7 @@ write_report(const char *pdf_path, const char *cohort_path, const struct cohort 
              const struct validate_report *v, const struct model_calibration *cal)
 {
 	char date[11], err[512];
-	if (fsout_resolve_date("", cohort_path, date, err, sizeof err) < 0) {
+	if (fsout_resolve_date("", date, err, sizeof err) < 0) {
 		fprintf(stderr, "error: %s\n", err);
 		return -1;
 	}

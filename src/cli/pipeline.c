@@ -64,7 +64,7 @@ pipeline_solve(const struct cli_env *env, const char *path,
 		return PIPE_REJECTED;
 	}
 	struct mission_spec spec;
-	int n_err = mission_io_parse(path, (const char *)buf, n,
+	int n_err = mission_io_parse_mission(path, (const char *)buf, n,
 	    env->model.chem_names, dg, &spec);
 	diag_flush(dg);
 	diag_free(dg);
@@ -95,11 +95,11 @@ pipeline_solve(const struct cli_env *env, const char *path,
  * (pipeline_add()).  Not every set has every output: no dossier without a
  * template, no ArduPilot hand-off for a design that is not buildable
  * (output/ardupilot.h). */
-enum pipeline_output { OUT_BOM, OUT_RESULT, OUT_DOSSIER, OUT_COMPONENTS, OUT_PARAMS,
-	N_OUTPUTS };
-static const char *const pipeline_files[] = { "bom.csv", "result.json",
-	"dossier.pdf", "vehicle_components.json", "ardupilot.param", PIPELINE_STAMP,
-	PIPELINE_SENS_JSON, PIPELINE_SENS_PDF, NULL };
+enum pipeline_output { OUT_BOM, OUT_TOTALS, OUT_RESULT, OUT_DOSSIER, OUT_COMPONENTS,
+	OUT_PARAMS, OUT_QGC_PARAMS, N_OUTPUTS };
+static const char *const pipeline_files[] = { "bom.csv", "bom_totals.csv", "result.json",
+	"dossier.pdf", "vehicle_components.json", "ardupilot.param", "qgroundcontrol.params",
+	PIPELINE_STAMP, PIPELINE_SENS_JSON, PIPELINE_SENS_PDF, NULL };
 _Static_assert(sizeof pipeline_files / sizeof pipeline_files[0] == N_OUTPUTS + 4,
                "one name per output, the stamp, the study's two, NULL");
 
@@ -143,7 +143,8 @@ pipeline_current(const struct pipeline_opts *o, const char *name, const char *fp
 	/* The outputs found are hashed; the stamp must list exactly those. */
 	for (int i = 0; i < N_OUTPUTS; i++)
 		present[i] = fsfolder_hash(&f, pipeline_files[i], hex[i]) == 0;
-	if (!present[OUT_BOM] || !present[OUT_RESULT] || present[OUT_DOSSIER] != (o->tpl != NULL))
+	if (!present[OUT_BOM] || !present[OUT_TOTALS] || !present[OUT_RESULT]
+	    || present[OUT_DOSSIER] != (o->tpl != NULL))
 		goto done;
 	struct strbuf want = STRBUF_INIT;
 	for (int inf = 0; inf < 2 && rc < 0; inf++) {
@@ -270,23 +271,23 @@ pipeline_build(const struct cli_env *env, const struct pipeline_opts *o,
 
 	/* Render everything in memory first: a render failure writes nothing. */
 	struct result_json_faults jf;
-	int csv_bad = 0;
+	int csv_bad = 0, totals_bad = 0;
 	char *json = result_json_render_checked(r, AEROEVAL_VERSION, &jf);
-	char *csv = bom_csv_render_checked(r, &csv_bad);
+	char *csv = bom_csv_render_checked(r, env->cat, &csv_bad);
+	char *totals = bom_csv_totals(r, &totals_bad);
 	unsigned char *pdf = NULL;
 	size_t n_pdf = 0;
-	if (jf.n_invalid > 0 || csv_bad > 0) {
+	if (jf.n_invalid > 0 || csv_bad > 0 || totals_bad > 0) {
 		fprintf(err, "%s: internal error: non-finite value at %s\n", path,
-		    jf.n_invalid > 0 ? jf.first_path : "bom.csv");
+		    jf.n_invalid > 0 ? jf.first_path : csv_bad > 0 ? "bom.csv" : "bom_totals.csv");
 		st = PIPE_INTERNAL;
 		goto written;
 	}
 	if (o->tpl != NULL) {
-		/* The dossier date: report.date, else SOURCE_DATE_EPOCH, else the
-		 * mission file's mtime — never the wall clock. */
+		/* The dossier date: report.date, else SOURCE_DATE_EPOCH, else
+		 * none ("undated") — never a file time or the wall clock. */
 		char date[16];
-		if (fsout_resolve_date(r->mission.report.date, path, date, msg,
-		    sizeof msg) < 0) {
+		if (fsout_resolve_date(r->mission.report.date, date, msg, sizeof msg) < 0) {
 			fprintf(err, "%s: error: %s\n", path, msg);
 			st = PIPE_REJECTED;
 			goto written;
@@ -311,21 +312,24 @@ pipeline_build(const struct cli_env *env, const struct pipeline_opts *o,
 	}
 	/* The autopilot hand-off, for a design of record that can be built. */
 	struct ardupilot_design ap;
-	char *components = NULL, *params = NULL;
+	char *components = NULL, *params = NULL, *qgc = NULL;
 	if (ardupilot_derive(r, &env->model, env->cat, &ap, msg, sizeof msg) == 0) {
 		components = ardupilot_components(r, &ap, name, AEROEVAL_VERSION);
 		params = ardupilot_params(&ap, name, AEROEVAL_VERSION);
+		qgc = ardupilot_params_qgc(&ap, name, AEROEVAL_VERSION);
 	}
-	struct out_set set = { { csv, json, pdf, components, params },
-		{ strlen(csv), strlen(json), n_pdf, components ? strlen(components) : 0,
-		  params ? strlen(params) : 0 } };
+	struct out_set set = { { csv, totals, json, pdf, components, params, qgc }, { 0 } };
+	for (int i = 0; i < N_OUTPUTS; i++)
+		set.len[i] = i == OUT_DOSSIER ? n_pdf : set.data[i] ? strlen((const char *)set.data[i]) : 0;
 	st = write_set(o, name, fp, st == PIPE_INFEASIBLE, &set, err);
 	free(components);
 	free(params);
+	free(qgc);
 written:
 	free(pdf);
 	free(json);
 	free(csv);
+	free(totals);
 done:
 	free(bytes);
 	free(r);

@@ -48,6 +48,28 @@ const struct spec_field_info spec_fields[SPEC_N_FIELDS] = {
 #undef SPEC_X_ROW
 };
 
+const struct spec_essential spec_essentials[SPEC_N_ESSENTIALS] = {
+	{ "payload_kg", { SPECF_PAYLOAD_KG, SPEC_N_FIELDS, SPEC_N_FIELDS }, false,
+	  SPECF_REQ_PRESET },
+	{ "max_diameter_m", { SPECF_MAX_DIAMETER_M, SPEC_N_FIELDS, SPEC_N_FIELDS }, false,
+	  SPECF_REQ_TRANSPORT },
+	{ "a mission time", { SPECF_T_HOVER_S, SPECF_T_FORWARD_S, SPECF_T_CLIMB_S }, true,
+	  SPEC_N_FIELDS },
+};
+
+bool
+spec_essential_met(const struct mission_spec *s, const struct spec_essential *e)
+{
+	for (int i = 0; i < SPEC_ESSENTIAL_FIELDS && e->any_of[i] != SPEC_N_FIELDS; i++) {
+		const struct spec_field_info *f = &spec_fields[e->any_of[i]];
+		if (s->given[f->id] && (!e->positive || *(const double *)spec_member_const(s, f) > 0.0))
+			return true;
+	}
+	/* A requirements enum set to other than its first value, "none". */
+	return e->derived_by != SPEC_N_FIELDS && s->given[e->derived_by]
+	    && *(const int *)spec_member_const(s, &spec_fields[e->derived_by]) != 0;
+}
+
 void *
 spec_member(struct mission_spec *s, const struct spec_field_info *f)
 {

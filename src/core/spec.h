@@ -120,7 +120,7 @@ X(REPORT_PROJECT_ID, "report.project_id", SPEC_STR, report.project_id, "", 0, 0,
 X(REPORT_REVISION, "report.revision", SPEC_STR, report.revision, "", 0, 0, 0, SPEC_F_BEYOND, NULL, \
   "Document revision, e.g. \"A\" or \"1.2\"") \
 X(REPORT_DATE, "report.date", SPEC_DATE, report.date, "", 0, 0, 0, SPEC_F_BEYOND, NULL, \
-  "Issue date YYYY-MM-DD; else SOURCE_DATE_EPOCH, else the file's mtime") \
+  "Issue date YYYY-MM-DD; else SOURCE_DATE_EPOCH, else none: the dossier is undated") \
 X(REPORT_CHECKED_BY, "report.checked_by", SPEC_STR, report.checked_by, "", 0, 0, 0, SPEC_F_BEYOND, NULL, \
   "Engineer who checked the dossier (document control; empty leaves the line to sign)") \
 X(REPORT_APPROVED_BY, "report.approved_by", SPEC_STR, report.approved_by, "", 0, 0, 0, SPEC_F_BEYOND, NULL, \
@@ -405,6 +405,30 @@ struct spec_field_info {
 
 /* The table, in SPEC_FIELDS order; spec_fields[i].id == i. */
 extern const struct spec_field_info spec_fields[SPEC_N_FIELDS];
+
+/* ---- the essentials ------------------------------------------------------
+ *
+ * What a mission must give to be sized (README, "A first design"): its
+ * payload, its wheelbase and at least one mission time.  An essential is
+ * met when the file gives one of its fields (a time above 0: a mission of
+ * no time is none), or sets the requirements field that derives it to
+ * other than "none" (engine.c apply_requirements: a payload preset sets
+ * payload_kg, a transport footprint max_diameter_m; nothing derives a
+ * time).  `check`, `solve` and `build` refuse a mission that misses one. */
+#define SPEC_ESSENTIAL_FIELDS 3   /* the most fields an essential offers */
+
+struct spec_essential {
+	const char *what;              /* "payload_kg", "a mission time" */
+	enum spec_field any_of[SPEC_ESSENTIAL_FIELDS]; /* SPEC_N_FIELDS pads */
+	bool positive;                 /* a given value must be above 0 */
+	enum spec_field derived_by;    /* a requirements field, or SPEC_N_FIELDS */
+};
+
+#define SPEC_N_ESSENTIALS 3
+extern const struct spec_essential spec_essentials[SPEC_N_ESSENTIALS];
+
+/* Does s (its given[] flags and values) meet essential e? */
+bool spec_essential_met(const struct mission_spec *s, const struct spec_essential *e);
 
 /* Fill *s with every default ("LiPo" chemistry, no given[] set). */
 void spec_defaults(struct mission_spec *s);

@@ -19,6 +19,7 @@
 
 #define SUMMARY_NAME_MAX 256   /* bytes of a mission name, NUL included */
 #define SUMMARY_TEXT_MAX 200   /* bytes of a part or check name, NUL included */
+#define SUMMARY_WORD_MAX 64    /* bytes of a role, class or chemistry name */
 
 /* The verdict of a row, worst last. */
 enum summary_status {
@@ -32,11 +33,29 @@ enum summary_status {
 struct summary_row {
 	char name[SUMMARY_NAME_MAX];     /* output folder name */
 	enum summary_status status;
+
+	/* The mission as asked, from result.json's fully defaulted "mission";
+	 * has_inputs is false when the file lacks any of them (then every
+	 * input cell is empty). */
+	bool has_inputs;
+	char role[SUMMARY_WORD_MAX];     /* payload_role.type: "imaging", ... */
+	int rotors;                      /* num_rotors */
+	bool coaxial;                    /* coaxial_layout */
+	double wheelbase_m;              /* max_diameter_m */
+	char airframe_class[SUMMARY_WORD_MAX];
+	char chemistry[SUMMARY_WORD_MAX]; /* battery_chemistry */
+	double altitude_m;
+	double ambient_temp_c;
+	double t_hover_s, t_forward_s, t_climb_s; /* the mission times asked */
+	double max_payload_kg;           /* the largest payload it is built for
+	                                    (max_payload_kg, 0 there = payload_kg) */
+
+	/* The design of record. */
 	double takeoff_mass_kg;          /* MTOW of record */
 	bool has_interval;               /* result.json carries mtow_interval */
 	double interval_level;           /* its nominal coverage, e.g. 0.9 */
 	double mtow_lo_kg, mtow_hi_kg;   /* its bounds */
-	double payload_kg;               /* payload at takeoff */
+	double payload_kg;               /* payload at takeoff (an input) */
 	bool has_flight_time;
 	double flight_time_s;            /* the mission's approved flight time */
 	bool has_endurance;

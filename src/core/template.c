@@ -5,12 +5,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "util/file.h"
 #include "util/strbuf.h"
 #include "util/xalloc.h"
 
 #define DEJAVU_DIR "/usr/share/fonts/truetype/dejavu"
+#define SYSTEM_SRGB "/usr/share/color/icc/sRGB.icc"   /* icc-profiles-free */
 
 /* JSON ids and default titles, indexed by enum template_section_id. */
 static const char *const section_names[TEMPLATE_SEC_MAX] = {
@@ -63,6 +65,14 @@ fill_default(struct template *t)
 	snprintf(t->font_regular, sizeof t->font_regular, "%s%s/DejaVuSans.ttf", fonts, sub);
 	snprintf(t->font_bold, sizeof t->font_bold, "%s%s/DejaVuSans-Bold.ttf", fonts, sub);
 	snprintf(t->font_mono, sizeof t->font_mono, "%s%s/DejaVuSansMono.ttf", fonts, sub);
+	/* The sRGB profile of the PDF/A output intent: shipped in
+	 * templates/icc/ (its licence beside it), else Debian's
+	 * icc-profiles-free copy; none found leaves it "" and the document
+	 * reports it when it is made. */
+	if (file_shipped_dir("templates", "icc/sRGB.icc", dir, sizeof dir) == 0)
+		snprintf(t->icc_profile, sizeof t->icc_profile, "%s/icc/sRGB.icc", dir);
+	else if (access(SYSTEM_SRGB, R_OK) == 0)
+		snprintf(t->icc_profile, sizeof t->icc_profile, "%s", SYSTEM_SRGB);
 	t->font_size_pt = 9.5;
 	set_colour(&t->text, 0x1a1a1a);
 	set_colour(&t->primary, 0x1f3a5f);

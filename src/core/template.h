@@ -21,6 +21,9 @@
  * templates/fonts/ (cut to the characters a dossier prints: `make fonts`),
  * else the system's DejaVu.  "sections" replaces the whole list: its order is the dossier's
  * order, an id missing from it is disabled, a repeated id is an error.
+ * Every template takes the sRGB profile shipped in templates/icc/ (else
+ * the system's icc-profiles-free copy) as its documents' PDF/A output
+ * intent (output/doc.h).
  *
  * Who may include it: the input layer (template_io), the output layer (doc,
  * plot, report, assets) and the CLI.
@@ -86,6 +89,11 @@ struct template {
 	struct template_colour series[TEMPLATE_MAX_SERIES]; /* plot palette */
 	int n_series;                         /* used entries of series[], >= 2 */
 	char logo[TEMPLATE_PATH_MAX];         /* PNG path, "" for none */
+	char icc_profile[TEMPLATE_PATH_MAX];  /* sRGB ICC profile: the PDF/A
+	                                         output intent (not a template
+	                                         key: always the shipped
+	                                         templates/icc/sRGB.icc, else the
+	                                         system's), "" when none found */
 	struct template_section sections[TEMPLATE_SEC_MAX]; /* in dossier order */
 	int n_sections;                       /* used entries of sections[] */
 };

@@ -290,6 +290,32 @@ mio_object(struct mio *m, const cJSON *obj, const char *group)
 		mio_member(m, obj, c, group);
 }
 
+/* ---- the essentials ------------------------------------------------------ */
+
+/* Each essential (spec.h) the mission misses, as a "missing field" error at
+ * its top-level object, naming what meets it. */
+static void
+mio_essentials(struct mio *m)
+{
+	for (int i = 0; i < SPEC_N_ESSENTIALS; i++) {
+		const struct spec_essential *e = &spec_essentials[i];
+		if (spec_essential_met(m->out, e))
+			continue;
+		char fields[256] = "";
+		for (int k = 0; k < SPEC_ESSENTIAL_FIELDS && e->any_of[k] != SPEC_N_FIELDS; k++)
+			snprintf(fields + strlen(fields), sizeof fields - strlen(fields), "%s%s",
+			    k == 0 ? "" : ", ", spec_fields[e->any_of[k]].path);
+		const char *path = spec_fields[e->any_of[0]].path;
+		if (e->derived_by != SPEC_N_FIELDS)
+			json_in_report(m->ji, DIAG_MISSING, json_in_root(m->ji), JSON_IN_VALUE, path,
+			    "; a mission gives %s, or %s to derive it", fields,
+			    spec_fields[e->derived_by].path);
+		else
+			json_in_report(m->ji, DIAG_MISSING, json_in_root(m->ji), JSON_IN_VALUE, path,
+			    "; a mission needs %s: one of %s above 0", e->what, fields);
+	}
+}
+
 /* ---- entry points -------------------------------------------------------- */
 
 static bool
@@ -331,10 +357,10 @@ mio_count_values(const char *b, size_t n, size_t cap)
 	return k;
 }
 
-int
-mission_io_parse(const char *file, const char *buf, size_t len,
-                 const char *const *known_chemistries, struct diag *dg,
-                 struct mission_spec *out)
+static int
+mio_parse(const char *file, const char *buf, size_t len,
+          const char *const *known_chemistries, bool complete, struct diag *dg,
+          struct mission_spec *out)
 {
 	int errors_before = diag_n_errors(dg);
 	spec_defaults(out);
@@ -352,9 +378,28 @@ mission_io_parse(const char *file, const char *buf, size_t len,
 	if (ji != NULL) {
 		struct mio m = { ji, known_chemistries, out };
 		mio_object(&m, json_in_root(ji), "");
+		/* A mission that is wrong already needs no more errors. */
+		if (complete && diag_n_errors(dg) == errors_before)
+			mio_essentials(&m);
 		json_in_free(ji);
 	}
 	return diag_n_errors(dg) - errors_before;
+}
+
+int
+mission_io_parse(const char *file, const char *buf, size_t len,
+                 const char *const *known_chemistries, struct diag *dg,
+                 struct mission_spec *out)
+{
+	return mio_parse(file, buf, len, known_chemistries, false, dg, out);
+}
+
+int
+mission_io_parse_mission(const char *file, const char *buf, size_t len,
+                         const char *const *known_chemistries, struct diag *dg,
+                         struct mission_spec *out)
+{
+	return mio_parse(file, buf, len, known_chemistries, true, dg, out);
 }
 
 int
@@ -369,7 +414,8 @@ mission_io_load(const char *path, const char *const *known_chemistries,
 		spec_defaults(out);
 		return 1;
 	}
-	int n = mission_io_parse(path, (const char *)buf, len, known_chemistries, dg, out);
+	int n = mission_io_parse_mission(path, (const char *)buf, len, known_chemistries, dg,
+	    out);
 	free(buf);
 	return n;
 }

@@ -35,6 +35,17 @@ int mission_io_parse(const char *file, const char *buf, size_t len,
                      const char *const *known_chemistries, struct diag *dg,
                      struct mission_spec *out);
 
+/* The same, then the mission as a whole: each essential it misses
+ * (spec.h, spec_essentials: payload_kg, max_diameter_m, a mission time
+ * above 0, unless requirements{} derives them) is one "missing field"
+ * error at its top-level object ("file:1:1: error: payload_kg: missing
+ * field; a mission gives payload_kg, or requirements.payload_preset to
+ * derive it"), reported when the fields themselves are valid.  What
+ * `check`, `solve` and `build` read a mission file with. */
+int mission_io_parse_mission(const char *file, const char *buf, size_t len,
+                             const char *const *known_chemistries, struct diag *dg,
+                             struct mission_spec *out);
+
 /* A mission file above this size is refused (PRODUCT: > 4 MiB). */
 #define MISSION_IO_MAX_BYTES JSON_IN_MISSION_MAX
 
@@ -44,7 +55,8 @@ int mission_io_parse(const char *file, const char *buf, size_t len,
  * hostile tests' 150 000 unknown keys fit. */
 #define MISSION_IO_MAX_VALUES (1 << 18)
 
-/* Read the file at path and parse it as above.  An unreadable file (also a
+/* Read the file at path and parse it as mission_io_parse_mission.  An
+ * unreadable file (also a
  * directory, FIFO or device, or one above MISSION_IO_MAX_BYTES) is one
  * error ("path: error: cannot read file: reason"), *out then holds the
  * defaults. */

@@ -85,9 +85,20 @@ schema_print_text(FILE *out)
 
 	spec_defaults(&def);
 	fprintf(out,
-	        "aeroeval %s mission file fields.  Every field is optional; an absent\n"
-	        "field takes its default.  \"$schema\" is allowed in every object.\n",
-	        AEROEVAL_VERSION);
+	        "aeroeval %s mission file fields.  \"$schema\" is allowed in every object.\n"
+	        "\nRequired: a mission gives\n", AEROEVAL_VERSION);
+	for (int i = 0; i < SPEC_N_ESSENTIALS; i++) {
+		const struct spec_essential *e = &spec_essentials[i];
+		fprintf(out, "  - %s", e->any_of[1] == SPEC_N_FIELDS ? "" : "one of ");
+		for (int k = 0; k < SPEC_ESSENTIAL_FIELDS && e->any_of[k] != SPEC_N_FIELDS; k++)
+			fprintf(out, "%s%s", k == 0 ? "" : ", ", spec_fields[e->any_of[k]].path);
+		if (e->positive)
+			fprintf(out, " above 0");
+		if (e->derived_by != SPEC_N_FIELDS)
+			fprintf(out, ", or %s, which derives it", spec_fields[e->derived_by].path);
+		fprintf(out, "\n");
+	}
+	fprintf(out, "Every other field is optional; an absent field takes its default.\n");
 	/* Groups in the order they first appear in the table, each with all
 	 * of its fields, so the top level is listed once. */
 	for (size_t i = 0; i < SPEC_N_FIELDS; i++) {
@@ -117,7 +128,8 @@ schema_print_text(FILE *out)
 /* The schema of one field; defval is its default as mission_io_to_json
  * prints it (so the default comes from spec_defaults, not from here). */
 static cJSON *
-schema_field(const struct spec_field_info *f, const cJSON *defval)
+schema_field(const struct spec_field_info *f, const cJSON *defval,
+             const char *const *chemistries)
 {
 	cJSON *o = cJSON_CreateObject();
 	char desc[512];
@@ -163,6 +175,13 @@ schema_field(const struct spec_field_info *f, const cJSON *defval)
 		cJSON_AddNumberToObject(o, "maxLength", SPEC_STR_MAX - 1);
 		if (f->type == SPEC_DATE)
 			cJSON_AddStringToObject(o, "pattern", "^([0-9]{4}-[0-9]{2}-[0-9]{2})?$");
+		/* The one closed set of text the table cannot spell: the
+		 * chemistry profiles of data/chemistries.json. */
+		if (f->id == SPECF_BATTERY_CHEMISTRY && chemistries != NULL) {
+			cJSON *e = cJSON_AddArrayToObject(o, "enum");
+			for (size_t k = 0; chemistries[k] != NULL; k++)
+				cJSON_AddItemToArray(e, cJSON_CreateString(chemistries[k]));
+		}
 		break;
 	}
 	cJSON_AddItemToObject(o, "default", cJSON_Duplicate(defval, 1));
@@ -188,8 +207,56 @@ schema_object(const char *description, bool group, cJSON **props)
 	return o;
 }
 
+/* The schema a mission meets when one of its fields gives essential e
+ * (a time above 0), or its requirements field is other than "none". */
+static cJSON *
+schema_essential(const struct spec_essential *e)
+{
+	char desc[320] = "Required: ";
+	size_t n = strlen(desc);
+	if (e->any_of[1] != SPEC_N_FIELDS)
+		n += (size_t)snprintf(desc + n, sizeof desc - n, "one of ");
+	for (int k = 0; k < SPEC_ESSENTIAL_FIELDS && e->any_of[k] != SPEC_N_FIELDS; k++)
+		n += (size_t)snprintf(desc + n, sizeof desc - n, "%s%s", k == 0 ? "" : ", ",
+		    spec_fields[e->any_of[k]].path);
+	if (e->positive)
+		n += (size_t)snprintf(desc + n, sizeof desc - n, " above 0");
+	if (e->derived_by != SPEC_N_FIELDS)
+		snprintf(desc + n, sizeof desc - n, ", or %s, which derives it",
+		    spec_fields[e->derived_by].path);
+
+	cJSON *o = cJSON_CreateObject();
+	cJSON_AddStringToObject(o, "description", desc);
+	cJSON *any = cJSON_AddArrayToObject(o, "anyOf");
+	for (int k = 0; k < SPEC_ESSENTIAL_FIELDS && e->any_of[k] != SPEC_N_FIELDS; k++) {
+		const char *path = spec_fields[e->any_of[k]].path;
+		cJSON *alt = cJSON_CreateObject();
+		cJSON_AddItemToArray(cJSON_AddArrayToObject(alt, "required"), cJSON_CreateString(path));
+		if (e->positive) {
+			cJSON *p = cJSON_AddObjectToObject(cJSON_AddObjectToObject(alt, "properties"), path);
+			cJSON_AddNumberToObject(p, "exclusiveMinimum", 0);
+		}
+		cJSON_AddItemToArray(any, alt);
+	}
+	if (e->derived_by != SPEC_N_FIELDS) {
+		/* {"required": ["requirements"], "properties": {"requirements":
+		 *  {"required": [key], "properties": {key: {"not": {"const": "none"}}}}}} */
+		char group[TEXT_DISTANCE_MAX + 1];
+		const char *key = spec_split(spec_fields[e->derived_by].path, group, sizeof group);
+		cJSON *alt = cJSON_CreateObject();
+		cJSON_AddItemToArray(cJSON_AddArrayToObject(alt, "required"), cJSON_CreateString(group));
+		cJSON *g = cJSON_AddObjectToObject(cJSON_AddObjectToObject(alt, "properties"), group);
+		cJSON_AddItemToArray(cJSON_AddArrayToObject(g, "required"), cJSON_CreateString(key));
+		cJSON *k = cJSON_AddObjectToObject(cJSON_AddObjectToObject(g, "properties"), key);
+		cJSON_AddStringToObject(cJSON_AddObjectToObject(k, "not"), "const",
+		    spec_fields[e->derived_by].enums[0]);
+		cJSON_AddItemToArray(any, alt);
+	}
+	return o;
+}
+
 cJSON *
-schema_json_schema(void)
+schema_json_schema(const char *const *chemistries)
 {
 	struct mission_spec def;
 	char group[TEXT_DISTANCE_MAX + 1], desc[128];
@@ -200,7 +267,8 @@ schema_json_schema(void)
 	cJSON *root = cJSON_CreateObject();
 	cJSON_AddStringToObject(root, "$schema", "https://json-schema.org/draft/2020-12/schema");
 	cJSON_AddStringToObject(root, "title", "aeroeval mission file");
-	cJSON *top = schema_object("A multirotor UAV design mission for aeroeval; every field "
+	cJSON *top = schema_object("A multirotor UAV design mission for aeroeval: a payload, a "
+	                           "wheelbase and a mission time (allOf below); every other field "
 	                           "is optional and has a default", false, &props);
 	/* Merge the object schema into the root, after the title. */
 	for (cJSON *c = top->child; c != NULL; c = top->child)
@@ -224,9 +292,13 @@ schema_json_schema(void)
 			dst = cJSON_GetObjectItemCaseSensitive(g, "properties");
 			defobj = cJSON_GetObjectItemCaseSensitive(defaults, group);
 		}
-		cJSON_AddItemToObject(dst, key,
-		                      schema_field(f, cJSON_GetObjectItemCaseSensitive(defobj, key)));
+		cJSON_AddItemToObject(dst, key, schema_field(f,
+		    cJSON_GetObjectItemCaseSensitive(defobj, key), chemistries));
 	}
 	cJSON_Delete(defaults);
+	/* What every mission needs (spec_essentials), after the fields. */
+	cJSON *all = cJSON_AddArrayToObject(root, "allOf");
+	for (int i = 0; i < SPEC_N_ESSENTIALS; i++)
+		cJSON_AddItemToArray(all, schema_essential(&spec_essentials[i]));
 	return root;
 }

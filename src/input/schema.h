@@ -25,8 +25,12 @@ void schema_print_text(FILE *out);
 
 /* The JSON Schema (draft 2020-12) of mission files: types, enums, ranges,
  * defaults, descriptions, additionalProperties false, "$schema" allowed in
- * every object and "name" in every group.  data/mission.schema.json is
- * cJSON_Print of this plus a newline.  Ownership: cJSON_Delete(). */
-cJSON *schema_json_schema(void);
+ * every object and "name" in every group; battery_chemistry an enum of
+ * chemistries (NULL-terminated, the names of data/chemistries.json; NULL
+ * leaves it open); and "allOf" the essentials every mission gives
+ * (spec_essentials), each an "anyOf" of its fields and the requirements
+ * field that derives it.  data/mission.schema.json is cJSON_Print of this
+ * with the shipped chemistries, plus a newline.  Ownership: cJSON_Delete(). */
+cJSON *schema_json_schema(const char *const *chemistries);
 
 #endif /* AEROEVAL_SCHEMA_H */

@@ -115,6 +115,36 @@ interval(const cJSON *root, struct summary_row *row)
 	row->interval_level = level;
 }
 
+/* The mission's inputs the table shows beside the results, from the fully
+ * defaulted "mission" every result.json carries; all or none. */
+static void
+inputs(const cJSON *mission, struct summary_row *row)
+{
+	const char *role = get_str(member(mission, "payload_role"), "type");
+	const char *cls = get_str(mission, "airframe_class");
+	const char *chem = get_str(mission, "battery_chemistry");
+	const cJSON *coax = member(mission, "coaxial_layout");
+	double rotors, max_payload;
+	bool ok = role && cls && chem && cJSON_IsBool(coax)
+	    && get_num(mission, "num_rotors", &rotors) && rotors >= 1.0 && rotors < 1000.0
+	    && get_num(mission, "max_diameter_m", &row->wheelbase_m)
+	    && get_num(mission, "altitude_m", &row->altitude_m)
+	    && get_num(mission, "ambient_temp_c", &row->ambient_temp_c)
+	    && get_num(mission, "t_hover_s", &row->t_hover_s)
+	    && get_num(mission, "t_forward_s", &row->t_forward_s)
+	    && get_num(mission, "t_climb_s", &row->t_climb_s)
+	    && get_num(mission, "max_payload_kg", &max_payload);
+	if (!ok)
+		return;
+	row->has_inputs = true;
+	str_copy(row->role, sizeof row->role, role);
+	str_copy(row->airframe_class, sizeof row->airframe_class, cls);
+	str_copy(row->chemistry, sizeof row->chemistry, chem);
+	row->rotors = (int)rotors;
+	row->coaxial = cJSON_IsTrue(coax);
+	row->max_payload_kg = fmax(max_payload, row->payload_kg);
+}
+
 int
 summary_in_parse(const char *file, const char *buf, size_t n, const char *name,
                  struct summary_row *row, struct diag *dg)
@@ -154,6 +184,7 @@ summary_in_parse(const char *file, const char *buf, size_t n, const char *name,
 	    : SUMMARY_INFEASIBLE;
 	row->takeoff_mass_kg = mtow->valuedouble;
 	row->payload_kg = payload->valuedouble;
+	inputs(mission, row);
 	interval(root, row);
 	row->has_flight_time = get_num(dor, "flight_time_s", &row->flight_time_s);
 	/* Hover endurance: the real parts' drive when they fly, else the

@@ -1,30 +1,59 @@
 /* ardupilot.h — the hand-off to the autopilot: vehicle_components.json for
- * the ArduPilot Methodic Configurator and a starting parameter file.
+ * the ArduPilot Methodic Configurator and the starting parameters, in the
+ * format Mission Planner, MAVProxy and the configurator load and in the one
+ * QGroundControl loads.
  *
  * Written for a buildable design of record only (res_record(): real parts
- * that close), from the parts of its bill of materials and the numbers of
+ * that close), from the lines of its bill of materials and the numbers of
  * its real-parts drive, so the builder types nothing in again.
  *
  * vehicle_components.json follows the configurator's published schema,
  * ardupilot_methodic_configurator/vehicle_components_schema.json in
- * github.com/ArduPilot/MethodicConfigurator, and the layout of the
- * vehicle_components.json files of its templates (vehicle_templates/
- * ArduCopter/.../vehicle_components.json, format version 1): the top-level
- * keys "Format version", "Components", "Program version" and
- * "Configuration template"; the components Flight Controller, Frame,
- * Battery Monitor, Battery, ESC, Motors and Propellers, each with its
- * Product {Manufacturer, Model, URL, Version} and Notes.  What the design
- * cannot know (flight controller, firmware version, battery monitor, ESC
- * protocol, motor poles) is left as the configurator's own empty template
- * leaves it, or out where the schema allows; the motor's KV and the
- * propeller's pitch, which the schema has no field for, are in the Notes.
+ * github.com/ArduPilot/MethodicConfigurator, and the layout of its
+ * templates' vehicle_components.json (vehicle_templates/ArduCopter/...,
+ * format version 1): "Format version", "Components", "Program version",
+ * "Configuration template".  Every component the configurator knows that
+ * the bill of materials buys is filled from its BOM line, part for part:
+ * Flight Controller (an all-in-one board when the ESC board carries it),
+ * Battery Monitor (the power module), GNSS Receiver, RC Receiver,
+ * Telemetry, ESC (with its protocol), Motors, Propellers, Battery, Frame;
+ * each Product's Manufacturer and Model are the BOM line's maker and
+ * orderable part number (bom_csv_part_number()).  The FC Connection of each
+ * is the port and protocol the configurator offers for it (its
+ * data_model_vehicle_components_validation.py: "Analog", "CAN1", "I2C1",
+ * "SERIALn", "Main Out"/"AIO"; "Analog Voltage and Current",
+ * "DroneCAN-BatteryInfo", "INA2XX", "AUTO", "DroneCAN", "CRSF", "MAVLink2",
+ * "Normal", "DShot600"), read from the part's catalogue description (its
+ * bus, its radio family) and, for serial ports, as wired on a Pixhawk
+ * standard board (TELEM1 SERIAL1, TELEM2 SERIAL2, GPS1 SERIAL3).  What the
+ * design cannot know (firmware versions, motor poles) is left as the
+ * configurator's empty template leaves it.
  *
- * The parameter file ("NAME,VALUE  # comment" lines, as Mission Planner
- * and the configurator write them, names sorted) sets what the design
- * determines, each value with a comment saying how it was derived:
- * BATT_CAPACITY, BATT_LOW_MAH, BATT_ARM_VOLT, BATT_LOW_VOLT, BATT_CRT_VOLT,
- * MOT_BAT_VOLT_MAX, MOT_BAT_VOLT_MIN, MOT_THST_HOVER, FRAME_CLASS,
- * FRAME_TYPE and the throttle-based harmonic notch INS_HNTCH_*.
+ * ardupilot.param: "NAME,VALUE" lines with every comment on its own line
+ * starting with '#', ASCII, LF line ends.  That is the one layout all of
+ * these loaders accept in full:
+ *   - Mission Planner (ParamFile.loadParamFile): skips lines starting with
+ *     '#', splits the others on space, comma and tab and takes only lines
+ *     of exactly two tokens (a trailing "# comment" makes a line vanish);
+ *   - MAVProxy / pymavlink (mavparm.load): strips, skips empty and '#'
+ *     lines, turns commas into spaces and rejects lines of other than two
+ *     words ("Invalid line");
+ *   - the Methodic Configurator (ParDict.load_param_file_into_dict): UTF-8
+ *     (a byte order mark would spoil the first line), '#' lines skipped,
+ *     NAME matching ^[A-Z][A-Z_0-9]*$ of at most 16 characters, no name
+ *     twice, VALUE a float.
+ * QGroundControl's parameter files are tab-separated "vehicle component
+ * NAME VALUE type" lines (ParameterManager / ParameterEditorController
+ * read only lines of five tab-separated fields), so qgroundcontrol.params
+ * carries the same values in that format.
+ *
+ * Both files open with a header naming the firmware the names and ranges
+ * are ArduCopter 4.5's, the parameters that need a reboot, and the two-pass
+ * load that enable parameters require (the BATT_ and INS_HNTCH_ values
+ * exist on the autopilot only once BATT_MONITOR and INS_HNTCH_ENABLE are
+ * set and it has rebooted); each enable parameter comes before the
+ * parameters it enables, and each value follows a comment saying how it
+ * was derived.
  *
  * Output layer: renders text, writes no file.
  */
@@ -53,7 +82,33 @@ enum ardupilot_frame_class {
 
 #define AP_FRAME_TYPE_X 1  /* FRAME_TYPE 1: X */
 
-/* What the design determines, worked out once for both files. */
+/* The components of vehicle_components.json the bill of materials can
+ * fill, each from one BOM line. */
+enum ardupilot_role {
+	AP_ROLE_FC,        /* Flight Controller */
+	AP_ROLE_MONITOR,   /* Battery Monitor */
+	AP_ROLE_GNSS,      /* GNSS Receiver */
+	AP_ROLE_RX,        /* RC Receiver */
+	AP_ROLE_TELEM,     /* Telemetry */
+	AP_ROLE_ESC,       /* ESC */
+	AP_ROLE_MOTOR,     /* Motors */
+	AP_ROLE_PROP,      /* Propellers */
+	AP_ROLE_BATTERY,   /* Battery */
+	AP_ROLE_FRAME,     /* Frame (a catalogue kit; else custom) */
+	AP_ROLE_MAX
+};
+
+/* The configurator's component name of a role ("Flight Controller"). */
+extern const char *const ardupilot_role_name[AP_ROLE_MAX];
+
+/* How a component connects to the flight controller (the configurator's
+ * "FC Connection" Type and Protocol). */
+struct ardupilot_link {
+	const char *type;      /* "SERIAL3", "CAN1", "Analog", "Main Out", ... */
+	const char *protocol;  /* "AUTO", "DroneCAN", "CRSF", "DShot600", ... */
+};
+
+/* What the design determines, worked out once for every file. */
 struct ardupilot_design {
 	const char *chemistry;        /* the configurator's name, e.g. "Lipo" */
 	const char *chemistry_aeroeval; /* ours, e.g. "LiPo" */
@@ -86,15 +141,35 @@ struct ardupilot_design {
 	double hover_throttle;        /* the design's hover throttle (speed ratio) */
 	double thrust_hover;          /* MOT_THST_HOVER as written */
 	bool thrust_hover_clamped;    /* the ratio fell outside 0.2..0.8 */
-	double notch_hz;              /* INS_HNTCH_FREQ as written */
-	bool notch_clamped;           /* outside 10..495 Hz */
 	bool feasible;                /* the design of record passes its checks */
+
+	/* The bill of materials, by component. */
+	int line[AP_ROLE_MAX];        /* index into r->bom, -1: not bought */
+	bool fc_on_esc;               /* the ESC board carries the flight controller */
+	bool rx_on_esc;               /* ... and the receiver */
+	bool esc_in_motor;            /* integrated motor + ESC systems */
+	const char *mcu;              /* "STM32H7xx", ..., "" unknown */
+	struct ardupilot_link link[AP_ROLE_MAX]; /* NULL members: none */
+	int batt_monitor;             /* BATT_MONITOR, -1: no monitor known */
+	char monitor_part[200];       /* its maker, part number and BOM item */
+	int mot_pwm_type;             /* MOT_PWM_TYPE: 0 Normal (PWM), 6 DShot600 */
+
+	/* The harmonic notch and the gyro loop it runs in. */
+	double rotor_hz;              /* hover rotor speed / 60 */
+	int gyro_rate_hz;             /* 1000, or 2000 when INS_GYRO_RATE is raised */
+	bool gyro_rate_raised;        /* write INS_GYRO_RATE 1 (an H7 board) */
+	double notch_hz;              /* INS_HNTCH_FREQ as written */
+	bool notch_held;              /* the rotor is faster than the loop allows */
+	double notch_bw_hz;           /* INS_HNTCH_BW */
+	int hmncs;                    /* INS_HNTCH_HMNCS */
+	int blade_harmonic_dropped;   /* the blade-pass harmonic lies above the
+	                                 loop's limit and is left out (0: kept) */
 };
 
 /* Works out d for r's design of record.  Returns 0, or -1 when the design
  * gets no hand-off, with the reason in why: not buildable, or a chemistry
  * the configurator has no name for (Li-S).  m gives the chemistry profile,
- * cat the parts' KV, pitch and blade count. */
+ * cat the parts' KV, pitch, blade count and the avionics' kinds. */
 int ardupilot_derive(const struct solve_result *r, const struct model_data *m,
                      const struct catalog *cat, struct ardupilot_design *d,
                      char *why, size_t whylen);
@@ -105,8 +180,13 @@ char *ardupilot_components(const struct solve_result *r,
                            const struct ardupilot_design *d, const char *name,
                            const char *aeroeval_version);
 
-/* The starting parameter file.  Ownership: free(). */
+/* ardupilot.param.  Ownership: free(). */
 char *ardupilot_params(const struct ardupilot_design *d, const char *name,
                        const char *aeroeval_version);
+
+/* qgroundcontrol.params: the same parameters, in the same order, for
+ * QGroundControl.  Ownership: free(). */
+char *ardupilot_params_qgc(const struct ardupilot_design *d, const char *name,
+                           const char *aeroeval_version);
 
 #endif

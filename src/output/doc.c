@@ -586,7 +586,7 @@ set_info(struct doc *d, const struct doc_info *info)
 	if (info->subject != NULL)
 		HPDF_SetInfoAttr(d->pdf, HPDF_INFO_SUBJECT, info->subject);
 	HPDF_SetInfoAttr(d->pdf, HPDF_INFO_CREATOR, "aeroeval " AEROEVAL_VERSION);
-	if (info->date != NULL) {
+	if (info->date != NULL && info->date[0] != '\0') {
 		HPDF_Date date;
 		if (parse_date(info->date, &date) != 0) {
 			doc_fail(d, "bad document date \"%s\" (want YYYY-MM-DD)", info->date);
@@ -607,6 +607,17 @@ doc_alloc(const struct template *tpl, const struct doc_info *info)
 		info = &none;
 	d->title = xstrdup(info->title != NULL ? info->title : "");
 	d->mission = xstrdup(info->mission != NULL ? info->mission : "");
+	struct doc_meta *m = &d->meta;
+	m->title = xstrdup(info->title != NULL ? info->title : "");
+	m->author = xstrdup(info->author != NULL ? info->author : "");
+	m->subject = xstrdup(info->subject != NULL ? info->subject : "");
+	m->doc_number = xstrdup(info->doc_number != NULL ? info->doc_number : "");
+	m->revision = xstrdup(info->revision != NULL ? info->revision : "");
+	m->input_sha256 = xstrdup(info->input_sha256 != NULL ? info->input_sha256 : "");
+	m->catalogue_sha256 = xstrdup(info->catalogue_sha256 != NULL ? info->catalogue_sha256 : "");
+	if (info->date != NULL && strlen(info->date) == 10)
+		memcpy(d->date, info->date, 11);
+	sha256_init(&d->id_ctx);
 	d->page_w = tpl->page_width_mm * PT_PER_MM;
 	d->page_h = tpl->page_height_mm * PT_PER_MM;
 	d->left = tpl->margin_left_mm * PT_PER_MM;
@@ -634,6 +645,7 @@ doc_alloc(const struct template *tpl, const struct doc_info *info)
 	d->font = load_font(d, tpl->font_regular);
 	d->bold = load_font(d, tpl->font_bold);
 	set_info(d, info);
+	doc_pdfa_begin(d);
 	if (!doc_failed(d))
 		doc_add_page(d);
 	return d;
@@ -655,6 +667,10 @@ doc_free(struct doc *d)
 	free(d->pages);
 	free(d->title);
 	free(d->mission);
+	char **meta[] = { &d->meta.title, &d->meta.author, &d->meta.subject, &d->meta.doc_number,
+		&d->meta.revision, &d->meta.input_sha256, &d->meta.catalogue_sha256 };
+	for (size_t i = 0; i < sizeof meta / sizeof meta[0]; i++)
+		free(*meta[i]);
 	free(d);
 }
 
@@ -1020,6 +1036,7 @@ doc_attach(struct doc *d, const char *name, const void *data, size_t n)
 	st += HPDF_NameTree_Add(tree, HPDF_String_New(mm, name, NULL), spec);
 	if (st != HPDF_OK)
 		doc_fail(d, "attachment: cannot embed %s", name);
+	doc_pdfa_associate(d, spec, file, name, data, n);
 	return doc_failed(d) ? -1 : 0;
 }
 
@@ -1059,6 +1076,7 @@ doc_save_mem(struct doc *d, unsigned char **out, size_t *n)
 	d->saved = 1;
 	draw_contents(d);
 	decorate_pages(d);
+	doc_pdfa_finish(d);
 	if (doc_failed(d) || HPDF_SaveToStream(d->pdf) != HPDF_OK || doc_failed(d))
 		return -1;
 	HPDF_UINT32 size = HPDF_GetStreamSize(d->pdf);

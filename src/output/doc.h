@@ -77,7 +77,12 @@ struct doc_info {
 	const char *author;   /* PDF /Author */
 	const char *subject;  /* PDF /Subject */
 	const char *date;     /* "YYYY-MM-DD" -> /CreationDate and /ModDate;
-	                         NULL: no date (never the clock) */
+	                         NULL or "": no date (never the clock) */
+	/* The document's identity in its XMP metadata; NULL: left out. */
+	const char *doc_number;       /* dc:identifier, aeroeval:DocumentNumber */
+	const char *revision;         /* xmpMM:VersionID, aeroeval:Revision */
+	const char *input_sha256;     /* aeroeval:InputSHA256 */
+	const char *catalogue_sha256; /* aeroeval:CatalogueSHA256 */
 };
 
 enum doc_align {

@@ -10,6 +10,7 @@
 #include <hpdf.h>
 
 #include "output/doc.h"
+#include "util/sha256.h"
 
 #define LEADING 1.38          /* line height / font size for body text */
 #define TABLE_SCALE 0.9       /* table text size / body size */
@@ -21,6 +22,13 @@ struct toc_entry {
 	char *text;
 	int page;                   /* index into pages[] */
 	double y;                   /* the heading's top, PDF coordinates */
+};
+
+/* The document's identity for its XMP metadata (doc_pdfa.c): copies of
+ * doc_info's texts, "" where none was given. */
+struct doc_meta {
+	char *title, *author, *subject;
+	char *doc_number, *revision, *input_sha256, *catalogue_sha256;
 };
 
 struct doc {
@@ -48,6 +56,11 @@ struct doc {
 	struct toc_entry *toc;
 	int n_toc, cap_toc;
 	char err[128];              /* first error, "" if none */
+	/* PDF/A (doc_pdfa.c) */
+	struct doc_meta meta;
+	char date[11];              /* "YYYY-MM-DD", "" undated */
+	HPDF_Array af;              /* the catalogue's associated files, or NULL */
+	struct sha256_ctx id_ctx;   /* the attachments, then the XMP: the /ID */
 };
 
 /* One output line: a slice of the source text. */
@@ -60,6 +73,15 @@ struct lines {
 	struct line *v;
 	int n, cap;
 };
+
+/* PDF/A-3b (doc_pdfa.c): the output intent when the document is made;
+ * an attachment's file specification and stream made an associated file;
+ * the metadata, the trailer /ID and printable annotations before it is
+ * saved.  Each records a failure in d. */
+void doc_pdfa_begin(struct doc *d);
+void doc_pdfa_associate(struct doc *d, HPDF_Dict spec, HPDF_Dict file, const char *name,
+                        const void *data, size_t n);
+void doc_pdfa_finish(struct doc *d);
 
 /* Remembers the first error (later ones are its consequences). */
 void doc_fail(struct doc *d, const char *fmt, ...)

@@ -300,8 +300,7 @@ format_utc(long long t, char out[11])
 }
 
 int
-fsout_resolve_date(const char *report_date, const char *mission_path,
-                   char out[11], char *err, size_t errlen)
+fsout_resolve_date(const char *report_date, char out[11], char *err, size_t errlen)
 {
 	/* 9999-12-31T23:59:59Z, the last second YYYY can spell. */
 	const long long epoch_max = 253402300799LL;
@@ -333,18 +332,10 @@ fsout_resolve_date(const char *report_date, const char *mission_path,
 		return FSOUT_DATE_EPOCH_ENV;
 	}
 
-	struct stat st;
-	if (stat(mission_path, &st) < 0) {
-		text_errf(err, errlen, "%s: cannot read modification time: %s",
-		        mission_path, strerror(errno));
-		return -1;
-	}
-	if (format_utc((long long)st.st_mtime, out) < 0) {
-		out[0] = '\0';
-		text_errf(err, errlen, "%s: modification time out of range", mission_path);
-		return -1;
-	}
-	return FSOUT_DATE_MISSION_MTIME;
+	/* No date given: the dossier is undated.  Never a file time or the
+	 * clock, so the same inputs give the same bytes whenever and wherever
+	 * the file was copied or touched. */
+	return FSOUT_DATE_NONE;
 }
 
 int

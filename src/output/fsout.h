@@ -40,23 +40,25 @@ int fsout_write_atomic(const char *path, const void *data, size_t n,
 int fsout_mkdirs(const char *dir, char *err, size_t errlen);
 
 
-/* Where fsout_resolve_date found the date (PRODUCT.md §2, in this order). */
+/* Where fsout_resolve_date found the date (issue 34 replaces PRODUCT.md
+ * §2's last fallback, the mission file's mtime, by none). */
 enum fsout_date_source {
 	FSOUT_DATE_REPORT,      /* the mission's report.date */
 	FSOUT_DATE_EPOCH_ENV,   /* the SOURCE_DATE_EPOCH environment variable */
-	FSOUT_DATE_MISSION_MTIME /* the mission file's modification time */
+	FSOUT_DATE_NONE         /* neither: the dossier is undated */
 };
 
-/* The dossier date as "YYYY-MM-DD" (UTC) in out, never from the clock
- * alone: report_date if it is not "" (it must be a real calendar date
- * written YYYY-MM-DD), else SOURCE_DATE_EPOCH if set and not empty (decimal
- * seconds since 1970-01-01T00:00:00Z, digits only, at most year 9999), else
- * the mtime of mission_path.  A set but invalid report_date or
+/* The dossier date as "YYYY-MM-DD" (UTC) in out: report_date if it is not
+ * "" (it must be a real calendar date written YYYY-MM-DD), else
+ * SOURCE_DATE_EPOCH if set and not empty (decimal seconds since
+ * 1970-01-01T00:00:00Z, digits only, at most year 9999), else none (out =
+ * "": the dossier says "undated" and carries no PDF date).  Nothing here
+ * reads a file time or the clock: the same inputs give the same dossier
+ * whatever the file times.  A set but invalid report_date or
  * SOURCE_DATE_EPOCH is an error, not a reason to fall through, so a typo
  * cannot silently change the date.  Returns the enum fsout_date_source used
  * (>= 0), or -1 with err set. */
-int fsout_resolve_date(const char *report_date, const char *mission_path,
-                       char out[11], char *err, size_t errlen);
+int fsout_resolve_date(const char *report_date, char out[11], char *err, size_t errlen);
 
 /* Longest output folder name: with ".NAME.tmp.PID.SEQ" (fsfolder.h) it
  * still fits the 255 bytes a file name may have. */

@@ -13,90 +13,84 @@ const char *const index_file_names[] = { "index.csv", "index.json", "overview.pd
 
 /* ---- index.csv ------------------------------------------------------------- */
 
+/* The mission as asked, then the design of record. */
 static const char *const csv_header[] = {
-	"name", "status", "takeoff_mass_kg", "mtow_interval_level", "mtow_lo_kg",
-	"mtow_hi_kg", "payload_kg", "flight_time_s", "hover_endurance_s", "cost_usd",
-	"prices_missing", "cells", "capacity_mah", "motor", "propeller", "battery",
-	"tightest_check", "tightest_margin", NULL
+	"name", "status",
+	"role", "rotors", "coaxial", "wheelbase_m", "airframe_class", "battery_chemistry",
+	"altitude_m", "ambient_temp_c", "t_hover_s", "t_forward_s", "t_climb_s",
+	"payload_kg", "max_payload_kg",
+	"takeoff_mass_kg", "mtow_interval_level", "mtow_lo_kg", "mtow_hi_kg",
+	"flight_time_s", "hover_endurance_s", "cost_usd", "prices_missing", "cells",
+	"capacity_mah", "motor", "propeller", "battery", "tightest_check", "tightest_margin",
+	NULL
 };
-
-/* A record being written: the text and whether a field came before. */
-struct rec {
-	struct strbuf *sb;
-	int n;  /* fields written in this record */
-};
-
-static void
-field(struct rec *r, const char *s)
-{
-	if (r->n++ > 0)
-		strbuf_append_char(r->sb, ',');
-	csv_write_field(r->sb, s);
-}
 
 /* Text from outside the program (names, catalogue texts): neutralised
  * when it starts like a formula (text_is_formula()). */
 static void
-text(struct rec *r, const char *s)
+text(struct csv_out *o, const char *s)
 {
 	if (!text_is_formula(s)) {
-		field(r, s);
+		csv_out_field(o, s);
 		return;
 	}
 	struct strbuf q = STRBUF_INIT;
 	strbuf_append_char(&q, '\'');
 	strbuf_append_str(&q, s);
-	field(r, strbuf_str(&q));
+	csv_out_field(o, strbuf_str(&q));
 	strbuf_free(&q);
 }
 
-/* A number with fixed decimals, or an empty cell when unknown. */
+/* The mission's inputs of a row (all empty when it has none). */
 static void
-num(struct rec *r, bool known, double x, int decimals)
+inputs_csv(struct csv_out *o, const struct summary_row *w)
 {
-	char t[64];
-	if (!known || numfmt_fixed(t, sizeof t, x, decimals) == 0)
-		t[0] = '\0';
-	field(r, t);
-}
-
-static void
-end(struct rec *r)
-{
-	strbuf_append(r->sb, "\r\n", 2);
-	r->n = 0;
+	bool in = w->has_inputs;
+	text(o, in ? w->role : "");
+	csv_out_num(o, in, w->rotors, 0);
+	csv_out_field(o, !in ? "" : w->coaxial ? "true" : "false");
+	csv_out_num(o, in, w->wheelbase_m, 3);
+	text(o, in ? w->airframe_class : "");
+	text(o, in ? w->chemistry : "");
+	csv_out_num(o, in, w->altitude_m, 0);
+	csv_out_num(o, in, w->ambient_temp_c, 2);
+	csv_out_num(o, in, w->t_hover_s, 0);
+	csv_out_num(o, in, w->t_forward_s, 0);
+	csv_out_num(o, in, w->t_climb_s, 0);
+	csv_out_num(o, true, w->payload_kg, 3);
+	csv_out_num(o, in, w->max_payload_kg, 3);
 }
 
 char *
 index_csv(const struct summary *s)
 {
 	struct strbuf sb = STRBUF_INIT;
-	struct rec r = { &sb, 0 };
+	struct csv_out o = { &sb, 0 };
 	for (size_t i = 0; csv_header[i] != NULL; i++)
-		field(&r, csv_header[i]);
-	end(&r);
+		csv_out_field(&o, csv_header[i]);
+	csv_out_end(&o);
 	for (size_t i = 0; i < s->n; i++) {
 		const struct summary_row *w = &s->rows[i];
 		bool real = w->status != SUMMARY_NOT_BUILDABLE;
-		text(&r, w->name);
-		field(&r, summary_status_name(w->status));
-		num(&r, true, w->takeoff_mass_kg, 3);
-		num(&r, w->has_interval && w->interval_level > 0.0, w->interval_level, 2);
-		num(&r, w->has_interval, w->mtow_lo_kg, 3);
-		num(&r, w->has_interval, w->mtow_hi_kg, 3);
-		num(&r, true, w->payload_kg, 3);
-		num(&r, w->has_flight_time, w->flight_time_s, 0);
-		num(&r, w->has_endurance, w->hover_endurance_s, 0);
-		num(&r, w->has_cost, w->cost_usd, 2);
-		num(&r, real, w->prices_missing, 0);
-		num(&r, w->cells > 0, w->cells, 0);
-		num(&r, w->capacity_mah > 0.0, w->capacity_mah, 0);
-		text(&r, w->motor);
-		text(&r, w->propeller);
-		text(&r, w->battery);
-		text(&r, w->tightest);
-		num(&r, w->tightest[0] != '\0', w->tightest_margin, 3);
-		end(&r);
+		text(&o, w->name);
+		csv_out_field(&o, summary_status_name(w->status));
+		inputs_csv(&o, w);
+		csv_out_num(&o, true, w->takeoff_mass_kg, 3);
+		csv_out_num(&o, w->has_interval && w->interval_level > 0.0, w->interval_level, 2);
+		csv_out_num(&o, w->has_interval, w->mtow_lo_kg, 3);
+		csv_out_num(&o, w->has_interval, w->mtow_hi_kg, 3);
+		csv_out_num(&o, w->has_flight_time, w->flight_time_s, 0);
+		csv_out_num(&o, w->has_endurance, w->hover_endurance_s, 0);
+		csv_out_num(&o, w->has_cost, w->cost_usd, 2);
+		csv_out_num(&o, real, w->prices_missing, 0);
+		csv_out_num(&o, w->cells > 0, w->cells, 0);
+		csv_out_num(&o, w->capacity_mah > 0.0, w->capacity_mah, 0);
+		text(&o, w->motor);
+		text(&o, w->propeller);
+		text(&o, w->battery);
+		text(&o, w->tightest);
+		csv_out_num(&o, w->tightest[0] != '\0', w->tightest_margin, 3);
+		csv_out_end(&o);
 	}
 	return strbuf_take(&sb, NULL);
 }
@@ -130,6 +124,23 @@ row_json(const struct summary_row *w)
 	cJSON *o = cJSON_CreateObject();
 	cJSON_AddStringToObject(o, "name", w->name);
 	cJSON_AddStringToObject(o, "status", summary_status_name(w->status));
+	bool in = w->has_inputs;
+	add_text(o, "role", in ? w->role : "");
+	add_num(o, "rotors", in, w->rotors);
+	if (in)
+		cJSON_AddBoolToObject(o, "coaxial", w->coaxial);
+	else
+		cJSON_AddNullToObject(o, "coaxial");
+	add_num(o, "wheelbase_m", in, w->wheelbase_m);
+	add_text(o, "airframe_class", in ? w->airframe_class : "");
+	add_text(o, "battery_chemistry", in ? w->chemistry : "");
+	add_num(o, "altitude_m", in, w->altitude_m);
+	add_num(o, "ambient_temp_c", in, w->ambient_temp_c);
+	add_num(o, "t_hover_s", in, w->t_hover_s);
+	add_num(o, "t_forward_s", in, w->t_forward_s);
+	add_num(o, "t_climb_s", in, w->t_climb_s);
+	add_num(o, "payload_kg", true, w->payload_kg);
+	add_num(o, "max_payload_kg", in, w->max_payload_kg);
 	add_num(o, "takeoff_mass_kg", true, w->takeoff_mass_kg);
 	if (w->has_interval) {
 		cJSON *iv = cJSON_AddObjectToObject(o, "mtow_interval");
@@ -139,7 +150,6 @@ row_json(const struct summary_row *w)
 	} else {
 		cJSON_AddNullToObject(o, "mtow_interval");
 	}
-	add_num(o, "payload_kg", true, w->payload_kg);
 	add_num(o, "flight_time_s", w->has_flight_time, w->flight_time_s);
 	add_num(o, "hover_endurance_s", w->has_endurance, w->hover_endurance_s);
 	add_num(o, "cost_usd", w->has_cost, w->cost_usd);

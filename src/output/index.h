@@ -5,22 +5,33 @@
  * no date, no path, no machine name, so a sharded build and a single one
  * produce identical files.
  *
- * index.csv (RFC 4180, CRLF after every record, like bom.csv), header:
- *   name,status,takeoff_mass_kg,mtow_interval_level,mtow_lo_kg,mtow_hi_kg,
- *   payload_kg,flight_time_s,hover_endurance_s,cost_usd,prices_missing,
- *   cells,capacity_mah,motor,propeller,battery,tightest_check,
- *   tightest_margin
- * Masses in kg with 3 decimals, times in s with 0, cost in USD with 2,
+ * index.csv (RFC 4180, CRLF after every record, like bom.csv), header: the
+ * name and verdict, the mission as asked, then the design of record:
+ *   name,status,role,rotors,coaxial,wheelbase_m,airframe_class,
+ *   battery_chemistry,altitude_m,ambient_temp_c,t_hover_s,t_forward_s,
+ *   t_climb_s,payload_kg,max_payload_kg,takeoff_mass_kg,
+ *   mtow_interval_level,mtow_lo_kg,mtow_hi_kg,flight_time_s,
+ *   hover_endurance_s,cost_usd,prices_missing,cells,capacity_mah,motor,
+ *   propeller,battery,tightest_check,tightest_margin
+ * so a study plots any result against any input without joining the
+ * mission files in.  The inputs are the fully defaulted mission's (what
+ * the design was sized for: payload_role.type, num_rotors, coaxial_layout,
+ * max_diameter_m, ..., max_payload_kg or payload_kg when it is 0).
+ * Masses in kg with 3 decimals, the wheelbase in m with 3, altitude in m
+ * with 0, ambient in degC with 2, times in s with 0, cost in USD with 2,
  * capacity in mAh with 0, the margin (a fraction of its limit, negative
- * when the check fails) with 3; an unknown value is an empty cell.  status
- * is "feasible", "infeasible" or "not buildable".  A text cell that starts
- * like a spreadsheet formula (= + - @: a mission file may be called
- * "-x.json") gets a leading apostrophe, so a spreadsheet shows it as text
- * instead of evaluating it.
+ * when the check fails) with 3; coaxial is true or false; an unknown value
+ * is an empty cell.  status is "feasible", "infeasible" or "not
+ * buildable".  A text cell that starts like a spreadsheet formula (= + - @:
+ * a mission file may be called "-x.json") gets a leading apostrophe, so a
+ * spreadsheet shows it as text instead of evaluating it.
  *
  * index.json: {"aeroeval_version", "counts": {"feasible", "infeasible",
- * "not_buildable"}, "missions": [{"name", "status", "takeoff_mass_kg",
- * "mtow_interval": {"level", "lo_kg", "hi_kg"} or null, "payload_kg",
+ * "not_buildable"}, "missions": [{"name", "status", "role", "rotors",
+ * "coaxial", "wheelbase_m", "airframe_class", "battery_chemistry",
+ * "altitude_m", "ambient_temp_c", "t_hover_s", "t_forward_s", "t_climb_s",
+ * "payload_kg", "max_payload_kg", "takeoff_mass_kg",
+ * "mtow_interval": {"level", "lo_kg", "hi_kg"} or null,
  * "flight_time_s", "hover_endurance_s", "cost_usd", "prices_missing",
  * "cell_count", "battery_capacity_mah", "motor", "propeller", "battery",
  * "tightest_check": {"name", "margin"} or null}]}; unknown values are

@@ -329,7 +329,7 @@ report_render(const struct report_input *in, unsigned char **pdf, size_t *n,
 	rp.mass_unit = small ? "g" : "kg";
 	rp.mass_dec = small ? 1 : 3;
 
-	char title[SPEC_STR_MAX + 32];
+	char title[SPEC_STR_MAX + 32], number[32];
 	snprintf(title, sizeof title, "%s", m->report.title[0] != '\0' ? m->report.title : "Design dossier");
 	struct doc_info info = {
 		.title = title,
@@ -337,6 +337,10 @@ report_render(const struct report_input *in, unsigned char **pdf, size_t *n,
 		.author = m->report.author[0] != '\0' ? m->report.author : NULL,
 		.subject = m->report.client[0] != '\0' ? m->report.client : "Multirotor UAV sizing",
 		.date = in->date != NULL && in->date[0] != '\0' ? in->date : NULL,
+		.doc_number = report_doc_number(r, number, sizeof number),
+		.revision = m->report.revision,
+		.input_sha256 = r->input_sha256,
+		.catalogue_sha256 = r->catalogue_sha256,
 	};
 	rp.d = doc_alloc(in->tpl, &info);
 

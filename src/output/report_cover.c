@@ -286,12 +286,20 @@ cover_key_figures(struct rep *rp)
 	strbuf_free(&s2);
 }
 
+/* The issue date, or "undated" when the mission gives none and
+ * SOURCE_DATE_EPOCH is unset (fsout_resolve_date). */
+static const char *
+report_date_text(const struct rep *rp)
+{
+	return rp->in->date != NULL && rp->in->date[0] != '\0' ? rp->in->date : "undated";
+}
+
 /* The document number: from the input's fingerprint, so that the same
  * mission file always carries the same number ("AE-4FBB-C60E"). */
-static const char *
-doc_number(const struct rep *rp, char *buf, size_t n)
+const char *
+report_doc_number(const struct solve_result *r, char *buf, size_t n)
 {
-	const char *h = rp->r->input_sha256;
+	const char *h = r->input_sha256;
 	char u[9];
 	for (int i = 0; i < 8; i++) {
 		char c = h[0] != '\0' && (int)strlen(h) > i ? h[i] : '0';
@@ -326,9 +334,9 @@ report_sec_cover(struct rep *rp, int first)
 	const char *kv[] = {
 		"Client", m->report.client,
 		"Project", m->report.project_id,
-		"Document number", doc_number(rp, b1, sizeof b1),
+		"Document number", report_doc_number(rp->r, b1, sizeof b1),
 		"Revision", m->report.revision,
-		"Date", rp->in->date,
+		"Date", report_date_text(rp),
 		"Prepared by", m->report.author,
 		"Mission", report_sfmt(&sb2, "%s (%s role, %d rotors, %s" NBSP "%s payload); the file %s is "
 		                       "attached to this PDF", report_or_absent(mname), report_role_name(r),
@@ -364,10 +372,10 @@ report_sec_control(struct rep *rp)
 	doc_new_page(rp->d);
 	report_subheading(rp, "Document control", REP_KEEP_PT);
 	const char *kv[] = {
-		"Document number", doc_number(rp, num, sizeof num),
+		"Document number", report_doc_number(rp->r, num, sizeof num),
 		"Title", m->report.title[0] != '\0' ? m->report.title : "Design dossier",
 		"Revision", m->report.revision,
-		"Issue date", rp->in->date,
+		"Issue date", report_date_text(rp),
 		"Prepared by", signatory(m->report.author),
 		"Checked by", signatory(m->report.checked_by),
 		"Approved by", signatory(m->report.approved_by),
@@ -383,7 +391,7 @@ report_sec_control(struct rep *rp)
 	struct doc_table t;
 	doc_table_init(&t, hcols, 4);
 	doc_table_cell(&t, DOC_CELL_NORMAL, "%s", report_or_absent(m->report.revision));
-	doc_table_cell(&t, DOC_CELL_NORMAL, "%s", report_or_absent(rp->in->date));
+	doc_table_cell(&t, DOC_CELL_NORMAL, "%s", report_date_text(rp));
 	doc_table_cell(&t, DOC_CELL_NORMAL, "%s", report_sfmt(&sb, "Issued: compiled by aeroeval %s from %s "
 	               "(input SHA-256 %.12s…)", report_or_absent(rp->in->engine_version),
 	               report_or_absent(rp->in->mission_file_name), r->input_sha256));

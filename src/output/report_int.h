@@ -140,6 +140,10 @@ const char *report_no_parts_reason(const struct rep *rp);
 const char *report_role_name(const struct solve_result *r);
 
 /* The sections, by file. */
+/* The dossier's document number, from the input fingerprint
+ * ("AE-4FBB-C60E"), in buf. */
+const char *report_doc_number(const struct solve_result *r, char *buf, size_t n);
+
 void report_sec_cover(struct rep *rp, int first);
 void report_sec_control(struct rep *rp);
 void report_sec_summary(struct rep *rp, const char *title);

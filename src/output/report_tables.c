@@ -15,6 +15,7 @@
 #include "core/catalog.h"
 #include "output/doc.h"
 #include "output/plot.h"
+#include "output/bom_csv.h"
 #include "output/report_int.h"
 #include "util/strbuf.h"
 #include "util/xalloc.h"
@@ -200,7 +201,8 @@ bom_table(struct rep *rp)
 		if (strcmp(l->category, "custom") == 0)
 			strbuf_printf(&sb, "%s (custom part)", l->part_number);
 		else
-			strbuf_printf(&sb, "%s %s (%s)", l->manufacturer, l->part_number, l->category);
+			strbuf_printf(&sb, "%s %s (%s)", l->manufacturer, bom_csv_part_number(r, l),
+			              l->category);
 		if (l->description[0] != '\0')
 			strbuf_printf(&sb, "\n%s", l->description);
 		if (l->source_url[0] != '\0')

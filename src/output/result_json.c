@@ -836,7 +836,7 @@ put_bom(struct jw *w, const struct solve_result *r)
 		jw_int(w, "qty", b->qty);
 		JW_STR(w, "category", b->category);
 		JW_STR(w, "manufacturer", b->manufacturer);
-		JW_STR(w, "part_number", b->part_number);
+		jw_lit(w, "part_number", bom_csv_part_number(r, b));
 		JW_STR(w, "description", b->description);
 		jw_num(w, "unit_mass_kg", b->unit_mass_kg);
 		jw_num(w, "total_mass_kg", b->total_mass_kg);

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "util/numfmt.h"
 #include "util/xalloc.h"
 
 void
@@ -185,4 +186,30 @@ csv_write_field(struct strbuf *sb, const char *s)
 		strbuf_append_char(sb, *s);
 	}
 	strbuf_append_char(sb, '"');
+}
+
+void
+csv_out_field(struct csv_out *o, const char *s)
+{
+	if (o->n++ > 0)
+		strbuf_append_char(o->sb, ',');
+	csv_write_field(o->sb, s);
+}
+
+bool
+csv_out_num(struct csv_out *o, bool known, double x, int decimals)
+{
+	char t[400];   /* the 309 digits of DBL_MAX, its sign, point and decimals */
+	bool ok = !known || numfmt_fixed(t, sizeof t, x, decimals) > 0;
+	if (!known || !ok)
+		t[0] = '\0';
+	csv_out_field(o, t);
+	return ok;
+}
+
+void
+csv_out_end(struct csv_out *o)
+{
+	strbuf_append(o->sb, "\r\n", 2);
+	o->n = 0;
 }

@@ -1,5 +1,6 @@
 /* csv.h — an RFC 4180 CSV reader over a buffer in memory, and the field
- * writer of the tables aeroeval writes (index.csv).
+ * and record writer of the tables aeroeval writes (bom.csv,
+ * bom_totals.csv, index.csv).
  *
  * For input modules (cohort.c); it knows nothing about what the columns
  * mean.  Accepted: fields quoted with '"' holding commas, doubled quotes
@@ -26,6 +27,7 @@
 #ifndef AEROEVAL_CSV_H
 #define AEROEVAL_CSV_H
 
+#include <stdbool.h>
 #include <stddef.h>
 
 #include "util/strbuf.h"
@@ -74,5 +76,26 @@ void csv_free(struct csv_reader *r);
  * quote doubled) when it holds a comma, a double quote, CR or LF.  The
  * caller writes the separators (",") and record ends ("\r\n"). */
 void csv_write_field(struct strbuf *sb, const char *s);
+
+/* A record being written into sb, for the tables aeroeval writes (bom.csv,
+ * bom_totals.csv, index.csv): fields with their separators, CRLF after the
+ * record as RFC 4180 says (after the last one too).
+ *	struct csv_out o = { &sb, 0 };
+ *	csv_out_field(&o, "a"); csv_out_num(&o, true, 1.25, 2); csv_out_end(&o); */
+struct csv_out {
+	struct strbuf *sb;  /* the text */
+	int n;              /* fields written in the current record */
+};
+
+/* One field (csv_write_field), after a ',' unless it opens the record. */
+void csv_out_field(struct csv_out *o, const char *s);
+
+/* x with `decimals` digits after the point, never "-0.0" (numfmt_fixed);
+ * an empty field when !known.  Returns false, leaving the field empty,
+ * when x is known but not finite: the caller counts that as an error. */
+bool csv_out_num(struct csv_out *o, bool known, double x, int decimals);
+
+/* Ends the record with CRLF. */
+void csv_out_end(struct csv_out *o);
 
 #endif
