@@ -279,7 +279,7 @@ report_template_order_and_sensitivity_should_be_honoured(void **state)
 	size_t np = 0;
 	char err[128];
 	assert_int_equal(report_render(&in, &pdf, &np, err, sizeof err), 0);
-	assert_in_range(count_pages(pdf, np), 3, 5);
+	assert_in_range(count_pages(pdf, np), 3, 7); /* the checks table runs to ~35 rows */
 	free(pdf);
 	template_free(tpl);
 	free(r);

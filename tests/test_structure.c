@@ -1,12 +1,23 @@
 /* test_structure.c — CFRP arm sizing and resonance against paper §V:
  * eq. (sigallow), eq. (dout) with the minimum wall, eq. (fnat), the
  * resonance margin on both sides of the blade-pass band, the CG-offset
- * thrust and its rejection, and the minimum structural fraction.  Hand
- * values in the comments.
+ * thrust and its rejection, and the minimum structural fraction; beyond
+ * the paper, the stiffness sizing (motor tilt F L²/2EI <= 1°), the mode
+ * floor, torsion and the band clearance.  Hand values in the comments.
  */
 #include "test_util.h"
 #include "physics/structure.h"
 #include "util/units.h"
+
+/* An arm sized for strength alone (no full-thrust tilt, no mode floor). */
+static void
+strength_arm(double force_n, double length_m, double alpha_w,
+             double tip_mass_kg, struct structure_arm *a)
+{
+	struct structure_arm_loads in = { force_n, 0.0, 0.0, tip_mass_kg,
+		length_m, alpha_w, 0.0 };
+	structure_size_arm(&in, a);
+}
 
 static void
 structure_sigma_allow_should_be_192_mpa(void **state)
@@ -25,7 +36,7 @@ structure_arm_d_out_should_follow_eq_dout(void **state)
 	 * 1 - α⁴ = 1 - 0.6561 = 0.3439
 	 * d = cbrt(32 · 8.073225 / (π · 0.3439 · 192e6)) = cbrt(258.3432 / 2.07435593e8)
 	 *   = cbrt(1.24541404e-6) = 0.01075898377 m */
-	structure_size_arm(23.85, 0.3385, 0.9, 0.1385, &a);
+	strength_arm(23.85, 0.3385, 0.9, 0.1385, &a);
 	assert_rel(a.root_moment_nm, 8.073225, 1e-12);
 	assert_rel(a.d_out_m, 0.01075898377, 1e-9);
 	/* wall = d (1 - α)/2 = 0.000537949 m > 0.5 mm: the floor does not bind */
@@ -46,7 +57,7 @@ structure_arm_wall_should_be_floored_at_0_5_mm(void **state)
 	/* F = 2.385 N at L = 0.1185 m: M_b = 0.28262250 N m,
 	 * d = cbrt(32 · 0.2826225 / (π · 0.3439 · 192e6)) = 0.00351958246 m,
 	 * its α-wall 0.000175979 m < 0.5 mm → wall = 0.5 mm, d_in = 2.51958 mm */
-	structure_size_arm(2.385, 0.1185, 0.9, 0.03, &a);
+	strength_arm(2.385, 0.1185, 0.9, 0.03, &a);
 	assert_rel(a.d_out_m, 0.00351958246, 1e-9);
 	assert_true(a.wall_floor_binds);
 	assert_rel(a.wall_m, STRUCT_MIN_WALL_M, 1e-15);
@@ -82,7 +93,7 @@ structure_sized_arm_should_report_its_own_natural_frequency(void **state)
 {
 	(void)state;
 	struct structure_arm a;
-	structure_size_arm(23.85, 0.3385, 0.9, 0.1385, &a);
+	strength_arm(23.85, 0.3385, 0.9, 0.1385, &a);
 	double want = structure_natural_freq_hz(a.i_x_m4, a.length_m, 0.1385,
 	    STRUCT_RHO_CF_KG_M3 * a.area_m2);
 	assert_rel(a.f_nat_hz, want, 1e-12);
@@ -167,6 +178,79 @@ structure_min_fraction_should_stay_between_0_06_and_0_20(void **state)
 	assert_rel(structure_min_fraction(3.0), 0.20, 1e-12);
 }
 
+static void
+structure_arm_should_be_stiff_enough_for_one_degree_of_tilt(void **state)
+{
+	(void)state;
+	/* 41 N of full thrust at the tip of a 0.5 m arm (design load 20 N):
+	 * I >= F L² / (2 E θ) = 41 · 0.25 / (2 · 70e9 · 0.01745329) = 4.19487e-9 m⁴
+	 * d = (64 I / (π (1 - 0.9⁴)))^¼ = (2.48492e-7)^¼ = 0.0223269 m
+	 * (strength alone: cbrt(32 · 10 / (π · 0.3439 · 192e6)) = 0.01155 m) */
+	struct structure_arm_loads in = { 20.0, 41.0, 2.0, 0.3, 0.5, 0.9, 0.0 };
+	struct structure_arm a;
+	structure_size_arm(&in, &a);
+	assert_int_equal(a.sized_by, ARM_BY_TILT);
+	assert_rel(a.d_out_m, 0.0223269344, 1e-8);
+	assert_rel(a.i_x_m4, 4.19486957e-9, 1e-8);
+	assert_rel(a.tilt_full_deg, 1.0, 1e-9);
+	/* δ = F L³ / 3EI = (2/3) θ L = (2/3) · 0.01745329 · 0.5 = 5.8178 mm */
+	assert_rel(a.deflection_full_m, 0.00581776417, 1e-8);
+	/* τ = Q r / 2I = 2 · 0.0111635 / (2 · 4.19487e-9) = 2.66122 MPa */
+	assert_rel(a.torsion_pa, 2.66121914e6, 1e-7);
+	/* The stress at the design load is far below σ_all: a real margin. */
+	assert_true(a.safety_factor > 1.5);
+	assert_rel(a.safety_factor, 288e6 / a.stress_pa, 1e-12);
+}
+
+static void
+structure_arm_mode_should_meet_its_floor(void **state)
+{
+	(void)state;
+	/* The 0.5 m arm above with a 0.3 kg tip has its mode near 36 Hz;
+	 * asked for 60 Hz, the tube grows until the mode is 60 Hz. */
+	struct structure_arm_loads in = { 20.0, 41.0, 2.0, 0.3, 0.5, 0.9, 60.0 };
+	struct structure_arm a;
+	structure_size_arm(&in, &a);
+	assert_int_equal(a.sized_by, ARM_BY_MODE);
+	assert_rel(a.f_nat_hz, 60.0, 1e-9);
+	assert_true(a.tilt_full_deg < 1.0);
+	/* A floor it already clears changes nothing. */
+	in.mode_floor_hz = 10.0;
+	structure_size_arm(&in, &a);
+	assert_int_equal(a.sized_by, ARM_BY_TILT);
+}
+
+static void
+structure_tau_allow_and_gyro_filter_should_follow_their_sources(void **state)
+{
+	(void)state;
+	/* 68 MPa · 0.40 / 1.5 = 18.1333 MPa */
+	assert_rel(structure_tau_allow_pa(), 18.1333333e6, 1e-8);
+	/* 289.22 · 10^-0.838 = 41.998 Hz; 24 in: 20.166 Hz; 30 in: 16.726 Hz */
+	assert_rel(structure_gyro_filter_hz(10.0 * 0.0254), 41.9979722, 1e-8);
+	assert_rel(structure_gyro_filter_hz(24.0 * 0.0254), 20.1656071, 1e-8);
+	assert_rel(structure_gyro_filter_hz(30.0 * 0.0254), 16.7263319, 1e-8);
+	assert_rel(structure_gyro_filter_hz(0.0), 0.0, 0.0);
+}
+
+static void
+structure_band_clear_should_judge_the_near_edge(void **state)
+{
+	(void)state;
+	double edge;
+	bool above;
+	/* Band 27.3–38 Hz ± 15 %: 23.739–43.7 Hz. */
+	assert_false(structure_band_clear(25.0, 27.3, 38.0, 1.15, &edge, &above));
+	assert_false(above);
+	assert_rel(edge, 27.3 / 1.15, 1e-12);
+	assert_true(structure_band_clear(23.0, 27.3, 38.0, 1.15, &edge, &above));
+	assert_true(structure_band_clear(44.0, 27.3, 38.0, 1.15, &edge, &above));
+	assert_true(above);
+	assert_rel(edge, 43.7, 1e-12);
+	assert_false(structure_band_clear(40.0, 27.3, 38.0, 1.15, &edge, &above));
+	assert_true(above);
+}
+
 int
 main(void)
 {
@@ -182,6 +266,10 @@ main(void)
 		cmocka_unit_test(structure_cg_thrust_should_load_the_worst_motor),
 		cmocka_unit_test(structure_cg_thrust_should_reject_an_offset_at_or_beyond_d_y),
 		cmocka_unit_test(structure_min_fraction_should_stay_between_0_06_and_0_20),
+		cmocka_unit_test(structure_arm_should_be_stiff_enough_for_one_degree_of_tilt),
+		cmocka_unit_test(structure_arm_mode_should_meet_its_floor),
+		cmocka_unit_test(structure_tau_allow_and_gyro_filter_should_follow_their_sources),
+		cmocka_unit_test(structure_band_clear_should_judge_the_near_edge),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -17,7 +17,7 @@
 #define RES_MAX_TRACE      80   /* discharge samples kept (FINAL_STEPS + 13) */
 #define RES_MAX_SWEEP      64   /* power-vs-speed points (1..30 m/s by 0.5) */
 #define RES_MAX_ENDURANCE  32   /* endurance-explorer points */
-#define RES_MAX_CHECKS     32
+#define RES_MAX_CHECKS     40   /* every row of core/checks.h */
 #define RES_MAX_VIOLATIONS 24
 #define RES_MAX_FIXES      3
 #define RES_MAX_RATIONALE  48
@@ -25,6 +25,7 @@
 #define RES_MAX_CANDIDATES 512  /* motors scored for the crosshair figure */
 #define RES_ID_MAX         128  /* a catalogue id, NUL included (CATALOG_ID_MAX) */
 #define RES_TEXT           256
+#define RES_BASIS          72   /* what sets a check's limit, "2 × XT60, 60 A" */
 
 /* Mission phases, in the order they are flown. */
 enum res_phase_id { PHASE_CLIMB, PHASE_FORWARD, PHASE_HOVER, PHASE_MAX };
@@ -79,14 +80,19 @@ struct res_sample {
  * and optim.c): static, so results copy freely, and a trial closing writes
  * no text. */
 struct res_check {
+	const char *code;    /* "THERMAL_RUNAWAY" (core/checks.h) */
 	const char *name;    /* "Battery peak temperature" */
 	const char *unit;    /* "°C" */
+	const char *condition; /* "full-throttle burst, 10 s" */
+	char basis[RES_BASIS]; /* what sets the limit, "" when the name says it */
 	double value;        /* achieved */
 	double limit;        /* allowed */
 	bool upper;          /* true: value <= limit passes; false: value >= limit */
 	double margin;       /* (limit - value)/limit or (value - limit)/limit */
 	bool pass;
 	bool sized;          /* the design is sized to this limit by construction */
+	bool advisory;       /* judged, but a failure does not reject the design
+	                        (the continuous reference's resonances) */
 };
 
 struct res_violation {
@@ -257,6 +263,16 @@ struct res_run {
 	double blade_pass_low_hz;  /* at the lowest in-flight rpm (0.7 × hover) */
 	double resonance_margin;   /* >= 0: mode clear of the band (structure.h) */
 	double arm_tip_mass_kg;    /* motor(s) + propeller(s) at one arm tip */
+	const char *arm_sized_by;  /* "strength", "stiffness (motor tilt)", ... */
+	double arm_safety_factor;  /* fatigue strength / root stress at the design load */
+	double arm_tilt_full_deg;  /* motor tilt from arm bending at full thrust */
+	double arm_deflection_full_mm; /* arm tip deflection at full thrust */
+	double arm_torsion_mpa;    /* shear stress from the full-throttle torque */
+	double arm_torsion_allow_mpa;
+	double gyro_filter_hz;     /* the flight controller's gyro filter for the propeller */
+	double rev_band_low_hz;    /* once-per-revolution band of the steady flight: */
+	double rev_band_high_hz;   /* hover at the lightest mass flown to the
+	                              fastest sustained phase */
 	bool arm_wall_floor_binds;
 	bool min_fraction_binds;
 

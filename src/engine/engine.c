@@ -335,7 +335,7 @@ explain(const struct sizing_params *p, const struct res_run *o,
 	else if (p->prop_frac < 1.0)
 		res_rationale(r, "Propeller %.1f × %.1f in, %.0f %% of the largest the "
 		    "wheelbase admits (%.1f in), the lightest that meets the mission: "
-		    "the largest does not (%.120s).",
+		    "on the largest, %.110s.",
 		    o->opt.prop_diameter_in, o->opt.prop_pitch_in, 100.0 * p->prop_frac,
 		    o->overlap_limit_in, o->largest.fails[0] ? o->largest.fails
 		    : "it was not tried");
@@ -517,9 +517,20 @@ note_largest(struct res_run *t, bool ok, const struct solve_result *scratch)
 	l->mass_kg = t->mass.total_kg;
 	l->motor_kg = t->mass.motor_kg;
 	l->battery_kg = t->mass.battery_kg;
-	if (!ok)
-		snprintf(l->fails, sizeof l->fails, "%s", scratch->n_violations > 0
-		    ? scratch->violations[0].message : t->termination);
+	if (ok)
+		return;
+	/* The first check it fails, said short enough for a rationale line. */
+	for (int i = 0; i < t->n_checks; i++) {
+		const struct res_check *c = &t->checks[i];
+		if (c->pass || c->advisory)
+			continue;
+		snprintf(l->fails, sizeof l->fails, "%s at %s is %.3g%s%s, the limit "
+		    "%.3g%s%s", c->name, c->condition, c->value, c->unit[0] ? " " : "",
+		    c->unit, c->limit, c->unit[0] ? " " : "", c->unit);
+		return;
+	}
+	snprintf(l->fails, sizeof l->fails, "%s", scratch->n_violations > 0
+	    ? scratch->violations[0].message : t->termination);
 }
 
 /* The lightest passing design over every diameter prop_frac() gives: the

@@ -157,13 +157,19 @@ report_price(const struct rep *rp, struct strbuf *sb)
 	return strbuf_str(sb);
 }
 
-const struct res_check *
-report_find_check(const struct res_run *run, const char *prefix)
+const char *
+report_margin(char *buf, size_t n, double margin)
 {
-	for (int i = 0; i < run->n_checks && i < RES_MAX_CHECKS; i++)
-		if (strncmp(run->checks[i].name, prefix, strlen(prefix)) == 0)
-			return &run->checks[i];
-	return NULL;
+	/* A margin of ten times the limit or more says only "far": no
+	 * absurd percentages. */
+	if (margin >= 10.0 || margin <= -10.0) {
+		str_copy(buf, n, margin > 0.0 ? ">" NBSP "999" NBSP "%" : "<" NBSP "−999" NBSP "%");
+		return buf;
+	}
+	char num[32];
+	report_num(num, sizeof num, 100.0 * margin, fabs(margin) >= 1.0 ? 0 : 1);
+	snprintf(buf, n, "%s" NBSP "%%", num);
+	return buf;
 }
 
 /* ---- headings, lists, small tables ---------------------------------------- */

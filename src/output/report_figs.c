@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/checks.h"
 #include "output/doc.h"
 #include "output/plot.h"
 #include "output/report_int.h"
@@ -366,7 +367,7 @@ report_sec_thermal(struct rep *rp, const char *title)
 	           report_sfmt(&s2, "≥" NBSP "%s" NBSP "V (floor)", report_num(b2, sizeof b2, rec->voltage_floor_v, 2)),
 	           report_sfmt(&s3, "%s" NBSP "V", report_num(b3, sizeof b3, dv, 2)), dv < 0);
 	/* The pack's burst rating, where the parts search checked it. */
-	const struct res_check *burst = report_find_check(rec, "Battery current, full throttle");
+	const struct res_check *burst = checks_find(rec, "BATTERY_BURST");
 	margin_row(&t, "Full-throttle battery current",
 	           report_sfmt(&sb, "%s" NBSP "A (%s" NBSP "C)", report_num(b1, sizeof b1, rec->peak_current_a, 1),
 	                       report_num(b2, sizeof b2, rec->peak_c_rate, 1)),

@@ -124,7 +124,8 @@ double report_mtow(const struct rep *rp);
 const char *report_price(const struct rep *rp, struct strbuf *sb);
 
 /* The check of run whose name starts with prefix, or NULL. */
-const struct res_check *report_find_check(const struct res_run *run, const char *prefix);
+/* A check's margin for a table: "12.5 %", "140 %", "> 999 %". */
+const char *report_margin(char *buf, size_t n, double margin);
 
 /* A label/value table with a narrow label column; values from mono_from
  * on (>= 0) in the monospace font (fingerprints). */

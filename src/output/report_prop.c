@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/checks.h"
 #include "core/catalog.h"
 #include "output/doc.h"
 #include "output/plot.h"
@@ -378,16 +379,16 @@ gate_table(struct rep *rp)
 		{ "Limit", 1.0, DOC_ALIGN_RIGHT }, { "Result", 0.8, DOC_ALIGN_CENTER },
 	};
 	static const char *const gates[][2] = {
-		{ "Propeller diameter", "Rotor overlap: propeller diameter (in)" },
-		{ "Tip Mach", "Tip Mach number at full throttle" },
-		{ "Propeller speed", "Propeller speed at full throttle (rpm)" },
-		{ "Downwash", "Downwash, crop and drift (m/s)" },
+		{ "PROP_OVERLAP", "Rotor overlap: propeller diameter (in)" },
+		{ "TIP_MACH", "Tip Mach number at full throttle" },
+		{ "PROP_RPM", "Propeller speed at full throttle (rpm)" },
+		{ "DOWNWASH", "Downwash, crop and drift (m/s)" },
 	};
 	char b1[48];
 	struct doc_table t;
 	doc_table_init(&t, cols, 4);
 	for (size_t k = 0; k < sizeof gates / sizeof gates[0]; k++) {
-		const struct res_check *ck = report_find_check(rp->rec, gates[k][0]);
+		const struct res_check *ck = checks_find(rp->rec, gates[k][0]);
 		if (ck == NULL)
 			continue;   /* not a limit of this role or these parts */
 		doc_table_cell(&t, DOC_CELL_NORMAL, "%s", gates[k][1]);

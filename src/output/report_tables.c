@@ -292,13 +292,13 @@ static void
 checks_table(struct rep *rp, const struct res_run *run, int failing_first)
 {
 	static const struct doc_column cols[] = {
-		{ "Constraint", 3.2, DOC_ALIGN_LEFT }, { "Value", 1.0, DOC_ALIGN_RIGHT },
-		{ "Limit", 1.0, DOC_ALIGN_RIGHT }, { "Margin", 0.85, DOC_ALIGN_RIGHT },
-		{ "Result", 0.8, DOC_ALIGN_CENTER },
+		{ "Check", 2.7, DOC_ALIGN_LEFT }, { "Condition", 1.25, DOC_ALIGN_LEFT },
+		{ "Value", 0.9, DOC_ALIGN_RIGHT }, { "Limit", 0.95, DOC_ALIGN_RIGHT },
+		{ "Margin", 0.75, DOC_ALIGN_RIGHT }, { "Result", 0.65, DOC_ALIGN_CENTER },
 	};
 	char b1[48];
 	struct doc_table t;
-	doc_table_init(&t, cols, 5);
+	doc_table_init(&t, cols, 6);
 	for (int pass = 0; pass < 2; pass++) {
 		for (int i = 0; i < run->n_checks && i < RES_MAX_CHECKS; i++) {
 			const struct res_check *c = &run->checks[i];
@@ -306,7 +306,11 @@ checks_table(struct rep *rp, const struct res_run *run, int failing_first)
 			if (failing_first ? c->pass != (pass == 1) : pass == 1)
 				continue;
 			const char *unit = c->unit[0] != '\0' ? NBSP : "";
-			doc_table_cell(&t, DOC_CELL_NORMAL, "%s", c->name);
+			if (c->basis[0] != '\0')
+				doc_table_cell(&t, DOC_CELL_NORMAL, "%s (%s)", c->name, c->basis);
+			else
+				doc_table_cell(&t, DOC_CELL_NORMAL, "%s", c->name);
+			doc_table_cell(&t, DOC_CELL_NORMAL, "%s", report_or_absent(c->condition));
 			doc_table_cell(&t, DOC_CELL_NORMAL, "%s%s%s", report_auto(b1, sizeof b1, c->value), unit, c->unit);
 			doc_table_cell(&t, DOC_CELL_NORMAL, "%s" NBSP "%s%s%s", c->upper ? "≤" : "≥",
 			               report_auto(b1, sizeof b1, c->limit), unit, c->unit);
@@ -318,7 +322,7 @@ checks_table(struct rep *rp, const struct res_run *run, int failing_first)
 			if (c->sized && c->pass)
 				doc_table_cell(&t, ms, "sized to it");
 			else
-				doc_table_cell(&t, ms, "%s" NBSP "%%", report_num(b1, sizeof b1, 100.0 * c->margin, 1));
+				doc_table_cell(&t, ms, "%s", report_margin(b1, sizeof b1, c->margin));
 			doc_table_cell(&t, c->pass ? DOC_CELL_PASS : DOC_CELL_FAIL, "%s", c->pass ? "PASS" : "FAIL");
 		}
 	}

@@ -554,7 +554,10 @@ put_checks(struct jw *w, const struct res_run *run)
 	for (int i = 0; i < n; i++) {
 		const struct res_check *c = &run->checks[i];
 		jw_obj(w, NULL);
+		jw_lit(w, "code", c->code);
 		jw_lit(w, "name", c->name);
+		jw_lit(w, "condition", c->condition);
+		jw_str(w, "basis", c->basis, sizeof c->basis);
 		jw_lit(w, "unit", c->unit);
 		jw_num(w, "value", c->value);
 		jw_num(w, "limit", c->limit);

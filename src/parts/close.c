@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/checks.h"
 #include "parts/parts_int.h"
 #include "parts/screen.h"
 #include "physics/aero.h"
@@ -14,6 +15,7 @@
 #include "physics/therm.h"
 #include "sizing/airframe.h"
 #include "sizing/feasibility.h"
+#include "util/strbuf.h"
 #include "util/units.h"
 #include "util/xalloc.h"
 
@@ -207,8 +209,13 @@ craft_masses(const struct sizing_params *q, const struct parts_option *o,
 {
 	double n = (double)q->n_rotors;
 	double tip = o->motor->mass_kg + (o->prop != NULL ? o->prop->mass_kg : 0.0);
+	/* Q = P / 2πn = T D C_P / (2π C_T): the reaction torque at full thrust. */
+	double d_m = c->prop_diameter_m;
+	double torque_nm = c->prop.ct > 0.0
+	    ? o->full_thrust_n * d_m * c->prop.cp / (2.0 * M_PI * c->prop.ct) : 0.0;
 	struct airframe_loads al = { mass_kg + q->extra_payload_kg,
-		o->full_thrust_n, tip, n * o->full_current_a, c->battery_kg };
+		o->full_thrust_n, tip, n * o->full_current_a, c->battery_kg,
+		torque_nm, d_m };
 	struct airframe_masses am;
 	airframe_masses(q, &al, &am);
 	c->arm = am.arm;
@@ -369,35 +376,12 @@ parts_close(const struct parts_ctx *x, const struct parts_option *o,
 
 /* ---- the design of record's checks ---------------------------------------- */
 
-/* A check that fails becomes a violation with its fixes. */
+/* "maker part" of a catalogue part, for a check's basis. */
 static void
-violate(struct solve_result *r, const struct res_check *c, const char *stage,
-        const char *code, const char *const *fx, const char *message)
+part_basis(char *b, size_t n, const char *maker, const char *part,
+           double rating_a, const char *per)
 {
-	if (c == NULL || c->pass)
-		return;
-	feasibility_violation(r, "closed", stage, code, fx, "%s", message);
-}
-
-/* A motor current against the rating its maker's basis allows. */
-static void
-motor_current(struct solve_result *r, const char *name, const char *code,
-              const char *when, const char *fix2, double value_a,
-              double limit_a, const char *rating)
-{
-	char f1[FIX_LEN] = "", f2[FIX_LEN] = "", f3[FIX_LEN] = "", msg[RES_TEXT] = "";
-	const char *fx[4] = { f1, f2, f3, NULL };
-	struct res_check *k = feasibility_add_check(&r->closed, name, "A",
-	    value_a, limit_a, true);
-	if (k == NULL || k->pass)
-		return;
-	feasibility_fix(r, f1, "A motor rated above %.0f A", value_a);
-	feasibility_fix(r, f2, "%s", fix2);
-	feasibility_fix(r, f3, "Fewer series cells or a lower-KV motor");
-	if (!r->terse)
-		snprintf(msg, sizeof msg, "Each motor draws %.1f A %s, above its "
-		    "%.1f A %s.", value_a, when, limit_a, rating);
-	violate(r, k, "parts", code, fx, msg);
+	snprintf(b, n, "%.24s %.24s, %.0f A%s", maker, part, rating_a, per);
 }
 
 void
@@ -409,285 +393,78 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 	struct res_run *o = &r->closed;
 	const struct res_perf *pf = &o->perf;
 	const struct res_op *full = &pf->op[OP_FULL];
-	char f1[FIX_LEN] = "", f2[FIX_LEN] = "", f3[FIX_LEN] = "", msg[RES_TEXT] = "";
-	const char *fx[4] = { f1, f2, f3, NULL };
-	struct res_check *k;
-	o->n_checks = 0;
+	struct check_values v;
+	checks_init(&v);
+	feasibility_common_checks(p, o, &v);
 
-	/* The mission, down to the reserve. */
-	k = feasibility_add_check(o, "State of charge at landing (reserve)", "%",
-	    100.0 * o->end_soc, 100.0 * o->reserve_soc, false);
-	if (k && !k->pass) {
-		feasibility_fix(r, f1, "Choose a larger pack (locks.battery_part) or more packs in parallel");
-		feasibility_fix(r, f2, "Shorten the mission or lighten the payload");
-		feasibility_fix(r, f3, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
-		if (!r->terse)
-			snprintf(msg, sizeof msg, "The real pack lands at %.1f %% state of "
-			    "charge, below the %.1f %% reserve (%.80s).", 100.0 * o->end_soc,
-			    100.0 * o->reserve_soc, o->termination);
-		violate(r, k, "discharge", "RESERVE", fx, msg);
-	}
-	/* The T/W requirement holds with the largest payload aboard (the
-	 * mission's payload when it gives no larger one). */
+	/* The T/W requirement holds with the largest payload aboard. */
 	double m_max = o->mass.total_kg + p->extra_payload_kg;
-	k = feasibility_add_check(o, p->extra_payload_kg > 0.0
-	    ? "Thrust-to-weight with the largest payload" : "Thrust-to-weight at full throttle",
-	    "", o->thrust_to_weight * o->mass.total_kg / m_max, x->aim.tw_required,
-	    false);
-	if (k && !k->pass) {
-		feasibility_fix(r, f1, "A stronger motor or a larger propeller (locks.motor_part, locks.prop_part)");
-		feasibility_fix(r, f2, p->extra_payload_kg > 0.0 ? "A lower max_payload_kg"
-		    : "Reduce the thrust margin (payload_role.thrust_margin_override)");
-		feasibility_fix(r, f3, "Add series cells (nominal_cell_count)");
-		if (!r->terse)
-			snprintf(msg, sizeof msg, "The real motor and propeller give T/W "
-			    "%.2f at full throttle with %.2f kg aboard; the requirement is %.2f.",
-			    k->value, p->payload_kg + p->extra_payload_kg, k->limit);
-		violate(r, k, "parts", "THRUST", fx, msg);
-	}
+	checks_set(&v, CK_THRUST, o->thrust_to_weight * o->mass.total_kg / m_max,
+	    x->aim.tw_required);
+	snprintf(v.basis[CK_THRUST], sizeof v.basis[CK_THRUST],
+	    "the role's requirement, %.2f kg aboard", p->payload_kg + p->extra_payload_kg);
+	checks_set(&v, CK_THROTTLE, 100.0 * pf->throttle_needed, 100.0);
 
-	k = feasibility_add_check(o, "Throttle the mission needs (real drive)", "%",
-	    100.0 * pf->throttle_needed, 100.0, true);
-	feasibility_fix(r, f1, "A motor of higher KV or a larger propeller");
-	feasibility_fix(r, f2, "Add series cells");
-	fx[2] = NULL;
-	if (k && !k->pass && !r->terse)
-		snprintf(msg, sizeof msg, "The mission needs %.0f %% throttle: more "
-		    "voltage than the pack gives.", 100.0 * pf->throttle_needed);
-	violate(r, k, "parts", "THROTTLE", fx, msg);
-	fx[2] = f3;
-
-
-	/* Ratings of the real parts: the motor's through the mission and at
-	 * full throttle, each against the rating its maker's basis allows
-	 * (rank.c, parts_motor_limits()). */
-	struct parts_motor_limits lim;
-	parts_motor_limits(cl->o.motor, &lim);
-	motor_current(r, "Motor current, mission (sustained)",
-	    "MOTOR_CURRENT_SUSTAINED", "through the mission",
-	    "A larger propeller or more rotors (lower disk loading)",
-	    pf->sustained_motor_current_a, lim.sustained_a, lim.sustained_text);
-	if (lim.full_a > 0.0)
-		motor_current(r, "Motor current at full throttle", "MOTOR_CURRENT",
-		    "at full throttle", "A smaller or lower-pitch propeller",
-		    full->motor_current_a, lim.full_a, lim.full_text);
-	if (c->motor_max_power_w > 0.0 && !cl->o.motor->integrated) {
-		k = feasibility_add_check(o, "Motor input power at full throttle", "W",
-		    full->power_in_w, c->motor_max_power_w, true);
-		feasibility_fix(r, f1, "A motor rated above %.0f W", full->power_in_w);
-		feasibility_fix(r, f2, "A smaller or lower-pitch propeller");
-		f3[0] = '\0';
-		if (!r->terse)
-			snprintf(msg, sizeof msg, "Each motor takes %.0f W at full "
-			    "throttle, above its %.0f W rating.", full->power_in_w,
-			    c->motor_max_power_w);
-		fx[2] = NULL;
-		violate(r, k, "parts", "MOTOR_POWER", fx, msg);
-		fx[2] = f3;
-	}
-	if (cl->esc != NULL) {
-		k = feasibility_add_check(o, "ESC current at full throttle", "A",
-		    full->motor_current_a, c->esc_current_a, true);
-		if (k && !k->pass) {
-			feasibility_fix(r, f1, "An ESC rated above %.0f A continuous", full->motor_current_a);
-			feasibility_fix(r, f2, "Remove locks.esc_part to let the search choose");
-			fx[2] = NULL;
-			if (!r->terse)
-				snprintf(msg, sizeof msg, "Each motor draws %.1f A at full "
-				    "throttle, above the ESC's %.0f A continuous rating.",
-				    full->motor_current_a, c->esc_current_a);
-			violate(r, k, "parts", "ESC_CURRENT", fx, msg);
-			fx[2] = f3;
-		}
-	}
-	/* The power module and the battery connectors (kit.c) carry the
-	 * sustained current. */
+	/* The power path, pack to motor, at the mission's sustained peak and
+	 * at a full-throttle burst. */
+	double sustained_a = sustained_battery_a(o);
+	double full_a = full->battery_current_a;
+	const struct parts_pack *pk = &cl->pack;
+	checks_set(&v, CK_BATTERY_CONTINUOUS, sustained_a, pk->max_continuous_a);
+	checks_set(&v, CK_BATTERY_BURST, full_a, pk->max_burst_a);
+	snprintf(v.basis[CK_BATTERY_CONTINUOUS], RES_BASIS, "%d × %.0f C continuous",
+	    pk->parallel, pk->b->continuous_c);
+	snprintf(v.basis[CK_BATTERY_BURST], RES_BASIS, "%d × %.0f C burst",
+	    pk->parallel, pk->b->burst_c > 0.0 ? pk->b->burst_c : pk->b->continuous_c);
 	const struct parts_kit *kit = &cl->kit;
-	double sustained_a = 0.0;
-	for (int i = 0; i < PHASE_MAX; i++)
-		if (o->phase[i].duration_s > 0.0 && o->phase[i].current_a > sustained_a)
-			sustained_a = o->phase[i].current_a;
+	if (kit->connector != NULL) {
+		const struct catalog_avionics *k = kit->connector;
+		int per_pack = kit->n_connectors / (pk->series * pk->parallel);
+		double rating = (double)per_pack * k->max_current_a;
+		checks_set(&v, CK_CONNECTOR_MISSION, sustained_a / (double)pk->parallel, rating);
+		checks_set(&v, CK_CONNECTOR_FULL, full_a / (double)pk->parallel, rating);
+		part_basis(v.basis[CK_CONNECTOR_MISSION], RES_BASIS, k->manufacturer,
+		    k->part_number, rating, " per pack");
+		str_copy(v.basis[CK_CONNECTOR_FULL], RES_BASIS, v.basis[CK_CONNECTOR_MISSION]);
+	}
 	for (int i = 0; i < kit->n_part; i++) {
 		const struct catalog_avionics *a = kit->part[i];
 		if (!(a->max_current_a > 0.0))
 			continue;
-		k = feasibility_add_check(o, "Power module current, mission", "A",
-		    sustained_a, a->max_current_a, true);
-		feasibility_fix(r, f1, "A power module rated above %.0f A", sustained_a);
-		fx[1] = NULL;
-		if (k && !k->pass && !r->terse)
-			snprintf(msg, sizeof msg, "The mission draws %.1f A through the "
-			    "power module, above its %.0f A rating.", sustained_a,
-			    a->max_current_a);
-		violate(r, k, "parts", "POWER_MODULE_CURRENT", fx, msg);
-		fx[1] = f2;
+		checks_set(&v, CK_POWER_MODULE_MISSION, sustained_a, a->max_current_a);
+		checks_set(&v, CK_POWER_MODULE_FULL, full_a, a->max_current_a);
+		part_basis(v.basis[CK_POWER_MODULE_MISSION], RES_BASIS, a->manufacturer,
+		    a->part_number, a->max_current_a, "");
+		str_copy(v.basis[CK_POWER_MODULE_FULL], RES_BASIS,
+		    v.basis[CK_POWER_MODULE_MISSION]);
+		break;
 	}
-	if (kit->connector != NULL) {
-		int per_pack = kit->n_connectors / (cl->pack.series * cl->pack.parallel);
-		k = feasibility_add_check(o, "Battery connector current, mission", "A",
-		    sustained_a / (double)cl->pack.parallel,
-		    (double)per_pack * kit->connector->max_current_a, true);
-		feasibility_fix(r, f1, "Fewer, larger packs or a higher-rated connector");
-		fx[1] = NULL;
-		if (k && !k->pass && !r->terse)
-			snprintf(msg, sizeof msg, "Each pack's connector carries %.1f A, "
-			    "above its %.0f A rating.", k->value, k->limit);
-		violate(r, k, "parts", "CONNECTOR_CURRENT", fx, msg);
-		fx[1] = f2;
+	if (cl->esc != NULL) {
+		checks_set(&v, CK_ESC_CURRENT, full->motor_current_a, c->esc_current_a);
+		part_basis(v.basis[CK_ESC_CURRENT], RES_BASIS, cl->esc->manufacturer,
+		    cl->esc->part_number, c->esc_current_a, " continuous");
 	}
+	struct parts_motor_limits lim;
+	parts_motor_limits(cl->o.motor, &lim);
+	checks_set(&v, CK_MOTOR_CURRENT_MISSION, pf->sustained_motor_current_a,
+	    lim.sustained_a);
+	str_copy(v.basis[CK_MOTOR_CURRENT_MISSION], RES_BASIS, lim.sustained_text);
+	if (lim.full_a > 0.0) {
+		checks_set(&v, CK_MOTOR_CURRENT_FULL, full->motor_current_a, lim.full_a);
+		str_copy(v.basis[CK_MOTOR_CURRENT_FULL], RES_BASIS, lim.full_text);
+	}
+	if (c->motor_max_power_w > 0.0 && !cl->o.motor->integrated)
+		checks_set(&v, CK_MOTOR_POWER, full->power_in_w, c->motor_max_power_w);
+	/* The pack's terminal voltage in a burst, mid-discharge, against the
+	 * floor the battery failsafe is set to. */
+	if (full->valid)
+		checks_set(&v, CK_VOLTAGE_FULL, full->bus_voltage_v, o->voltage_floor_v);
+
+	checks_set(&v, CK_WINDING_HOVER, o->winding_temp_c, MOTOR_WINDING_MAX_C);
+	checks_set(&v, CK_WINDING_FULL, full->winding_temp_c, MOTOR_WINDING_MAX_C);
+	if (c->prop_max_rpm > 0.0)
+		checks_set(&v, CK_PROP_RPM, full->rpm, c->prop_max_rpm);
 	if (kit->frame != NULL && kit->frame->max_takeoff_kg > 0.0)
-		feasibility_add_check(o, "Takeoff mass within the frame kit's maximum",
-		    "kg", o->mass.total_kg, kit->frame->max_takeoff_kg, true);
-	/* The pack: the highest sustained phase current within its
-	 * continuous rating, full throttle within its burst rating. */
-	double sustained = sustained_a;
-	k = feasibility_add_check(o, "Battery current, mission (continuous rating)", "A",
-	    sustained, cl->pack.max_continuous_a, true);
-	feasibility_fix(r, f1, "A pack with a higher C rating or more capacity");
-	feasibility_fix(r, f2, "More packs in parallel");
-	fx[2] = NULL;
-	if (k && !k->pass && !r->terse)
-		snprintf(msg, sizeof msg, "The mission draws %.1f A, above the pack's "
-		    "%.0f A continuous rating.", sustained, cl->pack.max_continuous_a);
-	violate(r, k, "parts", "BATTERY_CURRENT", fx, msg);
-	k = feasibility_add_check(o, "Battery current, full throttle (burst rating)", "A",
-	    full->battery_current_a, cl->pack.max_burst_a, true);
-	if (k && !k->pass && !r->terse)
-		snprintf(msg, sizeof msg, "Full throttle draws %.1f A, above the pack's "
-		    "%.0f A burst rating.", full->battery_current_a, cl->pack.max_burst_a);
-	violate(r, k, "parts", "BATTERY_BURST", fx, msg);
-	fx[2] = f3;
-
-	/* The rotor. */
-	k = feasibility_add_check(o, "Propeller diameter (overlap limit)", "in",
-	    m_to_in(c->prop_diameter_m), o->overlap_limit_in * (1.0 + 1e-6), true);
-	k = feasibility_add_check(o, "Tip Mach number at full throttle", "",
-	    full->tip_mach, AERO_TIP_MACH_MAX, true);
-	feasibility_fix(r, f1, "A larger, slower propeller");
-	feasibility_fix(r, f2, "A lower-KV motor");
-	fx[2] = NULL;
-	if (k && !k->pass && !r->terse)
-		snprintf(msg, sizeof msg, "The tip reaches Mach %.2f at full throttle "
-		    "(limit %.2f).", full->tip_mach, AERO_TIP_MACH_MAX);
-	violate(r, k, "parts", "TIP_MACH", fx, msg);
-	if (c->prop_max_rpm > 0.0) {
-		k = feasibility_add_check(o, "Propeller speed at full throttle", "rpm",
-		    full->rpm, c->prop_max_rpm, true);
-		if (k && !k->pass && !r->terse)
-			snprintf(msg, sizeof msg, "The propeller turns at %.0f rpm at "
-			    "full throttle, above the maker's %.0f rpm limit.", full->rpm,
-			    c->prop_max_rpm);
-		violate(r, k, "parts", "PROP_RPM", fx, msg);
-	}
-	fx[2] = f3;
-
-	/* Heat and voltage. */
-	k = feasibility_add_check(o, "Battery peak temperature", "°C",
-	    o->max_battery_temp_c, THERM_RUNAWAY_C, true);
-	feasibility_fix(r, f1, "More capacity or packs in parallel (lower C-rate, more mass to heat)");
-	feasibility_fix(r, f2, "A lower-resistance pack");
-	feasibility_fix(r, f3, "A lower ambient temperature limit for the mission");
-	if (k && !k->pass && !r->terse)
-		snprintf(msg, sizeof msg, "The pack reaches %.1f °C, above %.0f °C.",
-		    o->max_battery_temp_c, THERM_RUNAWAY_C);
-	violate(r, k, "discharge", "THERMAL_RUNAWAY", fx, msg);
-	k = feasibility_add_check(o, "Motor winding temperature, hover (steady)", "°C",
-	    o->winding_temp_c, MOTOR_WINDING_MAX_C, true);
-	feasibility_fix(r, f1, "A larger motor (lower losses, more surface)");
-	feasibility_fix(r, f2, "A larger propeller (lower disk loading)");
-	fx[2] = NULL;
-	if (k && !k->pass && !r->terse)
-		snprintf(msg, sizeof msg, "The winding settles at %.0f °C in hover "
-		    "(limit %.0f °C).", o->winding_temp_c, MOTOR_WINDING_MAX_C);
-	violate(r, k, "parts", "WINDING_TEMPERATURE_HOVER", fx, msg);
-	fx[2] = f3;
-	k = feasibility_add_check(o, "Motor winding temperature, full-throttle burst", "°C",
-	    full->winding_temp_c, MOTOR_WINDING_MAX_C, true);
-	feasibility_fix(r, f1, "A larger motor (lower losses, more surface)");
-	feasibility_fix(r, f2, "A smaller or lower-pitch propeller");
-	fx[2] = NULL;
-	if (k && !k->pass && !r->terse)
-		snprintf(msg, sizeof msg, "The winding reaches %.0f °C after %.0f s at "
-		    "full throttle (limit %.0f °C).", full->winding_temp_c,
-		    PERF_FULL_THROTTLE_S, MOTOR_WINDING_MAX_C);
-	violate(r, k, "parts", "WINDING_TEMPERATURE", fx, msg);
-	fx[2] = f3;
-	k = feasibility_add_check(o, "Minimum terminal voltage", "V",
-	    o->min_terminal_voltage_v, o->voltage_floor_v, false);
-	feasibility_fix(r, f1, "More capacity or a lower-resistance pack");
-	feasibility_fix(r, f2, "Add series cells");
-	fx[2] = NULL;
-	if (k && !k->pass && !r->terse)
-		snprintf(msg, sizeof msg, "The pack falls to %.2f V, below the %.2f V "
-		    "cut-off.", o->min_terminal_voltage_v, o->voltage_floor_v);
-	violate(r, k, "discharge", "VOLTAGE_FLOOR", fx, msg);
-	fx[2] = f3;
-
-	/* Structure. */
-	k = feasibility_add_check(o, "Arm root bending stress (FoS 1.5, fatigue 0.4)",
-	    "MPa", o->arm_stress_mpa, o->arm_stress_allow_mpa, true);
-	if (k)
-		k->sized = true;
-	k = feasibility_add_check(o, "Arm mode clear of the blade-pass band", "",
-	    o->resonance_margin, 0.0, false);
-	feasibility_fix(r, f1, "Stiffen the arm above %.0f Hz (larger tube)",
-	    STRUCT_RESONANCE_MARGIN * o->blade_pass_frequency_hz);
-	feasibility_fix(r, f2, "Or soften it below %.0f Hz (soft mounts)",
-	    o->blade_pass_low_hz / STRUCT_RESONANCE_MARGIN);
-	feasibility_fix(r, f3, "Another blade count moves the band");
-	if (k && !k->pass && !r->terse)
-		snprintf(msg, sizeof msg, "The arm's first mode (%.0f Hz) lies inside "
-		    "the blade-pass band (%.0f–%.0f Hz) without the 1.5 margin.",
-		    o->arm_natural_frequency_hz, o->blade_pass_low_hz,
-		    o->blade_pass_frequency_hz);
-	violate(r, k, "structure", "ARM_RESONANCE", fx, msg);
-	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
-	feasibility_add_check(o, "Payload CG offset", "m", p->cg_shift_m,
-	    0.5 * p->wheelbase_m * cos(M_PI / (double)arms), true);
-
-	/* The role's own limits. */
-	if (p->downwash_cap_ms > 0.0) {
-		k = feasibility_add_check(o, "Downwash (role limit)", "m/s",
-		    o->downwash_ms, p->downwash_cap_ms, true);
-		feasibility_fix(r, f1, "A larger wheelbase: larger rotors lower the downwash");
-		feasibility_fix(r, f2, "More rotors");
-		feasibility_fix(r, f3, "Raise payload_role.ag_max_downwash_ms if the crop allows");
-		if (k && !k->pass && !r->terse)
-			snprintf(msg, sizeof msg, "The downwash of %.1f m/s exceeds the "
-			    "role's %.1f m/s limit.", o->downwash_ms, p->downwash_cap_ms);
-		violate(r, k, "feasibility", "DOWNWASH", fx, msg);
-	}
-	if (p->duration_s[PHASE_FORWARD] > 0.0) {
-		feasibility_add_check(o, "Forward body pitch", "°", o->forward_pitch_deg,
-		    MISSION_PITCH_MAX_DEG, true);
-		k = feasibility_add_check(o, "Forward speed within full thrust", "m/s",
-		    o->optimal_speed_ms, o->v_max_ms, true);
-		feasibility_fix(r, f1, "Reduce v_forward_ms to %.1f m/s or less", o->v_max_ms);
-		feasibility_fix(r, f2, "Use \"auto\" for the minimum-power speed");
-		fx[2] = NULL;
-		if (k && !k->pass && !r->terse)
-			snprintf(msg, sizeof msg, "At %.1f m/s the real rotors run out of "
-			    "thrust or pitch; they reach %.1f m/s.", o->optimal_speed_ms,
-			    o->v_max_ms);
-		violate(r, k, "mission", "FORWARD_SPEED", fx, msg);
-		fx[2] = f3;
-	}
-	o->feasible = true;
-	for (int i = 0; i < o->n_checks; i++)
-		if (!o->checks[i].pass)
-			o->feasible = false;
-	/* A failed check without a violation of its own (overlap, CG, pitch)
-	 * must still say why the design fails. */
-	bool unexplained = !o->feasible && r->n_violations == 0;
-	for (int i = 0; unexplained && i < o->n_checks; i++) {
-		const struct res_check *ck = &o->checks[i];
-		if (ck->pass)
-			continue;
-		if (!r->terse)
-			snprintf(msg, sizeof msg, "%s is %.4g%s%s, beyond its limit of "
-			    "%.4g%s%s.", ck->name, ck->value, ck->unit[0] ? " " : "",
-			    ck->unit, ck->limit, ck->unit[0] ? " " : "", ck->unit);
-		feasibility_violation(r, "closed", "checks", "CHECK_FAILED", NULL,
-		    "%s", msg);
-	}
+		checks_set(&v, CK_FRAME_MTOW, o->mass.total_kg, kit->frame->max_takeoff_kg);
+	checks_apply(&v, "closed", o, r);
 }

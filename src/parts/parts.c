@@ -187,7 +187,8 @@ struct pack_try {
 static bool
 pack_check(const char *code)
 {
-	static const char *const codes[] = { "CONNECTOR_CURRENT", "VOLTAGE_FLOOR",
+	static const char *const codes[] = { "CONNECTOR_CURRENT",
+	    "CONNECTOR_CURRENT_FULL", "VOLTAGE_FLOOR", "VOLTAGE_FULL_THROTTLE",
 	    "BATTERY_CURRENT", "BATTERY_BURST", "BATTERY_POWER", "THERMAL_RUNAWAY",
 	    "THRUST" };
 	for (size_t i = 0; i < sizeof codes / sizeof codes[0]; i++)

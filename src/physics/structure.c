@@ -1,6 +1,9 @@
 /* structure.c — CFRP arm sizing and resonance (see structure.h). */
 #include "physics/structure.h"
 
+#include <math.h>
+#include <string.h>
+
 #include "util/units.h"
 
 double
@@ -67,20 +70,118 @@ tube_section(double d_out, double alpha_w, double length_m,
 	    ? a->root_moment_nm * 0.5 * d_out / a->i_x_m4 : 0.0;
 }
 
-void
-structure_size_arm(double force_n, double length_m, double alpha_w,
-                   double tip_mass_kg, struct structure_arm *out)
+const char *const structure_sized_by_text[3] = {
+	"strength", "stiffness (motor tilt)", "stiffness (first mode)"
+};
+
+double
+structure_tau_allow_pa(void)
 {
-	out->length_m = length_m;
-	out->root_moment_nm = force_n * length_m;
+	return STRUCT_TAU_ULT_PA * STRUCT_FATIGUE / STRUCT_FOS;
+}
+
+double
+structure_gyro_filter_hz(double prop_diameter_m)
+{
+	double d_in = prop_diameter_m / 0.0254;
+	if (!(d_in > 0.0))
+		return 0.0;
+	return 289.22 * pow(d_in, -0.838);
+}
+
+/* The tube of outer diameter d with its section, stress, mass and mode. */
+static void
+arm_at(const struct structure_arm_loads *in, double d_out,
+       struct structure_arm *a)
+{
+	a->length_m = in->length_m;
+	a->root_moment_nm = in->design_force_n * in->length_m;
+	tube_section(d_out, in->alpha_w, in->length_m, a);
+	a->f_nat_hz = structure_natural_freq_hz(a->i_x_m4, in->length_m,
+	    in->tip_mass_kg, STRUCT_RHO_CF_KG_M3 * a->area_m2);
+}
+
+/* Tip slope (rad) under force_n at the tip: F L² / 2EI. */
+static double
+tip_slope_rad(const struct structure_arm *a, double force_n)
+{
+	double ei = STRUCT_E_CF_PA * a->i_x_m4;
+	return ei > 0.0 ? force_n * a->length_m * a->length_m / (2.0 * ei) : 0.0;
+}
+
+void
+structure_size_arm(const struct structure_arm_loads *in,
+                   struct structure_arm *out)
+{
+	memset(out, 0, sizeof *out);
+	double k4 = 1.0 - pow(in->alpha_w, 4.0);
 	/* Paper eq. (dout).  With the wall floor the same diameter has a
 	 * thicker wall and so a lower stress: the strength sizing stays valid. */
-	double a4 = alpha_w * alpha_w * alpha_w * alpha_w;
-	double d = cbrt(32.0 * out->root_moment_nm
-	    / (M_PI * (1.0 - a4) * structure_sigma_allow_pa()));
-	tube_section(d, alpha_w, length_m, out);
-	out->f_nat_hz = structure_natural_freq_hz(out->i_x_m4, length_m,
-	    tip_mass_kg, STRUCT_RHO_CF_KG_M3 * out->area_m2);
+	double d = cbrt(32.0 * in->design_force_n * in->length_m
+	    / (M_PI * k4 * structure_sigma_allow_pa()));
+	out->sized_by = ARM_BY_STRENGTH;
+	/* Stiffness: I >= F L² / (2 E θ_max), I = π d⁴ k4 / 64. */
+	double theta = STRUCT_TILT_MAX_DEG * M_PI / 180.0;
+	double i_tilt = in->full_force_n * in->length_m * in->length_m
+	    / (2.0 * STRUCT_E_CF_PA * theta);
+	double d_tilt = pow(64.0 * i_tilt / (M_PI * k4), 0.25);
+	if (d_tilt > d) {
+		d = d_tilt;
+		out->sized_by = ARM_BY_TILT;
+	}
+	arm_at(in, d, out);
+	/* The mode floor.  With the wall at α_w, I = π k4 d⁴/64 and the tube's
+	 * mass per length μ = ρ π (1 - α²) d²/4, so eq. (fnat) at f is a
+	 * quadratic in x = d²:  (3πE k4/64) x² - (ω² L⁴ 0.24 ρ π (1-α²)/4) x
+	 * - ω² L³ m_tip = 0, ω = 2πf.  Where the wall floor binds (a thicker
+	 * wall than α_w gives, only in the smallest tubes) the root is
+	 * stiffer than needed: a few bisection steps bring it down. */
+	if (in->mode_floor_hz > 0.0 && out->f_nat_hz < in->mode_floor_hz) {
+		double w2 = pow(2.0 * M_PI * in->mode_floor_hz, 2.0);
+		double l = in->length_m;
+		double qa = 3.0 * M_PI * STRUCT_E_CF_PA * k4 / 64.0;
+		double qb = w2 * l * l * l * l * 0.24 * STRUCT_RHO_CF_KG_M3 * M_PI
+		    * (1.0 - in->alpha_w * in->alpha_w) / 4.0;
+		double qc = w2 * l * l * l * in->tip_mass_kg;
+		double d_mode = sqrt((qb + sqrt(qb * qb + 4.0 * qa * qc)) / (2.0 * qa));
+		struct structure_arm t;
+		arm_at(in, d_mode, &t);
+		if (t.wall_floor_binds) {
+			double lo = d, hi = d_mode;
+			for (int k = 0; k < 30; k++) {
+				double mid = 0.5 * (lo + hi);
+				arm_at(in, mid, &t);
+				if (t.f_nat_hz >= in->mode_floor_hz)
+					hi = mid;
+				else
+					lo = mid;
+			}
+			d_mode = hi;
+		}
+		if (d_mode > d) {
+			arm_at(in, d_mode, out);
+			out->sized_by = ARM_BY_MODE;
+		}
+	}
+	double sigma_fat = STRUCT_SIGMA_ULT_PA * STRUCT_FATIGUE;
+	out->safety_factor = out->stress_pa > 0.0 ? sigma_fat / out->stress_pa : 0.0;
+	double slope = tip_slope_rad(out, in->full_force_n);
+	out->tilt_full_deg = slope * 180.0 / M_PI;
+	out->deflection_full_m = 2.0 / 3.0 * slope * in->length_m; /* F L³ / 3EI */
+	/* Torsion of a tube: τ = Q r / J, J = 2 I. */
+	out->torsion_pa = out->i_x_m4 > 0.0
+	    ? in->full_torque_nm * 0.5 * out->d_out_m / (2.0 * out->i_x_m4) : 0.0;
+}
+
+bool
+structure_band_clear(double f_nat_hz, double lo_hz, double hi_hz,
+                     double margin, double *edge_hz, bool *above)
+{
+	double lo = lo_hz / margin, hi = hi_hz * margin;
+	/* The side it is on: nearer the edge it can reach with less change. */
+	*above = f_nat_hz >= sqrt(lo * hi);
+	*edge_hz = *above ? hi : lo;
+	return *above ? f_nat_hz >= hi : f_nat_hz <= lo;
 }
 
 double

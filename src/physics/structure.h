@@ -6,6 +6,11 @@
  * dependent minimum structural fraction, C_body and the class overhead γ,
  * and the Rayleigh–Ritz natural frequency (eq. fnat).
  *
+ * Beyond the paper, the arm is also sized for stiffness (the motor tilts
+ * at most STRUCT_TILT_MAX_DEG at full thrust, θ = F L² / 2EI) and for a
+ * first mode above the flight controller's gyro filter; its torsion under
+ * the motor's reaction torque is checked against the shear allowable.
+ *
  * Resonance (paper §V-C) is a check, not a sizing criterion: the paper asks
  * f_nat >= 1.5 f_bpf at peak rpm (a stiff, subcritical arm).  Strength-sized
  * CFRP arms of real multirotors are almost always soft instead: their first
@@ -26,6 +31,13 @@
 #define STRUCT_E_CF_PA        70e9   /* CFRP modulus, Pa */
 #define STRUCT_MIN_WALL_M     0.0005 /* thinnest roll-wrapped CFRP tube wall, m */
 #define STRUCT_RESONANCE_MARGIN 1.5  /* f_nat >= 1.5 f_bpf */
+/* Stiffness and the loads the paper leaves out (docs/model.md, "Arms"). */
+#define STRUCT_TILT_MAX_DEG   1.0    /* motor tilt from arm bending at full
+                                        thrust: practice keeps it <= 1° */
+#define STRUCT_TAU_ULT_PA     68e6   /* in-plane shear strength of carbon/
+                                        epoxy (T300/5208, Tsai & Hahn) */
+#define STRUCT_REV_MARGIN     1.15   /* a mode within ±15 % of a steady
+                                        excitation resonates */
 
 /* σ_all = σ_ult f_fat / FoS, Pa (192 MPa). */
 double structure_sigma_allow_pa(void);
@@ -40,6 +52,21 @@ bool structure_cg_thrust_n(double mass_kg, int n_rotors, double arm_length_m,
  * max(0.06, min(0.20, 0.05 + 0.05 W)). */
 double structure_min_fraction(double wheelbase_m);
 
+/* What set an arm tube's diameter. */
+enum structure_sized_by { ARM_BY_STRENGTH, ARM_BY_TILT, ARM_BY_MODE };
+extern const char *const structure_sized_by_text[3]; /* "strength", ... */
+
+/* The loads and limits an arm is sized for. */
+struct structure_arm_loads {
+	double design_force_n;   /* strength: the design load at the tip */
+	double full_force_n;     /* full thrust at the tip (stiffness) */
+	double full_torque_nm;   /* the motors' reaction torque at full throttle */
+	double tip_mass_kg;      /* motor(s) and propeller(s) at the tip */
+	double length_m;
+	double alpha_w;          /* inner / outer diameter */
+	double mode_floor_hz;    /* the first mode at least this, 0: none */
+};
+
 struct structure_arm {
 	double length_m;         /* L_arm = W / 2 */
 	double root_moment_nm;   /* M_b = F_arm L_arm */
@@ -52,13 +79,33 @@ struct structure_arm {
 	double mass_kg;          /* one arm tube */
 	double f_nat_hz;         /* first bending frequency with the tip mass */
 	bool wall_floor_binds;   /* the minimum wall set the wall */
+	enum structure_sized_by sized_by;
+	double safety_factor;    /* fatigue strength / stress at the design load */
+	double tilt_full_deg;    /* tip slope at full thrust */
+	double deflection_full_m;/* tip deflection at full thrust */
+	double torsion_pa;       /* shear stress from the full-throttle torque */
 };
 
-/* Arm tube sized for strength (eq. dout, with the wall floor) for a design
- * force force_n at the tip; its first frequency is computed with
- * tip_mass_kg.  alpha_w is the inner/outer ratio. */
-void structure_size_arm(double force_n, double length_m, double alpha_w,
-                        double tip_mass_kg, struct structure_arm *out);
+/* Arm tube sized for strength (eq. dout, with the wall floor), for the
+ * tilt limit at full thrust and for the mode floor: the smallest diameter
+ * that meets all three. */
+void structure_size_arm(const struct structure_arm_loads *in,
+                        struct structure_arm *out);
+
+/* τ_all = τ_ult f_fat / FoS, Pa (18.1 MPa). */
+double structure_tau_allow_pa(void);
+
+/* The gyro low-pass filter a flight controller is set up with for this
+ * propeller (ArduPilot Mission Planner's initial-parameters fit,
+ * 289.22 D_in^-0.838 Hz): the attitude loop acts below it, so an arm mode
+ * above it stays out of the loop. */
+double structure_gyro_filter_hz(double prop_diameter_m);
+
+/* A mode's clearance from an excitation band [lo, hi] widened by margin:
+ * the near edge it must stay beyond, and whether it does.  *above says
+ * which side the mode is on (above: it must be >= the edge). */
+bool structure_band_clear(double f_nat_hz, double lo_hz, double hi_hz,
+                          double margin, double *edge_hz, bool *above);
 
 /* Resonance check: the arm mode must clear the blade-pass band
  * [f_bpf_low_hz, f_bpf_peak_hz] by the 1.5 margin on either side.  Returns

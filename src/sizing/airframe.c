@@ -4,6 +4,8 @@
 
 #include <math.h>
 
+#include "core/result.h"
+
 #define S_SCALE_LO_KG     0.3   /* S_scale = 0.25 below this M_ref */
 #define S_SCALE_HI_KG     1.8   /* S_scale = 1 above this M_ref */
 #define S_SCALE_MIN       0.25
@@ -34,9 +36,11 @@ airframe_masses(const struct sizing_params *p, const struct airframe_loads *in,
 	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
 	double arm_len = 0.5 * p->wheelbase_m;
 
-	/* Arms: strength at max(load factor × CG thrust, full thrust); the
-	 * resonance is checked afterwards (feasibility.c).  The CG polygon is
-	 * that of the arms (a coaxial pair shares one). */
+	/* Arms: strength at max(load factor × CG thrust, full thrust),
+	 * stiffness for the motor's tilt at full thrust and a first mode
+	 * above the gyro filter; the resonance with the rotor is checked
+	 * afterwards (the checks table).  The CG polygon is that of the arms
+	 * (a coaxial pair shares one). */
 	double t_cg;
 	out->cg_ok = structure_cg_thrust_n(in->mass_kg, arms, arm_len,
 	    p->cg_shift_m, &t_cg);
@@ -44,8 +48,10 @@ airframe_masses(const struct sizing_params *p, const struct airframe_loads *in,
 		t_cg *= 0.5; /* each rotor of the pair carries half the arm's share */
 	double per_arm = p->coaxial ? 2.0 : 1.0;
 	double force = fmax(p->load_factor * t_cg, in->peak_thrust_n) * per_arm;
-	structure_size_arm(force, arm_len, p->alpha_w, in->tip_mass_kg * per_arm,
-	    &out->arm);
+	struct structure_arm_loads al = { force, in->peak_thrust_n * per_arm,
+		in->peak_torque_nm * per_arm, in->tip_mass_kg * per_arm, arm_len,
+		p->alpha_w, structure_gyro_filter_hz(in->prop_diameter_m) };
+	structure_size_arm(&al, &out->arm);
 	double tubes = (double)arms * out->arm.mass_kg;
 
 	/* The minimum structural fraction floors the whole structure.  (The
@@ -73,4 +79,24 @@ airframe_masses(const struct sizing_params *p, const struct airframe_loads *in,
 	out->shell_kg = equip - out->avionics_kg;
 	out->other_kg += out->shell_kg;
 	out->role_aux_kg = p->role_aux_kg;
+}
+
+void
+airframe_record_arm(const struct structure_arm *arm, double prop_diameter_m,
+                    struct res_run *run)
+{
+	run->arm_length_m = arm->length_m;
+	run->arm_outer_diameter_mm = arm->d_out_m * 1000.0;
+	run->arm_wall_thickness_mm = arm->wall_m * 1000.0;
+	run->arm_stress_mpa = arm->stress_pa / 1e6;
+	run->arm_stress_allow_mpa = structure_sigma_allow_pa() / 1e6;
+	run->arm_natural_frequency_hz = arm->f_nat_hz;
+	run->arm_wall_floor_binds = arm->wall_floor_binds;
+	run->arm_sized_by = structure_sized_by_text[arm->sized_by];
+	run->arm_safety_factor = arm->safety_factor;
+	run->arm_tilt_full_deg = arm->tilt_full_deg;
+	run->arm_deflection_full_mm = arm->deflection_full_m * 1000.0;
+	run->arm_torsion_mpa = arm->torsion_pa / 1e6;
+	run->arm_torsion_allow_mpa = structure_tau_allow_pa() / 1e6;
+	run->gyro_filter_hz = structure_gyro_filter_hz(prop_diameter_m);
 }

@@ -24,6 +24,8 @@ struct airframe_loads {
 	double tip_mass_kg;          /* motor + propeller of one rotor */
 	double peak_current_a;       /* battery current at full throttle */
 	double battery_kg;           /* the pack, for the body around it */
+	double peak_torque_nm;       /* one motor's reaction torque at full throttle */
+	double prop_diameter_m;      /* for the gyro filter the arm's mode clears */
 };
 
 /* What it gives.  The mass items go to struct res_mass as arm_kg,
@@ -55,6 +57,11 @@ void airframe_masses(const struct sizing_params *p,
  * aircraft.  The class's avionics_share of it is shown as avionics, the
  * rest as body (a display split: both are dead mass at the centre). */
 double airframe_equipment_kg(const struct sizing_params *p, double design_mass_kg);
+
+/* The arm's figures into run (both designs). */
+struct res_run;
+void airframe_record_arm(const struct structure_arm *arm, double prop_diameter_m,
+                         struct res_run *run);
 
 /* The light-configuration scale S_scale of paper §VI-E at M_ref. */
 double airframe_s_scale(double m_ref_kg);

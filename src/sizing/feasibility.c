@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "core/checks.h"
 #include "physics/aero.h"
 #include "physics/mission.h"
 #include "util/strbuf.h"
@@ -15,7 +16,6 @@
 
 /* Fixes are formatted into this scratch before they are copied. */
 #define FIX_LEN RES_TEXT
-#define CHECK_RELTOL 1e-9 /* check comparison tolerance, relative */
 
 void
 feasibility_violation(struct solve_result *r, const char *run,
@@ -162,26 +162,113 @@ feasibility_gate(const struct sizing_params *p, const char *run,
 	return ok;
 }
 
-struct res_check *
-feasibility_add_check(struct res_run *run, const char *name, const char *unit,
-                      double value, double limit, bool upper)
+/* The steady once-per-revolution band: hover at the lightest mass the
+ * mission flies (rotor speed ~ sqrt(thrust)) to the fastest sustained
+ * phase. */
+static void
+rev_band(struct res_run *o)
 {
-	if (run->n_checks >= RES_MAX_CHECKS)
-		return NULL;
-	struct res_check *c = &run->checks[run->n_checks++];
-	memset(c, 0, sizeof *c);
-	c->name = name;
-	c->unit = unit;
-	c->value = isfinite(value) ? value : 0.0;
-	c->limit = limit;
-	c->upper = upper;
-	double scale = fabs(limit) > 1e-12 ? fabs(limit) : 1.0;
-	c->margin = upper ? (limit - c->value) / scale : (c->value - limit) / scale;
-	/* A quantity sized to its limit (the arm stress) must pass: compare
-	 * with a relative tolerance far below any physical meaning. */
-	double tol = CHECK_RELTOL * scale;
-	c->pass = upper ? c->value <= limit + tol : c->value >= limit - tol;
-	return c;
+	double m_min = o->mass.total_kg;
+	for (int i = 0; i < o->n_trace && i < RES_MAX_TRACE; i++)
+		if (o->trace[i].mass_kg > 0.0 && o->trace[i].mass_kg < m_min)
+			m_min = o->trace[i].mass_kg;
+	double hover_hz = o->rpm_hover / S_PER_MIN;
+	double lo = o->mass.total_kg > 0.0
+	    ? hover_hz * sqrt(m_min / o->mass.total_kg) : hover_hz;
+	double hi = hover_hz;
+	for (int i = 0; i < PHASE_MAX; i++)
+		if (o->phase[i].duration_s > 0.0 && o->phase[i].rpm / S_PER_MIN > hi)
+			hi = o->phase[i].rpm / S_PER_MIN;
+	o->rev_band_low_hz = lo;
+	o->rev_band_high_hz = hi;
+}
+
+/* A mode clear of a band [lo, hi] ± margin: its value, its near edge. */
+static void
+band_check(struct check_values *v, enum check_id id, double f_hz, double lo,
+           double hi, double margin, const char *what)
+{
+	if (!(f_hz > 0.0) || !(lo > 0.0) || !(hi >= lo))
+		return;
+	double edge;
+	bool above;
+	structure_band_clear(f_hz, lo, hi, margin, &edge, &above);
+	checks_set(v, id, f_hz, edge);
+	v->side[id] = above ? -1 : +1;
+	snprintf(v->basis[id], sizeof v->basis[id], "%s %.0f–%.0f Hz %s %.0f %%",
+	    what, lo, hi, "±", 100.0 * (margin - 1.0));
+}
+
+void
+feasibility_common_checks(const struct sizing_params *p, struct res_run *o,
+                          struct check_values *v)
+{
+	/* The mission, down to the reserve the 20 % capacity margin leaves
+	 * (paper §II-D).  Integrated to SIZING_RESERVE_TOL: a locked copy of a
+	 * sized battery passes as the sized one does. */
+	double need = 0.0;
+	for (int i = 0; i < PHASE_MAX; i++)
+		need += o->approved_time_s[i];
+	double flown = o->n_trace > 0 ? o->trace[o->n_trace - 1].t_s : 0.0;
+	bool completed = flown >= need * 0.999;
+	checks_set(v, CK_RESERVE, completed ? 100.0 * o->end_soc : 0.0,
+	    100.0 * o->reserve_soc);
+	v->pass_within_tol[CK_RESERVE] = completed
+	    && o->end_soc >= o->reserve_soc - SIZING_RESERVE_TOL;
+	if (!completed)
+		snprintf(v->note[CK_RESERVE], sizeof v->note[CK_RESERVE],
+		    "The flight ended after %.0f s of %.0f s: %.160s.", flown, need,
+		    o->termination);
+
+	/* A climb rate the thrust does not reach is flown at the fastest it
+	 * does (climb_limit_ms). */
+	if (p->duration_s[PHASE_CLIMB] > 0.0 && o->climb_limit_ms > 0.0)
+		checks_set(v, CK_CLIMB_SPEED, p->v_climb_ms, o->climb_limit_ms);
+	if (p->duration_s[PHASE_FORWARD] > 0.0) {
+		checks_set(v, CK_FORWARD_PITCH, o->forward_pitch_deg,
+		    MISSION_PITCH_MAX_DEG);
+		/* A design whose loop ran away has no top speed to compare. */
+		if (o->v_max_ms > 0.0)
+			checks_set(v, CK_FORWARD_SPEED, o->optimal_speed_ms, o->v_max_ms);
+	}
+	if (p->downwash_cap_ms > 0.0)
+		checks_set(v, CK_DOWNWASH, o->downwash_ms, p->downwash_cap_ms);
+
+	checks_set(v, CK_VOLTAGE_MISSION, o->min_terminal_voltage_v,
+	    o->voltage_floor_v);
+	checks_set(v, CK_BATTERY_TEMP, o->max_battery_temp_c, THERM_RUNAWAY_C);
+	checks_set(v, CK_PROP_OVERLAP, o->opt.prop_diameter_in,
+	    o->overlap_limit_in * (1.0 + 1e-6)); /* a real part to 1 ppm */
+	checks_set(v, CK_TIP_MACH, o->tip_mach_peak, AERO_TIP_MACH_MAX);
+
+	/* The arm: strength at its design load, stiffness and torsion at
+	 * full thrust, its first mode against the gyro filter and the steady
+	 * excitations. */
+	if (o->arm_length_m > 0.0) {
+		checks_set(v, CK_ARM_SAFETY, o->arm_safety_factor, STRUCT_FOS);
+		v->sized[CK_ARM_SAFETY] = strcmp(o->arm_sized_by,
+		    structure_sized_by_text[ARM_BY_STRENGTH]) == 0;
+		checks_set(v, CK_ARM_TILT, o->arm_tilt_full_deg, STRUCT_TILT_MAX_DEG);
+		v->sized[CK_ARM_TILT] = strcmp(o->arm_sized_by,
+		    structure_sized_by_text[ARM_BY_TILT]) == 0;
+		snprintf(v->basis[CK_ARM_TILT], sizeof v->basis[CK_ARM_TILT],
+		    "tip deflection %.1f mm", o->arm_deflection_full_mm);
+		checks_set(v, CK_ARM_TORSION, o->arm_torsion_mpa, o->arm_torsion_allow_mpa);
+		if (o->gyro_filter_hz > 0.0) {
+			checks_set(v, CK_ARM_MODE_CONTROL, o->arm_natural_frequency_hz,
+			    o->gyro_filter_hz);
+			v->sized[CK_ARM_MODE_CONTROL] = strcmp(o->arm_sized_by,
+			    structure_sized_by_text[ARM_BY_MODE]) == 0;
+		}
+		rev_band(o);
+		band_check(v, CK_ARM_MODE_REV, o->arm_natural_frequency_hz,
+		    o->rev_band_low_hz, o->rev_band_high_hz, STRUCT_REV_MARGIN,
+		    "rotor speed");
+		band_check(v, CK_ARM_MODE_BLADE_PASS, o->arm_natural_frequency_hz,
+		    o->blade_pass_low_hz, o->blade_pass_frequency_hz,
+		    STRUCT_RESONANCE_MARGIN, "blade pass");
+	}
+	checks_set(v, CK_CG_OFFSET, p->cg_shift_m, cg_limit_m(p));
 }
 
 void
@@ -191,216 +278,50 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	char f1[FIX_LEN], f2[FIX_LEN], f3[FIX_LEN];
 	const char *fx[4] = { f1, f2, f3, NULL };
 	int n0 = r->n_violations;
-	o->n_checks = 0;
 
-	/* The loop itself. */
-	double last_step = o->n_history >= 2
-	    ? fabs(o->history_kg[o->n_history - 1] - o->history_kg[o->n_history - 2])
-	    : 0.0;
-	struct res_check *c = feasibility_add_check(o, "Mass loop step at exit", "kg",
-	    last_step, SIZING_TOL_KG, true);
-	if (c && st == SIZING_CONVERGED)
-		c->pass = true;
-	if (c)
-		c->sized = true;
+	/* The loop itself: its status is a violation, not a check. */
 	if (st == SIZING_RUNAWAY) {
 		feasibility_fix(r, f1, "Reduce payload_kg or the mission times");
 		feasibility_fix(r, f2, "Choose a higher specific-energy battery_chemistry");
-		feasibility_fix(r, f3, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
+		feasibility_fix(r, f3, "Allow a shorter flight: locks.auto_reduce_flight_time = true");
 		feasibility_violation(r, run, "mass_loop", "MASS_RUNAWAY", fx,
-		    "The takeoff mass ran away above %.0f kg: each added kilogram "
-		    "needs more than a kilogram of battery, structure and motors "
-		    "(Lipschitz constant >= 1).", SIZING_RUNAWAY_KG);
+		    "The takeoff mass grows without bound past %.0f kg: each added "
+		    "kilogram needs more than a kilogram of battery, structure and "
+		    "motors to carry it.", SIZING_RUNAWAY_KG);
 	} else if (st == SIZING_MAX_ITERATIONS) {
 		feasibility_fix(r, f1, "Shorten the mission or lighten the payload");
-		feasibility_fix(r, f2, "Fix the cell count (nominal_cell_count) to stop cell-count cycling");
+		feasibility_fix(r, f2, "Fix the cell count (nominal_cell_count)");
 		fx[2] = NULL;
 		feasibility_violation(r, run, "mass_loop", "NOT_CONVERGED", fx,
-		    "The mass loop did not converge to 1 g in %d iterations.",
+		    "The takeoff mass did not settle to 1 g in %d iterations.",
 		    o->iterations);
 		fx[2] = f3;
 	}
-	feasibility_add_check(o, "Mass-growth Lipschitz constant", "", o->lipschitz, 1.0, true);
-	feasibility_add_check(o, "Takeoff mass", "kg", o->mass.total_kg, SIZING_RUNAWAY_KG, true);
 
-	/* The mission, down to the reserve: the pack must land with the state
-	 * of charge the 20 % capacity margin leaves (paper §II-D).  A free
-	 * battery is sized to land on it exactly; sized or locked, the landing
-	 * state of charge is known to the discharge's integration accuracy
-	 * (SIZING_RESERVE_TOL), so a locked copy of a sized battery passes
-	 * as the sized one does. */
-	double need = 0.0, flown = 0.0;
-	for (int i = 0; i < PHASE_MAX; i++)
-		need += o->approved_time_s[i];
-	flown = o->n_trace > 0 ? o->trace[o->n_trace - 1].t_s : 0.0;
-	bool completed = flown >= need * 0.999;
-	bool sized = !p->capacity_locked;
-	c = feasibility_add_check(o, "State of charge at landing (reserve)", "%",
-	    completed ? 100.0 * o->end_soc : 0.0, 100.0 * o->reserve_soc, false);
-	if (c) {
-		c->sized = sized;
-		if (completed && o->end_soc >= o->reserve_soc - SIZING_RESERVE_TOL)
-			c->pass = true;
-	}
-	if (c && !c->pass && st != SIZING_RUNAWAY) {
-		if (p->capacity_locked) {
-			feasibility_fix(r, f1, "Increase locks.locked_capacity_mah above %.0f mAh",
-			    p->capacity_locked_ah * 1000.0 * (need > 0.0 && flown > 0.0 ? need / flown : 2.0) * SIZING_CAP_MARGIN);
-			feasibility_fix(r, f2, "Allow goal relaxation: locks.auto_reduce_flight_time = true");
-			feasibility_fix(r, f3, "Unlock the battery so the solver can size it");
-		} else {
-			feasibility_fix(r, f1, "Add series cells (nominal_cell_count) to lower the current");
-			feasibility_fix(r, f2, "Shorten the mission or lighten the payload");
-			feasibility_fix(r, f3, "Choose a lower-resistance battery_chemistry");
-		}
-		if (!completed)
-			feasibility_violation(r, run, "discharge", "MISSION_NOT_FLOWN", fx,
-			    "The discharge simulation stopped at %.0f s of %.0f s: %s.",
-			    flown, need, o->termination);
-		else
-			feasibility_violation(r, run, "discharge", "RESERVE", fx,
-			    "The pack lands at %.1f %% state of charge, below the "
-			    "%.1f %% reserve.", 100.0 * o->end_soc,
-			    100.0 * o->reserve_soc);
-	}
-
-	/* Propulsion geometry. */
-	c = feasibility_add_check(o, "Propeller diameter (overlap limit)", "in",
-	    o->opt.prop_diameter_in, o->overlap_limit_in + 1e-9, true);
-	if (c)
-		c->sized = !p->prop_locked && !(p->prop_frac > 0.0 && p->prop_frac < 1.0);
-	c = feasibility_add_check(o, "Tip Mach number at full throttle", "", o->tip_mach_peak,
-	    AERO_TIP_MACH_MAX, true);
-	if (c && !c->pass) {
-		feasibility_fix(r, f1, "Use a larger propeller (lower rpm for the same thrust)");
-		feasibility_fix(r, f2, "Reduce the thrust margin (payload_role.thrust_margin_override)");
-		feasibility_fix(r, f3, "Lower the operating altitude or raise the ambient temperature limit");
-		feasibility_violation(r, run, "propulsion", "TIP_MACH", fx,
-		    "The rotor tip reaches Mach %.2f at full throttle (limit %.2f): "
-		    "noise, compressibility losses and blade loads rise sharply.",
-		    o->tip_mach_peak, AERO_TIP_MACH_MAX);
-	}
-
-	/* Electrical and thermal. */
-	c = feasibility_add_check(o, "Battery peak temperature", "°C", o->max_battery_temp_c,
-	    THERM_RUNAWAY_C, true);
-	if (c && !c->pass) {
-		feasibility_fix(r, f1, "Add capacity or parallel packs to lower the C-rate");
-		feasibility_fix(r, f2, "Choose a lower-resistance battery_chemistry (LiPo, LiHV)");
-		feasibility_fix(r, f3, "Lower the ambient temperature limit of the mission");
-		feasibility_violation(r, run, "discharge", "THERMAL_RUNAWAY", fx,
-		    "The pack reaches %.1f °C, above the %.0f °C thermal-runaway limit.",
-		    o->max_battery_temp_c, THERM_RUNAWAY_C);
-	}
-	c = feasibility_add_check(o, "Minimum terminal voltage", "V", o->min_terminal_voltage_v,
-	    o->voltage_floor_v, false);
-	if (c && !c->pass) {
-		feasibility_fix(r, f1, "Add series cells (nominal_cell_count)");
-		feasibility_fix(r, f2, "Add capacity to reduce the voltage sag");
-		fx[2] = NULL;
-		feasibility_violation(r, run, "discharge", "VOLTAGE_FLOOR", fx,
-		    "The terminal voltage falls to %.2f V, below the %.2f V cut-off.",
-		    o->min_terminal_voltage_v, o->voltage_floor_v);
-		fx[2] = f3;
-	}
+	struct check_values v;
+	checks_init(&v);
+	feasibility_common_checks(p, o, &v);
+	/* The continuous design is sized to its thrust requirement, and its
+	 * battery to the cells' burst power. */
 	double p_max = p->burst_factor * p->chem->p_spec_w_kg * o->mass.battery_kg
 	    / (o->packaging_factor > 0.0 ? o->packaging_factor : 1.0);
-	c = feasibility_add_check(o, "Full-throttle battery power (burst capability)", "W",
-	    o->peak_power_w, p_max, true);
-	if (c)
-		c->sized = o->battery_power_binds;
-	if (c && !c->pass) {
-		feasibility_fix(r, f1, "Unlock or enlarge the battery");
-		feasibility_fix(r, f2, "Choose a higher-power chemistry such as LiPo or LiHV");
-		feasibility_fix(r, f3, "Reduce the thrust margin");
-		feasibility_violation(r, run, "discharge", "BATTERY_POWER", fx,
-		    "Full throttle draws %.0f W, but %.2f kg of %s cells deliver at "
-		    "most %.0f W in a 10 s burst (%.0f × their continuous specific "
-		    "power).", o->peak_power_w, o->mass.battery_kg, p->chem->name,
-		    p_max, p->burst_factor);
-	}
-
-	/* Structure. */
-	c = feasibility_add_check(o, "Arm root bending stress", "MPa", o->arm_stress_mpa,
-	    o->arm_stress_allow_mpa, true);
-	if (c)
-		c->sized = true;
-	c = feasibility_add_check(o, "Arm mode clear of the blade-pass band", "",
-	    o->resonance_margin, 0.0, false);
-	if (c && !c->pass) {
-		feasibility_fix(r, f1, "Stiffen the arm above %.0f Hz (larger tube diameter)",
-		    STRUCT_RESONANCE_MARGIN * o->blade_pass_frequency_hz);
-		feasibility_fix(r, f2, "Or soften it below %.0f Hz (soft-mounted arms)",
-		    o->blade_pass_low_hz / STRUCT_RESONANCE_MARGIN);
-		feasibility_fix(r, f3, "Change the blade count (structural_overrides.num_blades) to move the band");
-		feasibility_violation(r, run, "structure", "ARM_RESONANCE", fx,
-		    "The arm's first bending mode (%.0f Hz) lies inside the "
-		    "in-flight blade-pass band (%.0f–%.0f Hz) without the 1.5 margin.",
-		    o->arm_natural_frequency_hz, o->blade_pass_low_hz,
-		    o->blade_pass_frequency_hz);
-	}
-	feasibility_add_check(o, "Payload CG offset", "m", p->cg_shift_m, cg_limit_m(p), true);
-
-	/* Role-specific limits. */
-	if (p->downwash_cap_ms > 0.0) {
-		c = feasibility_add_check(o, "Downwash (crop and drift limit)", "m/s",
-		    o->downwash_ms, p->downwash_cap_ms, true);
-		if (c && !c->pass) {
-			feasibility_fix(r, f1, "Increase max_diameter_m: larger rotors lower the downwash");
-			feasibility_fix(r, f2, "Use more rotors (num_rotors)");
-			feasibility_fix(r, f3, "Raise payload_role.ag_max_downwash_ms if the crop allows");
-			feasibility_violation(r, run, "feasibility", "DOWNWASH", fx,
-			    "The downwash of %.1f m/s exceeds the %.1f m/s cap against "
-			    "crop damage and spray drift.", o->downwash_ms, p->downwash_cap_ms);
-		}
-	}
-	/* A climb rate the thrust does not reach: the run flies the fastest
-	 * climb it does reach (climb_limit_ms). */
-	if (p->duration_s[PHASE_CLIMB] > 0.0 && o->climb_limit_ms > 0.0) {
-		feasibility_add_check(o, "Climb speed within thrust", "m/s",
-		    p->v_climb_ms, o->climb_limit_ms, true);
-		const char *climb_fx[] = { f1, NULL };
-		feasibility_fix(r, f1, "Reduce v_climb_ms to %.1f m/s or less, or raise "
-		    "the thrust margin (payload_role.thrust_margin_override)",
-		    o->climb_limit_ms);
-		feasibility_violation(r, run, "mission", "CLIMB_SPEED", climb_fx,
-		    "A %.1f m/s climb needs more thrust than full throttle gives; the "
-		    "design climbs at %.1f m/s at most and flies its climb at that.",
-		    p->v_climb_ms, o->climb_limit_ms);
-	}
-	if (p->duration_s[PHASE_FORWARD] > 0.0) {
-		c = feasibility_add_check(o, "Forward body pitch", "°", o->forward_pitch_deg,
-		    MISSION_PITCH_MAX_DEG, true);
-		/* A design whose mass loop ran away has no top speed to compare
-		 * with (v_max_ms 0): its runaway is the violation. */
-		c = o->v_max_ms > 0.0 ? feasibility_add_check(o,
-		    "Forward speed within thrust margin", "m/s", o->optimal_speed_ms,
-		    o->v_max_ms, true) : NULL;
-		if (c && !c->pass) {
-			feasibility_fix(r, f1, "Reduce v_forward_ms to %.1f m/s or less", o->v_max_ms);
-			feasibility_fix(r, f2, "Use \"auto\" for the minimum-power speed");
-			feasibility_fix(r, f3, "Reduce the drag area (payload_role.added_drag_m2)");
-			feasibility_violation(r, run, "mission", "FORWARD_SPEED", fx,
-			    "At %.1f m/s the drag needs more thrust or pitch than the "
-			    "design has; the model diverges beyond %.1f m/s.",
-			    o->optimal_speed_ms, o->v_max_ms);
-		}
-	}
-	o->feasible = r->n_violations == n0;
-	for (int i = 0; i < o->n_checks; i++)
-		if (!o->checks[i].pass)
-			o->feasible = false;
-	/* Some checks have no violation of their own (Lipschitz, bending stress,
-	 * pitch...): an infeasible run must still say why. */
-	bool unexplained = !o->feasible && r->n_violations == n0;
-	for (int i = 0; unexplained && i < o->n_checks; i++)
-		if (!o->checks[i].pass) {
-			const struct res_check *k = &o->checks[i];
-			fx[0] = NULL;
-			feasibility_violation(r, run, "checks", "CHECK_FAILED", fx,
-			    "%s is %.4g%s%s, beyond its limit of %.4g%s%s.", k->name,
-			    k->value, k->unit[0] ? " " : "", k->unit, k->limit,
-			    k->unit[0] ? " " : "", k->unit);
-			fx[0] = f1;
-		}
+	checks_set(&v, CK_BATTERY_POWER, o->peak_power_w, p_max);
+	v.sized[CK_BATTERY_POWER] = o->battery_power_binds;
+	v.sized[CK_RESERVE] = !p->capacity_locked;
+	v.sized[CK_PROP_OVERLAP] = !p->prop_locked
+	    && !(p->prop_frac > 0.0 && p->prop_frac < 1.0);
+	/* Where the arm's mode falls against the rotor's excitations turns on
+	 * the rotor speed to a few per cent, and no tube moves it both ways
+	 * (the tilt and the gyro filter floor its stiffness): on the
+	 * continuous reference they are reported, and the design of record,
+	 * whose rotor is real, is held to them.  A requirement that grows
+	 * cannot then let a lighter reference through (test_monotone). */
+	v.advisory[CK_ARM_MODE_REV] = true;
+	v.advisory[CK_ARM_MODE_BLADE_PASS] = true;
+	/* A runaway's numbers are those of a mass that grew without bound:
+	 * its violation says why, its checks add nothing. */
+	if (st == SIZING_RUNAWAY)
+		checks_init(&v);
+	checks_apply(&v, run, o, r);
+	o->feasible = o->feasible && r->n_violations == n0;
 }

@@ -4,9 +4,9 @@
  * configurations before the mass loop (coaxial arm count, a locked propeller
  * that overlaps its neighbour, a CG outside the rotor polygon, no mission,
  * a locked battery that cannot hold even the mission's lower-bound energy).
- * After the loop, every constraint becomes one row of the checks table
- * (value, limit, margin, PASS/FAIL), and each failure becomes a violation
- * with a plain message and suggested fixes.
+ * After the loop, the design is held to the checks of core/checks.h: one
+ * row each of the checks table (value, limit, margin, PASS/FAIL), and each
+ * failure a violation with a plain message and suggested fixes.
  */
 #ifndef AEROEVAL_FEASIBILITY_H
 #define AEROEVAL_FEASIBILITY_H
@@ -28,12 +28,13 @@ void feasibility_checks(const struct sizing_params *p, enum sizing_status st,
                         const char *run, struct res_run *run_out,
                         struct solve_result *r);
 
-/* Append one row to run's checks table (NULL when it is full): value
- * against limit, an upper limit when upper; margin and pass follow, with a
- * relative tolerance of 1e-9 for a value sized to its limit. */
-struct res_check *feasibility_add_check(struct res_run *run, const char *name,
-                                        const char *unit, double value,
-                                        double limit, bool upper);
+/* The checks both designs are held to that their run's figures decide
+ * (the mission, heat, voltage, rotor, arm and CG), into v; the caller adds
+ * its own (core/checks.h) and applies them.  Sets o's once-per-revolution
+ * band. */
+struct check_values;
+void feasibility_common_checks(const struct sizing_params *p, struct res_run *o,
+                               struct check_values *v);
 
 /* Append one violation; fixes is a NULL-terminated list (may be NULL).
  * run, stage and code are string literals (the violation keeps the

@@ -10,6 +10,7 @@
 #include "physics/discharge.h"
 #include "physics/mission.h"
 #include "physics/therm.h"
+#include "sizing/airframe.h"
 #include "util/strbuf.h"
 #include "util/units.h"
 
@@ -253,13 +254,23 @@ capped_full_throttle(const struct perf_ctx *x, struct res_op *op)
 	struct motor_point pt;
 	motor_at_shaft(&c->motor, x->hover_temp_c,
 	    x->kq_nm_s2 * 2.0 * M_PI * n * n * n, n, &pt);
+	/* Nor past its own ESC's continuous rating on the installed rotor:
+	 * the torque K (I - I0) meets kq n² at n_esc. */
+	double i0 = c->motor.no_load_current_a;
+	if (c->esc_current_a > i0 && pt.current_a > c->esc_current_a) {
+		n = sqrt(motor_k_nm_a(c->motor.kv_rpm_per_v)
+		    * (c->esc_current_a - i0) / x->kq_nm_s2);
+		motor_at_shaft(&c->motor, x->hover_temp_c,
+		    x->kq_nm_s2 * 2.0 * M_PI * n * n * n, n, &pt);
+	}
+	double thrust_n = fmin(c->max_thrust_n, prop_thrust_n(&c->prop, rho, n, d));
 	double n_rot = (double)x->model.n_rotors;
 	double other_w = 0.5 * MISSION_F_PWM_HZ * MISSION_C_OSS_F
 	    * x->v_oc_nom_v * x->v_oc_nom_v * n_rot + x->model.aux_w;
 	double i_b, v_b;
 	if (!bus_load(x, n_rot * pt.power_in_w + other_w, &i_b, &v_b))
 		return false;
-	full_op(x, &pt, c->max_thrust_n, v_b > 0.0 && pt.voltage_v < v_b
+	full_op(x, &pt, thrust_n, v_b > 0.0 && pt.voltage_v < v_b
 	    ? pt.voltage_v / v_b : 1.0, i_b, v_b, op);
 	return true;
 }
@@ -398,13 +409,7 @@ record_craft(const struct perf_ctx *x, struct res_run *run)
 	    / ((double)n_arms(p) * area);
 	run->downwash_ms = aero_downwash_ms(c->mass.total_kg, p->air.rho_kg_m3,
 	    n_arms(p), area);
-	run->arm_length_m = c->arm.length_m;
-	run->arm_outer_diameter_mm = c->arm.d_out_m * 1000.0;
-	run->arm_wall_thickness_mm = c->arm.wall_m * 1000.0;
-	run->arm_stress_mpa = c->arm.stress_pa / 1e6;
-	run->arm_stress_allow_mpa = structure_sigma_allow_pa() / 1e6;
-	run->arm_natural_frequency_hz = c->arm.f_nat_hz;
-	run->arm_wall_floor_binds = c->arm.wall_floor_binds;
+	airframe_record_arm(&c->arm, c->prop_diameter_m, run);
 	run->arm_tip_mass_kg = (c->mass.motor_kg + c->mass.prop_kg)
 	    / (double)p->n_rotors * (p->coaxial ? 2.0 : 1.0);
 }

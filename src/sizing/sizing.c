@@ -247,9 +247,11 @@ cells_masses(const struct sizing_params *p, int cells, double energy_wh,
 	e->mass.prop_kg = prop_each * (double)nr;
 
 	/* Arms, frame, body, harness and avionics for these loads. */
+	double torque_nm = e->rps_peak > 0.0
+	    ? e->peak.shaft_w / (double)nr / (2.0 * M_PI * e->rps_peak) : 0.0;
 	struct airframe_loads al = { e->design_mass_kg, e->t_peak_n,
 		motor_total / (double)nr + prop_each, e->peak_current_a,
-		e->mass.battery_kg };
+		e->mass.battery_kg, torque_nm, d };
 	struct airframe_masses am;
 	airframe_masses(p, &al, &am);
 	e->arm = am.arm;
@@ -892,12 +894,7 @@ record_run(const struct sizing_params *p, struct eval *e,
 	out->opt.motor_peak_power_w = e->peak.shaft_w / (double)p->n_rotors
 	    / p->eta_drive;
 
-	out->arm_length_m = e->arm.length_m;
-	out->arm_outer_diameter_mm = e->arm.d_out_m * 1000.0;
-	out->arm_wall_thickness_mm = e->arm.wall_m * 1000.0;
-	out->arm_stress_mpa = e->arm.stress_pa / 1e6;
-	out->arm_stress_allow_mpa = structure_sigma_allow_pa() / 1e6;
-	out->arm_natural_frequency_hz = e->arm.f_nat_hz;
+	airframe_record_arm(&e->arm, e->model.rotor.diameter_m, out);
 	out->blade_pass_frequency_hz = (double)p->n_blades * e->rps_peak;
 	out->blade_pass_low_hz = (double)p->n_blades * SIZING_LOW_FLIGHT_RPM
 	    * e->rps_hover;
@@ -905,7 +902,6 @@ record_run(const struct sizing_params *p, struct eval *e,
 	    out->blade_pass_low_hz, out->blade_pass_frequency_hz);
 	out->arm_tip_mass_kg = (e->mass.motor_kg / (double)p->n_rotors
 	    + e->mass.prop_kg / (double)p->n_rotors) * (p->coaxial ? 2.0 : 1.0);
-	out->arm_wall_floor_binds = e->arm.wall_floor_binds;
 	out->min_fraction_binds = e->min_fraction_binds;
 
 	out->max_battery_temp_c = e->dis.peak_temp_c;
