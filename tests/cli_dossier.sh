@@ -42,9 +42,9 @@ fi
 check dossier_schema_names_auto_fields test -s "$T/auto_fields"
 
 # The first status callout of a cover text: FEASIBLE, NOT FEASIBLE AS BUILT
-# or NOT BUILDABLE (whichever line comes first).
+# NOT BUILDABLE or BEYOND REACH (whichever line comes first).
 first_status() {
-	grep -m 1 -E '^ *(FEASIBLE|NOT FEASIBLE AS BUILT|NOT BUILDABLE)$' "$1" | sed 's/^ *//'
+	grep -m 1 -E '^ *(FEASIBLE|NOT FEASIBLE AS BUILT|NOT BUILDABLE|BEYOND REACH)$' "$1" | sed 's/^ *//'
 }
 
 # The bill of materials' mass in kg, parts plus payload, from
@@ -160,6 +160,7 @@ for f in examples/*.json; do
 	# The verdict comes first on the cover and matches the record.
 	want=FEASIBLE
 	grep -q '"buildable": false' "$d/result.json" && want="NOT BUILDABLE"
+	grep -q '"ceiling": {' "$d/result.json" && want="BEYOND REACH"
 	if [ "$want" = FEASIBLE ] &&
 		awk '/"design_of_record"/ { on = 1 } on && /"feasible":/ { f = /false/; exit } END { exit !f }' "$d/result.json"; then
 		want="NOT FEASIBLE AS BUILT"
