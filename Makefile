@@ -36,8 +36,10 @@ WARN += -Wformat=2
 WARN += -Wvla
 WARN += -Werror
 
+# The debug information names source files relative to the tree, so two
+# checkouts of one commit, wherever they are, build identical binaries.
 OPT      ?= -O2 -g
-CFLAGS   += -std=c11 $(OPT) $(WARN)
+CFLAGS   += -std=c11 $(OPT) $(WARN) -ffile-prefix-map=$(CURDIR)=.
 CPPFLAGS += -D_DEFAULT_SOURCE -DAEROEVAL_VERSION='"$(VERSION)"' -Isrc
 
 # ---- the library ------------------------------------------------------------
@@ -47,7 +49,7 @@ CPPFLAGS += -D_DEFAULT_SOURCE -DAEROEVAL_VERSION='"$(VERSION)"' -Isrc
 # side by side, and cli on top (docs/architecture.md); `make check-layers`
 # (part of `make test`) keeps every include pointing down.
 LAYERS   := util core physics sizing parts engine study input output cli
-LIB_SRCS := $(filter-out src/cli/main.c src/cli/catsnap.c,$(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)))
+LIB_SRCS := $(filter-out src/cli/main.c,$(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)))
 LIB_OBJS := $(LIB_SRCS:src/%.c=$(BUILD)/obj/%.o)
 LIB      := $(BUILD)/libaeroeval.a
 BIN      := $(BUILD)/aeroeval
@@ -82,26 +84,8 @@ $(LIB): $(LIB_OBJS)
 	rm -f $@
 	ar rcs $@ $^
 
-$(BIN): $(BUILD)/obj/cli/main.o $(BUILD)/obj/cli/snapshot.o $(LIB)
+$(BIN): $(BUILD)/obj/cli/main.o $(LIB)
 	$(CC) $(CFLAGS) -o $@ $^ $(PKG_LIBS)
-
-# The shipped catalogue, loaded and checked once here and carried inside the
-# program (src/input/catalog_snap.h): catsnap writes the snapshot, and
-# snapshot.S includes its bytes.  At start-up aeroeval uses it only while
-# the files it was made from are unchanged, else it reads the JSON.
-CATALOG_FILES := $(wildcard data/catalog/*.json) data/chemistries.json
-SNAP          := $(BUILD)/gen/catalog.snap
-
-$(BUILD)/catsnap: $(BUILD)/obj/cli/catsnap.o $(LIB)
-	$(CC) $(CFLAGS) -o $@ $^ $(PKG_LIBS)
-
-$(SNAP): $(BUILD)/catsnap $(CATALOG_FILES)
-	@mkdir -p $(@D)
-	$(BUILD)/catsnap data $@
-
-$(BUILD)/obj/cli/snapshot.o: src/cli/snapshot.S $(SNAP)
-	@mkdir -p $(@D)
-	$(CC) -c -I$(BUILD)/gen -o $@ $<
 
 $(BUILD)/tests/%: tests/%.c $(LIB) | $(BUILD)/tests
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -Itests -MMD -MP -o $@ $< $(LIB) $(PKG_LIBS) -lcmocka
@@ -225,13 +209,11 @@ paper: all
 
 # ---- housekeeping -----------------------------------------------------------
 # The man page's header carries the version; it is set from VERSION here.
-# The data keep their file times, so the installed program's catalogue
-# snapshot matches them (src/input/catalog_snap.h) and is used.
 install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/aeroeval \
 	  $(DESTDIR)$(PREFIX)/share/man/man1
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/aeroeval
-	cp -R --preserve=timestamps data templates $(DESTDIR)$(PREFIX)/share/aeroeval/
+	cp -R data templates $(DESTDIR)$(PREFIX)/share/aeroeval/
 	sed '/^\.TH/s/"aeroeval [^"]*"/"aeroeval $(VERSION)"/' src/cli/aeroeval.1 \
 	  >$(DESTDIR)$(PREFIX)/share/man/man1/aeroeval.1
 	chmod 644 $(DESTDIR)$(PREFIX)/share/man/man1/aeroeval.1

@@ -15,7 +15,6 @@
 #include "output/assets.h"
 #include "output/fsout.h"
 #include "input/catalog_io.h"
-#include "input/catalog_snap.h"
 #include "input/json_in.h"
 #include "input/model_io.h"
 #include "input/template_io.h"
@@ -98,17 +97,6 @@ cli_hash_file(struct sha256_ctx *c, const char *path, char *err, size_t errlen)
 	return 0;
 }
 
-/* The snapshot of the shipped catalogue that main() hands over, if any. */
-static const unsigned char *snapshot;
-static size_t snapshot_bytes;
-
-void
-cli_use_snapshot(const unsigned char *blob, size_t n)
-{
-	snapshot = blob;
-	snapshot_bytes = n;
-}
-
 int
 cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
              FILE *err)
@@ -122,12 +110,7 @@ cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
 	struct diag *dg = diag_alloc(err);
 	int n_err = model_io_load(env->data_dir, &env->model, dg);
 	diag_flush(dg);
-	/* The shipped catalogue from the program's own snapshot when its
-	 * files are unchanged (input/catalog_snap.h), else from its JSON. */
-	if (n_err == 0 && want_catalog && db_dir == NULL)
-		env->cat = catalog_snap_read(snapshot, snapshot_bytes, env->data_dir,
-		                             env->catalogue_sha256);
-	if (n_err == 0 && want_catalog && env->cat == NULL) {
+	if (n_err == 0 && want_catalog) {
 		env->cat = catalog_io_load(env->db_dir, env->model.chem_names, dg);
 		diag_flush(dg);
 		n_err = env->cat == NULL;
@@ -135,7 +118,7 @@ cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
 	diag_free(dg);
 	if (n_err != 0)
 		return 2;
-	if (want_catalog && env->catalogue_sha256[0] == '\0')
+	if (want_catalog)
 		cli_catalogue_hash(env->db_dir, env->catalogue_sha256);
 	return 0;
 }

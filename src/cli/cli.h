@@ -31,10 +31,6 @@ int cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
 
 void cli_env_free(struct cli_env *env);
 
-/* Hands cli_env_load() the program's snapshot of the shipped catalogue
- * (input/catalog_snap.h): n bytes at blob, which stay valid to exit. */
-void cli_use_snapshot(const unsigned char *blob, size_t n);
-
 /* The catalogue SHA-256 of result.json's catalogue_sha256: every file of
  * db_dir (name, NUL, length, bytes each) as 64 hex digits into out. */
 void cli_catalogue_hash(const char *db_dir, char out[65]);

@@ -37,14 +37,9 @@ is_help(const char *a)
 	return strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0;
 }
 
-/* The shipped catalogue's snapshot, from snapshot.S. */
-extern const unsigned char aeroeval_snapshot[], aeroeval_snapshot_end[];
-
 int
 main(int argc, char **argv)
 {
-	cli_use_snapshot(aeroeval_snapshot,
-	                 (size_t)(aeroeval_snapshot_end - aeroeval_snapshot));
 	atexit(doc_global_cleanup); /* fontconfig/cairo caches: valgrind-clean exit */
 	if (argc < 2) {
 		cli_help_overview(stderr);

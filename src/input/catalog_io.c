@@ -253,18 +253,6 @@ _Static_assert(N_OF(motor_fields) < MAX_FIELDS && N_OF(prop_fields) < MAX_FIELDS
                N_OF(frame_fields) < MAX_FIELDS && N_OF(avionics_fields) < MAX_FIELDS,
                "raise MAX_FIELDS");
 
-size_t
-catalog_io_text_fields(enum catalog_category k, size_t *offsets, size_t max)
-{
-	size_t n = 0;
-	for (size_t i = 0; i < categories[k].n_fields; i++) {
-		const struct field *f = &categories[k].fields[i];
-		if ((f->kind == K_STR || f->kind == K_LIST) && n < max)
-			offsets[n++] = f->off;
-	}
-	return n;
-}
-
 /* ---- the load ------------------------------------------------------------ */
 
 /* Where an id was first given, for "duplicate id" messages. */

@@ -34,11 +34,6 @@ extern const char *const catalog_io_files[CATALOG_N_CATEGORIES];
 /* True when the category's file must exist (false: absent = no entries). */
 bool catalog_io_required(enum catalog_category k);
 
-/* The offsets of category k's text fields (every `const char *` of its
- * entry struct), written into offsets (room for max); returns how many.
- * The snapshot (input/catalog_snap.h) stores these as string offsets. */
-size_t catalog_io_text_fields(enum catalog_category k, size_t *offsets, size_t max);
-
 /* Loads the catalogue directory dir (a trailing '/' is fine).
  * known_chemistries is the NULL-terminated list of accepted battery
  * chemistries; NULL means catalog_default_chemistries.  Every problem of
