@@ -17,13 +17,13 @@ VERSION  := 0.1.0
 # Debian packages the build, the tests and the examples need.  `deps` installs
 # only the ones missing, so a machine that has them never needs root.
 DEB_PKGS := gcc make pkg-config libcjson-dev libhpdf-dev libcairo2-dev \
-            libfontconfig-dev libcmocka-dev fonts-dejavu-core poppler-utils
+            libssl-dev libfontconfig-dev libcmocka-dev fonts-dejavu-core poppler-utils
 
 # ---- flags ------------------------------------------------------------------
 # Recursively expanded on purpose: pkg-config runs when a recipe needs the
 # flags, i.e. after `deps` has installed it on a fresh machine.
-PKG_CFLAGS = $(shell pkg-config --cflags cairo libcjson fontconfig 2>/dev/null)
-PKG_LIBS   = $(shell pkg-config --libs cairo libcjson fontconfig 2>/dev/null) -lhpdf -lm
+PKG_CFLAGS = $(shell pkg-config --cflags cairo libcjson libcrypto fontconfig 2>/dev/null)
+PKG_LIBS   = $(shell pkg-config --libs cairo libcjson libcrypto fontconfig 2>/dev/null) -lhpdf -lm
 
 WARN := -Wall
 WARN += -Wextra

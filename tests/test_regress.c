@@ -120,7 +120,7 @@ replay_catalog(const char *path, const unsigned char *b, size_t n)
 		fclose(f);
 	}
 	struct diag *dg = diag_alloc(NULL);
-	struct catalog *c = catalog_io_load(dir, NULL, dg);
+	struct catalog *c = catalog_io_load(dir, NULL, dg, NULL);
 	int n_err = diag_n_errors(dg);
 	diag_free(dg);
 	if ((c == NULL) != (n_err > 0)) {

@@ -45,6 +45,18 @@ text_utf8_seq(const char *s, size_t left)
 	return n;
 }
 
+int
+text_hex_digit(unsigned char c)
+{
+	if (c >= '0' && c <= '9')
+		return c - '0';
+	if (c >= 'a' && c <= 'f')
+		return c - 'a' + 10;
+	if (c >= 'A' && c <= 'F')
+		return c - 'A' + 10;
+	return -1;
+}
+
 size_t
 text_bom(const char *b, size_t len)
 {

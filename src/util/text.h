@@ -16,6 +16,9 @@
  * surrogates and code points above U+10FFFF are invalid). */
 size_t text_utf8_seq(const char *s, size_t left);
 
+/* The value of the hexadecimal digit c (either case), or -1. */
+int text_hex_digit(unsigned char c);
+
 /* Length of a UTF-8 byte-order mark at the start of b[0..len), or 0. */
 size_t text_bom(const char *b, size_t len);
 
