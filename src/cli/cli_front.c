@@ -11,6 +11,7 @@
 #include "core/diag.h"
 #include "input/mission_io.h"
 #include "input/schema.h"
+#include "util/jsonw.h"
 #include "util/xalloc.h"
 
 int
@@ -64,13 +65,9 @@ cli_schema(int argc, char **argv)
 		return 0;
 	}
 	cJSON *s = schema_json_schema();
-	char *text = cJSON_Print(s);
+	char *text = jsonw_print(s, NULL);
 	cJSON_Delete(s);
-	if (text == NULL) {
-		fprintf(stderr, "aeroeval: internal error: cannot print the schema\n");
-		return 3;
-	}
-	printf("%s\n", text);
+	fputs(text, stdout);
 	free(text);
 	return 0;
 }

@@ -20,6 +20,7 @@
 #include "input/model_io.h"
 #include "study/validate.h"
 #include "study/valreport.h"
+#include "util/jsonw.h"
 #include "util/text.h"
 #include "util/xalloc.h"
 
@@ -274,7 +275,7 @@ report_json(const char *path, const struct cohort *c, const struct validate_repo
 				cJSON_AddItemToArray(nt, cJSON_CreateString(validate_note_text(1u << b)));
 		cJSON_AddItemToArray(rows, o);
 	}
-	char *txt = cJSON_Print(root);
+	char *txt = jsonw_print(root, NULL);
 	cJSON_Delete(root);
 	return txt;
 }
@@ -349,7 +350,7 @@ write_missions(const char *dir, const struct cohort *c, const struct validate_re
 		snprintf(path, sizeof path, "%s/%s", dir, file);
 		cJSON *j = mission_io_to_json(&v->rows[i].spec);
 		prune_to_given(j, &v->rows[i].spec);
-		char *txt = cJSON_Print(j);
+		char *txt = jsonw_print(j, NULL);
 		cJSON_Delete(j);
 		int rc = fsout_write_atomic(path, txt, strlen(txt), err, sizeof err);
 		free(txt);

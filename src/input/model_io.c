@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "input/json_in.h"
+#include "util/jsonw.h"
 #include "util/text.h"
 #include "util/xalloc.h"
 
@@ -579,7 +580,7 @@ model_io_calibration_json(const struct model_calibration *cal)
 			if (a->cls[k].n > 0)
 				add_interval(bc, spec_enum_airframe[k], &a->cls[k]);
 	}
-	char *txt = cJSON_Print(root);
+	char *txt = jsonw_print(root, NULL);
 	cJSON_Delete(root);
 	return txt;
 }

@@ -26,7 +26,7 @@ void schema_print_text(FILE *out);
 /* The JSON Schema (draft 2020-12) of mission files: types, enums, ranges,
  * defaults, descriptions, additionalProperties false, "$schema" allowed in
  * every object and "name" in every group.  data/mission.schema.json is
- * cJSON_Print of this plus a newline.  Ownership: cJSON_Delete(). */
+ * jsonw_print() of this (util/jsonw.h).  Ownership: cJSON_Delete(). */
 cJSON *schema_json_schema(void);
 
 #endif /* AEROEVAL_SCHEMA_H */
