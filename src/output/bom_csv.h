@@ -1,4 +1,4 @@
-/* bom_csv.h — bom.csv, the bill of materials as a spreadsheet (PRODUCT.md §4).
+/* bom_csv.h — bom.csv, the bill of materials as a spreadsheet (README.md).
  *
  * Who may include it: the output layer and the command drivers.  It reads a
  * const struct solve_result and returns text; it writes no file.

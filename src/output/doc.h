@@ -7,7 +7,8 @@
  * (° ± µ Ω ² ≤ print and stay selectable).  The running header (document
  * title, mission name) and the footer "n / N" are drawn on every page but
  * the first when the document is saved.  The output is byte-for-byte
- * reproducible: no clock is read, no encryption, no PDF/A (STACK.md §2a).
+ * reproducible: no clock is read, no encryption, no PDF/A (docs/libraries.md,
+ * libharu).
  *
  * Errors are sticky, like a cairo context: the first libharu error (or bad
  * argument) is remembered, every later call does nothing and returns -1, and

@@ -37,7 +37,7 @@ int fsout_write_atomic(const char *path, const void *data, size_t n,
 int fsout_mkdirs(const char *dir, char *err, size_t errlen);
 
 
-/* Where fsout_resolve_date found the date (PRODUCT.md §2, in this order). */
+/* Where fsout_resolve_date found the date (in this order). */
 enum fsout_date_source {
 	FSOUT_DATE_REPORT,      /* the mission's report.date */
 	FSOUT_DATE_EPOCH_ENV,   /* the SOURCE_DATE_EPOCH environment variable */

@@ -7,7 +7,7 @@
  * indentation, LF line ends, one final newline.  Numbers print as the
  * shortest of %.15g/%.16g/%.17g that strtod() reads back to the same
  * double (numfmt.h), so a reader recovers every value exactly; cJSON's own
- * printer rounds (it prints 0.1 + 0.2 as 0.3 and 2^53 + 2 off by two).
+ * printer rounds (it prints 0.1 + 0.2 as 0.3 and 2^53 off by two).
  * Strings are escaped per RFC 8259; valid UTF-8 passes through, an invalid
  * byte becomes U+FFFD.  NaN and Infinity never appear: a non-finite number
  * is written as null and counted as a fault, with the JSON path of the

@@ -1,7 +1,7 @@
 /* xalloc.h — allocation that never returns NULL.
  *
  * Every allocation in aeroeval goes through these.  On exhaustion they print
- * one line and exit with status 3 (internal error, PRODUCT.md §2).  The test
+ * one line and exit with status 3 (internal error; README.md, "Exit status").  The test
  * hook AEROEVAL_FAIL_ALLOC=N makes the N-th allocation fail, so tests can
  * prove that an out-of-memory exit never leaves a truncated output behind.
  * Ownership: the caller frees what these return with free().
