@@ -70,8 +70,6 @@ json_parse_should_build_the_tree_cjson_builds(void **state)
 	assert_int_equal(cJSON_GetObjectItemCaseSensitive(root, "big")->valueint, INT32_MAX);
 	assert_int_equal(cJSON_GetObjectItemCaseSensitive(root, "neg")->valueint, INT32_MIN);
 	assert_string_equal(cJSON_GetObjectItemCaseSensitive(root, "neg")->string, "neg");
-	/* root, a, a[0..5], a[1].b, b[0], b[1], f, big, neg */
-	assert_int_equal(json_doc_count(d), 14);
 	assert_int_equal(json_doc_end(d), strlen(t));
 	json_doc_free(d);
 	json_doc_free(NULL);
@@ -112,7 +110,6 @@ json_parse_should_place_keys_and_values_of_nested_objects(void **state)
 	assert_int_equal(t[e->val_end - 1], '}');
 	assert_int_equal(json_doc_end(d), strlen(t) - 1);   /* before the newline */
 	assert_int_equal(json_doc_n_problems(d), 0);
-	assert_int_equal(json_doc_all_flags(d), 0);
 	json_doc_free(d);
 }
 
@@ -159,7 +156,7 @@ json_parse_should_keep_every_duplicate_in_order(void **state)
 	const char *t = "{\"k\": 1,\n \"k\": 2,\n  \"k\": 3}";
 	struct json_doc *d = parse(t);
 	const cJSON *k = json_doc_root(d)->child;
-	assert_int_equal(json_doc_count(d), 4);
+	assert_null(k->next->next->next);
 	assert_int_equal(json_node_of(k)->key_line, 1);
 	assert_int_equal(json_node_of(k->next)->key_line, 2);
 	assert_int_equal(json_node_of(k->next)->key_col, 2);
@@ -315,7 +312,6 @@ json_parse_should_flag_an_escaped_nul_in_keys_and_strings(void **state)
 	assert_int_equal(json_node_of(c->next)->flags, JSON_PARSE_VAL_NUL);
 	assert_int_equal(json_node_of(c->next->next)->flags, 0);   /* an escaped backslash */
 	assert_string_equal(c->next->next->valuestring, "a\\u0000");
-	assert_int_equal(json_doc_all_flags(d), JSON_PARSE_KEY_NUL | JSON_PARSE_VAL_NUL);
 	assert_int_equal(json_doc_n_problems(d), 0);
 	json_doc_free(d);
 }

@@ -446,9 +446,9 @@ cli_validate(int argc, char **argv)
 	return rc;
 }
 
-/* Progress of `calibrate` on stderr, at most once a second
- * (AEROEVAL_PROGRESS_S overrides the interval; tests use 0): redrawn in
- * place on a terminal, one line each time otherwise (a log). */
+/* Progress of `calibrate` on stderr, at most once a second (in a test
+ * build AEROEVAL_PROGRESS_S overrides the interval; tests use 0): redrawn
+ * in place on a terminal, one line each time otherwise (a log). */
 struct progress_line {
 	double t0, last;    /* start, last line (batch_now_s) */
 	double every_s;     /* the interval */
@@ -459,12 +459,17 @@ struct progress_line {
 static void
 progress_init(struct progress_line *pl)
 {
+	pl->t0 = pl->last = batch_now_s();
+	pl->every_s = 1.0;
+#ifdef AEROEVAL_TEST_HOOKS
 	const char *env = getenv("AEROEVAL_PROGRESS_S");
 	char *end;
-	pl->t0 = pl->last = batch_now_s();
-	pl->every_s = env != NULL ? strtod(env, &end) : 1.0;
-	if (env == NULL || *end != '\0' || !(pl->every_s >= 0.0))
-		pl->every_s = 1.0;
+	if (env != NULL) {
+		double s = strtod(env, &end);
+		if (*end == '\0' && s >= 0.0)
+			pl->every_s = s;
+	}
+#endif
 	pl->tty = isatty(STDERR_FILENO);
 	pl->shown = 0;
 }

@@ -40,7 +40,7 @@ is_help(const char *a)
 int
 main(int argc, char **argv)
 {
-	atexit(doc_global_cleanup); /* fontconfig/cairo caches: valgrind-clean exit */
+	atexit(doc_global_cleanup); /* cairo's static data: a valgrind-clean exit */
 	if (argc < 2) {
 		cli_help_overview(stderr);
 		return 2;

@@ -131,8 +131,7 @@ void diag_quote(const char *s, size_t len, size_t max_chars, char *out,
 /* "error" / "note". */
 const char *diag_severity_name(enum diag_severity sev);
 
-/* Severity and summary of a kind, from the table. */
+/* Severity of a kind, from the table. */
 enum diag_severity diag_kind_severity(enum diag_kind kind);
-const char *diag_kind_summary(enum diag_kind kind);
 
 #endif /* AEROEVAL_DIAG_H */

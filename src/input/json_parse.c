@@ -30,10 +30,8 @@ struct json_doc {
 	size_t strings_used;
 	const cJSON *root;
 	size_t end;                  /* offset just past the root value */
-	size_t n_nodes;
 	struct json_problem *problems;
 	size_t n_problems, cap_problems;
-	unsigned all_flags;          /* OR of every node's flags */
 };
 
 struct parser {
@@ -165,7 +163,6 @@ new_node(struct parser *p)
 	}
 	struct json_node *n = &bl->node[bl->used++];
 	memset(n, 0, sizeof *n);
-	d->n_nodes++;
 	return n;
 }
 
@@ -594,7 +591,6 @@ parse_value(struct parser *p, struct json_node *n)
 	}
 	n->val_end = (uint32_t)p->pos;
 	n->flags |= (unsigned char)flags;
-	p->d->all_flags |= n->flags;
 }
 
 /* ---- the document ----------------------------------------------------------- */
@@ -652,12 +648,6 @@ json_doc_end(const struct json_doc *d)
 }
 
 size_t
-json_doc_count(const struct json_doc *d)
-{
-	return d->n_nodes;
-}
-
-size_t
 json_doc_n_problems(const struct json_doc *d)
 {
 	return d->n_problems;
@@ -667,10 +657,4 @@ const struct json_problem *
 json_doc_problem_at(const struct json_doc *d, size_t i)
 {
 	return i < d->n_problems ? &d->problems[i] : NULL;
-}
-
-unsigned
-json_doc_all_flags(const struct json_doc *d)
-{
-	return d->all_flags;
 }

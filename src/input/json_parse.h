@@ -85,13 +85,9 @@ void json_doc_free(struct json_doc *d);
 const cJSON *json_doc_root(const struct json_doc *d);
 size_t json_doc_end(const struct json_doc *d);
 
-/* Values in the document. */
-size_t json_doc_count(const struct json_doc *d);
-
-/* The problems, in document order, and the OR of every node's flags. */
+/* The problems, in document order. */
 size_t json_doc_n_problems(const struct json_doc *d);
 const struct json_problem *json_doc_problem_at(const struct json_doc *d, size_t i);
-unsigned json_doc_all_flags(const struct json_doc *d);
 
 /* The node of item, a value of a document from json_parse(). */
 static inline const struct json_node *

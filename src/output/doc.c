@@ -424,18 +424,6 @@ doc_ensure_space(struct doc *d, double h)
 	return doc_failed(d) ? -1 : 0;
 }
 
-int
-doc_space(struct doc *d, double h)
-{
-	if (doc_failed(d))
-		return -1;
-	if (d->y - h < d->bottom)
-		doc_add_page(d);
-	else
-		d->y -= h;
-	return doc_failed(d) ? -1 : 0;
-}
-
 /* Moves the cursor down by h after placing something. */
 void
 doc_advance(struct doc *d, double h)

@@ -184,8 +184,7 @@ int doc_next_figure_number(const struct doc *d);
  * heading placed after this call, each with its page number and a link to
  * it (headings beyond n_rows are left out).  Once per document. */
 int doc_contents(struct doc *d, const char *title, int n_rows);
-/* Vertical space; new page if fewer than h_pt remain. */
-int doc_space(struct doc *d, double h_pt);
+/* A new page if fewer than h_pt remain. */
 int doc_ensure_space(struct doc *d, double h_pt);
 int doc_new_page(struct doc *d);
 /* Height left on the current page and the text width, in points. */
