@@ -85,7 +85,7 @@ TEST_BIN  := $(BUILD)/aeroeval-test
 TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps test test-build unit example paper install clean check-layers asan \
+.PHONY: all deps test unit example paper install clean check-layers asan \
         asan-build fuzz bench closure golden fonts
 
 all: $(BIN) aeroeval
@@ -138,9 +138,10 @@ $(BIN): $(BUILD)/obj/cli/main.o $(LIB)
 $(TEST_BIN): $(BUILD)/obj/cli/main.o $(TEST_LIB)
 	$(LINK) -o $@ $^ $(PKG_LIBS) $(LDLIBS)
 
+# TEST_OPT (after OPT, so it wins) compiles the test sources themselves.
 $(BUILD)/tests/%: tests/%.c $(TEST_LIB) | $(BUILD)/tests
-	$(COMPILE) -DAEROEVAL_TEST_HOOKS -Itests -MMD -MP -o $@ $< $(LDFLAGS) $(TEST_LIB) \
-	  $(PKG_LIBS) $(TEST_LIBS) $(LDLIBS)
+	$(COMPILE) $(TEST_OPT) -DAEROEVAL_TEST_HOOKS -Itests -MMD -MP -o $@ $< $(LDFLAGS) \
+	  $(TEST_LIB) $(PKG_LIBS) $(TEST_LIBS) $(LDLIBS)
 
 $(BUILD)/tests:
 	mkdir -p $@
@@ -148,24 +149,25 @@ $(BUILD)/tests:
 -include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/obj-hooks/*/*.d $(BUILD)/tests/*.d)
 
 # ---- tests ------------------------------------------------------------------
-# `make test` builds, $(JOBS) jobs at once: the program and its test build
-# (aeroeval-test) in $(BUILD)/, and the unit test programs (one cmocka
-# program per module) under AddressSanitizer + UndefinedBehaviorSanitizer in
-# $(ASAN)/, with the random-mission sweep also built as it ships (-O2, where
-# it runs twice the missions).  tests/run_all.sh then runs the unit programs,
-# the whole-compiler scripts (tests/cli_*.sh, on aeroeval-test) and the
-# checks (tests/check_*.sh) side by side, $(JOBS) at a time, and closes with
-# one line "N passed, N failed".  `make unit` builds and runs the unit
-# programs without the sanitizers, `make asan` with them.
+# `make test` builds, $(JOBS) jobs at once, the program and its test build
+# (aeroeval-test) in $(BUILD)/, with the random-mission sweep as it ships
+# (-O2, where it runs eight times the missions) and the two unit programs
+# whose dossiers the scripts read.  tests/run_all.sh then runs the
+# whole-compiler scripts (tests/cli_*.sh, on aeroeval-test), the checks
+# (tests/check_*.sh) and that sweep, $(JOBS) at a time, while the unit
+# programs (one cmocka program per module) are built under AddressSanitizer
+# + UndefinedBehaviorSanitizer in $(ASAN)/; they run as soon as that build
+# ends.  It closes with one line "N passed, N failed".  `make unit` builds
+# and runs the unit programs without the sanitizers, `make asan` with them.
 # The unit programs built as they ship: the sweep, and the two whose
 # dossiers tests/cli_doc.sh and tests/cli_report.sh read.
 SCRIPT_UNITS := $(BUILD)/tests/test_sweep $(BUILD)/tests/test_doc $(BUILD)/tests/test_report
 
 test: deps
-	@$(MAKE) --no-print-directory -j$(JOBS) test-build
-	@sh tests/run_all.sh -j $(JOBS) --scripts $(BUILD) $(BUILD)/tests/test_sweep $(ASAN)
-
-test-build: all $(TEST_BIN) $(SCRIPT_UNITS) asan-build
+	@$(MAKE) --no-print-directory -j$(JOBS) all $(TEST_BIN) $(SCRIPT_UNITS)
+	@sh tests/run_all.sh -j $(JOBS) --scripts $(BUILD) \
+	  --meanwhile '$(MAKE) --no-print-directory -j$(JOBS) asan-build' $(ASAN) \
+	  $(BUILD)/tests/test_sweep $(ASAN)
 
 unit: $(TEST_BINS)
 	sh tests/run_all.sh -j $(JOBS) $(BUILD)
@@ -178,8 +180,10 @@ unit: $(TEST_BINS)
 # quicker to compile than full debug information.
 SAN_OPT := -O1 -g1 -fsanitize=address,undefined -fno-omit-frame-pointer \
            -fno-sanitize-recover=undefined
+# The test sources there are compiled without optimisation (half the
+# compile time; what they run is the library, at -O1).
 asan-build:
-	@$(MAKE) --no-print-directory BUILD=$(ASAN) OPT='$(SAN_OPT)' \
+	@$(MAKE) --no-print-directory BUILD=$(ASAN) OPT='$(SAN_OPT)' TEST_OPT='-O0' \
 	  $(TEST_BINS:$(BUILD)/%=$(ASAN)/%)
 
 asan: asan-build

@@ -2,12 +2,15 @@
 # Runs test programs and scripts side by side and closes with one line
 # "N passed, N failed".
 #
-# usage: sh tests/run_all.sh [-j N] [--scripts BUILD] WHAT...
+# usage: sh tests/run_all.sh [-j N] [--scripts BUILD] [--meanwhile CMD DIR] WHAT...
 #   --scripts BUILD  every check tests/check_*.sh and whole-compiler script
 #                    tests/cli_*.sh, run on BUILD/aeroeval-test (the test
 #                    build of the program: its test hooks compiled in);
-#   WHAT             a build folder (every cmocka program of WHAT/tests) or
-#                    one cmocka program.
+#   --meanwhile CMD DIR  runs the command CMD (a build of DIR) alongside the
+#                    rest; the programs of DIR start once it has ended, and
+#                    a failure of it counts as one;
+#   WHAT             a build folder (one cmocka program per tests/test_*.c
+#                    in WHAT/tests) or one cmocka program.
 # The programs and scripts are independent, so they run N at a time (the
 # longest first); each one's output is kept and printed whole, in the order
 # given, once all have ended.  A cmocka program's counts come from its own
@@ -21,6 +24,9 @@ if [ "$1" = "--job" ]; then
 	dir=$2 id=$3
 	set -- $(sed -n "${id}p" "$dir/jobs")
 	kind=$1 path=$2 build=$3
+	if [ "$build" = "$(cat "$dir/meanwhile.dir" 2>/dev/null)" ]; then
+		while [ ! -e "$dir/meanwhile.rc" ]; do sleep 0.2; done
+	fi
 	if [ "$kind" = unit ]; then
 		AEROEVAL_TEST_OUT="$build" "$path" >"$dir/$id.log" 2>&1
 	else
@@ -32,24 +38,29 @@ fi
 
 jobs=2
 scripts=""
+meanwhile=""
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
 while [ $# -gt 0 ]; do
 	case $1 in
 	-j) jobs=$2; shift 2 ;;
 	--scripts) scripts=$2; shift 2 ;;
+	--meanwhile) meanwhile=$2; echo "$3" >"$dir/meanwhile.dir"; shift 3 ;;
 	*) break ;;
 	esac
 done
-dir=$(mktemp -d)
-trap 'rm -rf "$dir"' EXIT
+if [ -n "$meanwhile" ]; then
+	{ sh -c "$meanwhile" >"$dir/meanwhile.log" 2>&1; echo $? >"$dir/meanwhile.rc.tmp"; \
+	  mv "$dir/meanwhile.rc.tmp" "$dir/meanwhile.rc"; } &
+fi
 
 # The job list, in the order of the report: kind, path, build folder, and
 # the heading of the group it opens.
 {
 	for what in "$@"; do
-		if [ -d "$what" ]; then
-			for t in "$what"/tests/test_*; do
-				case "$t" in *.d) continue ;; esac
-				[ -x "$t" ] && echo "unit $t $what"
+		if [ -d "$what" ] || [ "$what" = "$(cat "$dir/meanwhile.dir" 2>/dev/null)" ]; then
+			for t in tests/test_*.c; do
+				echo "unit $what/tests/$(basename "$t" .c) $what"
 			done
 		else
 			echo "unit $what $(dirname "$(dirname "$what")")"
@@ -63,15 +74,29 @@ trap 'rm -rf "$dir"' EXIT
 } >"$dir/jobs"
 n=$(wc -l <"$dir/jobs")
 
-# Start the slowest first, so that the last to end is a short one.
+# Start the slowest first, so that the last to end is a short one; the
+# programs that wait for the build running meanwhile come after the rest.
 slow='test_sweep cli_hostile cli_batch cli_shard cli_dossier test_catalog_io test_report'
+later=$(cat "$dir/meanwhile.dir" 2>/dev/null)
 {
+	for s in $slow; do grep -n "/$s[ .]" "$dir/jobs" | grep -v " ${later:-/}\$" | cut -d: -f1; done
+	grep -n -v " ${later:-/}\$" "$dir/jobs" | cut -d: -f1
 	for s in $slow; do grep -n "/$s[ .]" "$dir/jobs" | cut -d: -f1; done
 	seq 1 "$n"
 } | awk '!seen[$0]++' | xargs -P "$jobs" -n 1 sh "$0" --job "$dir"
+wait
 
 passed=0
 failed=0
+if [ -n "$meanwhile" ]; then
+	rc=$(cat "$dir/meanwhile.rc")
+	if [ "$rc" -ne 0 ]; then
+		cat "$dir/meanwhile.log"
+		echo "not ok the build run meanwhile: $meanwhile (exit $rc)"
+		failed=1
+	fi
+fi
+
 i=0
 group=""
 while read -r kind path jbuild; do
