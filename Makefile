@@ -11,19 +11,32 @@
 PREFIX   ?= /usr/local
 DESTDIR  ?=
 BUILD    ?= build
+ASAN     ?= build-asan
 CC       ?= cc
 VERSION  := 0.1.0
+# Parallel jobs of `make test` (its builds and its test programs).
+JOBS     ?= $(shell nproc 2>/dev/null || echo 2)
 
-# Debian packages the build, the tests and the examples need.  `deps` installs
-# only the ones missing, so a machine that has them never needs root.
-DEB_PKGS := gcc make pkg-config libcjson-dev libhpdf-dev libcairo2-dev \
-            libfontconfig-dev libcmocka-dev fonts-dejavu-core poppler-utils
+# What the build, the tests and the examples need, each with the Debian
+# package that gives it.  `deps` finds libraries with pkg-config, libharu
+# (which ships no .pc file) by compiling against it, tools with command -v
+# and files by their path, then installs only the packages of what is
+# missing, so a machine that has everything never needs root.
+DEP_PKGCONFIG := libcjson=libcjson-dev cairo=libcairo2-dev libcrypto=libssl-dev \
+                 cmocka=libcmocka-dev
+DEP_HPDF      := libhpdf-dev
+DEP_TOOLS     := $(firstword $(CC))=gcc pkg-config=pkg-config pdftotext=poppler-utils
+DEP_FILES     := /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf=fonts-dejavu-core
 
 # ---- flags ------------------------------------------------------------------
-# Recursively expanded on purpose: pkg-config runs when a recipe needs the
-# flags, i.e. after `deps` has installed it on a fresh machine.
-PKG_CFLAGS = $(shell pkg-config --cflags cairo libcjson fontconfig 2>/dev/null)
-PKG_LIBS   = $(shell pkg-config --libs cairo libcjson fontconfig 2>/dev/null) -lhpdf -lm
+# CPPFLAGS, CFLAGS, LDFLAGS and LDLIBS from the command line or the
+# environment are honoured: they come after the project's own, so they can
+# override them.  pkg-config runs when the Makefile is read; `make test` and
+# `make example` read it again (a sub-make) after `deps` has installed it.
+PKGS       := cairo libcjson libcrypto
+PKG_CFLAGS := $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
+PKG_LIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lhpdf -lm
+TEST_LIBS  := $(shell pkg-config --libs cmocka 2>/dev/null)
 
 WARN := -Wall
 WARN += -Wextra
@@ -36,9 +49,13 @@ WARN += -Wformat=2
 WARN += -Wvla
 WARN += -Werror
 
-OPT      ?= -O2 -g
-CFLAGS   += -std=c11 $(OPT) $(WARN)
-CPPFLAGS += -D_DEFAULT_SOURCE -DAEROEVAL_VERSION='"$(VERSION)"' -Isrc
+# The debug information names source files relative to the tree, so two
+# checkouts of one commit, wherever they are, build identical binaries.
+OPT         ?= -O2 -g
+AE_CPPFLAGS := -D_DEFAULT_SOURCE -DAEROEVAL_VERSION='"$(VERSION)"' -Isrc
+AE_CFLAGS    = -std=c11 $(OPT) $(WARN) -ffile-prefix-map=$(CURDIR)=.
+COMPILE      = $(CC) $(AE_CPPFLAGS) $(CPPFLAGS) $(AE_CFLAGS) $(PKG_CFLAGS) $(CFLAGS)
+LINK         = $(CC) $(AE_CFLAGS) $(CFLAGS) $(LDFLAGS)
 
 # ---- the library ------------------------------------------------------------
 # Every src/LAYER/*.c except cli/main.c goes into libaeroeval.a, which the
@@ -47,15 +64,29 @@ CPPFLAGS += -D_DEFAULT_SOURCE -DAEROEVAL_VERSION='"$(VERSION)"' -Isrc
 # side by side, and cli on top (docs/architecture.md); `make check-layers`
 # (part of `make test`) keeps every include pointing down.
 LAYERS   := util core physics sizing parts engine study input output cli
-LIB_SRCS := $(filter-out src/cli/main.c src/cli/catsnap.c,$(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)))
+LIB_SRCS := $(filter-out src/cli/main.c,$(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)))
 LIB_OBJS := $(LIB_SRCS:src/%.c=$(BUILD)/obj/%.o)
 LIB      := $(BUILD)/libaeroeval.a
 BIN      := $(BUILD)/aeroeval
 
+# The test build.  Test hooks (AEROEVAL_FAIL_ALLOC, AEROEVAL_FAIL_WRITE,
+# AEROEVAL_TEST_*: faults and delays injected from the environment) are
+# compiled only with -DAEROEVAL_TEST_HOOKS: the program `make` builds and
+# installs has none.  The few sources that hold a hook (or include a header
+# that does) are compiled a second time with it, into obj-hooks/; the test
+# library is the library with those objects swapped in, and aeroeval-test
+# the program over it, which the whole-compiler tests run.
+HOOK_HDRS := $(shell grep -l AEROEVAL_TEST_HOOKS src/*/*.h)
+HOOK_SRCS := $(shell grep -l -e AEROEVAL_TEST_HOOKS $(foreach h,$(HOOK_HDRS),-e '$(notdir $(h))') $(LIB_SRCS))
+HOOK_OBJS := $(HOOK_SRCS:src/%.c=$(BUILD)/obj-hooks/%.o)
+TEST_LIB  := $(BUILD)/libaeroeval-test.a
+TEST_BIN  := $(BUILD)/aeroeval-test
+
 TEST_SRCS := $(wildcard tests/test_*.c)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all deps test unit example paper install clean check-layers asan fuzz bench closure golden fonts
+.PHONY: all deps test unit example paper install clean check-layers asan \
+        asan-build fuzz bench closure golden fonts
 
 all: $(BIN) aeroeval
 
@@ -64,9 +95,20 @@ aeroeval: $(BIN)
 	ln -sf $(BIN) aeroeval
 
 deps:
-	@missing=""; for p in $(DEB_PKGS) $(EXTRA_PKGS); do \
-	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'ok installed' || missing="$$missing $$p"; \
+	@missing=""; \
+	for d in $(DEP_TOOLS); do \
+	  command -v "$${d%%=*}" >/dev/null 2>&1 || missing="$$missing $${d#*=}"; \
 	done; \
+	for d in $(DEP_FILES); do [ -f "$${d%%=*}" ] || missing="$$missing $${d#*=}"; done; \
+	for d in $(DEP_PKGCONFIG); do \
+	  pkg-config --exists "$${d%%=*}" 2>/dev/null || missing="$$missing $${d#*=}"; \
+	done; \
+	if [ -n "$(DEP_HPDF)" ]; then \
+	  t=$$(mktemp -d); \
+	  printf '#include <hpdf.h>\nint main(void) { return HPDF_GetVersion() == 0; }\n' >$$t/h.c; \
+	  $(CC) $$t/h.c -o $$t/h -lhpdf >/dev/null 2>&1 || missing="$$missing $(DEP_HPDF)"; \
+	  rm -rf $$t; \
+	fi; \
 	if [ -n "$$missing" ]; then \
 	  echo "deps: installing$$missing"; \
 	  SUDO=""; [ "$$(id -u)" -ne 0 ] && SUDO=sudo; \
@@ -76,61 +118,76 @@ deps:
 
 $(BUILD)/obj/%.o: src/%.c
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -MMD -MP -c $< -o $@
+	$(COMPILE) -MMD -MP -c $< -o $@
+
+$(BUILD)/obj-hooks/%.o: src/%.c
+	@mkdir -p $(@D)
+	$(COMPILE) -DAEROEVAL_TEST_HOOKS -MMD -MP -c $< -o $@
 
 $(LIB): $(LIB_OBJS)
 	rm -f $@
 	ar rcs $@ $^
 
-$(BIN): $(BUILD)/obj/cli/main.o $(BUILD)/obj/cli/snapshot.o $(LIB)
-	$(CC) $(CFLAGS) -o $@ $^ $(PKG_LIBS)
+$(TEST_LIB): $(filter-out $(HOOK_SRCS:src/%.c=$(BUILD)/obj/%.o),$(LIB_OBJS)) $(HOOK_OBJS)
+	rm -f $@
+	ar rcs $@ $^
 
-# The shipped catalogue, loaded and checked once here and carried inside the
-# program (src/input/catalog_snap.h): catsnap writes the snapshot, and
-# snapshot.S includes its bytes.  At start-up aeroeval uses it only while
-# the files it was made from are unchanged, else it reads the JSON.
-CATALOG_FILES := $(wildcard data/catalog/*.json) data/chemistries.json
-SNAP          := $(BUILD)/gen/catalog.snap
+$(BIN): $(BUILD)/obj/cli/main.o $(LIB)
+	$(LINK) -o $@ $^ $(PKG_LIBS) $(LDLIBS)
 
-$(BUILD)/catsnap: $(BUILD)/obj/cli/catsnap.o $(LIB)
-	$(CC) $(CFLAGS) -o $@ $^ $(PKG_LIBS)
+$(TEST_BIN): $(BUILD)/obj/cli/main.o $(TEST_LIB)
+	$(LINK) -o $@ $^ $(PKG_LIBS) $(LDLIBS)
 
-$(SNAP): $(BUILD)/catsnap $(CATALOG_FILES)
-	@mkdir -p $(@D)
-	$(BUILD)/catsnap data $@
-
-$(BUILD)/obj/cli/snapshot.o: src/cli/snapshot.S $(SNAP)
-	@mkdir -p $(@D)
-	$(CC) -c -I$(BUILD)/gen -o $@ $<
-
-$(BUILD)/tests/%: tests/%.c $(LIB) | $(BUILD)/tests
-	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -Itests -MMD -MP -o $@ $< $(LIB) $(PKG_LIBS) -lcmocka
+# TEST_OPT (after OPT, so it wins) compiles the test sources themselves.
+$(BUILD)/tests/%: tests/%.c $(TEST_LIB) | $(BUILD)/tests
+	$(COMPILE) $(TEST_OPT) -DAEROEVAL_TEST_HOOKS -Itests -MMD -MP -o $@ $< $(LDFLAGS) \
+	  $(TEST_LIB) $(PKG_LIBS) $(TEST_LIBS) $(LDLIBS)
 
 $(BUILD)/tests:
 	mkdir -p $@
 
--include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/tests/*.d)
+-include $(wildcard $(BUILD)/obj/*/*.d $(BUILD)/obj-hooks/*/*.d $(BUILD)/tests/*.d)
 
 # ---- tests ------------------------------------------------------------------
-# Unit tests (one cmocka program per module) then the whole-compiler tests
-# (tests/cli_*.sh); tests/run_all.sh prints one closing "N passed, N failed".
+# `make test` builds, $(JOBS) jobs at once, the program and its test build
+# (aeroeval-test) in $(BUILD)/, with the random-mission sweep as it ships
+# (-O2, where it runs eight times the missions) and the two unit programs
+# whose dossiers the scripts read.  tests/run_all.sh then runs the
+# whole-compiler scripts (tests/cli_*.sh, on aeroeval-test), the checks
+# (tests/check_*.sh) and that sweep, $(JOBS) at a time, while the unit
+# programs (one cmocka program per module) are built under AddressSanitizer
+# + UndefinedBehaviorSanitizer in $(ASAN)/; they run as soon as that build
+# ends.  It closes with one line "N passed, N failed".  `make unit` builds
+# and runs the unit programs without the sanitizers, `make asan` with them.
+# The unit programs built as they ship: the sweep, and the two whose
+# dossiers tests/cli_doc.sh and tests/cli_report.sh read.
+SCRIPT_UNITS := $(BUILD)/tests/test_sweep $(BUILD)/tests/test_doc $(BUILD)/tests/test_report
+
 test: deps
-	$(MAKE) all $(TEST_BINS)
-	sh tests/run_all.sh $(BUILD)
-	@$(MAKE) --no-print-directory asan
+	@$(MAKE) --no-print-directory -j$(JOBS) all $(TEST_BIN) $(SCRIPT_UNITS)
+	@sh tests/run_all.sh -j $(JOBS) --scripts $(BUILD) \
+	  --meanwhile '$(MAKE) --no-print-directory -j$(JOBS) asan-build' $(ASAN) \
+	  $(BUILD)/tests/test_sweep $(ASAN)
 
 unit: $(TEST_BINS)
-	sh tests/run_all.sh $(BUILD) unit
+	sh tests/run_all.sh -j $(JOBS) $(BUILD)
 
 # ---- robustness: sanitizers, fuzzing, benchmarks ---------------------------
-# `asan` rebuilds everything in build-asan/ under ASan+UBSan (UB aborts the
-# test) and runs the unit suite there; `make test` runs it after the normal
-# suite.  OPT reaches the link too (the link rules use $(CFLAGS)).
-SAN_OPT := -O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer \
+# `asan` builds the test library and the unit programs in $(ASAN)/ under
+# ASan+UBSan (UB aborts the test) and runs them; `make test` runs them beside
+# the normal ones.  OPT reaches the link too (the link uses AE_CFLAGS).
+# -g1: line tables and functions, all a sanitizer's report needs, and
+# quicker to compile than full debug information.
+SAN_OPT := -O1 -g1 -fsanitize=address,undefined -fno-omit-frame-pointer \
            -fno-sanitize-recover=undefined
-asan:
-	@echo "== the unit suite again, under ASan+UBSan (build-asan/)"
-	@$(MAKE) --no-print-directory BUILD=build-asan OPT='$(SAN_OPT)' unit
+# The test sources there are compiled without optimisation (half the
+# compile time; what they run is the library, at -O1).
+asan-build:
+	@$(MAKE) --no-print-directory BUILD=$(ASAN) OPT='$(SAN_OPT)' TEST_OPT='-O0' \
+	  $(TEST_BINS:$(BUILD)/%=$(ASAN)/%)
+
+asan: asan-build
+	sh tests/run_all.sh -j $(JOBS) $(ASAN)
 
 # `fuzz` (not part of `make test`) builds the libFuzzer harnesses
 # tests/fuzz/fuzz_*.c with clang and runs each for FUZZ_SECONDS from the seed
@@ -160,7 +217,7 @@ closure: all $(BUILD)/bench
 	$(BUILD)/bench aircraft data/cohorts/calibration.csv data/catalog
 
 $(BUILD)/bench: tests/bench.c $(LIB)
-	$(CC) $(CPPFLAGS) $(CFLAGS) $(PKG_CFLAGS) -Itests -o $@ $< $(LIB) $(PKG_LIBS)
+	$(COMPILE) -Itests -o $@ $< $(LDFLAGS) $(LIB) $(PKG_LIBS) $(LDLIBS)
 
 # ---- examples ---------------------------------------------------------------
 # Exit status 1 means "compiled, some design infeasible": the outputs are
@@ -211,7 +268,8 @@ FONT_SUBSET      = pyftsubset $(FONT_SRC)/$(1).ttf --unicodes='$(2)' \
                    --drop-tables+=GSUB,GPOS,GDEF,MATH,FFTM --name-IDs='*' \
                    --notdef-outline
 fonts:
-	@$(MAKE) --no-print-directory deps DEB_PKGS= EXTRA_PKGS='fonttools fonts-dejavu-core'
+	@$(MAKE) --no-print-directory deps DEP_PKGCONFIG= DEP_HPDF= \
+	  DEP_TOOLS=pyftsubset=fonttools
 	mkdir -p templates/fonts
 	$(call FONT_SUBSET,DejaVuSans,$(FONT_CHARS))
 	$(call FONT_SUBSET,DejaVuSans-Bold,$(FONT_CHARS))
@@ -225,13 +283,11 @@ paper: all
 
 # ---- housekeeping -----------------------------------------------------------
 # The man page's header carries the version; it is set from VERSION here.
-# The data keep their file times, so the installed program's catalogue
-# snapshot matches them (src/input/catalog_snap.h) and is used.
 install: all
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/aeroeval \
 	  $(DESTDIR)$(PREFIX)/share/man/man1
 	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/aeroeval
-	cp -R --preserve=timestamps data templates $(DESTDIR)$(PREFIX)/share/aeroeval/
+	cp -R data templates $(DESTDIR)$(PREFIX)/share/aeroeval/
 	sed '/^\.TH/s/"aeroeval [^"]*"/"aeroeval $(VERSION)"/' src/cli/aeroeval.1 \
 	  >$(DESTDIR)$(PREFIX)/share/man/man1/aeroeval.1
 	chmod 644 $(DESTDIR)$(PREFIX)/share/man/man1/aeroeval.1
@@ -242,4 +298,4 @@ check-layers:
 	sh tests/check_layers.sh
 
 clean:
-	rm -rf $(BUILD) aeroeval
+	rm -rf $(BUILD) $(ASAN) aeroeval

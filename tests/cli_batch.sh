@@ -118,18 +118,20 @@ AEROEVAL_TEST_WORKER=abort:fpv_racing_quad "$AE" build -j 2 -o "$T/x" examples/ 
 [ "$rc" -eq 3 ] && grep -q "fpv_racing_quad.json: internal error: the worker died of signal" "$T/x.err" \
 	&& summary "$T/x.err" | grep -q "^build: $((n_ex - 1)) compiled.*, 1 internal errors;"
 check $? "crashed_worker_is_an_internal_error_for_its_mission"
-AEROEVAL_BUILD_TIMEOUT_S=0.5 AEROEVAL_TEST_WORKER=hang:fpv_racing_quad \
+# The timeout (3 s) is well above a mission's time even while the rest of
+# `make test` keeps every core busy; the hung worker is stopped by it.
+AEROEVAL_BUILD_TIMEOUT_S=3 AEROEVAL_TEST_WORKER=hang:fpv_racing_quad \
 	"$AE" build -j 2 -o "$T/h" examples/ 2>"$T/h.err"; rc=$?
 [ "$rc" -eq 3 ] && grep -q "fpv_racing_quad.json: internal error: no result after" "$T/h.err" \
 	&& [ -s "$T/h/sar_imaging_quad/result.json" ]
 check $? "hung_worker_is_stopped_by_the_timeout"
 
-# ---- 200 missions: one call, then an interrupted one ------------------------------
+# ---- 99 missions: one call, then an interrupted one -------------------------------
 M="$T/many"
 mkdir -p "$M"
 for f in examples/*.json; do
 	n=$(basename "$f" .json)
-	for k in 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23; do
+	for k in 1 2 3 4 5 6 7 8 9; do
 		sed -e 's/"payload_kg": \([0-9]*\)\(\.[0-9]*\)\{0,1\}/"payload_kg": \1.1'"$k"'/' \
 		    -e 's/"t_hover_s": [0-9]*/"t_hover_s": '"$((50 + 10 * k))"'/' \
 		    "$f" >"$M/${n}_v$k.json"

@@ -5,10 +5,11 @@
 # clean text extraction, numbers kept whole and web addresses as links.
 # Prints "ok NAME" / "not ok NAME" lines.
 build=$(dirname "${AEROEVAL:-build/aeroeval}")
-[ -f "$build/doc_demo.pdf" ] || "$build/tests/test_doc" >/dev/null 2>&1
-pdf="$(cd "$build" && pwd)/doc_demo.pdf"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+# Its own copy, so that it never reads one a test program is writing.
+AEROEVAL_TEST_OUT="$tmp" "$build/tests/test_doc" >/dev/null 2>&1
+pdf="$tmp/doc_demo.pdf"
 
 check() {
 	name=$1

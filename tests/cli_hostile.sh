@@ -667,7 +667,7 @@ elif ! grep -q 'latin1.csv:[0-9]*: error: name: not valid UTF-8' err.txt; then
 	notok validate_json_with_a_latin1_row "the row is not named"
 elif ! iconv -f UTF-8 -t UTF-8 out.txt >/dev/null 2>&1; then
 	notok validate_json_with_a_latin1_row "stdout is not UTF-8"
-elif [ "$(grep -c '^	"rows":' out.txt)" -ne 1 ] || ! grep -q '^	"n_rows":' out.txt; then
+elif [ "$(grep -c '^  "rows":' out.txt)" -ne 1 ] || ! grep -q '^  "n_rows":' out.txt; then
 	notok validate_json_with_a_latin1_row "a key appears twice"
 else
 	ok validate_json_with_a_latin1_row

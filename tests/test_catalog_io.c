@@ -4,7 +4,9 @@
 #include "test_util.h"
 #include "core/catalog.h"
 #include "input/catalog_io.h"
+#include "util/file.h"
 #include "util/hash.h"
+#include "util/sha256.h"
 #include "util/strbuf.h"
 
 #include <signal.h>
@@ -16,6 +18,7 @@
 
 #define SHIPPED_DIR "data/catalog"
 #define FIXTURE_DIR "tests/fixtures/catalog"
+#define JSON_MAX_TEST ((size_t)1 << 20)
 
 /* Loads dir; on failure prints the diagnostics so a broken shipped catalogue
  * explains itself in the test log. */
@@ -23,7 +26,7 @@ static struct catalog *
 load_or_print(const char *dir)
 {
 	struct diag *dg = diag_alloc(stderr);
-	struct catalog *c = catalog_io_load(dir, NULL, dg);
+	struct catalog *c = catalog_io_load(dir, NULL, dg, NULL);
 	diag_flush(dg);
 	if (c == NULL)
 		print_error("catalog_io_load(%s) failed with %d errors\n", dir, diag_n_errors(dg));
@@ -193,7 +196,7 @@ static char *
 load_text(const char *dir, struct catalog **c)
 {
 	struct diag *dg = diag_alloc(NULL);
-	*c = catalog_io_load(dir, NULL, dg);
+	*c = catalog_io_load(dir, NULL, dg, NULL);
 	char *text = strdup(diag_text(dg));
 	assert_int_equal(*c == NULL, diag_n_errors(dg) > 0);
 	if (*c == NULL)
@@ -278,13 +281,84 @@ catalog_io_should_read_a_minimal_catalogue_of_format_2(void **state)
 	catalog_free(NULL);
 }
 
+/* The fingerprint of dir worked out here from its files, as catalog_io.h
+ * states it: each file present, in catalog_io_files order, as its name, a
+ * NUL, its length (8 bytes, little-endian) and its bytes. */
+static void
+fingerprint_of(const char *dir, char hex[SHA256_HEX_LEN])
+{
+	struct sha256_ctx c;
+	unsigned char d[SHA256_DIGEST_LEN];
+	sha256_init(&c);
+	for (int k = 0; k < CATALOG_N_CATEGORIES; k++) {
+		char path[512], err[256];
+		unsigned char *buf, len8[8];
+		size_t n;
+		snprintf(path, sizeof path, "%s/%s", dir, catalog_io_files[k]);
+		if (file_read(path, JSON_MAX_TEST, &buf, &n, err, sizeof err) != 0)
+			continue;
+		for (int i = 0; i < 8; i++)
+			len8[i] = (unsigned char)((uint64_t)n >> (8 * i));
+		sha256_update(&c, catalog_io_files[k], strlen(catalog_io_files[k]) + 1);
+		sha256_update(&c, len8, 8);
+		sha256_update(&c, buf, n);
+		free(buf);
+	}
+	sha256_final(&c, d);
+	sha256_to_hex(d, hex);
+}
+
+/* The fingerprint is that of the bytes read: one digit of a mass changed
+ * in place (same size) changes it, and the load reads the new mass. */
+static void
+catalog_io_should_fingerprint_the_bytes_it_read(void **state)
+{
+	(void)state;
+	char dir[] = "/tmp/aeroeval-catalog-fp-XXXXXX", path[512], want[SHA256_HEX_LEN];
+	char got[SHA256_HEX_LEN], cmd[1200];
+	assert_non_null(mkdtemp(dir));
+	snprintf(cmd, sizeof cmd, "cp -p " FIXTURE_DIR "/good/*.json %s/", dir);
+	assert_int_equal(system(cmd), 0);
+	struct diag *dg = diag_alloc(stderr);
+	struct catalog *c = catalog_io_load(dir, NULL, dg, got);
+	assert_non_null(c);
+	fingerprint_of(dir, want);
+	assert_string_equal(got, want);
+	double mass = catalog_motor(c, 0)->mass_kg;
+	catalog_free(c);
+
+	snprintf(path, sizeof path, "%s/motors.json", dir);
+	unsigned char *buf;
+	size_t n;
+	char err[256];
+	assert_int_equal(file_read(path, JSON_MAX_TEST, &buf, &n, err, sizeof err), 0);
+	char *at = strstr((char *)buf, "\"mass_g\": 1");
+	assert_non_null(at);
+	at[strlen("\"mass_g\": ")] = '2';     /* 135.5 g becomes 235.5 g */
+	FILE *f = fopen(path, "r+b");
+	assert_non_null(f);
+	assert_int_equal(fwrite(buf, 1, n, f), n);
+	assert_int_equal(fclose(f), 0);
+	free(buf);
+
+	c = catalog_io_load(dir, NULL, dg, got);
+	assert_non_null(c);
+	fingerprint_of(dir, want);
+	assert_string_equal(got, want);
+	assert_rel(catalog_motor(c, 0)->mass_kg, mass + 0.1, 1e-12);
+	catalog_free(c);
+	diag_free(dg);
+	snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+	assert_int_equal(system(cmd), 0);
+}
+
 static void
 catalog_io_should_accept_a_caller_chemistry_list(void **state)
 {
 	(void)state;
 	static const char *const only_lihv[] = { "LiHV", NULL };
 	struct diag *dg = diag_alloc(NULL);
-	assert_null(catalog_io_load(FIXTURE_DIR "/good", only_lihv, dg));
+	assert_null(catalog_io_load(FIXTURE_DIR "/good", only_lihv, dg, NULL));
 	assert_int_equal(diag_n_errors(dg), 1);      /* fx-pack's LiPo is not in the list */
 	diag_free(dg);
 }
@@ -683,6 +757,7 @@ main(void)
 		cmocka_unit_test(catalog_shipped_part_numbers_should_not_repeat_the_maker),
 		cmocka_unit_test(catalog_shipped_values_should_be_converted_to_si),
 		cmocka_unit_test(catalog_io_should_read_a_minimal_catalogue_of_format_2),
+		cmocka_unit_test(catalog_io_should_fingerprint_the_bytes_it_read),
 		cmocka_unit_test(catalog_io_should_accept_a_caller_chemistry_list),
 		cmocka_unit_test(catalog_io_should_name_file_line_col_entry_and_field_for_each_error_kind),
 		cmocka_unit_test(catalog_io_should_report_the_errors_of_every_file),

@@ -1,4 +1,4 @@
-/* test_cohort.c — the cohort CSV reader (shared/cohorts/README.md). */
+/* test_cohort.c — the cohort CSV reader (data/cohorts/README.md). */
 #include "test_util.h"
 #include "input/cohort.h"
 

@@ -306,6 +306,20 @@ build_demo(const struct template *tpl, unsigned char **pdf, size_t *n, int *page
 	return rc;
 }
 
+/* dir/name, dir being $AEROEVAL_TEST_OUT (a test script's own folder) or
+ * build/, made if missing: where the demo dossiers are written to look at
+ * (tests/cli_doc.sh reads them). */
+static const char *
+out_path(char *buf, size_t n, const char *name)
+{
+	const char *dir = getenv("AEROEVAL_TEST_OUT");
+	if (dir == NULL || *dir == '\0')
+		dir = "build";
+	mkdir(dir, 0777);
+	snprintf(buf, n, "%s/%s", dir, name);
+	return buf;
+}
+
 static void
 doc_demo_should_build_without_error_and_be_reproducible(void **state)
 {
@@ -316,7 +330,8 @@ doc_demo_should_build_without_error_and_be_reproducible(void **state)
 	int pages_a = 0, pages_b = 0;
 	assert_int_equal(build_demo(tpl, &a, &na, &pages_a), 0);
 	assert_int_equal(build_demo(tpl, &b, &nb, &pages_b), 0);
-	FILE *fb = fopen("build/doc_demo_b.pdf", "wb");
+	char path[4200];
+	FILE *fb = fopen(out_path(path, sizeof path, "doc_demo_b.pdf"), "wb");
 	if (fb != NULL) {
 		fwrite(b, 1, nb, fb);
 		fclose(fb);
@@ -325,8 +340,7 @@ doc_demo_should_build_without_error_and_be_reproducible(void **state)
 	assert_int_equal(pages_a, pages_b);
 	assert_true(na > 1000);
 	assert_true(memcmp(a, "%PDF-", 5) == 0);
-	mkdir("build", 0777);
-	FILE *f = fopen("build/doc_demo.pdf", "wb");
+	FILE *f = fopen(out_path(path, sizeof path, "doc_demo.pdf"), "wb");
 	if (f != NULL) {
 		fwrite(a, 1, na, f);
 		fclose(f);
@@ -364,7 +378,8 @@ doc_letter_template_should_build(void **state)
 	assert_int_equal(build_demo(tpl, &a, &na, &pages), 0);
 	unlink(png);
 	assert_true(pages >= DEMO_PAGES - 2 && pages <= DEMO_PAGES + 2);
-	FILE *f = fopen("build/doc_demo_letter.pdf", "wb");
+	char path[4200];
+	FILE *f = fopen(out_path(path, sizeof path, "doc_demo_letter.pdf"), "wb");
 	if (f != NULL) {
 		fwrite(a, 1, na, f);
 		fclose(f);

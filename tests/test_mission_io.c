@@ -457,15 +457,16 @@ mission_io_should_report_syntax_errors_near_their_position(void **state)
 	       "m.json:3:3: error: malformed JSON near \"\\\"t_hover_s\\\": 2\\x0a}\"\n", 1);
 	expect("{\"coaxial_layout\": tru}",
 	       "m.json:1:20: error: malformed JSON near \"tru}\"\n", 1);
+	/* Where a key is expected after the comma. */
 	expect("{\"payload_kg\": 1,}",
-	       "m.json:1:19: error: malformed JSON near the end of the file\n", 1);
+	       "m.json:1:18: error: malformed JSON near \"}\"\n", 1);
 	expect("{\"payload_kg\": 1",
 	       "m.json:1:17: error: malformed JSON near the end of the file\n", 1);
 	expect("", "m.json:1:1: error: malformed JSON near the end of the file\n", 1);
-	/* cJSON stops after the quote (STACK.md §7), hence "near". */
-	expect("{'a': 1}", "m.json:1:3: error: malformed JSON near \"a': 1}\"\n", 1);
+	/* A key must be in double quotes. */
+	expect("{'a': 1}", "m.json:1:2: error: malformed JSON near \"'a': 1}\"\n", 1);
 	expect("{\"name\": \"\xc3\xa9\xc3\xa9\", // note\n}",
-	       "m.json:1:17: error: malformed JSON near \"/ note\\x0a}\"\n", 1); /* the 2nd '/' */
+	       "m.json:1:16: error: malformed JSON near \"// note\\x0a}\"\n", 1); /* columns count characters */
 }
 
 static void

@@ -123,7 +123,8 @@ now_ms(void)
 	return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
 }
 
-/* Renders, checks and writes build/dossier_<out>.pdf; returns the pages. */
+/* Renders, checks and writes DIR/dossier_<out>.pdf (DIR: see below);
+ * returns the pages. */
 static int
 render_and_check(struct fixture *fx, const struct solve_result *r, const char *name,
                  const char *out, const unsigned char *bytes, size_t n_bytes)
@@ -150,9 +151,13 @@ render_and_check(struct fixture *fx, const struct solve_result *r, const char *n
 	assert_memory_equal(a, "%PDF-", 5);
 	int pages = count_pages(a, na);
 	print_message("dossier %-28s %2d pages %7zu bytes %6.1f ms\n", out, pages, na, ms);
-	mkdir("build", 0777);
-	char path[300];
-	snprintf(path, sizeof path, "build/dossier_%s.pdf", out);
+	/* $AEROEVAL_TEST_OUT (a test script's own folder) or build/. */
+	const char *dir = getenv("AEROEVAL_TEST_OUT");
+	if (dir == NULL || *dir == '\0')
+		dir = "build";
+	mkdir(dir, 0777);
+	char path[4200];
+	snprintf(path, sizeof path, "%s/dossier_%s.pdf", dir, out);
 	FILE *f = fopen(path, "wb");
 	if (f != NULL) {
 		fwrite(a, 1, na, f);

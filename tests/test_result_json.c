@@ -408,7 +408,7 @@ result_json_should_hold_every_product_key_per_run(void **state)
 		"role_overhead", "continuous_optimum", "design_of_record",
 		"selected", "bom", "candidates"
 	};
-	/* PRODUCT.md §4, "Each run holds at least". */
+	/* The keys every run holds, which readers of result.json rely on. */
 	static const char *const per_run[] = {
 		"total_mass_kg", "payload_kg", "battery_mass_kg", "frame_mass_kg",
 		"arm_mass_kg", "motor_mass_kg", "prop_mass_kg", "esc_mass_kg",

@@ -39,7 +39,7 @@ static struct catalog *
 load_shipped(void)
 {
 	struct diag *dg = diag_alloc(stderr);
-	struct catalog *cat = catalog_io_load("data/catalog", NULL, dg);
+	struct catalog *cat = catalog_io_load("data/catalog", NULL, dg, NULL);
 	diag_flush(dg);
 	diag_free(dg);
 	assert_non_null(cat);

@@ -15,7 +15,6 @@
 #include "output/assets.h"
 #include "output/fsout.h"
 #include "input/catalog_io.h"
-#include "input/catalog_snap.h"
 #include "input/json_in.h"
 #include "input/model_io.h"
 #include "input/template_io.h"
@@ -31,40 +30,6 @@ cli_data_dir(char *out, size_t n)
 		snprintf(out, n, "%s", env);
 	else
 		file_shipped_dir("data", "chemistries.json", out, n);
-}
-
-/* SHA-256 over the catalogue files (name, NUL, length, bytes each), so a
- * dossier names exactly the catalogue it was built from.  An optional file
- * that is absent adds nothing, so a directory of the four required files
- * hashes as it always did. */
-void
-cli_catalogue_hash(const char *db_dir, char out[65])
-{
-	const char *const *files = catalog_io_files;
-	struct sha256_ctx c;
-	unsigned char digest[SHA256_DIGEST_LEN];
-	sha256_init(&c);
-	for (int i = 0; i < CATALOG_N_CATEGORIES; i++) {
-		char path[4400], err[256];
-		unsigned char *buf = NULL;
-		size_t n = 0;
-		struct stat st;
-		snprintf(path, sizeof path, "%s/%s", db_dir, files[i]);
-		if (!catalog_io_required((enum catalog_category)i) && stat(path, &st) != 0)
-			continue;
-		if (file_read(path, JSON_IN_CATALOG_MAX, &buf, &n, err, sizeof err) != 0)
-			n = 0;
-		sha256_update(&c, files[i], strlen(files[i]) + 1);
-		unsigned char len8[8];
-		for (int k = 0; k < 8; k++)
-			len8[k] = (unsigned char)((unsigned long long)n >> (8 * k));
-		sha256_update(&c, len8, sizeof len8);
-		sha256_update(&c, buf, n);
-		free(buf);
-	}
-	sha256_final(&c, digest);
-	for (int i = 0; i < SHA256_DIGEST_LEN; i++)
-		snprintf(out + 2 * i, 3, "%02x", digest[i]);
 }
 
 int
@@ -98,17 +63,6 @@ cli_hash_file(struct sha256_ctx *c, const char *path, char *err, size_t errlen)
 	return 0;
 }
 
-/* The snapshot of the shipped catalogue that main() hands over, if any. */
-static const unsigned char *snapshot;
-static size_t snapshot_bytes;
-
-void
-cli_use_snapshot(const unsigned char *blob, size_t n)
-{
-	snapshot = blob;
-	snapshot_bytes = n;
-}
-
 int
 cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
              FILE *err)
@@ -127,22 +81,14 @@ cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
 	struct diag *dg = diag_alloc(err);
 	int n_err = model_io_load(env->data_dir, &env->model, dg);
 	diag_flush(dg);
-	/* The shipped catalogue from the program's own snapshot when its
-	 * files are unchanged (input/catalog_snap.h), else from its JSON. */
-	if (n_err == 0 && want_catalog && db_dir == NULL)
-		env->cat = catalog_snap_read(snapshot, snapshot_bytes, env->data_dir,
-		                             env->catalogue_sha256);
-	if (n_err == 0 && want_catalog && env->cat == NULL) {
-		env->cat = catalog_io_load(env->db_dir, env->model.chem_names, dg);
+	if (n_err == 0 && want_catalog) {
+		env->cat = catalog_io_load(env->db_dir, env->model.chem_names, dg,
+		                           env->catalogue_sha256);
 		diag_flush(dg);
 		n_err = env->cat == NULL;
 	}
 	diag_free(dg);
-	if (n_err != 0)
-		return 2;
-	if (want_catalog && env->catalogue_sha256[0] == '\0')
-		cli_catalogue_hash(env->db_dir, env->catalogue_sha256);
-	return 0;
+	return n_err != 0 ? 2 : 0;
 }
 
 void

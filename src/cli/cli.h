@@ -17,7 +17,8 @@ struct cli_env {
 	char db_dir[4200];          /* parts catalogue */
 	struct model_data model;    /* chemistries, roles, classes, calibration */
 	struct catalog *cat;        /* parts, or NULL when not loaded */
-	char catalogue_sha256[65];  /* of the four catalogue files, "" when not loaded */
+	char catalogue_sha256[65];  /* of the catalogue files read (catalog_io.h),
+	                               "" when not loaded */
 };
 
 /* Where data/ is: $AEROEVAL_DATA, else next to the program (build tree or
@@ -31,14 +32,6 @@ int cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
                  FILE *err);
 
 void cli_env_free(struct cli_env *env);
-
-/* Hands cli_env_load() the program's snapshot of the shipped catalogue
- * (input/catalog_snap.h): n bytes at blob, which stay valid to exit. */
-void cli_use_snapshot(const unsigned char *blob, size_t n);
-
-/* The catalogue SHA-256 of result.json's catalogue_sha256: every file of
- * db_dir (name, NUL, length, bytes each) as 64 hex digits into out. */
-void cli_catalogue_hash(const char *db_dir, char out[65]);
 
 struct sha256_ctx;
 

@@ -335,11 +335,15 @@ build_skip(void *ctx, size_t i)
 	return 1;
 }
 
-/* Test hook: AEROEVAL_TEST_WORKER=abort:NAME or hang:NAME makes the worker
- * of mission NAME crash or hang, so tests can prove the run survives it. */
+/* Test hook (test builds only): AEROEVAL_TEST_WORKER=abort:NAME or
+ * hang:NAME makes the worker of mission NAME crash or hang, so tests can
+ * prove the run survives it. */
 static void
 test_hook(const char *name)
 {
+#ifndef AEROEVAL_TEST_HOOKS
+	(void)name;
+#else
 	const char *h = getenv("AEROEVAL_TEST_WORKER");
 	if (h == NULL)
 		return;
@@ -348,6 +352,7 @@ test_hook(const char *name)
 	if (strncmp(h, "hang:", 5) == 0 && strcmp(h + 5, name) == 0)
 		for (;;)
 			pause();
+#endif
 }
 
 /* Worker process: compile mission i; the pipeline writes its stamp. */

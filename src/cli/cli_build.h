@@ -8,8 +8,8 @@
 #ifndef AEROEVAL_CLI_BUILD_H
 #define AEROEVAL_CLI_BUILD_H
 
-/* argv[0] is "build".  Exit status: the worst mission outcome (PRODUCT.md
- * §2: 0 feasible, 1 infeasible, 2 bad usage or input, 3 internal error), or
+/* argv[0] is "build".  Exit status: the worst mission outcome (0 feasible,
+ * 1 infeasible, 2 bad usage or input, 3 internal error), or
  * 128 + the signal (130 SIGINT, 143 SIGTERM) when the run was interrupted. */
 int cli_build(int argc, char **argv);
 

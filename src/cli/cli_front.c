@@ -11,6 +11,7 @@
 #include "core/diag.h"
 #include "input/mission_io.h"
 #include "input/schema.h"
+#include "util/jsonw.h"
 #include "util/xalloc.h"
 
 int
@@ -72,15 +73,11 @@ cli_schema(int argc, char **argv)
 		return status;
 	}
 	cJSON *s = schema_json_schema(env->model.chem_names);
-	char *text = cJSON_Print(s);
+	char *text = jsonw_print(s, NULL);
 	cJSON_Delete(s);
 	cli_env_free(env);
 	free(env);
-	if (text == NULL) {
-		fprintf(stderr, "aeroeval: internal error: cannot print the schema\n");
-		return 3;
-	}
-	printf("%s\n", text);
+	fputs(text, stdout);
 	free(text);
 	return 0;
 }

@@ -2,7 +2,7 @@
  *
  * Both take the argument vector after the program name: argv[0] is the
  * command name ("check", "schema"), argv[1..argc-1] its arguments.  They
- * return the process exit status (PRODUCT.md §2).
+ * return the process exit status (README.md, "Exit status").
  *
  * Who may include it: main.c.
  */

@@ -73,7 +73,7 @@ run_suite(const struct cli_env *env, const char *path, const char *dir_opt,
 	fprintf(stderr, "sensitivity: %d solves in %.3f s (%.2f ms per solve)\n",
 	    s->n_solves, s->seconds, 1e3 * s->seconds / (double)s->n_solves);
 
-	/* A file-system problem is exit 2, like bad input (PRODUCT.md §2);
+	/* A file-system problem is exit 2, like bad input (README.md);
 	 * only a failed render is an internal error. */
 	int rc = nominal_bad ? 1 : 0, bad = 0;
 	char *json = sens_report_json(s, AEROEVAL_VERSION);

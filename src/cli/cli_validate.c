@@ -21,6 +21,7 @@
 #include "input/model_io.h"
 #include "study/validate.h"
 #include "study/valreport.h"
+#include "util/jsonw.h"
 #include "util/text.h"
 #include "util/xalloc.h"
 
@@ -320,7 +321,7 @@ report_json(const char *path, const struct cohort *c, const struct validate_repo
 				cJSON_AddItemToArray(nt, cJSON_CreateString(validate_note_text(1u << b)));
 		cJSON_AddItemToArray(rows, o);
 	}
-	char *txt = cJSON_Print(root);
+	char *txt = jsonw_print(root, NULL);
 	cJSON_Delete(root);
 	return txt;
 }
@@ -418,7 +419,7 @@ write_missions(const char *dir_opt, const struct cohort *c, const struct validat
 		mission_file_name(i, c->rows[i].name, file, sizeof file);
 		cJSON *j = mission_io_to_json(&v->rows[i].spec);
 		prune_to_given(j, &v->rows[i].spec);
-		char *txt = cJSON_Print(j);
+		char *txt = jsonw_print(j, NULL);
 		cJSON_Delete(j);
 		bad = fsfolder_put(&f, file, txt, strlen(txt), 1, err, sizeof err) != 0;
 		free(txt);
@@ -519,9 +520,9 @@ cli_validate(int argc, char **argv)
 	return rc;
 }
 
-/* Progress of `calibrate` on stderr, at most once a second
- * (AEROEVAL_PROGRESS_S overrides the interval; tests use 0): redrawn in
- * place on a terminal, one line each time otherwise (a log). */
+/* Progress of `calibrate` on stderr, at most once a second (in a test
+ * build AEROEVAL_PROGRESS_S overrides the interval; tests use 0): redrawn
+ * in place on a terminal, one line each time otherwise (a log). */
 struct progress_line {
 	double t0, last;    /* start, last line (batch_now_s) */
 	double every_s;     /* the interval */
@@ -532,12 +533,17 @@ struct progress_line {
 static void
 progress_init(struct progress_line *pl)
 {
+	pl->t0 = pl->last = batch_now_s();
+	pl->every_s = 1.0;
+#ifdef AEROEVAL_TEST_HOOKS
 	const char *env = getenv("AEROEVAL_PROGRESS_S");
 	char *end;
-	pl->t0 = pl->last = batch_now_s();
-	pl->every_s = env != NULL ? strtod(env, &end) : 1.0;
-	if (env == NULL || *end != '\0' || !(pl->every_s >= 0.0))
-		pl->every_s = 1.0;
+	if (env != NULL) {
+		double s = strtod(env, &end);
+		if (*end == '\0' && s >= 0.0)
+			pl->every_s = s;
+	}
+#endif
 	pl->tty = isatty(STDERR_FILENO);
 	pl->shown = 0;
 }

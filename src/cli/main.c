@@ -37,9 +37,6 @@ is_help(const char *a)
 	return strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0;
 }
 
-/* The shipped catalogue's snapshot, from snapshot.S. */
-extern const unsigned char aeroeval_snapshot[], aeroeval_snapshot_end[];
-
 /* Runs the command argv names; returns its exit status. */
 static int
 run(int argc, char **argv)
@@ -76,9 +73,7 @@ run(int argc, char **argv)
 int
 main(int argc, char **argv)
 {
-	cli_use_snapshot(aeroeval_snapshot,
-	                 (size_t)(aeroeval_snapshot_end - aeroeval_snapshot));
-	atexit(doc_global_cleanup); /* fontconfig/cairo caches: valgrind-clean exit */
+	atexit(doc_global_cleanup); /* cairo's static data: a valgrind-clean exit */
 	/* Every command's output is checked once here, after its last write. */
 	return cli_close_stdout(run(argc, argv));
 }

@@ -20,7 +20,7 @@
 
 struct template;
 
-/* Outcome of one mission, as PRODUCT.md §2 exit statuses. */
+/* Outcome of one mission, as exit statuses (README.md, "Exit status"). */
 enum pipeline_status {
 	PIPE_FEASIBLE = 0,    /* compiled, every design feasible */
 	PIPE_INFEASIBLE = 1,  /* compiled, outputs say why it is infeasible */

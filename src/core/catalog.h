@@ -205,11 +205,6 @@ const struct catalog_avionics *catalog_avionics(const struct catalog *c, size_t 
 
 /* The catalogue's propeller indices (catalog_prop()), catalog_n_props()
  * of them, by diameter; equal diameters in file order. */
-/* Any category's entry i (NULL past the end) and count, for code that
- * treats every category alike through catalog_entry_size(). */
-const void *catalog_item(const struct catalog *c, enum catalog_category k, size_t i);
-size_t catalog_count(const struct catalog *c, enum catalog_category k);
-
 const size_t *catalog_props_by_diameter(const struct catalog *c);
 
 const struct catalog_motor *catalog_find_motor(const struct catalog *c, const char *id);

@@ -229,9 +229,3 @@ diag_kind_severity(enum diag_kind kind)
 {
 	return diag_kinds[kind].sev;
 }
-
-const char *
-diag_kind_summary(enum diag_kind kind)
-{
-	return diag_kinds[kind].summary;
-}

@@ -4,7 +4,7 @@
  * diag, which counts errors and buffers the text, so that a whole file can be
  * checked in one pass (STYLE rule 10) and the lines of one mission leave in a
  * single write even when missions are compiled in parallel processes.
- * Line format (PRODUCT.md §2):
+ * Line format (README.md, "Commands"):
  *
  *     file:line:col: error: field.path: summary detail
  *
@@ -29,7 +29,7 @@ enum diag_severity {
 
 /*
  * DIAG_KINDS(X): X(ID, severity, exit status, "summary")
- * The exit status is what the kind makes the program return (PRODUCT.md §2:
+ * The exit status is what the kind makes the program return (README.md:
  * 2 bad input, 3 internal error); notes do not change it (0).
  */
 #define DIAG_KINDS(X) \
@@ -131,8 +131,7 @@ void diag_quote(const char *s, size_t len, size_t max_chars, char *out,
 /* "error" / "note". */
 const char *diag_severity_name(enum diag_severity sev);
 
-/* Severity and summary of a kind, from the table. */
+/* Severity of a kind, from the table. */
 enum diag_severity diag_kind_severity(enum diag_kind kind);
-const char *diag_kind_summary(enum diag_kind kind);
 
 #endif /* AEROEVAL_DIAG_H */

@@ -1,10 +1,10 @@
 /* spec.h — the mission specification: every field of a mission file.
  *
  * One X-macro table, SPEC_FIELDS, is the single source of truth for the
- * mission contract (PRODUCT.md §3).  It generates the field-id enum used by
- * spec->given[], the struct offsets the parser writes through, the defaults,
- * the allowed ranges, `aeroeval schema` and the shipped JSON Schema.  Nothing
- * else may restate a default or a range.
+ * mission contract (what a mission file may say).  It generates the
+ * field-id enum used by spec->given[], the struct offsets the parser
+ * writes through, the defaults, the allowed ranges, `aeroeval schema` and
+ * the shipped JSON Schema.  Nothing else may restate a default or a range.
  *
  * Who may include it: everyone.  It includes no I/O library; the physics
  * layer reads struct mission_spec as plain values.

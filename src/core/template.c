@@ -9,6 +9,7 @@
 
 #include "util/file.h"
 #include "util/strbuf.h"
+#include "util/text.h"
 #include "util/xalloc.h"
 
 #define DEJAVU_DIR "/usr/share/fonts/truetype/dejavu"
@@ -148,18 +149,6 @@ template_section_enabled(const struct template *t, enum template_section_id id)
 	return s != NULL && s->enabled;
 }
 
-static int
-hexval(char c)
-{
-	if (c >= '0' && c <= '9')
-		return c - '0';
-	if (c >= 'a' && c <= 'f')
-		return c - 'a' + 10;
-	if (c >= 'A' && c <= 'F')
-		return c - 'A' + 10;
-	return -1;
-}
-
 int
 template_parse_colour(const char *s, struct template_colour *out)
 {
@@ -167,7 +156,7 @@ template_parse_colour(const char *s, struct template_colour *out)
 	if (s == NULL || s[0] != '#' || strlen(s) != 7)
 		return -1;
 	for (int i = 1; i < 7; i++) {
-		int v = hexval(s[i]);
+		int v = text_hex_digit((unsigned char)s[i]);
 		if (v < 0)
 			return -1;
 		rgb = rgb * 16u + (unsigned)v;

@@ -35,7 +35,7 @@
 #define TEMPLATE_TITLE_MAX 96    /* longest section title, bytes incl. NUL */
 #define TEMPLATE_MAX_SERIES 8    /* most series colours in the palette */
 
-/* Dossier sections, in their default order (PRODUCT.md §4 dossier.pdf). */
+/* Dossier sections, in their default order. */
 enum template_section_id {
 	TEMPLATE_SEC_COVER,
 	TEMPLATE_SEC_SUMMARY,

@@ -20,6 +20,7 @@
 #include "core/spec.h"
 #include "input/json_in.h"
 #include "util/hash.h"
+#include "util/sha256.h"
 #include "util/units.h"
 #include "util/text.h"
 #include "util/xalloc.h"
@@ -253,18 +254,6 @@ _Static_assert(N_OF(motor_fields) < MAX_FIELDS && N_OF(prop_fields) < MAX_FIELDS
                N_OF(frame_fields) < MAX_FIELDS && N_OF(avionics_fields) < MAX_FIELDS,
                "raise MAX_FIELDS");
 
-size_t
-catalog_io_text_fields(enum catalog_category k, size_t *offsets, size_t max)
-{
-	size_t n = 0;
-	for (size_t i = 0; i < categories[k].n_fields; i++) {
-		const struct field *f = &categories[k].fields[i];
-		if ((f->kind == K_STR || f->kind == K_LIST) && n < max)
-			offsets[n++] = f->off;
-	}
-	return n;
-}
-
 /* ---- the load ------------------------------------------------------------ */
 
 /* Where an id was first given, for "duplicate id" messages. */
@@ -472,31 +461,33 @@ store_list(struct entry *e, const struct field *f, const cJSON *v, const char *p
 static bool
 store_number(struct entry *e, const struct field *f, const cJSON *v, const char *path)
 {
-	char src[64];
+	char src[64];   /* the number as written, for a message only */
 	double x = v->valuedouble;
 	if (!json_in_check_number(e->ji, v, path))
 		return false;
-	json_in_source(e->ji, v, src, sizeof src);
 	const char *sp = f->unit[0] != '\0' ? " " : "";
 	if (f->kind == K_INT) {
 		if (x != floor(x)) {
+			json_in_source(e->ji, v, src, sizeof src);
 			entry_report(e, DIAG_NOT_INTEGER, f, v, " (got %s)", src);
 			return false;
 		}
 		if (x < 1 || x > INT_MAX_COUNT) {
+			json_in_source(e->ji, v, src, sizeof src);
 			entry_report(e, DIAG_RANGE, f, v, ": %s (allowed 1 to %d)", src, INT_MAX_COUNT);
 			return false;
 		}
 		*(int *)(e->base + f->off) = (int)x;
 		return true;
 	}
-	if (!(x > 0)) {
-		entry_report(e, DIAG_RANGE, f, v, ": %s (allowed above 0%s%s)", src, sp, f->unit);
-		return false;
-	}
-	if (x > NUM_MAX) {
-		entry_report(e, DIAG_RANGE, f, v, ": %s (allowed above 0 up to %g%s%s)", src,
-		             NUM_MAX, sp, f->unit);
+	if (!(x > 0) || x > NUM_MAX) {
+		json_in_source(e->ji, v, src, sizeof src);
+		if (!(x > 0))
+			entry_report(e, DIAG_RANGE, f, v, ": %s (allowed above 0%s%s)", src, sp,
+			             f->unit);
+		else
+			entry_report(e, DIAG_RANGE, f, v, ": %s (allowed above 0 up to %g%s%s)",
+			             src, NUM_MAX, sp, f->unit);
 		return false;
 	}
 	*(double *)(e->base + f->off) = x * f->scale;
@@ -687,10 +678,17 @@ parse_entry(struct load *ld, enum catalog_category k, struct json_in *ji,
 		return;
 	json_in_check_keys(ji, obj, e.path, keys, 0);
 
+	/* Each field's value: the first member of its key (as
+	 * cJSON_GetObjectItemCaseSensitive finds it), in one walk. */
+	size_t guess = 0;
+	for (const cJSON *c = obj->child; c != NULL; c = c->next) {
+		size_t i = json_in_key_index(c->string, keys, cat->n_fields, &guess);
+		if (i < cat->n_fields && e.item[i] == NULL)
+			e.item[i] = c;
+	}
 	bool usable = true;
 	for (size_t i = 0; i < cat->n_fields; i++) {
 		const struct field *f = &cat->fields[i];
-		e.item[i] = cJSON_GetObjectItemCaseSensitive(obj, f->key);
 		if (e.item[i] == NULL)
 			entry_report(&e, DIAG_MISSING, f, NULL, NULL);
 		else
@@ -752,9 +750,32 @@ load_file(struct load *ld, const char *dir, enum catalog_category k)
 
 /* ---- public --------------------------------------------------------------- */
 
+/* The fingerprint of the files ld read (catalog_io.h) into hex. */
+static void
+hash_files(const struct load *ld, char *hex)
+{
+	struct sha256_ctx c;
+	unsigned char digest[SHA256_DIGEST_LEN];
+	sha256_init(&c);
+	for (int k = 0; k < CATALOG_N_CATEGORIES; k++) {
+		if (ld->ji[k] == NULL)
+			continue;
+		size_t n;
+		const char *text = json_in_text(ld->ji[k], &n);
+		unsigned char len8[8];
+		for (int i = 0; i < 8; i++)
+			len8[i] = (unsigned char)((uint64_t)n >> (8 * i));
+		sha256_update(&c, catalog_io_files[k], strlen(catalog_io_files[k]) + 1);
+		sha256_update(&c, len8, sizeof len8);
+		sha256_update(&c, text, n);
+	}
+	sha256_final(&c, digest);
+	sha256_to_hex(digest, hex);
+}
+
 struct catalog *
 catalog_io_load(const char *dir, const char *const *known_chemistries,
-                struct diag *dg)
+                struct diag *dg, char *sha256_hex)
 {
 	struct load ld = { .dg = dg, .chems = known_chemistries != NULL ?
 	                   known_chemistries : catalog_default_chemistries };
@@ -763,15 +784,18 @@ catalog_io_load(const char *dir, const char *const *known_chemistries,
 	ld.ids = strmap_alloc(1024);
 	for (int k = 0; k < CATALOG_N_CATEGORIES; k++)
 		load_file(&ld, dir, (enum catalog_category)k);
+	bool failed = diag_n_errors(dg) > before;
+	if (!failed && sha256_hex != NULL)
+		hash_files(&ld, sha256_hex);
 	/* The files stay open to here: a duplicate id points at its first use
-	 * in another file. */
+	 * in another file, and the fingerprint hashes their bytes. */
 	for (int k = 0; k < CATALOG_N_CATEGORIES; k++) {
 		json_in_free(ld.ji[k]);
 		free(ld.path[k]);
 	}
 	strmap_free(ld.ids);
 	free(ld.owners);
-	if (diag_n_errors(dg) > before) {
+	if (failed) {
 		catalog_free(ld.c);
 		return NULL;
 	}

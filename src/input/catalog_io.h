@@ -34,17 +34,19 @@ extern const char *const catalog_io_files[CATALOG_N_CATEGORIES];
 /* True when the category's file must exist (false: absent = no entries). */
 bool catalog_io_required(enum catalog_category k);
 
-/* The offsets of category k's text fields (every `const char *` of its
- * entry struct), written into offsets (room for max); returns how many.
- * The snapshot (input/catalog_snap.h) stores these as string offsets. */
-size_t catalog_io_text_fields(enum catalog_category k, size_t *offsets, size_t max);
-
 /* Loads the catalogue directory dir (a trailing '/' is fine).
  * known_chemistries is the NULL-terminated list of accepted battery
  * chemistries; NULL means catalog_default_chemistries.  Every problem of
  * every file is reported into dg (exit status 2).  Returns NULL if there
- * was any error, else a catalogue the caller frees with catalog_free(). */
+ * was any error, else a catalogue the caller frees with catalog_free().
+ *
+ * When sha256_hex is not NULL it receives the catalogue's fingerprint
+ * (result.json's catalogue_sha256): the SHA-256, as 64 hex digits, of
+ * each file read in the order of catalog_io_files (its name, a NUL, its
+ * length as 8 bytes little-endian, its bytes), an absent optional file
+ * adding nothing.  It hashes the very bytes parsed, so it names exactly
+ * the catalogue that was used. */
 struct catalog *catalog_io_load(const char *dir, const char *const *known_chemistries,
-                                struct diag *dg);
+                                struct diag *dg, char *sha256_hex);
 
 #endif

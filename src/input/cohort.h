@@ -1,4 +1,4 @@
-/* cohort.h — reader for real-aircraft cohort files (shared/cohorts/README.md).
+/* cohort.h — reader for real-aircraft cohort files (data/cohorts/README.md).
  *
  * For the `validate` and `calibrate` commands.  A cohort file is CSV with a
  * header line; columns may come in any order, unknown columns are ignored,

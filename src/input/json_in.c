@@ -1,10 +1,9 @@
 /* json_in.c — the one JSON reader (see json_in.h).
  *
- * cJSON builds the tree; json_pos scans the same text for positions and
- * lexical problems.  The two meet lazily: the first time a position (or an
- * entry's flags) is asked for, one depth-first walk of the tree pairs node
- * i with entry i in a pointer-keyed hash table.  A file that reads cleanly
- * never builds that table.
+ * json_parse reads the text once into a tree of cJSON nodes that carry
+ * their own positions and lexical flags; this file adds the checks and the
+ * reporting.  Repeated keys are looked for only in the objects a loader
+ * reads, one hash table per object.
  */
 #include "input/json_in.h"
 
@@ -15,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "input/json_pos.h"
+#include "input/json_parse.h"
 #include "util/file.h"
 #include "util/hash.h"
 #include "util/text.h"
@@ -24,12 +23,10 @@
 struct json_in {
 	char *text;              /* the file's bytes, NUL added */
 	size_t len;              /* bytes, without the NUL */
-	cJSON *root;             /* the tree */
-	struct json_pos *jp;     /* positions, problems, flags */
+	struct json_doc *doc;    /* the tree, its positions and problems */
+	const cJSON *root;       /* the tree's root */
 	const char *file;        /* name in messages (the caller's) */
 	struct diag *dg;         /* where messages go */
-	struct ptrmap *node;     /* tree node -> entry index; NULL until needed */
-	bool node_ok;            /* node is built and complete */
 	struct ptrmap *indexed;  /* objects whose repeated keys are known */
 	struct ptrmap *repeat;   /* a repeated member -> the first of its key */
 	size_t key_probes;       /* probes of the per-object key tables */
@@ -39,6 +36,9 @@ struct json_in {
 	int n_hidden;            /* errors counted, not shown */
 	bool last_shown;         /* the last error was shown (for its notes) */
 };
+
+static struct json_in *ji_parse_owned(const char *file, char *text, size_t len,
+                                      struct diag *dg);
 
 /* ---- reading ------------------------------------------------------------- */
 
@@ -86,54 +86,30 @@ json_in_load(const char *path, size_t max_bytes, struct diag *dg)
 	size_t n;
 	if (json_in_read(path, max_bytes, dg, &buf, &n) != 0)
 		return NULL;
-	struct json_in *ji = json_in_parse(path, (const char *)buf, n, dg);
-	free(buf);
-	return ji;
+	return ji_parse_owned(path, (char *)buf, n, dg);
 }
 
 /* ---- positions ----------------------------------------------------------- */
 
-/* Number node i of the tree in document order (pre-order). */
-static void
-ji_number(struct ptrmap *m, const cJSON *node, size_t *i)
+/* The node of item (a value of this tree), or NULL. */
+static const struct json_node *
+ji_node(const cJSON *item)
 {
-	ptrmap_put(m, node, (*i)++, NULL);
-	for (const cJSON *c = node->child; c != NULL; c = c->next)
-		ji_number(m, c, i);
+	return item != NULL ? json_node_of(item) : NULL;
 }
 
-/* The entry of item, or NULL when positions are unknown. */
-static const struct json_pos_entry *
-ji_entry(struct json_in *ji, const cJSON *item)
-{
-	if (ji->node == NULL) {
-		size_t n = 0;
-		ji->node = ptrmap_alloc(json_pos_count(ji->jp));
-		ji_number(ji->node, ji->root, &n);
-		/* The pairing holds only when both saw the same values. */
-		ji->node_ok = json_pos_complete(ji->jp) && n == json_pos_count(ji->jp);
-	}
-	size_t i;
-	if (!ji->node_ok || item == NULL || !ptrmap_get(ji->node, item, &i))
-		return NULL;
-	return json_pos_entry_at(ji->jp, i);
-}
-
-/* The entry's flags; no table is built for a file without any flag. */
+/* The node's flags (JSON_PARSE_*). */
 static unsigned
-ji_flags(struct json_in *ji, const cJSON *item)
+ji_flags(const cJSON *item)
 {
-	if (json_pos_all_flags(ji->jp) == 0)
-		return 0;
-	const struct json_pos_entry *e = ji_entry(ji, item);
-	return e != NULL ? e->flags : 0;
+	return item != NULL ? json_node_of(item)->flags : 0;
 }
 
 struct diag_loc
 json_in_loc(struct json_in *ji, const cJSON *item, enum json_in_at at)
 {
 	struct diag_loc loc = { ji->file, 0, 0 };
-	const struct json_pos_entry *e = at != JSON_IN_FILE ? ji_entry(ji, item) : NULL;
+	const struct json_node *e = at != JSON_IN_FILE ? ji_node(item) : NULL;
 	if (e != NULL) {
 		bool key = at == JSON_IN_KEY && e->key_line > 0;
 		loc.line = key ? e->key_line : e->val_line;
@@ -173,7 +149,7 @@ json_in_find(const struct json_in *ji, const char *path)
 void
 json_in_source(struct json_in *ji, const cJSON *item, char *buf, size_t n)
 {
-	const struct json_pos_entry *e = ji_entry(ji, item);
+	const struct json_node *e = ji_node(item);
 	size_t k = e != NULL ? e->val_end - e->val_off : 0;
 	if (k >= n)
 		k = n - 1;
@@ -250,13 +226,29 @@ json_in_report(struct json_in *ji, enum diag_kind kind, const cJSON *item,
 	va_end(ap);
 }
 
+/* Appends s to buf[*used..n - 1), cut short at the end. */
+static void
+ji_append(char *buf, size_t n, size_t *used, const char *s, size_t len)
+{
+	if (len > n - 1 - *used)
+		len = n - 1 - *used;
+	memcpy(buf + *used, s, len);
+	*used += len;
+}
+
 void
 json_in_path(char *buf, size_t n, const char *parent, const char *key)
 {
-	if (parent == NULL || parent[0] == '\0')
-		snprintf(buf, n, "%s", key);
-	else
-		snprintf(buf, n, "%s.%s", parent, key);
+	/* Copies, not snprintf: a loader writes one for every value it reads. */
+	size_t used = 0;
+	if (n == 0)
+		return;
+	if (parent != NULL && parent[0] != '\0') {
+		ji_append(buf, n, &used, parent, strlen(parent));
+		ji_append(buf, n, &used, ".", 1);
+	}
+	ji_append(buf, n, &used, key, strlen(key));
+	buf[used] = '\0';
 }
 
 void
@@ -285,18 +277,18 @@ json_in_type_name(const cJSON *item)
 
 /* ---- parsing ------------------------------------------------------------- */
 
-/* The lexical problems json_pos found, in document order. */
+/* The lexical problems json_parse let through, in document order. */
 static void
 ji_report_problems(struct json_in *ji)
 {
-	for (size_t i = 0; i < json_pos_n_problems(ji->jp); i++) {
-		const struct json_pos_problem *p = json_pos_problem_at(ji->jp, i);
+	for (size_t i = 0; i < json_doc_n_problems(ji->doc); i++) {
+		const struct json_problem *p = json_doc_problem_at(ji->doc, i);
 		struct diag_loc loc = { ji->file, p->line, p->col };
-		if (p->kind == JSON_POS_CONTROL) {
+		if (p->kind == JSON_PROBLEM_CONTROL) {
 			ji_report_at(ji, DIAG_SYNTAX, &loc, NULL, " near byte 0x%02x (control "
 			             "characters in strings must be escaped)", p->byte);
 		} else {
-			const struct json_pos_entry *e = json_pos_entry_at(ji->jp, p->entry);
+			const struct json_node *e = p->node;
 			char q[96];
 			diag_quote(ji->text + e->val_off, e->val_end - e->val_off, 32, q, sizeof q);
 			ji_report_at(ji, DIAG_SYNTAX, &loc, NULL, " near %s (not a JSON number)", q);
@@ -304,20 +296,16 @@ ji_report_problems(struct json_in *ji)
 	}
 }
 
-struct json_in *
-json_in_parse(const char *file, const char *buf, size_t len, struct diag *dg)
+/* json_in_parse() of text[0..len), a heap buffer with a NUL after it,
+ * which the result owns (freed here on failure). */
+static struct json_in *
+ji_parse_owned(const char *file, char *text, size_t len, struct diag *dg)
 {
 	struct diag_loc loc = { file, 0, 0 };
-	const char *end = NULL;
 	char near[96];
-
-	/* cJSON wants a NUL inside the length it is given (STACK.md §7). */
-	char *text = xmalloc(len + 1);
-	memcpy(text, buf, len);
-	text[len] = '\0';
-	cJSON *root = cJSON_ParseWithLengthOpts(text, len + 1, &end, 0);
-	if (root == NULL) {
-		size_t off = end != NULL ? (size_t)(end - text) : 0;
+	size_t off;
+	struct json_doc *doc = json_parse(text, len, &off);
+	if (doc == NULL) {
 		text_line_col(text, len, off, &loc.line, &loc.col);
 		if (off >= len) {
 			diag_report(dg, DIAG_SYNTAX, &loc, NULL, " near the end of the file");
@@ -332,14 +320,13 @@ json_in_parse(const char *file, const char *buf, size_t len, struct diag *dg)
 	struct json_in *ji = xcalloc(1, sizeof *ji);
 	ji->text = text;
 	ji->len = len;
-	ji->root = root;
+	ji->doc = doc;
+	ji->root = json_doc_root(doc);
 	ji->file = file;
 	ji->dg = dg;
 
-	/* cJSON stops after the value when not asked to require the end; what
-	 * follows must be whitespace only.  Checked here rather than by cJSON
-	 * so the message can say what is wrong. */
-	size_t off = (size_t)(end - text);
+	/* What follows the value must be whitespace only. */
+	off = json_doc_end(doc);
 	while (off < len && strchr(" \t\r\n", text[off]) != NULL && text[off] != '\0')
 		off++;
 	if (off < len) {
@@ -348,15 +335,23 @@ json_in_parse(const char *file, const char *buf, size_t len, struct diag *dg)
 		ji_report_at(ji, DIAG_TRAILING, &loc, NULL, " near %s", near);
 	}
 
-	ji->jp = json_pos_alloc(text, len);
 	ji_report_problems(ji);
-	if (!cJSON_IsObject(root)) {
-		json_in_report(ji, DIAG_TOP_LEVEL, root, JSON_IN_VALUE, NULL, ", got %s",
-		               json_in_type_name(root));
+	if (!cJSON_IsObject(ji->root)) {
+		json_in_report(ji, DIAG_TOP_LEVEL, ji->root, JSON_IN_VALUE, NULL, ", got %s",
+		               json_in_type_name(ji->root));
 		json_in_free(ji);
 		return NULL;
 	}
 	return ji;
+}
+
+struct json_in *
+json_in_parse(const char *file, const char *buf, size_t len, struct diag *dg)
+{
+	char *text = xmalloc(len + 1);
+	memcpy(text, buf, len);
+	text[len] = '\0';
+	return ji_parse_owned(file, text, len, dg);
 }
 
 void
@@ -369,11 +364,9 @@ json_in_free(struct json_in *ji)
 		diag_report(ji->dg, DIAG_MORE, &loc, NULL, ": %d (%d shown above)",
 		            ji->n_hidden, ji->n_errors_shown);
 	}
-	ptrmap_free(ji->node);
 	ptrmap_free(ji->indexed);
 	ptrmap_free(ji->repeat);
-	json_pos_free(ji->jp);
-	cJSON_Delete(ji->root);
+	json_doc_free(ji->doc);
 	free(ji->text);
 	free(ji);
 }
@@ -382,6 +375,13 @@ const cJSON *
 json_in_root(const struct json_in *ji)
 {
 	return ji->root;
+}
+
+const char *
+json_in_text(const struct json_in *ji, size_t *len)
+{
+	*len = ji->len;
+	return ji->text;
 }
 
 const char *
@@ -399,8 +399,7 @@ json_in_n_errors(const struct json_in *ji)
 size_t
 json_in_probes(const struct json_in *ji)
 {
-	return (ji->node ? ptrmap_probes(ji->node) : 0) +
-	       (ji->indexed ? ptrmap_probes(ji->indexed) : 0) +
+	return (ji->indexed ? ptrmap_probes(ji->indexed) : 0) +
 	       (ji->repeat ? ptrmap_probes(ji->repeat) : 0) + ji->key_probes;
 }
 
@@ -436,10 +435,10 @@ bool
 json_in_member(struct json_in *ji, const cJSON *obj, const cJSON *item,
                const char *path)
 {
-	unsigned flags = ji_flags(ji, item);
-	if (flags & JSON_POS_BAD)
+	unsigned flags = ji_flags(item);
+	if (flags & JSON_PARSE_BAD)
 		return false;
-	if (flags & JSON_POS_KEY_NUL) {
+	if (flags & JSON_PARSE_KEY_NUL) {
 		json_in_report(ji, DIAG_NUL_IN_STRING, item, JSON_IN_KEY, path,
 		               " (\\u0000 in the key)");
 		return false;
@@ -460,18 +459,36 @@ json_in_member(struct json_in *ji, const cJSON *obj, const cJSON *item,
 	return false;
 }
 
+size_t
+json_in_key_index(const char *key, const char *const *list, size_t n, size_t *guess)
+{
+	size_t i = *guess < n ? *guess : 0;
+	for (size_t tried = 0; tried < n; tried++) {
+		if (strcmp(key, list[i]) == 0) {
+			*guess = i + 1;
+			return i;
+		}
+		if (++i == n)
+			i = 0;
+	}
+	return n;
+}
+
 int
 json_in_check_keys(struct json_in *ji, const cJSON *obj, const char *path,
                    const char *const *allowed, unsigned flags)
 {
 	int before = ji->n_errors;
 	char sub[512];
+	size_t n_allowed = 0, guess = 0;
+	while (allowed[n_allowed] != NULL)
+		n_allowed++;
 	ji_index_members(ji, obj);
 	for (const cJSON *c = obj->child; c != NULL; c = c->next) {
 		/* The member's path is written only for a message: a clean key
 		 * (the rule, thousands of times in a catalogue) needs none. */
 		size_t first;
-		bool clean = !(ji_flags(ji, c) & (JSON_POS_BAD | JSON_POS_KEY_NUL))
+		bool clean = !(ji_flags(c) & (JSON_PARSE_BAD | JSON_PARSE_KEY_NUL))
 		    && !ptrmap_get(ji->repeat, c, &first);
 		if (!clean) {
 			json_in_path(sub, sizeof sub, path, c->string);
@@ -480,10 +497,7 @@ json_in_check_keys(struct json_in *ji, const cJSON *obj, const char *path,
 		}
 		if ((flags & JSON_IN_COMMENTS) && c->string[0] == '_')
 			continue;
-		bool known = false;
-		for (size_t i = 0; !known && allowed[i] != NULL; i++)
-			known = strcmp(c->string, allowed[i]) == 0;
-		if (known)
+		if (json_in_key_index(c->string, allowed, n_allowed, &guess) < n_allowed)
 			continue;
 		json_in_path(sub, sizeof sub, path, c->string);
 		const char *hint = json_in_showing(ji) ? text_nearest(c->string, allowed) : NULL;
@@ -513,16 +527,20 @@ bool
 json_in_check_string(struct json_in *ji, const cJSON *item, const char *path,
                      size_t max_bytes, unsigned flags)
 {
-	unsigned ef = ji_flags(ji, item);
-	if (ef & JSON_POS_BAD)
+	unsigned ef = ji_flags(item);
+	if (ef & JSON_PARSE_BAD)
 		return false;
-	if (ef & JSON_POS_VAL_NUL) {
+	if (ef & JSON_PARSE_VAL_NUL) {
 		json_in_report(ji, DIAG_NUL_IN_STRING, item, JSON_IN_VALUE, path, " (\\u0000)");
 		return false;
 	}
 	const char *s = item->valuestring;
 	size_t len = strlen(s);
 	for (size_t i = 0; i < len;) {
+		if (s[i] >= 0x20 && s[i] < 0x7f) {
+			i++;   /* printable ASCII: valid, and no control character */
+			continue;
+		}
 		size_t seq = text_utf8_seq(s + i, len - i);
 		if (seq == 0) {
 			json_in_report(ji, DIAG_BAD_UTF8, item, JSON_IN_VALUE, path,
@@ -555,7 +573,7 @@ json_in_check_string(struct json_in *ji, const cJSON *item, const char *path,
 bool
 json_in_check_number(struct json_in *ji, const cJSON *item, const char *path)
 {
-	if (ji_flags(ji, item) & JSON_POS_BAD)
+	if (ji_flags(item) & JSON_PARSE_BAD)
 		return false;
 	if (isfinite(item->valuedouble))
 		return true;

@@ -3,7 +3,8 @@
  * comes in through here.
  *
  * It reads a file through file_read() (regular files only, a size cap per
- * kind of file), parses it with cJSON, and reports through diag_report()
+ * kind of file), parses it once (json_parse.h: a tree of cJSON nodes that
+ * know where they stand in the text), and reports through diag_report()
  * in compiler form (file:line:col: error: path: message):
  *   - malformed JSON, text after the value, a top level that is not an
  *     object (the file is then refused: json_in_load() returns NULL);
@@ -15,12 +16,12 @@
  *     strings spelling \u0000, invalid UTF-8, control characters, text that
  *     starts like a spreadsheet formula, over-long text, infinite numbers,
  *     wrong types.
- * Positions come from json_pos; any value of the tree has one
- * (json_in_loc), any path "a.b[3]" names a value (json_in_find).
+ * Any value of the tree has a position (json_in_loc), any path "a.b[3]"
+ * names a value (json_in_find).
  *
- * Everything is linear in the size of the file: positions and repeated
- * keys go through hash tables (util/hash.h), never a scan of what came
- * before.  Only the first JSON_IN_MAX_SHOWN lines of one file are shown;
+ * Everything is linear in the size of the file: a position is read from
+ * its node, repeated keys go through hash tables (util/hash.h), never a
+ * scan of what came before.  Only the first JSON_IN_MAX_SHOWN lines of one file are shown;
  * the rest are counted (the exit status and error counts stay right) and
  * json_in_free() closes with one note saying how many were left out.
  *
@@ -62,7 +63,7 @@ struct json_in *json_in_load(const char *path, size_t max_bytes,
                              struct diag *dg);
 
 /* Parse buf[0..len) (need not be NUL-terminated; an embedded NUL is not
- * the end) named file in messages.  NULL after reporting as above.
+ * the end; it is copied) named file in messages.  NULL after reporting as above.
  * Ownership: json_in_free(); file and dg must outlive the result. */
 struct json_in *json_in_parse(const char *file, const char *buf, size_t len,
                               struct diag *dg);
@@ -74,10 +75,14 @@ void json_in_free(struct json_in *ji);
  * through ji so far, shown or not. */
 const cJSON *json_in_root(const struct json_in *ji);
 const char *json_in_file(const struct json_in *ji);
+
+/* The bytes read, exactly as they were (len of them, a NUL after): what a
+ * fingerprint of the file must hash.  They live as long as ji. */
+const char *json_in_text(const struct json_in *ji, size_t *len);
 int json_in_n_errors(const struct json_in *ji);
 
-/* Hash-table probes spent on positions and repeated keys so far: tests
- * bound the reader's work by counting them (util/hash.h). */
+/* Hash-table probes spent on repeated keys so far: tests bound the
+ * reader's work by counting them (util/hash.h). */
 size_t json_in_probes(const struct json_in *ji);
 
 /* json_in_read() of a file that item (at jpath) of ji names, a font in a
@@ -143,6 +148,13 @@ bool json_in_member(struct json_in *ji, const cJSON *obj, const cJSON *item,
 
 /* Key-list flags. */
 #define JSON_IN_COMMENTS 0x1u   /* keys starting with '_' are comments */
+
+/* The index of key in list[0..n), or n when it is not there.  The search
+ * starts at *guess and wraps round; a hit leaves *guess just past it, so
+ * keys met in the list's own order (as in a catalogue entry) cost one
+ * comparison each. */
+size_t json_in_key_index(const char *key, const char *const *list, size_t n,
+                         size_t *guess);
 
 /* json_in_member() for every member of obj (at path), and an error for each
  * key not in the NULL-terminated list allowed, with the nearest allowed key

@@ -65,9 +65,8 @@ int mission_io_load(const char *path, const char *const *known_chemistries,
 
 /* The mission as JSON, nested as in a mission file, with every field of the
  * table (defaults included); enums by spelling, v_forward_ms as "auto" when
- * v_forward_auto.  Parsing its printout gives the same values back, for
- * numbers of up to 15 significant digits (cJSON prints with %1.15g, see
- * STACK.md §7); anything typed in a mission file is far shorter.
+ * v_forward_auto.  Parsing its printout (jsonw_print(), which prints every
+ * number exactly) gives the same values back.
  * Ownership: cJSON_Delete(). */
 cJSON *mission_io_to_json(const struct mission_spec *s);
 

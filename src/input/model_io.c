@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "input/json_in.h"
+#include "util/jsonw.h"
 #include "util/text.h"
 #include "util/xalloc.h"
 
@@ -635,7 +636,7 @@ model_io_calibration_json(const struct model_calibration *cal)
 		cJSON_AddNumberToObject(o, "log_hi", sp[i]->log_hi);
 		cJSON_AddNumberToObject(o, "coverage", sp[i]->coverage);
 	}
-	char *txt = cJSON_Print(root);
+	char *txt = jsonw_print(root, NULL);
 	cJSON_Delete(root);
 	return txt;
 }

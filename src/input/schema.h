@@ -29,8 +29,8 @@ void schema_print_text(FILE *out);
  * chemistries (NULL-terminated, the names of data/chemistries.json; NULL
  * leaves it open); and "allOf" the essentials every mission gives
  * (spec_essentials), each an "anyOf" of its fields and the requirements
- * field that derives it.  data/mission.schema.json is cJSON_Print of this
- * with the shipped chemistries, plus a newline.  Ownership: cJSON_Delete(). */
+ * field that derives it.  data/mission.schema.json is jsonw_print() of
+ * this with the shipped chemistries (util/jsonw.h).  Ownership: cJSON_Delete(). */
 cJSON *schema_json_schema(const char *const *chemistries);
 
 #endif /* AEROEVAL_SCHEMA_H */

@@ -24,7 +24,7 @@
 #include <cjson/cJSON.h>
 
 #include "output/bom_csv.h"
-#include "util/json_print.h"
+#include "util/jsonw.h"
 #include "util/numfmt.h"
 #include "util/strbuf.h"
 
@@ -391,14 +391,11 @@ ardupilot_derive(const struct solve_result *r, const struct model_data *m,
 
 /* ---- vehicle_components.json ----------------------------------------------- */
 
-/* x in its shortest exact form (numfmt.h): the tree takes it. */
+/* x, printed exactly by jsonw (derive checks that it is finite). */
 static void
 add_num(cJSON *o, const char *key, double x)
 {
-	char t[NUMFMT_SHORTEST_LEN];
-	if (numfmt_shortest(t, x) == 0)
-		snprintf(t, sizeof t, "0");  /* never reached: derive checks finiteness */
-	cJSON_AddItemToObject(o, key, cJSON_CreateRaw(t));
+	cJSON_AddNumberToObject(o, key, x);
 }
 
 /* Product {Manufacturer, Model, URL, Version}: the schema requires the
@@ -681,7 +678,7 @@ ardupilot_components(const struct solve_result *r, const struct ardupilot_design
 	strbuf_printf(&sb, "aeroeval %s", name);
 	cJSON_AddStringToObject(root, "Configuration template", strbuf_str(&sb));
 	strbuf_free(&sb);
-	char *text = json_print_file(root);
+	char *text = jsonw_print(root, NULL);
 	cJSON_Delete(root);
 	return text;
 }

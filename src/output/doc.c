@@ -38,7 +38,8 @@ doc_fail(struct doc *d, const char *fmt, ...)
 }
 
 /* libharu calls this on every raised error; the document is poisoned from
- * then on (STACK.md §2a), so the first error is the one to report. */
+ * then on (docs/libraries.md, libharu), so the first error is the one to
+ * report. */
 static void
 on_hpdf_error(HPDF_STATUS error_no, HPDF_STATUS detail_no, void *user)
 {
@@ -256,7 +257,7 @@ word_cut(HPDF_Font f, double size, double width, const char *s, const char *e)
 
 /* Greedy word wrap of text into lines no wider than width.  Spaces separate
  * words; "\n" forces a break; a word wider than the line is cut between
- * characters (TextRect would stall on it, STACK.md §2f). */
+ * characters (TextRect would stall on it, docs/libraries.md, libharu). */
 void
 doc_wrap(HPDF_Font f, double size, double width, const char *text, struct lines *out)
 {
@@ -423,18 +424,6 @@ doc_ensure_space(struct doc *d, double h)
 	return doc_failed(d) ? -1 : 0;
 }
 
-int
-doc_space(struct doc *d, double h)
-{
-	if (doc_failed(d))
-		return -1;
-	if (d->y - h < d->bottom)
-		doc_add_page(d);
-	else
-		d->y -= h;
-	return doc_failed(d) ? -1 : 0;
-}
-
 /* Moves the cursor down by h after placing something. */
 void
 doc_advance(struct doc *d, double h)
@@ -449,7 +438,7 @@ doc_advance(struct doc *d, double h)
 /* Rewrites the ToUnicode map of a UTF-8 font.  libharu 2.3.0 writes it
  * with a `begincidrange` block, which is an operator of CID maps, not of
  * ToUnicode maps: poppler warns on every such font ("Invalid
- * 'begincidrange' operator in ToUnicode CMap", STACK.md §2d) and other
+ * 'begincidrange' operator in ToUnicode CMap", docs/libraries.md) and other
  * readers may not extract the text at all.  With the UTF-8 encoder the
  * code of a glyph is its Unicode value (the CIDToGIDMap does the rest), so
  * the right map is the identity: one bfrange per high byte (a bfrange may

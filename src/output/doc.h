@@ -7,7 +7,8 @@
  * (° ± µ Ω ² ≤ print and stay selectable).  The running header (document
  * title, mission name) and the footer "n / N" are drawn on every page but
  * the first when the document is saved.  The output is byte-for-byte
- * reproducible: no clock is read, no encryption, no PDF/A (STACK.md §2a).
+ * reproducible: no clock is read, no encryption, no PDF/A (docs/libraries.md,
+ * libharu).
  *
  * Errors are sticky, like a cairo context: the first libharu error (or bad
  * argument) is remembered, every later call does nothing and returns -1, and
@@ -188,8 +189,7 @@ int doc_next_figure_number(const struct doc *d);
  * heading placed after this call, each with its page number and a link to
  * it (headings beyond n_rows are left out).  Once per document. */
 int doc_contents(struct doc *d, const char *title, int n_rows);
-/* Vertical space; new page if fewer than h_pt remain. */
-int doc_space(struct doc *d, double h_pt);
+/* A new page if fewer than h_pt remain. */
 int doc_ensure_space(struct doc *d, double h_pt);
 int doc_new_page(struct doc *d);
 /* Height left on the current page and the text width, in points. */

@@ -583,10 +583,13 @@ static int
 swap_in(struct fsfolder *f, char *err, size_t errlen)
 {
 #ifdef RENAME_EXCHANGE
+#ifdef AEROEVAL_TEST_HOOKS
 	/* AEROEVAL_TEST_NO_EXCHANGE: tests take the fallback on any disk. */
 	if (getenv("AEROEVAL_TEST_NO_EXCHANGE") != NULL)
 		errno = ENOSYS;
-	else if (renameat2(f->dir_fd, f->tmp, f->dir_fd, f->name, RENAME_EXCHANGE) == 0) {
+	else
+#endif
+	if (renameat2(f->dir_fd, f->tmp, f->dir_fd, f->name, RENAME_EXCHANGE) == 0) {
 		remove_tree(f->dir_fd, f->tmp);  /* a leftover goes at the next clean */
 		return 0;
 	}

@@ -33,6 +33,7 @@ fsout_fault_reset(void)
 	atomic_store(&write_count, 0);
 }
 
+#ifdef AEROEVAL_TEST_HOOKS   /* (fsout_int.h: no-ops otherwise) */
 /* The errno names AEROEVAL_FAIL_WRITE=N:NAME may ask for. */
 static const struct {
 	const char *name;
@@ -72,6 +73,7 @@ fsout_test_delay(void)
 			;
 	}
 }
+#endif /* AEROEVAL_TEST_HOOKS */
 
 int
 fsout_write_all(int fd, const void *data, size_t n)

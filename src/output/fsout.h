@@ -7,7 +7,9 @@
  * trailing newline, of the form "PATH: what failed: strerror", ready to be
  * prefixed with "error: " by the caller.  Nothing here prints.
  *
- * Test hooks: with AEROEVAL_FAIL_WRITE=N in the environment, the N-th file
+ * Test hooks, compiled into test builds only (-DAEROEVAL_TEST_HOOKS; the
+ * program `make` installs has none): with AEROEVAL_FAIL_WRITE=N in the
+ * environment, the N-th file
  * write of the process (counting from 1: fsout_write_atomic() and
  * fsfolder_put() calls) writes part of its temporary file and then fails as
  * if the disk were full (ENOSPC), or with the error NAME of N:NAME (ENOSPC,

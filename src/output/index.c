@@ -1,10 +1,12 @@
 /* index.c — index.csv and index.json (see index.h). */
 #include "output/index.h"
 
+#include <math.h>
+
 #include <cjson/cJSON.h>
 
 #include "util/csv.h"
-#include "util/json_print.h"
+#include "util/jsonw.h"
 #include "util/numfmt.h"
 #include "util/strbuf.h"
 #include "util/text.h"
@@ -97,13 +99,12 @@ index_csv(const struct summary *s)
 
 /* ---- index.json ------------------------------------------------------------ */
 
-/* x exactly (numfmt_shortest), or null when unknown; the tree takes it. */
+/* x (printed exactly by jsonw), or null when unknown or not finite. */
 static void
 add_num(cJSON *o, const char *key, bool known, double x)
 {
-	char t[NUMFMT_SHORTEST_LEN];
-	if (known && numfmt_shortest(t, x) > 0)
-		cJSON_AddItemToObject(o, key, cJSON_CreateRaw(t));
+	if (known && isfinite(x))
+		cJSON_AddNumberToObject(o, key, x);
 	else
 		cJSON_AddNullToObject(o, key);
 }
@@ -183,7 +184,7 @@ index_json(const struct summary *s, const char *aeroeval_version)
 	cJSON *arr = cJSON_AddArrayToObject(root, "missions");
 	for (size_t i = 0; i < s->n; i++)
 		cJSON_AddItemToArray(arr, row_json(&s->rows[i]));
-	char *text = json_print_file(root);
+	char *text = jsonw_print(root, NULL);
 	cJSON_Delete(root);
 	return text;
 }

@@ -2,9 +2,10 @@
  *
  * Drawing works in figure coordinates: points, origin at the figure's top
  * left, y down (cairo's convention).  Every path is built with cairo on an
- * unbounded recording surface (STACK.md §3: a small image surface silently
- * drops geometry outside it) and then replayed into the libharu page with y
- * flipped; text never goes through cairo, so no fontconfig is involved.
+ * unbounded recording surface (a small image surface silently drops
+ * geometry outside it: docs/libraries.md, cairo) and then replayed into the
+ * libharu page with y flipped; text never goes through cairo, so no
+ * fontconfig is involved.
  */
 #include "output/plot.h"
 
@@ -622,7 +623,7 @@ rp_apply(struct rctx *c, enum rp_op op)
 			double d[8], off;
 			HPDF_UINT16 u[8];
 			cairo_get_dash(c->cr, d, &off);
-			/* libharu dashes are integers (STACK.md §3 gotcha 3). */
+			/* libharu dashes are integers (docs/libraries.md, libharu). */
 			for (int i = 0; i < nd; i++)
 				u[i] = (HPDF_UINT16)(d[i] < 1.0 ? 1 : lround(d[i]));
 			HPDF_Page_SetDash(pg, u, (HPDF_UINT)nd, (HPDF_UINT)lround(off));

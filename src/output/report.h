@@ -1,4 +1,4 @@
-/* report.h — the design dossier (PRODUCT.md §4 "dossier.pdf"): what it says.
+/* report.h — the design dossier (dossier.pdf, README.md): what it says.
  *
  * doc.h and plot.h know how a page looks; this module knows what a client,
  * a procurement team and an archive need to read about one solve: the

@@ -1,5 +1,5 @@
 /* result_json.h — result.json, the machine-readable record of one solve
- * (PRODUCT.md §4).
+ * (README.md).
  *
  * Who may include it: the output layer and the command drivers.  It reads a
  * const struct solve_result and returns text; it writes no file (the caller

@@ -9,8 +9,7 @@
 
 #include <cjson/cJSON.h>
 
-#include "util/json_print.h"
-#include "util/numfmt.h"
+#include "util/jsonw.h"
 #include "util/units.h"
 #include "util/xalloc.h"
 
@@ -143,13 +142,12 @@ sens_report_tsv(FILE *out, const struct sens_result *s)
 
 /* ---- JSON ------------------------------------------------------------------ */
 
-/* Adds key: v with the shortest exact text; a non-finite v is left out. */
+/* Adds key: v (printed exactly by jsonw); a non-finite v is left out. */
 static void
 add_num(cJSON *o, const char *key, double v)
 {
-	char buf[NUMFMT_SHORTEST_LEN];
-	if (numfmt_shortest(buf, v) > 0)
-		cJSON_AddItemToObject(o, key, cJSON_CreateRaw(buf));
+	if (isfinite(v))
+		cJSON_AddNumberToObject(o, key, v);
 }
 
 /* A sweep's crossing {x, reason} at key, or null when it has none. */
@@ -240,7 +238,7 @@ sens_report_json(const struct sens_result *s, const char *aeroeval_version)
 	cJSON *arr = cJSON_AddArrayToObject(root, "parameters");
 	for (int i = 0; i < SENS_N_PARAMS; i++)
 		cJSON_AddItemToArray(arr, curve_json(&s->c[i]));
-	char *text = json_print_file(root);
+	char *text = jsonw_print(root, NULL);
 	cJSON_Delete(root);
 	return text;
 }

@@ -66,6 +66,18 @@ text_is_control(unsigned long cp)
 	    || (cp >= 0x2066 && cp <= 0x2069);
 }
 
+int
+text_hex_digit(unsigned char c)
+{
+	if (c >= '0' && c <= '9')
+		return c - '0';
+	if (c >= 'a' && c <= 'f')
+		return c - 'a' + 10;
+	if (c >= 'A' && c <= 'F')
+		return c - 'A' + 10;
+	return -1;
+}
+
 size_t
 text_bom(const char *b, size_t len)
 {

@@ -27,6 +27,9 @@ unsigned long text_utf8_cp(const char *s, size_t seq);
  * (U+202E turns "exe.pdf" into "fdp.exe"). */
 int text_is_control(unsigned long cp);
 
+/* The value of the hexadecimal digit c (either case), or -1. */
+int text_hex_digit(unsigned char c);
+
 /* Length of a UTF-8 byte-order mark at the start of b[0..len), or 0. */
 size_t text_bom(const char *b, size_t len);
 

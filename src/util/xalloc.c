@@ -5,10 +5,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#ifdef AEROEVAL_TEST_HOOKS
 /* Countdown for the AEROEVAL_FAIL_ALLOC test hook; read once.  This is the
- * one process-wide variable in the program: it only ever counts down and is
- * only set by tests, so -j N workers (separate processes) are unaffected. */
+ * one process-wide variable of the test build: it only ever counts down and
+ * is only set by tests, so -j N workers (separate processes) are unaffected. */
 static long fail_countdown = -2; /* -2 unread, -1 disabled */
+#endif
 
 void
 xalloc_die(size_t n)
@@ -17,15 +19,20 @@ xalloc_die(size_t n)
 	exit(3);
 }
 
+/* The AEROEVAL_FAIL_ALLOC hook, compiled into test builds only. */
 static void
 maybe_inject_failure(size_t n)
 {
+#ifdef AEROEVAL_TEST_HOOKS
 	if (fail_countdown == -2) {
 		const char *e = getenv("AEROEVAL_FAIL_ALLOC");
 		fail_countdown = (e != NULL && *e != '\0') ? strtol(e, NULL, 10) : -1;
 	}
 	if (fail_countdown > 0 && --fail_countdown == 0)
 		xalloc_die(n);
+#else
+	(void)n;
+#endif
 }
 
 void *

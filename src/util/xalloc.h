@@ -1,9 +1,10 @@
 /* xalloc.h — allocation that never returns NULL.
  *
  * Every allocation in aeroeval goes through these.  On exhaustion they print
- * one line and exit with status 3 (internal error, PRODUCT.md §2).  The test
- * hook AEROEVAL_FAIL_ALLOC=N makes the N-th allocation fail, so tests can
- * prove that an out-of-memory exit never leaves a truncated output behind.
+ * one line and exit with status 3 (internal error; README.md, "Exit
+ * status").  In a test build (-DAEROEVAL_TEST_HOOKS) the hook
+ * AEROEVAL_FAIL_ALLOC=N makes the N-th allocation fail, so tests can prove
+ * that an out-of-memory exit never leaves a truncated output behind.
  * Ownership: the caller frees what these return with free().
  */
 #ifndef AEROEVAL_XALLOC_H

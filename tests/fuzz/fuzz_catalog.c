@@ -115,7 +115,7 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	fclose(f);
 
 	struct diag *dg = diag_alloc(NULL);
-	struct catalog *c = catalog_io_load(dirs[k], NULL, dg);
+	struct catalog *c = catalog_io_load(dirs[k], NULL, dg, NULL);
 	int n_err = diag_n_errors(dg);
 	diag_free(dg);
 	if ((c == NULL) != (n_err > 0))

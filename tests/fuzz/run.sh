@@ -7,7 +7,7 @@
 # stops it and leaves the input in BUILD/fuzz/NAME/ as crash-*, leak-* or
 # timeout-*.  Exit status 1 if any harness found something.
 build=$1 cc=$2 flags=$3 secs=$4
-pkg="$(pkg-config --cflags --libs cairo libcjson fontconfig) -lhpdf -lm -lpthread"
+pkg="$(pkg-config --cflags --libs cairo libcjson libcrypto) -lhpdf -lm -lpthread"
 export AEROEVAL_DATA="${AEROEVAL_DATA:-$PWD/data}"
 status=0
 for src in tests/fuzz/fuzz_*.c; do
