@@ -145,12 +145,6 @@ parts_packs_for(const struct parts_ctx *x, const struct parts_option *o, int *n)
 
 /* ---- ESC ------------------------------------------------------------------ */
 
-static int
-esc_max_cells(const struct catalog_esc *e)
-{
-	return e->cells_max > 0 ? e->cells_max : PARTS_UNRATED_ESC_CELLS;
-}
-
 bool
 parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
                const struct catalog_esc **esc, int *n)
@@ -160,7 +154,10 @@ parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
 	*n = 0;
 	if (o->motor->integrated)
 		return true;
-	double need_a = PARTS_CURRENT_MARGIN * o->full_current_a;
+	/* One motor's currents: the ranking's hover, and full throttle. */
+	double hover_a = o->hover_power_w / ((double)o->cells * x->p->chem->v_nom
+	    * (double)p->n_rotors);
+	bool takes_fc = parts_kit_takes_board_fc(x);
 	double best_kg = INFINITY;
 	for (size_t i = 0; i < catalog_n_escs(x->cat); i++) {
 		const struct catalog_esc *e = catalog_esc(x->cat, i);
@@ -171,9 +168,10 @@ parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
 		if (!locked && (screen_esc(e, why, sizeof why) != NULL
 		    || screen_doubt_esc(e, why, sizeof why) != NULL))
 			continue;
-		if (!locked && (e->continuous_current_a < need_a
-		    || o->cells > esc_max_cells(e)
-		    || (e->cells_min > 0 && o->cells < e->cells_min)))
+		/* The ESC class against the motor and the bus (compat.c). */
+		if (!locked && compat_esc(e, o->motor, o->cells, hover_a,
+		    o->full_current_a, PARTS_CURRENT_MARGIN, PERF_FULL_THROTTLE_S,
+		    why, sizeof why) != NULL)
 			continue;
 		int boards;
 		if (e->channels <= 1) {
@@ -186,6 +184,9 @@ parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
 				continue;
 			boards = p->n_rotors / e->channels;
 		}
+		/* An all-in-one board's flight controller flies the aircraft. */
+		if (!locked && compat_board_fc(e, boards, takes_fc, why, sizeof why) != NULL)
+			continue;
 		double kg = (double)boards * e->mass_kg;
 		if (kg < best_kg) {
 			best_kg = kg;
@@ -216,10 +217,14 @@ craft_masses(const struct sizing_params *q, const struct parts_option *o,
 	/* A frame kit replaces the arm tubes and the centre frame. */
 	m->arm_kg = kit->frame != NULL ? 0.0 : am.arm_kg;
 	m->frame_kg = kit->frame != NULL ? kit->frame->mass_kg : am.frame_kg;
-	m->other_kg = am.other_kg;
-	m->wiring_kg = am.wiring_kg + kit->connector_kg;
+	/* The fasteners are mounts, with the body. */
+	m->other_kg = am.other_kg + parts_kit_fastener_kg(kit);
+	/* The harness in copper for the real parts' currents (harness.c),
+	 * not the continuous model's coefficient. */
+	m->wiring_kg = kit->harness_kg + kit->connector_kg;
 	m->avionics_kg = kit->avionics_kg;
-	m->role_aux_kg = am.role_aux_kg;
+	/* Role hardware the class's items supply is not counted twice. */
+	m->role_aux_kg = fmax(0.0, am.role_aux_kg - kit->role_supplied_kg);
 	m->payload_kg = q->payload_kg;
 	return fixed_kg + q->payload_kg + m->arm_kg + m->frame_kg + m->other_kg
 	    + m->wiring_kg + m->avionics_kg + m->role_aux_kg;
@@ -288,6 +293,26 @@ sustained_battery_a(const struct res_run *o)
 	return a;
 }
 
+/* What the flown closing asks of its kit: the mission's sustained
+ * current, full throttle as flown (the estimate where the drive gave no
+ * full-throttle point), and its takeoff mass without the kit's own
+ * Remote ID module (whether one is needed is decided without it). */
+static void
+flown_load(const struct parts_kit *kit, const struct res_run *o,
+           struct parts_load *load)
+{
+	load->sustained_a = sustained_battery_a(o);
+	const struct res_op *full = &o->perf.op[OP_FULL];
+	if (full->valid && full->battery_current_a > 0.0) {
+		load->full_a = full->battery_current_a;
+		load->motor_full_a = full->motor_current_a;
+	}
+	load->mass_kg = o->mass.total_kg;
+	for (int i = 0; i < kit->n_part; i++)
+		if (strcmp(kit->part[i]->kind, "remote_id") == 0)
+			load->mass_kg -= kit->part[i]->mass_kg;
+}
+
 bool
 parts_close_figures(const struct parts_ctx *x, struct parts_closed *cl)
 {
@@ -329,15 +354,22 @@ parts_close(const struct parts_ctx *x, const struct parts_option *o,
 	double fixed = c->mass.motor_kg + c->mass.prop_kg + c->mass.esc_kg
 	    + c->mass.battery_kg;
 
-	/* The power module and connectors carry the sustained current: first
-	 * the ranking's hover estimate, then, if they differ, what the flown
-	 * mission drew. */
+	/* The kit is sized for the closing's currents and mass: first the
+	 * ranking's estimates (hover, and every motor at full throttle with
+	 * the auxiliaries), then, if the kit they give differs, what the
+	 * flown mission drew. */
 	double v_bus = (double)o->cells * q.chem->v_nom;
-	double sustained = o->hover_power_w / v_bus;
+	struct parts_load load = {
+		.sustained_a = o->hover_power_w / v_bus,
+		.full_a = n * o->full_current_a
+		    + sizing_aux_w(&q, x->aim.mass_kg) / v_bus,
+		.motor_full_a = o->full_current_a,
+		.mass_kg = x->aim.mass_kg,
+	};
 	struct solve_result *r = out->r;
 	bool converged = false;
 	for (int pass = 0; pass < 2; pass++) {
-		parts_kit_pick(x, o, pk, esc, sustained, &out->kit);
+		parts_kit_pick(x, o, pk, esc, &load, &out->kit);
 		if (!close_with_kit(x, &q, o, &out->kit, fixed, c, &converged,
 		    &out->ran_away))
 			return false;
@@ -347,17 +379,13 @@ parts_close(const struct parts_ctx *x, const struct parts_option *o,
 		    + m->avionics_kg + m->role_aux_kg + m->other_kg;
 		r->n_violations = 0;
 		out->finite = perf_fly(&q, c, &r->closed);
-		double flown = sustained_battery_a(&r->closed);
-		struct parts_kit again;
-		parts_kit_pick(x, o, pk, esc, flown, &again);
-		bool same = again.connector == out->kit.connector
-		    && again.n_connectors == out->kit.n_connectors
-		    && again.n_part == out->kit.n_part
-		    && memcmp(again.part, out->kit.part, sizeof again.part) == 0;
-		out->kit.sized_for_a = flown;
-		if (same || !out->finite)
+		if (!out->finite)
 			break;
-		sustained = flown;
+		flown_load(&out->kit, &r->closed, &load);
+		struct parts_kit again;
+		parts_kit_pick(x, o, pk, esc, &load, &again);
+		if (parts_kit_same(&again, &out->kit))
+			break;
 	}
 	r->closed.converged = converged;
 	parts_record_checks(x, out, r);
@@ -486,16 +514,21 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 		fx[2] = f3;
 	}
 	if (cl->esc != NULL) {
+		/* The rating that holds for the full-throttle burst (compat.c). */
+		struct compat_rating er = { cl->esc->continuous_current_a,
+			cl->esc->burst_current_a, cl->esc->burst_s };
+		double esc_a = compat_rating_for(&er, PERF_FULL_THROTTLE_S);
 		k = feasibility_add_check(o, "ESC current at full throttle", "A",
-		    full->motor_current_a, c->esc_current_a, true);
+		    full->motor_current_a, esc_a, true);
 		if (k && !k->pass) {
 			feasibility_fix(r, f1, "An ESC rated above %.0f A continuous", full->motor_current_a);
 			feasibility_fix(r, f2, "Remove locks.esc_part to let the search choose");
 			fx[2] = NULL;
 			if (!r->terse)
 				snprintf(msg, sizeof msg, "Each motor draws %.1f A at full "
-				    "throttle, above the ESC's %.0f A continuous rating.",
-				    full->motor_current_a, c->esc_current_a);
+				    "throttle, above the ESC's %.0f A rating for a %.0f s "
+				    "burst.", full->motor_current_a, esc_a,
+				    PERF_FULL_THROTTLE_S);
 			violate(r, k, "parts", "ESC_CURRENT", fx, msg);
 			fx[2] = f3;
 		}
