@@ -724,6 +724,13 @@ assert_components_are_the_bill(const struct solve_result *r, const char *json,
 			for (int k = 0; kinds[k] != NULL; k++)
 				known = known || strcmp(a->kind, kinds[k]) == 0;
 		}
+		/* The counter-rotating blades under the maker's own CCW part
+		 * number are the propeller component's other half. */
+		if (strcmp(cat_name, "propeller") == 0) {
+			const struct catalog_prop *pr = catalog_find_prop(cat, b->catalogue_id);
+			if (pr != NULL && strcmp(b->part_number, pr->part_number_ccw) == 0)
+				continue;
+		}
 		if (!known)
 			continue;
 		bool found = false;

@@ -597,7 +597,7 @@ static const struct edit_case rule_cases[] = {
 	  "DIR/propellers.json:4:188: error: propellers[0].price_date: inconsistent values: "
 	  "null while price_usd is given (a price is dated, and a date needs a price)\n" },
 	{ "escs.json", "\"price_date\": null", "\"price_date\": \"2024\"",
-	  "DIR/escs.json:4:85: error: escs[0].price_date: inconsistent values: given while "
+	  "DIR/escs.json:4:107: error: escs[0].price_date: inconsistent values: given while "
 	  "price_usd is null (a price is dated, and a date needs a price)\n" },
 	{ "propellers.json", "\"2024-01\"", "\"2024-13\"",
 	  "DIR/propellers.json:4:188: error: propellers[0].price_date: invalid date "
@@ -624,6 +624,20 @@ static const struct edit_case rule_cases[] = {
 	{ "motors.json", "\"max_current_basis\": \"peak_180s\"", "\"max_current_basis\": \"peak\"",
 	  "DIR/motors.json:3:84: error: motors[0].max_current_basis: unknown value \"peak\" "
 	  "(allowed: continuous, peak_180s, peak_60s, peak_30s, peak_10s, peak_unspecified)\n" },
+	/* A board that carries a video transmitter names its system; a
+	 * board's `carries` names avionics kinds only. */
+	{ "escs.json", "\"carries\": null", "\"carries\": \"flight_controller,video_tx\"",
+	  "DIR/escs.json:4:92: error: escs[0].video_system: inconsistent values: null for "
+	  "a board that carries a video transmitter (a camera works only with a transmitter "
+	  "of its own system)\n" },
+	{ "escs.json", "\"video_system\": null", "\"video_system\": \"analog\"",
+	  "DIR/escs.json:4:68: error: escs[0].video_system: inconsistent values: given, "
+	  "but only a board that carries a video transmitter has one\n" },
+	{ "escs.json", "\"carries\": null", "\"carries\": \"flight_controller,reciever\"",
+	  "DIR/escs.json:4:46: error: escs[0].carries: unknown value \"reciever\" in the list "
+	  "(allowed: flight_controller, gnss, receiver, telemetry, power_module, pdb, bec, "
+	  "connector, series_lead, video_tx, camera_fpv, gimbal_camera, companion_computer, "
+	  "lidar, remote_id, joined by commas)\n" },
 	{ "escs.json", "\"channels\": 4", "\"channels\": 0",
 	  "DIR/escs.json:4:32: error: escs[0].channels: out of range: 0 (allowed 1 to 1000)\n" },
 	{ "motors.json", "\"kv_rpm_per_v\": 340", "\"kv_rpm_per_v\": 1e300",

@@ -1,10 +1,10 @@
 /* test_parts.c — the parts search's own rules: which current a motor's
  * rating bounds (its max_current_basis), an integrated system's published
- * thrust, the doubt screen, the connector and frame-kit choices of
- * parts/kit.c, the price line of the bill of materials, and whole solves:
- * frame kit and avionics on the BOM with their prices and dates, and the
- * agricultural example closing on real parts.  Runs from the repository
- * root. */
+ * thrust, the doubt screen, the avionics and frame-kit choices of
+ * parts/kit.c (its compatibility rules: test_kit.c), the price line of
+ * the bill of materials, and whole solves: frame kit and avionics on the
+ * BOM with their prices and dates, and the agricultural example closing
+ * on real parts.  Runs from the repository root. */
 #include "test_util.h"
 
 #include <sys/stat.h>
@@ -197,6 +197,8 @@ avionics_catalog(void)
 	return c;
 }
 
+/* The kit of a 12S aircraft lighter than Remote ID asks for, carrying
+ * sustained_a and twice that at full throttle. */
 static void
 kit_pick(struct kit_fixture *f, double sustained_a, int series, int parallel,
          struct parts_kit *kit)
@@ -208,95 +210,9 @@ kit_pick(struct kit_fixture *f, double sustained_a, int series, int parallel,
 	memset(&pk, 0, sizeof pk);
 	pk.series = series;
 	pk.parallel = parallel;
-	parts_kit_pick(&f->x, &o, &pk, NULL, sustained_a, kit);
-}
-
-static void
-connector_should_be_the_smallest_rating_that_carries_each_pack(void **state)
-{
-	(void)state;
-	struct kit_fixture f;
-	kit_fixture(&f, AF_ENTERPRISE_RUGGED, 1.0, 4, avionics_catalog());
-	struct parts_kit kit;
-	/* 25 A: the XT60 would do, but has no published mass. */
-	kit_pick(&f, 25.0, 1, 1, &kit);
-	assert_string_equal(kit.connector->id, "t-xt90");
-	assert_int_equal(kit.n_connectors, 1);
-	assert_rel(kit.connector_kg, 0.028, 1e-12);
-	/* 240 A over two packs in parallel: 120 A each, AS150; 3 in series x 2
-	 * in parallel: a pair per pack. */
-	kit_pick(&f, 240.0, 3, 2, &kit);
-	assert_string_equal(kit.connector->id, "t-as150");
-	assert_int_equal(kit.n_connectors, 6);
-	assert_rel(kit.connector_kg, 6 * 0.024, 1e-12);
-	/* 400 A on one pack: three AS150 pairs in parallel. */
-	kit_pick(&f, 400.0, 1, 1, &kit);
-	assert_string_equal(kit.connector->id, "t-as150");
-	assert_int_equal(kit.n_connectors, 3);
-	/* Beyond four pairs: none, said so (no line, no mass). */
-	kit_pick(&f, 700.0, 1, 1, &kit);
-	assert_null(kit.connector);
-	assert_true(kit.connector_kg == 0.0);
-	parts_kit_free(&f.x);
-	catalog_free(f.cat);
-}
-
-/* A pack mates only with its own plug's family: that pair is chosen when
- * the catalogue has it with a mass and it carries the pack's current; else
- * the plug is re-terminated to the smallest rating that carries it, as for
- * a pack that names no plug. */
-static void
-connector_should_mate_with_the_packs_own_plug(void **state)
-{
-	(void)state;
-	struct catalog_avionics *a = xcalloc(5, sizeof *a);
-	a[0] = avionics("t-xt30", "connector", 3.0, 15.0, "XT30 pair");
-	a[0].part_number = "XT30 (mated pair)";
-	a[1] = avionics("t-xt60", "connector", 0.0, 30.0, "XT60 pair");
-	a[1].part_number = "XT60 (mated pair)";                 /* no mass */
-	a[2] = avionics("t-xt90", "connector", 28.0, 90.0, "XT90 pair");
-	a[2].part_number = "XT90 (mated pair)";
-	a[3] = avionics("t-xt90s", "connector", 30.0, 90.0, "XT90 anti-spark");
-	a[3].part_number = "XT90-S (mated pair, anti-spark)";
-	a[4] = avionics("t-as150", "connector", 24.0, 150.0, "AS150 pair");
-	a[4].part_number = "AS150 (mated pair, anti-spark)";
-	struct catalog *c = catalog_alloc();
-	catalog_adopt(c, CATALOG_AVIONICS, a, 5);
-	catalog_finish(c);
-	struct kit_fixture f;
-	kit_fixture(&f, AF_ENTERPRISE_RUGGED, 1.0, 4, c);
-	struct parts_option o;
-	memset(&o, 0, sizeof o);
-	o.cells = 6;
-	struct catalog_battery b;
-	memset(&b, 0, sizeof b);
-	struct parts_pack pk;
-	memset(&pk, 0, sizeof pk);
-	pk.b = &b;
-	pk.series = 1;
-	pk.parallel = 2;
-	struct parts_kit kit;
-	const struct { const char *plug; double amps; const char *want; bool mates; } t[] = {
-		{ "XT30", 30.0, "t-xt30", true },    /* 15 A a pack on its own 15 A plug */
-		{ "XT30", 50.0, "t-xt90", false },   /* 25 A: re-terminated to the XT90 */
-		{ "xt90", 20.0, "t-xt90", true },    /* the XT30 would carry it, but does not mate */
-		{ "XT90S", 20.0, "t-xt90s", true },  /* "XT90-S" is the same family */
-		{ "AS150/XT150", 20.0, "t-as150", true },
-		/* 10 A a pack: the smallest rating that carries it. */
-		{ "XT60", 20.0, "t-xt30", false },   /* its own family has no mass */
-		{ "smart", 20.0, "t-xt30", false },
-		{ "", 20.0, "t-xt30", false },
-	};
-	for (size_t i = 0; i < sizeof t / sizeof t[0]; i++) {
-		b.connector = t[i].plug;
-		parts_kit_pick(&f.x, &o, &pk, NULL, t[i].amps, &kit);
-		assert_non_null(kit.connector);
-		assert_string_equal(kit.connector->id, t[i].want);
-		assert_int_equal(kit.connector_mates, t[i].mates);
-		assert_int_equal(kit.n_connectors, 2);
-	}
-	parts_kit_free(&f.x);
-	catalog_free(f.cat);
+	struct parts_load load = { sustained_a, 2.0 * sustained_a, 0.5 * sustained_a,
+		0.2 };
+	parts_kit_pick(&f->x, &o, &pk, NULL, &load, kit);
 }
 
 static void
@@ -314,12 +230,16 @@ avionics_should_meet_the_class_need_and_keep_allowances_for_the_rest(void **stat
 	assert_int_equal(kit.n_part, 2);
 	assert_string_equal(kit.part[0]->id, "t-fc-dual");
 	assert_string_equal(kit.part[1]->id, "t-rx");
-	assert_int_equal(kit.n_allowance, 4);
+	assert_int_equal(kit.n_allowance, 5);
 	double allowances = 0.0;
-	for (int i = 0; i < kit.n_allowance; i++)
+	for (int i = 0; i < kit.n_allowance - 1; i++)
 		allowances += kit.allowance_kg[i];
 	assert_rel(allowances, 0.080 + 0.090 + 0.050 + 0.060, 1e-12);
-	assert_rel(kit.avionics_kg, 0.0392 + 0.0014 + allowances, 1e-12);
+	/* The antennas, last: a share of the rest. */
+	assert_string_equal(kit.allowance_what[4], "Antennas");
+	double rest = 0.0392 + 0.0014 + allowances;
+	assert_rel(kit.allowance_kg[4], 0.10 * rest, 1e-12);
+	assert_rel(kit.avionics_kg, 1.10 * rest, 1e-12);
 	/* Consumer: any flight controller, the lightest (not the AIO). */
 	f.spec.airframe_class = AF_CONSUMER_FOLDING;
 	kit_pick(&f, 20.0, 1, 1, &kit);
@@ -346,9 +266,11 @@ avionics_should_not_buy_twice_what_the_esc_board_carries(void **state)
 	struct catalog_esc aio;
 	memset(&aio, 0, sizeof aio);
 	aio.carries = "flight_controller,receiver";
+	aio.channels = 4;
 	struct parts_kit bare, kit;
-	parts_kit_pick(&f.x, &o, &pk, NULL, 10.0, &bare);
-	parts_kit_pick(&f.x, &o, &pk, &aio, 10.0, &kit);
+	struct parts_load load = { 10.0, 20.0, 5.0, 0.2 };
+	parts_kit_pick(&f.x, &o, &pk, NULL, &load, &bare);
+	parts_kit_pick(&f.x, &o, &pk, &aio, &load, &kit);
 	/* Micro: the light FC and the receiver as parts, the VTX and camera
 	 * as allowances; on the AIO only the allowances stay. */
 	assert_int_equal(bare.n_part, 2);
@@ -356,17 +278,23 @@ avionics_should_not_buy_twice_what_the_esc_board_carries(void **state)
 	assert_int_equal(kit.n_part, 0);
 	assert_int_equal(kit.n_on_esc, 2);
 	assert_int_equal(kit.n_allowance, bare.n_allowance);
-	assert_rel(kit.avionics_kg, bare.avionics_kg - 0.0080 - 0.0014, 1e-12);
+	/* The parts and their share of the antennas stay off the kit. */
+	assert_rel(kit.avionics_kg, bare.avionics_kg - 1.10 * (0.0080 + 0.0014),
+	    1e-12);
 	/* "receiver" is matched as a whole kind, not inside another word. */
 	aio.carries = "flight_controller,receivers";
-	parts_kit_pick(&f.x, &o, &pk, &aio, 10.0, &kit);
+	parts_kit_pick(&f.x, &o, &pk, &aio, &load, &kit);
 	assert_int_equal(kit.n_on_esc, 1);
-	/* Enterprise needs a redundant flight controller: bought apart. */
+	/* Enterprise needs a redundant flight controller: bought apart (and
+	 * the ESC pick does not take such a board there: test_kit.c). */
 	f.spec.airframe_class = AF_ENTERPRISE_RUGGED;
 	aio.carries = "flight_controller";
-	parts_kit_pick(&f.x, &o, &pk, &aio, 10.0, &kit);
+	parts_kit_pick(&f.x, &o, &pk, &aio, &load, &kit);
 	assert_int_equal(kit.n_on_esc, 0);
 	assert_string_equal(kit.part[0]->id, "t-fc-dual");
+	assert_false(parts_kit_takes_board_fc(&f.x));
+	f.spec.airframe_class = AF_MICRO_AIO;
+	assert_true(parts_kit_takes_board_fc(&f.x));
 	parts_kit_free(&f.x);
 	catalog_free(f.cat);
 }
@@ -554,7 +482,9 @@ bom_should_order_the_frame_kit_and_avionics_with_prices_and_dates(void **state)
 	snprintf(mission, sizeof mission, "%s/quad.json", dir);
 	FILE *m = fopen(mission, "w");
 	assert_non_null(m);
-	fputs("{\"payload_kg\": 0.3, \"max_diameter_m\": 0.47, \"num_rotors\": 4,"
+	/* The kit's own 450 mm wheelbase: the propeller the mission's
+	 * wheelbase admits then fits the kit's overlap limit too. */
+	fputs("{\"payload_kg\": 0.3, \"max_diameter_m\": 0.45, \"num_rotors\": 4,"
 	    " \"airframe_class\": \"ConsumerFolding\", \"t_hover_s\": 600}\n", m);
 	assert_int_equal(fclose(m), 0);
 	struct solve_result *r = xcalloc(1, sizeof *r);
@@ -771,8 +701,6 @@ main(void)
 		cmocka_unit_test(limits_should_name_a_peak_rating_and_an_unknown_duration),
 		cmocka_unit_test(published_thrust_should_scale_with_density_and_the_bus_squared),
 		cmocka_unit_test(doubt_should_refuse_an_uncertain_number_the_search_sizes_on),
-		cmocka_unit_test(connector_should_be_the_smallest_rating_that_carries_each_pack),
-		cmocka_unit_test(connector_should_mate_with_the_packs_own_plug),
 		cmocka_unit_test(avionics_should_meet_the_class_need_and_keep_allowances_for_the_rest),
 		cmocka_unit_test(avionics_should_not_buy_twice_what_the_esc_board_carries),
 		cmocka_unit_test(frame_kit_should_fit_rotors_wheelbase_class_and_propeller),

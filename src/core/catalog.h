@@ -112,6 +112,9 @@ struct catalog_esc {
 	const char *carries;       /* avionics kinds on the board besides the
 	                              ESCs, comma-separated ("flight_controller,
 	                              receiver" on an all-in-one board), "" */
+	const char *video_system;  /* the video system of the transmitter it
+	                              carries ("analog", ...: data/catalog/
+	                              README.md), "" when it carries none */
 };
 
 struct catalog_frame {
@@ -133,8 +136,20 @@ struct catalog_avionics {
 	const char *kind;          /* "flight_controller", "gnss", ... (needed) */
 	double mass_kg;            /* one unit (needed) */
 	int cells_min, cells_max;  /* supply range in series cells; 0 unknown */
-	double max_current_a;      /* its current rating; 0 unknown */
+	double max_current_a;      /* its continuous current rating; 0 unknown */
+	double burst_current_a;    /* its burst rating; 0 none published */
+	double burst_s;            /* how long the burst rating holds; 0 not
+	                              published (then it holds for no burst the
+	                              parts search asks of it) */
 	double power_w;            /* typical draw; 0 unknown */
+	const char *video_system;  /* a camera's or video transmitter's system
+	                              ("analog", "walksnail", ...: a camera and
+	                              a transmitter work together only on the
+	                              same one), "" for other kinds */
+	const char *carries;       /* kinds it does besides its own, comma-
+	                              separated ("camera_fpv" on an air unit
+	                              with its camera, "remote_id" on a part
+	                              that broadcasts Remote ID), "" */
 	const char *description;   /* one plain phrase (needed) */
 };
 

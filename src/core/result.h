@@ -25,7 +25,7 @@
 #define RES_MAX_CANDIDATES 512  /* motors scored for the crosshair figure */
 #define RES_ID_MAX         128  /* a catalogue id, NUL included (CATALOG_ID_MAX) */
 #define RES_TEXT           256
-#define RES_BASIS          72   /* what sets a check's limit, "2 × XT60, 60 A" */
+#define RES_BASIS          96   /* what sets a check's limit, "2 × XT60, 60 A" */
 
 /* Mission phases, in the order they are flown. */
 enum res_phase_id { PHASE_CLIMB, PHASE_FORWARD, PHASE_HOVER, PHASE_MAX };
@@ -302,6 +302,49 @@ struct res_run {
 	struct res_check checks[RES_MAX_CHECKS];
 };
 
+/* One element of the design of record's power path as the parts kit
+ * sized it (parts/kit.c, issue 33): its ratings, per unit, and the
+ * currents through one unit, for the checks and the report to compare.
+ * A rating of 0 is not published (an allowance, or a part without one). */
+struct res_power_rating {
+	bool present;             /* the aircraft has this element */
+	char what[96];            /* the part or the run: "XT60-M (male half,
+	                             harness side)", "2 x 8 AWG" */
+	int count;                /* units sharing the current in parallel
+	                             (pairs per pack x packs in parallel) */
+	double sized_for_a;       /* the full-throttle current through one unit
+	                             the kit was sized for */
+	double full_a;            /* the full-throttle current through one unit
+	                             as the record flies (its burst) */
+	double sustained_a;       /* the highest sustained mission current
+	                             through one unit */
+	double continuous_a;      /* one unit's continuous rating (a wire's
+	                             chassis-wiring ampacity) */
+	double burst_a;           /* one unit's burst rating; 0 none */
+	double burst_s;           /* how long that burst rating holds; 0 not
+	                             published */
+	double rated_full_a;      /* the rating that holds for the record's
+	                             full-throttle burst: the burst rating when
+	                             it holds at least burst_need_s, else the
+	                             continuous one (parts/compat.c) */
+};
+
+/* The power path, pack to motor.  Full throttle is a burst of
+ * burst_need_s; each element is rated per unit. */
+struct res_power_path {
+	double burst_need_s;      /* the full-throttle burst the ratings are
+	                             read for (PERF_FULL_THROTTLE_S) */
+	struct res_power_rating connector;    /* one per pack: the pack's share */
+	struct res_power_rating power_module; /* the whole current (absent on
+	                                         classes that buy none) */
+	struct res_power_rating harness_main; /* packs to distribution: the
+	                                         whole current */
+	struct res_power_rating harness_pack; /* each pack's lead: its share */
+	struct res_power_rating harness_arm;  /* each rotor's run along its
+	                                         arm: one motor's current */
+	struct res_power_rating esc;          /* one channel: one motor */
+};
+
 /* A catalogue part chosen by the optimizer. */
 struct res_part {
 	bool chosen;
@@ -414,6 +457,10 @@ struct solve_result {
 	struct res_part motor, prop, battery, esc;
 	int battery_series_packs;      /* catalogue packs in series */
 	int battery_parallel_packs;    /* catalogue packs in parallel */
+	struct res_power_path power_path; /* the design of record's connectors,
+	                                  power module, harness and ESC: ratings
+	                                  and currents (parts/bom.c fills it;
+	                                  the full-throttle checks read it) */
 	struct res_run closed;         /* custom run re-solved with real part masses */
 	int n_bom;
 	struct res_bom_line bom[RES_MAX_BOM];

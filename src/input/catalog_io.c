@@ -48,7 +48,12 @@ static const char *const current_bases[] = { "continuous", "peak_180s", "peak_60
 	"peak_30s", "peak_10s", "peak_unspecified", NULL };
 static const char *const avionics_kinds[] = { "flight_controller", "gnss", "receiver",
 	"telemetry", "power_module", "pdb", "bec", "connector", "series_lead", "video_tx",
-	"camera_fpv", "gimbal_camera", "companion_computer", "lidar", NULL };
+	"camera_fpv", "gimbal_camera", "companion_computer", "lidar", "remote_id", NULL };
+/* The video systems a camera and a transmitter may belong to; the parts
+ * search pairs a camera only with a transmitter of the same system
+ * (data/catalog/README.md says which parts are which). */
+static const char *const video_systems[] = { "analog", "dji_hd", "dji_o3",
+	"dji_o4", "walksnail", "walksnail_moonlight", "hdzero", NULL };
 
 bool
 catalog_io_required(enum catalog_category k)
@@ -177,6 +182,7 @@ static const struct field esc_fields[] = {
 	NUM(E, "mass_g", mass_kg, G_TO_KG, "g", true),
 	INT(E, "channels", channels, true),
 	TEXT(E, "carries", carries, false),
+	ENUM(E, "video_system", video_system, video_systems, false),
 };
 #undef E
 
@@ -204,7 +210,11 @@ static const struct field avionics_fields[] = {
 	INT(AV, "cells_min", cells_min, false),
 	INT(AV, "cells_max", cells_max, false),
 	NUM(AV, "max_current_a", max_current_a, 1, "A", false),
+	NUM(AV, "burst_current_a", burst_current_a, 1, "A", false),
+	NUM(AV, "burst_seconds", burst_s, 1, "s", false),
 	NUM(AV, "power_w", power_w, 1, "W", false),
+	ENUM(AV, "video_system", video_system, video_systems, false),
+	TEXT(AV, "carries", carries, false),
 	TEXT(AV, "description", description, true),
 };
 #undef AV
@@ -231,6 +241,7 @@ static const struct order esc_orders[] = {
 };
 static const struct order avionics_orders[] = {
 	{ "cells_min", "cells_max", "a range goes from low to high" },
+	{ "max_current_a", "burst_current_a", "a burst rating is at least the continuous one" },
 };
 
 struct category {
@@ -610,6 +621,66 @@ check_integrated(struct entry *e)
 	return !m->integrated || e->known[slot(e, "integrated_prop_in")];
 }
 
+/* The text of field key once it is known valid, else NULL. */
+static const char *
+known_text(const struct entry *e, const char *key)
+{
+	size_t k = slot(e, key);
+	return e->known[k] ? *(const char **)(e->base + categories[e->k].fields[k].off)
+	    : NULL;
+}
+
+/* Every item of a `carries` list is an avionics kind: the parts search
+ * reads it to buy nothing twice, so a misspelt kind would buy it again. */
+static void
+check_carries(struct entry *e)
+{
+	const char *list = known_text(e, "carries");
+	size_t k = slot(e, "carries");
+	char item[64], q[96], kinds[512];
+	for (const char *p = list; p != NULL && *p != '\0'; ) {
+		size_t n = strcspn(p, ",");
+		snprintf(item, sizeof item, "%.*s", (int)n, p);
+		if (!in_list(item, avionics_kinds)) {
+			text_join(avionics_kinds, kinds, sizeof kinds);
+			entry_report(e, DIAG_BAD_ENUM, &categories[e->k].fields[k], e->item[k],
+			             " %s in the list (allowed: %s, joined by commas)",
+			             quoted(item, q), kinds);
+			return;
+		}
+		p += n + (p[n] == ',');
+	}
+}
+
+/* A camera or video transmitter names its video system, and nothing else
+ * does; an ESC board names the system of the transmitter it carries.
+ * The parts search pairs a camera only with a transmitter of its own
+ * system, so a camera without one could be paired with anything. */
+static void
+check_video_system(struct entry *e)
+{
+	size_t v = slot(e, "video_system");
+	if (e->item[v] == NULL)
+		return;   /* missing: reported already */
+	bool want;
+	if (e->k == CATALOG_AVIONICS) {
+		const char *kind = known_text(e, "kind");
+		if (kind == NULL)
+			return;
+		want = strcmp(kind, "camera_fpv") == 0 || strcmp(kind, "video_tx") == 0;
+	} else {
+		want = catalog_list_names(known_text(e, "carries"), "video_tx");
+	}
+	bool has = !cJSON_IsNull(e->item[v]);
+	if (has == want)
+		return;
+	const char *what = e->k == CATALOG_AVIONICS ? "a camera or video transmitter"
+	    : "a board that carries a video transmitter";
+	entry_report(e, DIAG_INCONSISTENT, &categories[e->k].fields[v], e->item[v],
+	             has ? ": given, but only %s has one" : ": null for %s (a camera "
+	             "works only with a transmitter of its own system)", what);
+}
+
 static void
 check_rules(struct entry *e)
 {
@@ -620,6 +691,14 @@ check_rules(struct entry *e)
 		check_iff(e, "cp_static", "ct_static", "the static coefficients come as a pair");
 		check_iff(e, "coeff_source", "ct_static", "the coefficients name their source");
 	}
+	if (e->k == CATALOG_AVIONICS || e->k == CATALOG_ESC) {
+		check_carries(e);
+		check_video_system(e);
+	}
+	if (e->k == CATALOG_AVIONICS && e->item[slot(e, "burst_seconds")] != NULL
+	    && !cJSON_IsNull(e->item[slot(e, "burst_seconds")]))
+		check_iff(e, "burst_seconds", "burst_current_a",
+		          "a duration belongs to a burst rating");
 }
 
 /* ---- one entry ------------------------------------------------------------ */

@@ -7,6 +7,7 @@
 #include <strings.h>
 
 #include "parts/parts_int.h"
+#include "sizing/perf.h"
 #include "util/strbuf.h"
 #include "util/units.h"
 
@@ -228,6 +229,90 @@ bom_custom(struct solve_result *r, int qty, const char *part_number,
 		    total_kg / (double)qty, 0.0, "");
 }
 
+/* The battery connectors' line: the part number names the connector, the
+ * description says how it meets the pack and what each pack carries. */
+static void
+bom_connector(const struct parts_closed *c, struct solve_result *r)
+{
+	const struct parts_kit *kit = &c->kit;
+	const struct res_run *o = &r->closed;
+	if (kit->connector == NULL)
+		return;
+	const char *plug = c->pack.b->connector;
+	double share = 1.0 / (double)c->pack.parallel;
+	char carries[80], d[256];
+	snprintf(carries, sizeof carries, "%.0f A sustained, %.0f A at full "
+	    "throttle", kit->load.sustained_a * share, o->peak_current_a * share);
+	if (kit->connector_mates)
+		snprintf(d, sizeof d, "1 per pack, the mate of its %s plug; each pack "
+		    "%s", plug, carries);
+	else if (kit->plug != NULL)
+		snprintf(d, sizeof d, "1 per pack, fitted in place of its %s plug, "
+		    "whose mate the catalogue cannot weigh; each pack %s", plug,
+		    carries);
+	else if (strcasecmp(plug, "smart") == 0)
+		snprintf(d, sizeof d, "1 per pack, joining the harness to the smart "
+		    "pack's own lead; each pack %s", carries);
+	else
+		snprintf(d, sizeof d, "1 per pack, fitted to it (its plug is not "
+		    "published); each pack %s", carries);
+	bom_catalogue(r, kit->n_connectors, "connector", kit->connector->id,
+	    kit->connector->manufacturer, kit->connector->part_number, d,
+	    kit->connector->mass_kg, kit->connector->price_usd,
+	    kit->connector->price_date, kit->connector->source);
+}
+
+/* One harness run in words: "main lead 8 AWG, 55 mm". */
+static void
+run_text(const char *name, const struct parts_run *run, char *buf, size_t n)
+{
+	if (run->awg == NULL)
+		return;
+	append(buf, n, "%s%s", buf[0] != '\0' && buf[strlen(buf) - 1] != ' '
+	    ? "; " : "", name);
+	if (run->n_runs > 1)
+		append(buf, n, " x%d", run->n_runs);
+	append(buf, n, " %s AWG", run->awg);
+	if (run->parallel > 1)
+		append(buf, n, " x%d", run->parallel);
+	append(buf, n, ", %.0f mm", run->length_m * 1000.0);
+}
+
+/* The power harness line's description (harness.c sizes it). */
+static void
+harness_text(const struct parts_kit *kit, char *d, size_t n)
+{
+	snprintf(d, n, "Copper for %.0f A at full throttle (chassis-wiring "
+	    "ampacity): ", kit->load.full_a);
+	run_text("main lead", &kit->harness_main, d, n);
+	run_text("pack leads", &kit->harness_pack, d, n);
+	run_text("arm runs", &kit->harness_arm, d, n);
+}
+
+/* The role's hardware line: what the role carries besides its payload,
+ * less what the class's items supply (the agricultural pump). */
+static void
+role_line(const struct parts_ctx *x, const struct parts_kit *kit,
+          double role_kg, struct solve_result *r)
+{
+	static const char *const words[ROLE_MAX] = {
+		[ROLE_IMAGING] = "gimbal mount and dampers",
+		[ROLE_DELIVERY] = "release mechanism and payload mounts",
+		[ROLE_AGRICULTURE] = "tank mounts, plumbing, booms and nozzles",
+		[ROLE_INSPECTION] = "payload mounts",
+		[ROLE_MAPPING] = "payload mounts",
+	};
+	int role = x->spec->payload_role.type;
+	const char *what = role >= 0 && role < ROLE_MAX && words[role] != NULL
+	    ? words[role] : "payload mounts";
+	char d[160];
+	snprintf(d, sizeof d, "Role hardware: %s (the role's allowance%s%s%s)",
+	    what, kit->role_supplied_what != NULL ? ", less the " : "",
+	    kit->role_supplied_what != NULL ? kit->role_supplied_what : "",
+	    kit->role_supplied_what != NULL ? " listed apart" : "");
+	bom_custom(r, 1, "Role hardware", d, role_kg);
+}
+
 /* The bill of materials: catalogue parts (propellers in their two turning
  * directions), the sized custom parts, then the payload the customer
  * furnishes.  The parts sum, with the payload, to the takeoff mass of
@@ -265,49 +350,26 @@ fill_bom(const struct parts_ctx *x, const struct parts_closed *c,
 	}
 	bom_part(r, &r->esc, r->esc.qty, "esc", r->esc.part_number, "");
 	const struct parts_kit *kit = &c->kit;
-	double harness_kg = m->wiring_kg - kit->connector_kg;
-	if (kit->connector != NULL) {
-		/* The part number names the connector; the line says how it
-		 * meets the pack and what it carries. */
-		/* A smart pack's plug is its maker's own, not re-terminated. */
-		const char *plug = strcasecmp(c->pack.b->connector, "smart") == 0
-		    ? "" : c->pack.b->connector;
-		int per_pack = kit->n_connectors / (c->pack.series * c->pack.parallel);
-		double each_a = kit->sized_for_a / (double)c->pack.parallel;
-		if (kit->connector_mates)
-			snprintf(d, sizeof d, "%d per pack, mating the pack's %s plug; "
-			    "%.0f A per pack through the mission", per_pack, plug, each_a);
-		else if (plug[0] != '\0')
-			snprintf(d, sizeof d, "%d per pack for the %.0f A each pack "
-			    "carries through the mission; the pack's %s plug is "
-			    "re-terminated to it", per_pack, each_a, plug);
-		else
-			snprintf(d, sizeof d, "%d per pack for the %.0f A each pack "
-			    "carries through the mission", per_pack, each_a);
-		bom_catalogue(r, kit->n_connectors, "connector",
-		    kit->connector->id,
-		    kit->connector->manufacturer, kit->connector->part_number, d,
-		    kit->connector->mass_kg, kit->connector->price_usd,
-		    kit->connector->price_date, kit->connector->source);
-	}
+	bom_connector(c, r);
 	/* The leads that wire the packs into the bus: banks of packs in
-	 * parallel, joined in series. */
+	 * parallel, joined in series; their copper is the harness's pack
+	 * leads (harness.c). */
 	if (c->pack.series > 1 && c->pack.parallel > 1) {
 		snprintf(d, sizeof d, "Series-parallel lead: %d banks of %d packs in "
-		    "parallel, joined in series into %dS, rated for %.0f A (its "
-		    "mass is in the power harness)", c->pack.series,
+		    "parallel, joined in series into %dS, for %.0f A at full "
+		    "throttle (its copper is in the power harness)", c->pack.series,
 		    c->pack.parallel, c->o.cells, o->peak_current_a);
 		bom_add(r, 1, "custom", "custom", "Series-parallel lead", d, 0.0,
 		    0.0, "");
 	} else if (c->pack.series > 1) {
-		snprintf(d, sizeof d, "Series lead joining %d packs into %dS, rated "
-		    "for %.0f A (its mass is in the power harness)", c->pack.series,
-		    c->o.cells, o->peak_current_a);
+		snprintf(d, sizeof d, "Series lead joining %d packs into %dS, for "
+		    "%.0f A at full throttle (its copper is in the power harness)",
+		    c->pack.series, c->o.cells, o->peak_current_a);
 		bom_add(r, 1, "custom", "custom", "Series lead", d, 0.0, 0.0, "");
 	} else if (c->pack.parallel > 1) {
-		snprintf(d, sizeof d, "Parallel lead joining %d packs, rated for "
-		    "%.0f A (its mass is in the power harness)", c->pack.parallel,
-		    o->peak_current_a);
+		snprintf(d, sizeof d, "Parallel lead joining %d packs, for %.0f A at "
+		    "full throttle (its copper is in the power harness)",
+		    c->pack.parallel, o->peak_current_a);
 		bom_add(r, 1, "custom", "custom", "Parallel lead", d, 0.0, 0.0, "");
 	}
 	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
@@ -327,11 +389,17 @@ fill_bom(const struct parts_ctx *x, const struct parts_closed *c,
 		bom_custom(r, 1, "Centre frame", "Centre plates and spar joints",
 		    m->frame_kg);
 	}
+	double screws_kg = parts_kit_fastener_kg(kit);
 	bom_custom(r, 1, "Body and landing gear", "Body shell, landing gear and mounts",
-	    m->other_kg);
-	snprintf(d, sizeof d, "Power harness for %.0f A peak: wiring and "
-	    "distribution", o->peak_current_a);
-	bom_custom(r, 1, "Power harness", d, harness_kg);
+	    m->other_kg - screws_kg);
+	int n_screws = parts_kit_screws(kit);
+	snprintf(d, sizeof d, "Steel socket-head cap screws %s, DIN 912: %d a motor"
+	    "%s (count and size an estimate)", kit->fastener_size,
+	    kit->n_motor_screws / (p->n_rotors > 0 ? p->n_rotors : 1),
+	    kit->frame != NULL ? "" : ", 4 an arm");
+	bom_custom(r, n_screws > 0 ? n_screws : 1, "Fasteners", d, screws_kg);
+	harness_text(kit, d, sizeof d);
+	bom_custom(r, 1, "Power harness", d, m->wiring_kg - kit->connector_kg);
 	for (int i = 0; i < kit->n_part; i++) {
 		const struct catalog_avionics *a = kit->part[i];
 		bom_catalogue(r, 1, "avionics", a->id, a->manufacturer,
@@ -339,12 +407,19 @@ fill_bom(const struct parts_ctx *x, const struct parts_closed *c,
 		    a->price_date, a->source);
 	}
 	for (int i = 0; i < kit->n_allowance; i++) {
-		snprintf(d, sizeof d, "%s: allowance of the airframe class (no "
-		    "catalogue part)", kit->allowance_what[i]);
+		if (kit->allowance_basis[i] != NULL)
+			snprintf(d, sizeof d, "%s: allowance, %s", kit->allowance_what[i],
+			    kit->allowance_basis[i]);
+		else
+			snprintf(d, sizeof d, "%s: allowance of the airframe class (no "
+			    "catalogue part)", kit->allowance_what[i]);
 		bom_custom(r, 1, kit->allowance_what[i], d, kit->allowance_kg[i]);
 	}
-	bom_custom(r, 1, "Role hardware", "Payload mounts and role equipment "
-	    "(release, pump, gimbal)", m->role_aux_kg);
+	if (kit->remote_id_missing)
+		bom_add(r, 1, "custom", "custom", "Remote ID module", "Required (EU "
+		    "class C1 and up, US Part 89: 250 g and more); no catalogue "
+		    "module fits: choose one and add its mass", 0.0, 0.0, "");
+	role_line(x, kit, m->role_aux_kg, r);
 	r->bom_mass_kg = 0.0;
 	r->bom_price_usd = 0.0;
 	r->bom_priced_lines = 0;
@@ -360,12 +435,98 @@ fill_bom(const struct parts_ctx *x, const struct parts_closed *c,
 		    0.0, "");
 }
 
+/* One rated element of the power path: its ratings and what one unit
+ * carries (the record's flown currents, over `count` units sharing). */
+static void
+rate(struct res_power_rating *e, const char *what, int count,
+     const struct compat_rating *r, double sized_for_a, double full_a,
+     double sustained_a)
+{
+	memset(e, 0, sizeof *e);
+	e->present = true;
+	str_copy(e->what, sizeof e->what, what);
+	e->count = count > 0 ? count : 1;
+	e->sized_for_a = sized_for_a;
+	e->full_a = full_a;
+	e->sustained_a = sustained_a;
+	e->continuous_a = r->continuous_a;
+	e->burst_a = r->burst_a;
+	e->burst_s = r->burst_s;
+	e->rated_full_a = compat_rating_for(r, PERF_FULL_THROTTLE_S);
+}
+
+/* A harness run as a rated element: a conductor's chassis-wiring
+ * ampacity, no burst rating. */
+static void
+rate_run(struct res_power_rating *e, const struct parts_run *run,
+         double full_a, double sustained_a)
+{
+	char what[64];
+	if (run->awg == NULL) {
+		memset(e, 0, sizeof *e);
+		return;
+	}
+	snprintf(what, sizeof what, "%d x %s AWG copper, %.0f mm", run->parallel,
+	    run->awg, run->length_m * 1000.0);
+	struct compat_rating r = { run->ampacity_a, 0.0, 0.0 };
+	rate(e, what, run->n_runs, &r, run->current_a, full_a, sustained_a);
+}
+
+/* r->power_path from the record's kit and its flown currents. */
+static void
+fill_power_path(const struct parts_ctx *x, const struct parts_closed *c,
+                struct solve_result *r)
+{
+	const struct parts_kit *kit = &c->kit;
+	const struct res_run *o = &r->closed;
+	const struct res_op *full = &o->perf.op[OP_FULL];
+	struct res_power_path *pp = &r->power_path;
+	memset(pp, 0, sizeof *pp);
+	pp->burst_need_s = PERF_FULL_THROTTLE_S;
+	double sustained = kit->load.sustained_a, q = (double)c->pack.parallel;
+	double motor_sustained = o->perf.sustained_motor_current_a;
+	if (kit->connector != NULL) {
+		/* The plug that bounds the pack: its own family's row when the
+		 * pair bought is another. */
+		const struct catalog_avionics *a = kit->plug != NULL
+		    && kit->plug->max_current_a > 0.0 ? kit->plug : kit->connector;
+		struct compat_rating cr = { a->max_current_a, a->burst_current_a,
+			a->burst_s };
+		rate(&pp->connector, a->part_number, kit->n_connectors, &cr,
+		    kit->load.full_a / q, o->peak_current_a / q, sustained / q);
+	}
+	if (kit->power_module_item) {
+		struct compat_rating pr = { 0.0, 0.0, 0.0 };
+		const char *what = "Power distribution (allowance, no rated catalogue part)";
+		if (kit->power_module != NULL) {
+			pr.continuous_a = kit->power_module->max_current_a;
+			pr.burst_a = kit->power_module->burst_current_a;
+			pr.burst_s = kit->power_module->burst_s;
+			what = kit->power_module->part_number;
+		}
+		rate(&pp->power_module, what, 1, &pr, kit->load.full_a,
+		    o->peak_current_a, sustained);
+	}
+	rate_run(&pp->harness_main, &kit->harness_main, o->peak_current_a, sustained);
+	rate_run(&pp->harness_pack, &kit->harness_pack, o->peak_current_a / q,
+	    sustained / q);
+	rate_run(&pp->harness_arm, &kit->harness_arm, full->motor_current_a,
+	    motor_sustained);
+	if (c->esc != NULL) {
+		struct compat_rating er = { c->esc->continuous_current_a,
+			c->esc->burst_current_a, c->esc->burst_s };
+		rate(&pp->esc, c->esc->part_number, x->p->n_rotors, &er,
+		    kit->load.motor_full_a, full->motor_current_a, motor_sustained);
+	}
+}
+
 void
 parts_fill(const struct parts_ctx *x, const struct parts_closed *c,
            struct solve_result *r)
 {
 	fill_parts(x, c, r);
 	fill_bom(x, c, r);
+	fill_power_path(x, c, r);
 }
 
 void
@@ -426,10 +587,11 @@ parts_explain(const struct parts_ctx *x, const struct parts_closed *c,
 	    "allowances of the airframe class for what the catalogue does not "
 	    "sell (%.0f g).", kit->n_part, parts_g, kit->n_allowance, allow_g);
 	if (kit->connector != NULL)
-		res_rationale(r, "Battery connectors: %d x %s, one per pack for the "
-		    "%.0f A each pack carries through the mission (%.0f g).",
-		    kit->n_connectors, kit->connector->id,
-		    kit->sized_for_a / (double)c->pack.parallel,
+		res_rationale(r, "Battery connectors: %d x %s %s, one per pack for "
+		    "the %.0f A each pack carries at full throttle (%.0f g).",
+		    kit->n_connectors, kit->connector->manufacturer,
+		    kit->connector->part_number,
+		    o->peak_current_a / (double)c->pack.parallel,
 		    kit->connector_kg * 1000.0);
 	if (o->thrust_to_weight * o->mass.total_kg
 	    < x->aim.tw_required * (o->mass.total_kg + x->aim.extra_payload_kg))

@@ -147,12 +147,6 @@ parts_packs_for(const struct parts_ctx *x, const struct parts_option *o, int *n)
 
 /* ---- ESC ------------------------------------------------------------------ */
 
-static int
-esc_max_cells(const struct catalog_esc *e)
-{
-	return e->cells_max > 0 ? e->cells_max : PARTS_UNRATED_ESC_CELLS;
-}
-
 bool
 parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
                const struct catalog_esc **esc, int *n)
@@ -162,7 +156,10 @@ parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
 	*n = 0;
 	if (o->motor->integrated)
 		return true;
-	double need_a = PARTS_CURRENT_MARGIN * o->full_current_a;
+	/* One motor's currents: the ranking's hover, and full throttle. */
+	double hover_a = o->hover_power_w / ((double)o->cells * x->p->chem->v_nom
+	    * (double)p->n_rotors);
+	bool takes_fc = parts_kit_takes_board_fc(x);
 	double best_kg = INFINITY;
 	for (size_t i = 0; i < catalog_n_escs(x->cat); i++) {
 		const struct catalog_esc *e = catalog_esc(x->cat, i);
@@ -173,9 +170,10 @@ parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
 		if (!locked && (screen_esc(e, why, sizeof why) != NULL
 		    || screen_doubt_esc(e, why, sizeof why) != NULL))
 			continue;
-		if (!locked && (e->continuous_current_a < need_a
-		    || o->cells > esc_max_cells(e)
-		    || (e->cells_min > 0 && o->cells < e->cells_min)))
+		/* The ESC class against the motor and the bus (compat.c). */
+		if (!locked && compat_esc(e, o->motor, o->cells, hover_a,
+		    o->full_current_a, PARTS_CURRENT_MARGIN, PERF_FULL_THROTTLE_S,
+		    why, sizeof why) != NULL)
 			continue;
 		int boards;
 		if (e->channels <= 1) {
@@ -188,6 +186,9 @@ parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
 				continue;
 			boards = p->n_rotors / e->channels;
 		}
+		/* An all-in-one board's flight controller flies the aircraft. */
+		if (!locked && compat_board_fc(e, boards, takes_fc, why, sizeof why) != NULL)
+			continue;
 		double kg = (double)boards * e->mass_kg;
 		if (kg < best_kg) {
 			best_kg = kg;
@@ -223,10 +224,14 @@ craft_masses(const struct sizing_params *q, const struct parts_option *o,
 	/* A frame kit replaces the arm tubes and the centre frame. */
 	m->arm_kg = kit->frame != NULL ? 0.0 : am.arm_kg;
 	m->frame_kg = kit->frame != NULL ? kit->frame->mass_kg : am.frame_kg;
-	m->other_kg = am.other_kg;
-	m->wiring_kg = am.wiring_kg + kit->connector_kg;
+	/* The fasteners are mounts, with the body. */
+	m->other_kg = am.other_kg + parts_kit_fastener_kg(kit);
+	/* The harness in copper for the real parts' currents (harness.c),
+	 * not the continuous model's coefficient. */
+	m->wiring_kg = kit->harness_kg + kit->connector_kg;
 	m->avionics_kg = kit->avionics_kg;
-	m->role_aux_kg = am.role_aux_kg;
+	/* Role hardware the class's items supply is not counted twice. */
+	m->role_aux_kg = fmax(0.0, am.role_aux_kg - kit->role_supplied_kg);
 	m->payload_kg = q->payload_kg;
 	return fixed_kg + q->payload_kg + m->arm_kg + m->frame_kg + m->other_kg
 	    + m->wiring_kg + m->avionics_kg + m->role_aux_kg;
@@ -295,6 +300,26 @@ sustained_battery_a(const struct res_run *o)
 	return a;
 }
 
+/* What the flown closing asks of its kit: the mission's sustained
+ * current, full throttle as flown (the estimate where the drive gave no
+ * full-throttle point), and its takeoff mass without the kit's own
+ * Remote ID module (whether one is needed is decided without it). */
+static void
+flown_load(const struct parts_kit *kit, const struct res_run *o,
+           struct parts_load *load)
+{
+	load->sustained_a = sustained_battery_a(o);
+	const struct res_op *full = &o->perf.op[OP_FULL];
+	if (full->valid && full->battery_current_a > 0.0) {
+		load->full_a = full->battery_current_a;
+		load->motor_full_a = full->motor_current_a;
+	}
+	load->mass_kg = o->mass.total_kg;
+	for (int i = 0; i < kit->n_part; i++)
+		if (strcmp(kit->part[i]->kind, "remote_id") == 0)
+			load->mass_kg -= kit->part[i]->mass_kg;
+}
+
 bool
 parts_close_figures(const struct parts_ctx *x, struct parts_closed *cl)
 {
@@ -336,15 +361,22 @@ parts_close(const struct parts_ctx *x, const struct parts_option *o,
 	double fixed = c->mass.motor_kg + c->mass.prop_kg + c->mass.esc_kg
 	    + c->mass.battery_kg;
 
-	/* The power module and connectors carry the sustained current: first
-	 * the ranking's hover estimate, then, if they differ, what the flown
-	 * mission drew. */
+	/* The kit is sized for the closing's currents and mass: first the
+	 * ranking's estimates (hover, and every motor at full throttle with
+	 * the auxiliaries), then, if the kit they give differs, what the
+	 * flown mission drew. */
 	double v_bus = (double)o->cells * q.chem->v_nom;
-	double sustained = o->hover_power_w / v_bus;
+	struct parts_load load = {
+		.sustained_a = o->hover_power_w / v_bus,
+		.full_a = n * o->full_current_a
+		    + sizing_aux_w(&q, x->aim.mass_kg) / v_bus,
+		.motor_full_a = o->full_current_a,
+		.mass_kg = x->aim.mass_kg,
+	};
 	struct solve_result *r = out->r;
 	bool converged = false;
 	for (int pass = 0; pass < 2; pass++) {
-		parts_kit_pick(x, o, pk, esc, sustained, &out->kit);
+		parts_kit_pick(x, o, pk, esc, &load, &out->kit);
 		if (!close_with_kit(x, &q, o, &out->kit, fixed, c, &converged,
 		    &out->ran_away))
 			return false;
@@ -354,17 +386,13 @@ parts_close(const struct parts_ctx *x, const struct parts_option *o,
 		    + m->avionics_kg + m->role_aux_kg + m->other_kg;
 		r->n_violations = 0;
 		out->finite = perf_fly(&q, c, &r->closed);
-		double flown = sustained_battery_a(&r->closed);
-		struct parts_kit again;
-		parts_kit_pick(x, o, pk, esc, flown, &again);
-		bool same = again.connector == out->kit.connector
-		    && again.n_connectors == out->kit.n_connectors
-		    && again.n_part == out->kit.n_part
-		    && memcmp(again.part, out->kit.part, sizeof again.part) == 0;
-		out->kit.sized_for_a = flown;
-		if (same || !out->finite)
+		if (!out->finite)
 			break;
-		sustained = flown;
+		flown_load(&out->kit, &r->closed, &load);
+		struct parts_kit again;
+		parts_kit_pick(x, o, pk, esc, &load, &again);
+		if (parts_kit_same(&again, &out->kit))
+			break;
 	}
 	r->closed.converged = converged;
 	parts_record_checks(x, out, r);
@@ -381,7 +409,7 @@ static void
 part_basis(char *b, size_t n, const char *maker, const char *part,
            double rating_a, const char *per)
 {
-	snprintf(b, n, "%.24s %.24s, %.0f A%s", maker, part, rating_a, per);
+	snprintf(b, n, "%.16s %.44s, %.0f A%s", maker, part, rating_a, per);
 }
 
 void
@@ -416,33 +444,52 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 	    pk->parallel, pk->b->continuous_c);
 	snprintf(v.basis[CK_BATTERY_BURST], RES_BASIS, "%d × %.0f C burst",
 	    pk->parallel, pk->b->burst_c > 0.0 ? pk->b->burst_c : pk->b->continuous_c);
+	/* Each element against the rating that holds for it: the
+	 * continuous one through the mission, for the burst the one its
+	 * maker publishes for at least that long (compat.c). */
 	const struct parts_kit *kit = &cl->kit;
 	if (kit->connector != NULL) {
-		const struct catalog_avionics *k = kit->connector;
-		int per_pack = kit->n_connectors / (pk->series * pk->parallel);
-		double rating = (double)per_pack * k->max_current_a;
-		checks_set(&v, CK_CONNECTOR_MISSION, sustained_a / (double)pk->parallel, rating);
-		checks_set(&v, CK_CONNECTOR_FULL, full_a / (double)pk->parallel, rating);
+		/* The plug that bounds the pack: its own family's row when the
+		 * pair bought is another. */
+		const struct catalog_avionics *k = kit->plug != NULL
+		    && kit->plug->max_current_a > 0.0 ? kit->plug : kit->connector;
+		struct compat_rating cr = { k->max_current_a, k->burst_current_a,
+			k->burst_s };
+		double burst = compat_rating_for(&cr, PERF_FULL_THROTTLE_S);
+		checks_set(&v, CK_CONNECTOR_MISSION, sustained_a / (double)pk->parallel,
+		    k->max_current_a);
+		checks_set(&v, CK_CONNECTOR_FULL, full_a / (double)pk->parallel, burst);
 		part_basis(v.basis[CK_CONNECTOR_MISSION], RES_BASIS, k->manufacturer,
-		    k->part_number, rating, " per pack");
-		str_copy(v.basis[CK_CONNECTOR_FULL], RES_BASIS, v.basis[CK_CONNECTOR_MISSION]);
+		    k->part_number, k->max_current_a, " per pack");
+		part_basis(v.basis[CK_CONNECTOR_FULL], RES_BASIS, k->manufacturer,
+		    k->part_number, burst, burst > k->max_current_a
+		    ? " burst, per pack" : " per pack");
 	}
-	for (int i = 0; i < kit->n_part; i++) {
-		const struct catalog_avionics *a = kit->part[i];
-		if (!(a->max_current_a > 0.0))
-			continue;
+	if (kit->power_module != NULL) {
+		const struct catalog_avionics *a = kit->power_module;
+		struct compat_rating pr = { a->max_current_a, a->burst_current_a,
+			a->burst_s };
+		double burst = compat_rating_for(&pr, PERF_FULL_THROTTLE_S);
 		checks_set(&v, CK_POWER_MODULE_MISSION, sustained_a, a->max_current_a);
-		checks_set(&v, CK_POWER_MODULE_FULL, full_a, a->max_current_a);
+		checks_set(&v, CK_POWER_MODULE_FULL, full_a, burst);
 		part_basis(v.basis[CK_POWER_MODULE_MISSION], RES_BASIS, a->manufacturer,
 		    a->part_number, a->max_current_a, "");
-		str_copy(v.basis[CK_POWER_MODULE_FULL], RES_BASIS,
-		    v.basis[CK_POWER_MODULE_MISSION]);
-		break;
+		part_basis(v.basis[CK_POWER_MODULE_FULL], RES_BASIS, a->manufacturer,
+		    a->part_number, burst, burst > a->max_current_a ? " burst" : "");
+	}
+	if (kit->harness_main.awg != NULL) {
+		checks_set(&v, CK_HARNESS_FULL, full_a, kit->harness_main.ampacity_a);
+		snprintf(v.basis[CK_HARNESS_FULL], RES_BASIS, "main lead %d × %s AWG copper",
+		    kit->harness_main.parallel, kit->harness_main.awg);
 	}
 	if (cl->esc != NULL) {
-		checks_set(&v, CK_ESC_CURRENT, full->motor_current_a, c->esc_current_a);
+		struct compat_rating er = { cl->esc->continuous_current_a,
+			cl->esc->burst_current_a, cl->esc->burst_s };
+		double esc_a = compat_rating_for(&er, PERF_FULL_THROTTLE_S);
+		checks_set(&v, CK_ESC_CURRENT, full->motor_current_a, esc_a);
 		part_basis(v.basis[CK_ESC_CURRENT], RES_BASIS, cl->esc->manufacturer,
-		    cl->esc->part_number, c->esc_current_a, " continuous");
+		    cl->esc->part_number, esc_a, esc_a > cl->esc->continuous_current_a
+		    ? " burst" : " continuous");
 	}
 	struct parts_motor_limits lim;
 	parts_motor_limits(cl->o.motor, &lim);

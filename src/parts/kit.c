@@ -1,17 +1,46 @@
 /* kit.c — the parts around the propulsion: a frame kit where one fits, the
- * avionics set of the airframe class, and the battery connectors (see
- * parts.h).
+ * avionics set of the airframe class, the battery connectors, the power
+ * harness (harness.c) and the allowances with a stated basis (see
+ * parts.h).  Whatever two parts must do together, the rules of compat.c
+ * decide.
  *
  * Avionics.  Each airframe class carries a set of kinds (flight
- * controller, GNSS, receiver, telemetry radio, power module), each taken
- * as the lightest usable catalogue part of that kind that meets the
- * class's need and the aircraft's bus and current.  What the class carries
- * that the catalogue does not sell as a part (obstacle sensors, spray
- * radars, a pump controller), and any kind no catalogue part fits, stays
- * an allowance: the mass data/airframes.json's class note gives that
- * group, as a custom line of the bill of materials.  So the record's
+ * controller, GNSS, receiver, telemetry radio, power module, video), each
+ * taken as the lightest usable catalogue part of that kind that meets the
+ * class's need and the aircraft's bus and currents.  What the class
+ * carries that the catalogue does not sell as a part (obstacle sensors,
+ * spray radars, a pump controller), and any kind no catalogue part fits,
+ * stays an allowance: the mass data/airframes.json's class note gives
+ * that group, as a custom line of the bill of materials.  So the record's
  * avionics mass is the parts it orders plus what it cannot order yet, and
- * it equals the BOM's avionics lines.
+ * it equals the BOM's avionics lines.  On top of the class's set:
+ *
+ *   video      a camera and a transmitter of one video system, the
+ *              lightest such pair (or an air unit that carries its
+ *              camera, or a camera for the transmitter the ESC board
+ *              carries): never a digital camera on an analog transmitter;
+ *   Remote ID  a module where the aircraft weighs 250 g or more (EU C1
+ *              and up, US Part 89) and no part of the kit broadcasts it;
+ *              on the micro class, whose FPV flight controllers speak no
+ *              MAVLink, a standalone one with its own GNSS;
+ *   antennas   an allowance of ANTENNA_SHARE of the avionics for the
+ *              antennas the radios are sold without (an estimate);
+ *   role       class items that are role hardware (the agricultural
+ *              pump) are counted out of the role's hardware allowance
+ *              (kit->role_supplied_kg), so nothing is counted twice.
+ *
+ * The power path.  The power module and the connectors are chosen for
+ * the currents they carry: the mission's sustained current within their
+ * continuous rating, and the full-throttle current within the rating
+ * that holds for the full-throttle burst (compat.c).  A pack's own
+ * connector is in its published mass; it joins the harness through the
+ * mate of its own plug's family whenever the catalogue sells one (an
+ * XT60 pack takes the XT60 male half, 3 g, never an XT90 pair), and its
+ * plug's rating must carry its share: the search does not take a pack
+ * whose plug cannot (parts_kit_plug()).  A pack that names no plug, a
+ * smart pack, or one whose mate the catalogue cannot weigh is fitted
+ * with the lightest catalogue connector that carries its share, and the
+ * bill of materials says so.
  *
  * Frame kit.  A kit fits when it carries the mission's rotors (coaxial
  * alike), its wheelbase is within PARTS_KIT_WHEELBASE_TOL below the
@@ -25,19 +54,14 @@
  * the custom arm tubes and centre frame; the body, landing gear and shell
  * stay the model's.
  *
- * Connectors.  A pack's own connector is in its published mass; each
- * pack is joined to the harness (or the series lead) by one more mated
- * pair.  That pair is the pack's own family where the pack names one the
- * catalogue has (an XT60 pack mates only with an XT60: the check of its
- * rating then says whether the pack's plug carries the current); else the
- * catalogue connector with the smallest rating that carries the pack's
- * share of the sustained current, several pairs per pack when none carries
- * it alone.  So many small packs cost their connections, which the
- * harness model (one battery lead) omits.
+ * Fasteners.  Four screws hold each motor and four more each custom arm
+ * (a frame kit brings its own): steel socket-head cap screws sized by
+ * the motor, with the masses of the DIN 912 / ISO 4762 weight table
+ * (https://www.fullerkr.com/collections/din-912-weight-chart, kg per 1000
+ * pieces).  The counts and sizes are estimates.
  *
  * Parts layer; no I/O.
  */
-#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -46,59 +70,88 @@
 #include "parts/parts_int.h"
 #include "parts/screen.h"
 #include "physics/aero.h"
+#include "sizing/perf.h"
 #include "util/units.h"
 #include "util/xalloc.h"
 
 #define PARTS_KIT_WHEELBASE_TOL 0.10  /* a kit up to 10 % below the wheelbase */
 #define PARTS_UNRATED_PM_CELLS  6     /* bus of a power module with no range */
-#define PARTS_MAX_CONNECTORS    4     /* pairs per pack in parallel */
 #define PARTS_KIT_MASS_FACTOR   2.0   /* a kit at most twice the custom arms
                                          and centre frame it replaces */
+#define ANTENNA_SHARE           0.10  /* antennas, of the avionics: an
+                                         estimate (most radios in the
+                                         catalogue are sold without one) */
+#define SCREWS_PER_MOTOR        4     /* a motor's mounting screws */
+#define SCREWS_PER_ARM          4     /* a custom arm's clamp to the centre */
 
 /* What one class carries: a catalogue kind with its need, or (kind NULL)
  * an item no catalogue part supplies; allowance_kg is the mass of that
- * group in the class note of data/airframes.json, used when no part fits. */
+ * group in the class note of data/airframes.json, used when no part fits.
+ * role: the item is role hardware (the role's allowance holds it too). */
 struct kit_item {
 	const char *kind;
 	const char *need;          /* meets() key, or NULL for any */
 	const char *what;          /* the item in words (allowance lines) */
 	double allowance_kg;
+	bool role;
 };
 
 #define KIT_MAX_ITEMS 7
 static const struct kit_item kit_items[AF_CLASS_MAX][KIT_MAX_ITEMS] = {
 	[AF_MICRO_AIO] = {
-		{ "flight_controller", NULL, "Flight controller", 0.012 },
-		{ "receiver", NULL, "Control receiver", 0.004 },
-		{ "video_tx", NULL, "Video transmitter", 0.008 },
-		{ "camera_fpv", NULL, "FPV camera", 0.006 },
+		{ "flight_controller", NULL, "Flight controller", 0.012, false },
+		{ "receiver", NULL, "Control receiver", 0.004, false },
+		{ "video_tx", NULL, "Video transmitter", 0.008, false },
+		{ "camera_fpv", NULL, "FPV camera", 0.006, false },
 	},
 	[AF_CONSUMER_FOLDING] = {
-		{ "flight_controller", "any", "Flight controller and IMU", 0.020 },
-		{ "gnss", "compass", "GNSS and compass", 0.020 },
-		{ "receiver", NULL, "Control receiver", 0.010 },
-		{ "telemetry", NULL, "Telemetry and video link", 0.025 },
-		{ "power_module", "current", "Power distribution", 0.020 },
-		{ NULL, NULL, "Obstacle sensors", 0.025 },
+		{ "flight_controller", "any", "Flight controller and IMU", 0.020, false },
+		{ "gnss", "compass", "GNSS and compass", 0.020, false },
+		{ "receiver", NULL, "Control receiver", 0.010, false },
+		{ "telemetry", NULL, "Telemetry and video link", 0.025, false },
+		{ "power_module", "current", "Power distribution", 0.020, false },
+		{ NULL, NULL, "Obstacle sensors", 0.025, false },
 	},
 	[AF_ENTERPRISE_RUGGED] = {
-		{ "flight_controller", "redundant", "Redundant flight controller", 0.060 },
-		{ "gnss", "compass", "GNSS and compass", 0.080 },
-		{ "receiver", NULL, "Control receiver", 0.010 },
-		{ "telemetry", NULL, "Long-range datalink", 0.090 },
-		{ "power_module", "current", "Power distribution", 0.050 },
-		{ NULL, NULL, "Sensors (rangefinder, ADS-B receiver, lights)", 0.060 },
+		{ "flight_controller", "redundant", "Redundant flight controller", 0.060, false },
+		{ "gnss", "compass", "GNSS and compass", 0.080, false },
+		{ "receiver", NULL, "Control receiver", 0.010, false },
+		{ "telemetry", NULL, "Long-range datalink", 0.090, false },
+		{ "power_module", "current", "Power distribution", 0.050, false },
+		{ NULL, NULL, "Sensors (rangefinder, ADS-B receiver, lights)", 0.060, false },
 	},
 	[AF_AGRICULTURAL] = {
-		{ "flight_controller", "redundant", "Redundant flight controller", 0.060 },
-		{ "gnss", "rtk", "RTK GNSS", 0.080 },
-		{ "receiver", NULL, "Control receiver", 0.010 },
-		{ "telemetry", NULL, "Datalink", 0.090 },
-		{ "power_module", "current", "Power distribution", 0.200 },
-		{ NULL, NULL, "Terrain and obstacle radars", 0.200 },
-		{ NULL, NULL, "Pump and flow controller", 0.160 },
+		{ "flight_controller", "redundant", "Redundant flight controller", 0.060, false },
+		{ "gnss", "rtk", "RTK GNSS", 0.080, false },
+		{ "receiver", NULL, "Control receiver", 0.010, false },
+		{ "telemetry", NULL, "Datalink", 0.090, false },
+		{ "power_module", "current", "Power distribution", 0.200, false },
+		{ NULL, NULL, "Terrain and obstacle radars", 0.200, false },
+		{ NULL, NULL, "Pump and flow controller", 0.160, true },
 	},
 };
+
+/* Steel socket-head cap screws by the motor they hold: the lightest
+ * motors take M2, 22xx-40xx class motors M3, the larger M4 and M5 (an
+ * estimate by mass); masses from the DIN 912 table (above). */
+static const struct {
+	double motor_max_kg;
+	const char *size;
+	double kg;
+} screws[] = {
+	{ 0.015, "M2 x 4", 0.000175 },
+	{ 0.100, "M3 x 8", 0.0008 },
+	{ 0.400, "M4 x 10", 0.0018 },
+	{ INFINITY, "M5 x 12", 0.0030 },
+};
+
+/* The class of the mission, the enterprise one for an unknown value. */
+static int
+kit_class(const struct parts_ctx *x)
+{
+	int cls = x->spec->airframe_class;
+	return cls < 0 || cls >= AF_CLASS_MAX ? AF_ENTERPRISE_RUGGED : cls;
+}
 
 /* Does the part's description say it? (Case as written in the catalogue.) */
 static bool
@@ -107,11 +160,18 @@ says(const struct catalog_avionics *a, const char *word)
 	return strstr(a->description, word) != NULL;
 }
 
-/* Does avionics part a meet need on a bus of `cells` carrying
- * sustained_a? */
+/* A power module's or distribution board's ratings. */
+static struct compat_rating
+rating_of(const struct catalog_avionics *a)
+{
+	struct compat_rating r = { a->max_current_a, a->burst_current_a, a->burst_s };
+	return r;
+}
+
+/* Does avionics part a meet need on a bus of `cells` carrying load? */
 static bool
 meets(const struct catalog_avionics *a, const char *kind, const char *need,
-      int cells, double sustained_a)
+      int cells, const struct parts_load *load)
 {
 	if (!a->usable || strcmp(a->kind, kind) != 0)
 		return false;
@@ -131,9 +191,15 @@ meets(const struct catalog_avionics *a, const char *kind, const char *need,
 		    || says(a, "RTK");
 	if (strcmp(need, "rtk") == 0)
 		return says(a, "RTK");
+	if (strcmp(need, "standalone") == 0)
+		return says(a, "own GNSS");
 	if (strcmp(need, "current") == 0) {
+		/* The power module carries the whole battery current. */
+		char why[160];
+		struct compat_rating r = rating_of(a);
 		int hi = a->cells_max > 0 ? a->cells_max : PARTS_UNRATED_PM_CELLS;
-		return cells <= hi && a->max_current_a >= sustained_a;
+		return cells <= hi && compat_rated(&r, load->sustained_a, load->full_a,
+		    PERF_FULL_THROTTLE_S, why, sizeof why) == NULL;
 	}
 	return false;
 }
@@ -153,8 +219,13 @@ parts_kit_init(struct parts_ctx *x)
 {
 	x->n_kit_kinds = 0;
 	size_t n = catalog_n_avionics(x->cat);
+	x->plugs.kind = "connector";
+	x->plugs.items = xcalloc(n > 0 ? n : 1, sizeof *x->plugs.items);
+	x->plugs.n = 0;
 	for (size_t i = 0; i < n; i++) {
 		const struct catalog_avionics *a = catalog_avionics(x->cat, i);
+		if (strcmp(a->kind, "connector") == 0)
+			x->plugs.items[x->plugs.n++] = a;
 		if (!a->usable)
 			continue;
 		int k = 0;
@@ -184,6 +255,9 @@ parts_kit_free(struct parts_ctx *x)
 	for (int k = 0; k < x->n_kit_kinds; k++)
 		free(x->kit_kinds[k].items);
 	x->n_kit_kinds = 0;
+	free(x->plugs.items);
+	x->plugs.items = NULL;
+	x->plugs.n = 0;
 	free(x->kit_frames);
 	x->kit_frames = NULL;
 	x->n_kit_frames = 0;
@@ -199,106 +273,178 @@ of_kind(const struct parts_ctx *x, const char *kind)
 	return NULL;
 }
 
-/* The lightest part of kind meeting need (ties by id: deterministic). */
+/* Is a lighter than best (ties by id: deterministic)? */
+static bool
+lighter(const struct catalog_avionics *a, const struct catalog_avionics *best)
+{
+	return best == NULL || a->mass_kg < best->mass_kg
+	    || (a->mass_kg == best->mass_kg && strcmp(a->id, best->id) < 0);
+}
+
+/* The lightest part of kind meeting need. */
 static const struct catalog_avionics *
 lightest(const struct parts_ctx *x, const char *kind, const char *need,
-         int cells, double sustained_a)
+         int cells, const struct parts_load *load)
 {
 	const struct catalog_avionics *best = NULL;
 	const struct parts_kit_kind *kk = of_kind(x, kind);
-	for (int i = 0; kk != NULL && i < kk->n; i++) {
-		const struct catalog_avionics *a = kk->items[i];
-		if (!meets(a, kind, need, cells, sustained_a))
-			continue;
-		if (best == NULL || a->mass_kg < best->mass_kg
-		    || (a->mass_kg == best->mass_kg && strcmp(a->id, best->id) < 0))
-			best = a;
-	}
-	/* Agricultural power distribution: a distribution board will do. */
+	for (int i = 0; kk != NULL && i < kk->n; i++)
+		if (meets(kk->items[i], kind, need, cells, load)
+		    && lighter(kk->items[i], best))
+			best = kk->items[i];
+	/* Power distribution: a distribution board will do. */
 	kk = best == NULL && strcmp(kind, "power_module") == 0 ? of_kind(x, "pdb") : NULL;
-	for (int i = 0; kk != NULL && i < kk->n; i++) {
-		const struct catalog_avionics *a = kk->items[i];
-		if (meets(a, "pdb", need, cells, sustained_a)
-		    && (best == NULL || a->mass_kg < best->mass_kg))
-			best = a;
-	}
+	for (int i = 0; kk != NULL && i < kk->n; i++)
+		if (meets(kk->items[i], "pdb", need, cells, load)
+		    && lighter(kk->items[i], best))
+			best = kk->items[i];
 	return best;
 }
 
-/* The family of a connector's name: its letters and digits, upper case,
- * up to the first space, "(" or "/" ("XT90-S (mated pair)" and "xt90s"
- * both read "XT90S"). */
-static void
-connector_family(const char *name, char *out, size_t n)
-{
-	size_t k = 0;
-	for (; *name != '\0' && *name != ' ' && *name != '(' && *name != '/'; name++)
-		if (isalnum((unsigned char)*name) && k + 1 < n)
-			out[k++] = (char)toupper((unsigned char)*name);
-	out[k] = '\0';
-}
+/* ---- connectors ------------------------------------------------------------ */
 
-/* Does a pack's connector text ("XT60", "AS150/XT150") name the family of
- * catalogue connector a? */
+/* Does pack connector text name a plug (not unknown, not a smart pack's
+ * own)? */
 static bool
-mates_with(const char *pack_connector, const struct catalog_avionics *a)
+names_plug(const char *pack_connector)
 {
-	char want[32], have[32];
-	connector_family(a->part_number, have, sizeof have);
-	if (have[0] == '\0')
-		return false;
-	for (const char *p = pack_connector; *p != '\0'; ) {
-		connector_family(p, want, sizeof want);
-		if (strcmp(want, have) == 0)
-			return true;
-		const char *slash = strchr(p, '/');
-		if (slash == NULL)
-			break;
-		p = slash + 1;
-	}
-	return false;
+	return pack_connector != NULL && pack_connector[0] != '\0'
+	    && strcmp(pack_connector, "smart") != 0;
 }
 
-static void
-pick_connector(const struct parts_ctx *x, double per_pack_a,
-               struct parts_kit *kit, int n_packs, const char *pack_connector)
+/* The catalogue's row of the pack's own plug family: the usable one (with
+ * a mass: the mate the kit buys) when there is one, else any row (whose
+ * rating still bounds the pack), else NULL. */
+static const struct catalog_avionics *
+own_plug(const struct parts_ctx *x, const char *pack_connector)
 {
-	const struct catalog_avionics *best = NULL, *largest = NULL;
-	const struct parts_kit_kind *kk = of_kind(x, "connector");
-	/* The pack's own family, one pair per pack (a pack has one plug),
-	 * when it carries the pack's current; else the plug is re-terminated
-	 * to a connector that does (below). */
-	for (int i = 0; pack_connector != NULL && pack_connector[0] != '\0'
-	    && kk != NULL && i < kk->n; i++)
-		if (mates_with(pack_connector, kk->items[i])
-		    && kk->items[i]->max_current_a >= per_pack_a) {
-			kit->connector = kk->items[i];
-			kit->connector_mates = true;
-			kit->n_connectors = n_packs;
-			kit->connector_kg = (double)n_packs * kk->items[i]->mass_kg;
-			return;
-		}
-	for (int i = 0; kk != NULL && i < kk->n; i++) {
-		const struct catalog_avionics *a = kk->items[i];
-		if (!(a->max_current_a > 0.0))
+	const struct catalog_avionics *any = NULL, *usable = NULL;
+	for (int i = 0; names_plug(pack_connector) && i < x->plugs.n; i++) {
+		const struct catalog_avionics *a = x->plugs.items[i];
+		if (!compat_mates(pack_connector, a))
 			continue;
-		if (largest == NULL || a->max_current_a > largest->max_current_a)
-			largest = a;
-		if (a->max_current_a >= per_pack_a && (best == NULL
-		    || a->max_current_a < best->max_current_a))
-			best = a;
+		if (a->usable && a->max_current_a > 0.0 && lighter(a, usable))
+			usable = a;
+		if (any == NULL || (a->max_current_a > 0.0 && !(any->max_current_a > 0.0)))
+			any = a;
 	}
-	int per_pack = 1;
-	if (best == NULL && largest != NULL) {
-		per_pack = (int)ceil(per_pack_a / largest->max_current_a);
-		if (per_pack <= PARTS_MAX_CONNECTORS)
-			best = largest;
-	}
-	kit->connector = best;
-	kit->n_connectors = best != NULL ? per_pack * n_packs : 0;
-	kit->connector_kg = best != NULL ? (double)kit->n_connectors * best->mass_kg
-	    : 0.0;
+	return usable != NULL ? usable : any;
 }
+
+/* The lightest usable mated pair that carries each pack's share (for a
+ * pack whose plug the catalogue cannot supply the mate of: both halves
+ * are fitted), or NULL. */
+static const struct catalog_avionics *
+fitting_connector(const struct parts_ctx *x, double sustained_a, double full_a)
+{
+	const struct catalog_avionics *best = NULL;
+	const struct parts_kit_kind *kk = of_kind(x, "connector");
+	char why[160];
+	for (int i = 0; kk != NULL && i < kk->n; i++)
+		if (!compat_connector_half(kk->items[i])
+		    && compat_connector("", kk->items[i], sustained_a, full_a,
+		    PERF_FULL_THROTTLE_S, why, sizeof why) == NULL
+		    && lighter(kk->items[i], best))
+			best = kk->items[i];
+	return best;
+}
+
+const char *
+parts_kit_plug(const struct parts_ctx *x, const struct parts_pack *pk,
+               double sustained_a, double full_a, char *why, size_t n)
+{
+	const char *plug = pk->b != NULL ? pk->b->connector : NULL;
+	double s = sustained_a / (double)pk->parallel, f = full_a / (double)pk->parallel;
+	const struct catalog_avionics *own = own_plug(x, plug);
+	/* A plug it names must be one the catalogue rates (a JST or an
+	 * unrated XT150 cannot be shown to carry anything), and that rating
+	 * bounds its pack, whether its mate is bought or not. */
+	if (names_plug(plug) && (own == NULL || !(own->max_current_a > 0.0))) {
+		snprintf(why, n, "the catalogue has no current rating for its %s plug",
+		    plug);
+		return why;
+	}
+	if (own != NULL
+	    && compat_connector(plug, own, s, f, PERF_FULL_THROTTLE_S, why, n) != NULL)
+		return why;
+	if (own != NULL && own->usable)
+		return NULL;
+	if (fitting_connector(x, s, f) == NULL) {
+		snprintf(why, n, "no catalogue connector carries %.0f A a pack at full "
+		    "throttle", f);
+		return why;
+	}
+	return NULL;
+}
+
+/* The pack's mate: its own family's when the catalogue sells one (even
+ * over its rating: the check then says so), else the lightest connector
+ * that carries the pack's share, else none. */
+static void
+pick_connector(const struct parts_ctx *x, const struct parts_pack *pk,
+               struct parts_kit *kit)
+{
+	const char *plug = pk->b != NULL ? pk->b->connector : NULL;
+	int n_packs = pk->series * pk->parallel;
+	double s = kit->load.sustained_a / (double)pk->parallel;
+	double f = kit->load.full_a / (double)pk->parallel;
+	const struct catalog_avionics *own = own_plug(x, plug);
+	if (own != NULL && own->usable && own->max_current_a > 0.0) {
+		kit->connector = own;
+		kit->connector_mates = true;
+	} else {
+		kit->plug = own;
+		kit->connector = fitting_connector(x, s, f);
+	}
+	kit->n_connectors = kit->connector != NULL ? n_packs : 0;
+	kit->connector_kg = kit->connector != NULL
+	    ? (double)n_packs * kit->connector->mass_kg : 0.0;
+}
+
+/* ---- video ------------------------------------------------------------------- */
+
+/* The lightest camera that works with a transmitter of system. */
+static const struct catalog_avionics *
+camera_for(const struct parts_ctx *x, const char *system)
+{
+	const struct catalog_avionics *best = NULL;
+	const struct parts_kit_kind *cams = of_kind(x, "camera_fpv");
+	char why[128];
+	for (int i = 0; cams != NULL && i < cams->n; i++)
+		if (compat_video(cams->items[i], system, false, why, sizeof why) == NULL
+		    && lighter(cams->items[i], best))
+			best = cams->items[i];
+	return best;
+}
+
+/* The lightest transmitter and camera that work together: an air unit
+ * that carries its camera alone, else a transmitter and the lightest
+ * camera of its system.  *cam NULL with *vtx set: the air unit's own. */
+static void
+video_pair(const struct parts_ctx *x, const struct catalog_avionics **vtx,
+           const struct catalog_avionics **cam)
+{
+	*vtx = *cam = NULL;
+	double best_kg = INFINITY;
+	const struct parts_kit_kind *tx = of_kind(x, "video_tx");
+	for (int i = 0; tx != NULL && i < tx->n; i++) {
+		const struct catalog_avionics *t = tx->items[i];
+		if (t->video_system[0] == '\0')
+			continue;
+		const struct catalog_avionics *c = compat_does(t, "camera_fpv") ? NULL
+		    : camera_for(x, t->video_system);
+		if (c == NULL && !compat_does(t, "camera_fpv"))
+			continue;
+		double kg = t->mass_kg + (c != NULL ? c->mass_kg : 0.0);
+		if (kg < best_kg || (kg == best_kg && strcmp(t->id, (*vtx)->id) < 0)) {
+			best_kg = kg;
+			*vtx = t;
+			*cam = c;
+		}
+	}
+}
+
+/* ---- the kit ----------------------------------------------------------------- */
 
 /* Does the ESC board carry avionics kind (its `carries` list)? */
 static bool
@@ -307,43 +453,170 @@ esc_carries(const struct catalog_esc *esc, const char *kind)
 	return esc != NULL && catalog_list_names(esc->carries, kind);
 }
 
+static void
+add_part(struct parts_kit *kit, const struct catalog_avionics *a)
+{
+	if (kit->n_part < PARTS_KIT_MAX) {
+		kit->part[kit->n_part++] = a;
+		kit->avionics_kg += a->mass_kg;
+	}
+}
+
+static void
+add_allowance(struct parts_kit *kit, const char *what, const char *basis,
+              double kg)
+{
+	if (kit->n_allowance < PARTS_KIT_MAX) {
+		kit->allowance_what[kit->n_allowance] = what;
+		kit->allowance_basis[kit->n_allowance] = basis;
+		kit->allowance_kg[kit->n_allowance++] = kg;
+		kit->avionics_kg += kg;
+	}
+}
+
+/* One class item: on the ESC board, a part, or its allowance. */
+static void
+pick_item(const struct parts_ctx *x, const struct kit_item *it, int cells,
+          const struct catalog_esc *esc, struct parts_kit *kit)
+{
+	/* An all-in-one board's flight controller, receiver or video
+	 * transmitter is in the ESC's mass and order line: not bought
+	 * twice.  A redundant flight controller is not an AIO's. */
+	if (it->kind != NULL && (it->need == NULL || strcmp(it->need, "any") == 0)
+	    && esc_carries(esc, it->kind)) {
+		kit->n_on_esc++;
+		return;
+	}
+	const struct catalog_avionics *a = it->kind != NULL
+	    ? lightest(x, it->kind, it->need, cells, &kit->load) : NULL;
+	if (it->kind != NULL && strcmp(it->kind, "power_module") == 0) {
+		kit->power_module_item = true;
+		kit->power_module = a;
+	}
+	if (a != NULL)
+		add_part(kit, a);
+	else
+		add_allowance(kit, it->what, NULL, it->allowance_kg);
+	if (it->role) {
+		kit->role_supplied_kg += a != NULL ? a->mass_kg : it->allowance_kg;
+		kit->role_supplied_what = it->what;
+	}
+}
+
+/* The camera and transmitter items together: one video system. */
+static void
+pick_video(const struct parts_ctx *x, const struct kit_item *vtx_item,
+           const struct kit_item *cam_item, const struct catalog_esc *esc,
+           struct parts_kit *kit)
+{
+	const struct catalog_avionics *vtx = NULL, *cam = NULL;
+	if (esc_carries(esc, "video_tx")) {
+		kit->n_on_esc++;
+		cam = camera_for(x, esc->video_system);
+	} else {
+		video_pair(x, &vtx, &cam);
+		if (vtx != NULL)
+			add_part(kit, vtx);
+		else
+			add_allowance(kit, vtx_item->what, NULL, vtx_item->allowance_kg);
+		kit->camera_on_vtx = vtx != NULL && cam == NULL;
+	}
+	if (cam != NULL)
+		add_part(kit, cam);
+	else if (!kit->camera_on_vtx)
+		add_allowance(kit, cam_item->what, NULL, cam_item->allowance_kg);
+}
+
+/* A Remote ID module when the aircraft needs one and no part broadcasts
+ * it: a standalone one on the micro class (its FPV flight controllers
+ * feed no module), the lightest that fits otherwise. */
+static void
+pick_remote_id(const struct parts_ctx *x, int cells, struct parts_kit *kit)
+{
+	kit->remote_id_required = compat_remote_id_required(kit->load.mass_kg);
+	if (!kit->remote_id_required)
+		return;
+	for (int i = 0; i < kit->n_part; i++)
+		if (compat_does(kit->part[i], "remote_id"))
+			return;
+	const char *need = kit_class(x) == AF_MICRO_AIO ? "standalone" : NULL;
+	const struct catalog_avionics *a = lightest(x, "remote_id", need, cells,
+	    &kit->load);
+	if (a != NULL)
+		add_part(kit, a);
+	else
+		kit->remote_id_missing = true;
+}
+
 void
 parts_kit_pick(const struct parts_ctx *x, const struct parts_option *o,
                const struct parts_pack *pk, const struct catalog_esc *esc,
-               double sustained_a, struct parts_kit *kit)
+               const struct parts_load *load, struct parts_kit *kit)
 {
 	memset(kit, 0, sizeof *kit);
-	kit->sized_for_a = sustained_a;
-	int cls = x->spec->airframe_class;
-	if (cls < 0 || cls >= AF_CLASS_MAX)
-		cls = AF_ENTERPRISE_RUGGED;
-	for (int i = 0; i < KIT_MAX_ITEMS; i++) {
-		const struct kit_item *it = &kit_items[cls][i];
-		if (it->what == NULL)
-			break;
-		/* An all-in-one board's flight controller, receiver or video
-		 * transmitter is in the ESC's mass and order line: not bought
-		 * twice.  A redundant flight controller is not an AIO's. */
-		if (it->kind != NULL && (it->need == NULL || strcmp(it->need, "any") == 0)
-		    && esc_carries(esc, it->kind)) {
-			kit->n_on_esc++;
-			continue;
-		}
-		const struct catalog_avionics *a = it->kind != NULL
-		    ? lightest(x, it->kind, it->need, o->cells, sustained_a)
-		    : NULL;
-		if (a != NULL && kit->n_part < PARTS_KIT_MAX) {
-			kit->part[kit->n_part++] = a;
-			kit->avionics_kg += a->mass_kg;
-		} else if (kit->n_allowance < PARTS_KIT_MAX) {
-			kit->allowance_what[kit->n_allowance] = it->what;
-			kit->allowance_kg[kit->n_allowance++] = it->allowance_kg;
-			kit->avionics_kg += it->allowance_kg;
-		}
+	kit->load = *load;
+	const struct kit_item *items = kit_items[kit_class(x)];
+	const struct kit_item *vtx = NULL, *cam = NULL;
+	for (int i = 0; i < KIT_MAX_ITEMS && items[i].what != NULL; i++) {
+		const struct kit_item *it = &items[i];
+		if (it->kind != NULL && strcmp(it->kind, "video_tx") == 0)
+			vtx = it;
+		else if (it->kind != NULL && strcmp(it->kind, "camera_fpv") == 0)
+			cam = it;
+		else
+			pick_item(x, it, o->cells, esc, kit);
 	}
-	int n_packs = pk->series * pk->parallel;
-	pick_connector(x, sustained_a / (double)pk->parallel, kit, n_packs,
-	    pk->b != NULL ? pk->b->connector : NULL);
+	if (vtx != NULL && cam != NULL)
+		pick_video(x, vtx, cam, esc, kit);
+	pick_remote_id(x, o->cells, kit);
+	/* Antennas: a share of the avionics but the role hardware. */
+	add_allowance(kit, "Antennas", "10 % of the avionics, an estimate: most "
+	    "radios are sold without their antennas",
+	    ANTENNA_SHARE * (kit->avionics_kg - kit->role_supplied_kg));
+	pick_connector(x, pk, kit);
+	parts_harness(x, pk, esc, kit);
+	/* Fasteners by the motor they hold. */
+	size_t k = 0;
+	while (o->motor != NULL && o->motor->mass_kg > screws[k].motor_max_kg)
+		k++;
+	kit->fastener_size = screws[k].size;
+	kit->fastener_unit_kg = screws[k].kg;
+	kit->n_motor_screws = SCREWS_PER_MOTOR * x->p->n_rotors;
+	kit->n_arm_screws = SCREWS_PER_ARM * (x->p->coaxial ? x->p->n_rotors / 2
+	    : x->p->n_rotors);
+}
+
+int
+parts_kit_screws(const struct parts_kit *kit)
+{
+	return kit->n_motor_screws + (kit->frame != NULL ? 0 : kit->n_arm_screws);
+}
+
+double
+parts_kit_fastener_kg(const struct parts_kit *kit)
+{
+	return (double)parts_kit_screws(kit) * kit->fastener_unit_kg;
+}
+
+bool
+parts_kit_same(const struct parts_kit *a, const struct parts_kit *b)
+{
+	return a->connector == b->connector && a->n_connectors == b->n_connectors
+	    && a->n_part == b->n_part
+	    && memcmp(a->part, b->part, sizeof a->part) == 0
+	    && a->n_allowance == b->n_allowance
+	    && a->avionics_kg == b->avionics_kg
+	    && a->harness_kg == b->harness_kg;
+}
+
+bool
+parts_kit_takes_board_fc(const struct parts_ctx *x)
+{
+	const struct kit_item *items = kit_items[kit_class(x)];
+	for (int i = 0; i < KIT_MAX_ITEMS && items[i].what != NULL; i++)
+		if (items[i].kind != NULL && strcmp(items[i].kind, "flight_controller") == 0)
+			return items[i].need == NULL || strcmp(items[i].need, "any") == 0;
+	return true;
 }
 
 /* Does offered kit f fit this aircraft (see parts_kit_frame_fits())? */

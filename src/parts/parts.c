@@ -140,7 +140,8 @@ better(const struct parts_ctx *x, const struct parts_closed *a,
  * x->max_parallel packs in parallel, that holds need_wh and carries the
  * option's currents: hover within the continuous rating, full throttle
  * within the burst rating and with the pack's sag at most max_sag of its
- * voltage (else the thrust the ranking counted on is not there).  -1 when
+ * voltage (else the thrust the ranking counted on is not there), and
+ * through a plug that carries each pack's share of them (kit.c).  -1 when
  * none does. */
 static int
 pick_pack(const struct parts_ctx *x, const struct parts_option *o,
@@ -155,11 +156,13 @@ pick_pack(const struct parts_ctx *x, const struct parts_option *o,
 		const struct parts_pack *q = &pk[i];
 		double r_pack = (double)o->cells * batt_rated_cell_ohm(q->chem,
 		    q->capacity_ah, q->b->continuous_c);
+		char why[160];
 		if (q->energy_wh >= need_wh && q->max_burst_a >= i_full
 		    && q->max_continuous_a >= i_hover
 		    && r_pack * i_full <= max_sag * v && q->mass_kg > above_kg
 		    && q->parallel <= x->max_parallel
-		    && (best < 0 || q->mass_kg < pk[best].mass_kg))
+		    && (best < 0 || q->mass_kg < pk[best].mass_kg)
+		    && parts_kit_plug(x, q, i_hover, i_full, why, sizeof why) == NULL)
 			best = i;
 	}
 	return best;

@@ -160,34 +160,94 @@ struct parts_ctx {
 	int n_packs;
 	struct parts_kit_kind kit_kinds[PARTS_KIT_KINDS];
 	int n_kit_kinds;
+	struct parts_kit_kind plugs;       /* every connector row, usable or
+	                                      not: a plug's rating bounds its
+	                                      pack even where the catalogue has
+	                                      no mass for its mate */
 	const struct catalog_frame **kit_frames; /* the frame kits offered */
 	int n_kit_frames;
 	int n_census[PARTS_REASON_MAX];
 	int n_examined;
 };
 
+/* What a kit is sized for (parts_kit_pick()): the currents of the
+ * closing and its takeoff mass. */
+struct parts_load {
+	double sustained_a;                /* battery: the highest current of a
+	                                      phase the mission flies */
+	double full_a;                     /* battery at full throttle: every
+	                                      motor and the auxiliaries */
+	double motor_full_a;               /* one motor at full throttle */
+	double mass_kg;                    /* takeoff mass without the kit's
+	                                      own Remote ID module */
+};
+
+/* One run of the power harness (harness.c): n_runs alike, each a pair of
+ * conductors (plus and minus) of `parallel` copper wires of one gauge,
+ * carrying current_a over length_m. */
+struct parts_run {
+	const char *awg;                   /* "8", "2/0"; NULL: no such run */
+	double area_mm2;                   /* one wire's copper */
+	int parallel;                      /* wires in parallel per conductor */
+	double ampacity_a;                 /* a conductor's chassis-wiring
+	                                      ampacity (all its wires) */
+	double current_a;                  /* what one run carries */
+	double length_m;
+	int n_runs;
+	double kg;                         /* all n_runs, both conductors */
+};
+
 /* The parts around the propulsion (kit.c): the frame kit, the avionics
- * set of the airframe class and the battery connectors. */
-#define PARTS_KIT_MAX 8
+ * set of the airframe class, the battery connectors, the power harness
+ * and the allowances with a stated basis. */
+#define PARTS_KIT_MAX 10
 struct parts_kit {
 	const struct catalog_frame *frame; /* NULL: custom arms and centre */
 	const struct catalog_avionics *part[PARTS_KIT_MAX]; /* the set found */
 	int n_part;
 	const char *allowance_what[PARTS_KIT_MAX]; /* what the class carries
 	                                      that no catalogue part supplies */
+	const char *allowance_basis[PARTS_KIT_MAX]; /* how its mass was set;
+	                                      NULL: the class note's group */
 	double allowance_kg[PARTS_KIT_MAX];
 	int n_allowance;
 	double avionics_kg;                /* parts + allowances */
-	const struct catalog_avionics *connector; /* one pair per pack; NULL
-	                                      when none carries the current */
+	const struct catalog_avionics *power_module; /* the rated power module
+	                                      or distribution board; NULL */
+	bool power_module_item;            /* the class carries one (a part or
+	                                      an allowance) */
+	const struct catalog_avionics *connector; /* one per pack; NULL when
+	                                      none carries the pack's share */
 	int n_connectors;
-	double connector_kg;               /* all pairs */
+	double connector_kg;               /* all of them */
 	bool connector_mates;              /* of the pack's own plug's family */
+	const struct catalog_avionics *plug; /* the catalogue's row of the
+	                                      pack's own plug when the pair
+	                                      bought is another (its rating
+	                                      still bounds the pack); NULL */
 	int n_on_esc;                      /* class items the ESC board carries
 	                                      (an all-in-one board's flight
 	                                      controller, receiver, ...) */
-	double sized_for_a;                /* the sustained battery current the
-	                                      power module and connectors carry */
+	bool camera_on_vtx;                /* the video transmitter bought
+	                                      carries its camera */
+	bool remote_id_required;           /* EU C1 and up, US Part 89 */
+	bool remote_id_missing;            /* required, and neither a kit part
+	                                      does it nor the catalogue sells
+	                                      a module that fits */
+	struct parts_load load;            /* what it was sized for */
+	struct parts_run harness_main;     /* packs to distribution */
+	struct parts_run harness_pack;     /* each pack's lead (several packs) */
+	struct parts_run harness_arm;      /* each rotor's run (ESCs on arms) */
+	double harness_kg;                 /* the three runs' copper */
+	int n_motor_screws;                /* screws holding the motors */
+	int n_arm_screws;                  /* ... and custom arms (none with a
+	                                      frame kit: parts_kit_screws()) */
+	const char *fastener_size;         /* "M3 x 8" */
+	double fastener_unit_kg;           /* one screw */
+	double role_supplied_kg;           /* role hardware the class items
+	                                      supply (kept out of the role's
+	                                      allowance) */
+	const char *role_supplied_what;    /* their words, NULL none */
 };
 
 /* One closing: an option with its ESC set and battery, flown. */
@@ -246,15 +306,94 @@ const struct parts_pack *parts_packs_for(const struct parts_ctx *x,
 void parts_record_checks(const struct parts_ctx *x, const struct parts_closed *c,
                          struct solve_result *r);
 
+/* compat.c: do two parts work together?  Each rule returns NULL when
+ * they do, else the reason written into why (size n). */
+
+/* A part's current ratings: continuous, and a burst with how long it
+ * holds (0: not published). */
+struct compat_rating {
+	double continuous_a, burst_a, burst_s;
+};
+/* The rating that holds for a burst of need_s (compat.c says when the
+ * burst rating does). */
+double compat_rating_for(const struct compat_rating *r, double need_s);
+/* sustained_a within the continuous rating, full_a within the rating for
+ * a full-throttle burst of need_s. */
+const char *compat_rated(const struct compat_rating *r, double sustained_a,
+                         double full_a, double need_s, char *why, size_t n);
+/* camera with a transmitter of system vtx_system (vtx_has_camera: an air
+ * unit that carries its camera; then camera must be NULL). */
+const char *compat_video(const struct catalog_avionics *camera,
+                         const char *vtx_system, bool vtx_has_camera,
+                         char *why, size_t n);
+/* Connector a on a pack whose plug is pack_connector ("XT60", "smart",
+ * "" unknown), carrying the pack's share of the currents. */
+const char *compat_connector(const char *pack_connector,
+                             const struct catalog_avionics *a,
+                             double sustained_a, double full_a, double need_s,
+                             char *why, size_t n);
+/* The family of a connector's name, upper case, letters and digits up to
+ * the first blank, "(" or "/", without AMASS's -M/-F half suffix
+ * ("XT90-S (mated pair)" and "xt90s" read "XT90S", "XT60-M" "XT60"). */
+void compat_connector_family(const char *name, char *out, size_t n);
+/* Is connector a one half of its pair ("XT60-M"), not a mated pair?  A
+ * half mates with a pack's own plug; a pack fitted with another plug
+ * needs the whole pair. */
+bool compat_connector_half(const struct catalog_avionics *a);
+/* Does a pack's plug text ("XT60", "AS150/XT150") name a's family? */
+bool compat_mates(const char *pack_connector, const struct catalog_avionics *a);
+/* ESC e driving motor m (NULL: not checked) on `cells`, each channel
+ * carrying sustained_a and full_a (times margin). */
+const char *compat_esc(const struct catalog_esc *e, const struct catalog_motor *m,
+                       int cells, double sustained_a, double full_a,
+                       double margin, double need_s, char *why, size_t n);
+/* n_boards of e on one aircraft whose class takes (class_takes_it) or
+ * not the flight controller an all-in-one board carries. */
+const char *compat_board_fc(const struct catalog_esc *e, int n_boards,
+                            bool class_takes_it, char *why, size_t n);
+/* Does an aircraft of mass_kg need Remote ID (EU C1 and up, US Part 89)? */
+bool compat_remote_id_required(double mass_kg);
+/* Does part a do kind, as its own kind or one it carries? */
+bool compat_does(const struct catalog_avionics *a, const char *kind);
+
+/* harness.c: the power harness in copper. */
+
+/* A run of n_runs pairs of conductors carrying current_a each over
+ * length_m, in the lightest gauge whose chassis-wiring ampacity carries
+ * it (harness.c cites the table), wires in parallel beyond the largest. */
+void parts_harness_run(double current_a, double length_m, int n_runs,
+                       struct parts_run *out);
+/* The kit's three runs and their mass, for option o on pack pk with ESC
+ * esc, sized for the kit's load (kit->load). */
+void parts_harness(const struct parts_ctx *x, const struct parts_pack *pk,
+                   const struct catalog_esc *esc, struct parts_kit *kit);
+
 /* kit.c */
 /* Indexes the catalogue's avionics by kind into x (parts_kit_free). */
 void parts_kit_init(struct parts_ctx *x);
 void parts_kit_free(struct parts_ctx *x);
 /* The kit of option o on pack pk with ESC esc (NULL: the motors' own, an
- * integrated system's), sized for sustained_a. */
+ * integrated system's), sized for load. */
 void parts_kit_pick(const struct parts_ctx *x, const struct parts_option *o,
                     const struct parts_pack *pk, const struct catalog_esc *esc,
-                    double sustained_a, struct parts_kit *kit);
+                    const struct parts_load *load, struct parts_kit *kit);
+/* Would the kit be the same one: the same parts, connectors and masses? */
+bool parts_kit_same(const struct parts_kit *a, const struct parts_kit *b);
+/* Can pack pk join the harness with each pack carrying its share of
+ * sustained_a and full_a: through its own plug when the catalogue sells
+ * its mate, else through a catalogue connector that carries it, the
+ * plug's own rating carrying it wherever the catalogue has one?  NULL
+ * when it can, else why. */
+const char *parts_kit_plug(const struct parts_ctx *x, const struct parts_pack *pk,
+                           double sustained_a, double full_a, char *why,
+                           size_t n);
+/* The screws the kit holds its motors (and custom arms) with, and
+ * their mass. */
+int parts_kit_screws(const struct parts_kit *kit);
+double parts_kit_fastener_kg(const struct parts_kit *kit);
+/* Does the airframe class fly the flight controller an all-in-one ESC
+ * board carries (its need is any controller, not a redundant one)? */
+bool parts_kit_takes_board_fc(const struct parts_ctx *x);
 /* Does frame kit f fit (kit.c says when)?  custom_kg: the custom arms and
  * centre frame it would replace. */
 bool parts_kit_frame_fits(const struct parts_ctx *x,
