@@ -626,6 +626,7 @@ put_run_fields(struct jw *w, const struct res_run *run,
 	jw_num(w, "optimal_speed_ms", run->optimal_speed_ms);
 	jw_num(w, "v_min_power_ms", run->v_min_power_ms);
 	jw_num(w, "v_max_ms", run->v_max_ms);
+	jw_lit(w, "v_max_limited_by", res_limit_name[run->v_max_limit]);
 	int ns = jw_count(w, "speed_sweep", run->n_sweep, RES_MAX_SWEEP);
 	jw_obj(w, "speed_sweep");
 	jw_num_array(w, "v_ms", run->sweep_v_ms, ns);
@@ -728,7 +729,10 @@ put_perf(struct jw *w, const struct res_perf *pf)
 	jw_num(w, "mixed_time_s", pf->mixed_time_s);
 	jw_num(w, "full_throttle_time_s", pf->full_throttle_time_s);
 	jw_num(w, "max_speed_ms", pf->max_speed_ms);
+	jw_lit(w, "max_speed_limited_by", res_limit_name[pf->max_speed_limit]);
 	jw_num(w, "max_climb_ms", pf->max_climb_ms);
+	jw_lit(w, "max_climb_limited_by", res_limit_name[pf->max_climb_limit]);
+	jw_num(w, "max_climb_rpm", pf->max_climb_rpm);
 	jw_num(w, "max_tilt_deg", pf->max_tilt_deg);
 	jw_num(w, "spare_payload_kg", pf->spare_payload_kg);
 	jw_num(w, "throttle_needed", pf->throttle_needed);
