@@ -11,6 +11,8 @@
 #include "core/diag.h"
 #include "engine/engine.h"
 #include "input/mission_io.h"
+#include "physics/mission.h"
+#include "physics/prop.h"
 #include "physics/therm.h"
 #include "util/units.h"
 #include "util/xalloc.h"
@@ -655,20 +657,83 @@ engine_every_example_should_converge_to_finite_numbers(void **state)
 	assert_true(n >= 1);
 }
 
-/* The SAR example solved with the shipped data; free the result and
+/* An example mission solved with the shipped data; free the result and
  * cli_env_free(env) after. */
 static struct solve_result *
-solve_sar_example(struct cli_env *env)
+solve_example(struct cli_env *env, const char *path)
 {
 	assert_int_equal(cli_env_load(env, NULL, 1, stderr), 0);
 	struct diag *dg = diag_alloc(NULL);
 	struct mission_spec s;
-	assert_int_equal(mission_io_load("examples/sar_imaging_quad.json",
-	    env->model.chem_names, dg, &s), 0);
+	assert_int_equal(mission_io_load(path, env->model.chem_names, dg, &s), 0);
 	diag_free(dg);
 	struct solve_result *r = xcalloc(1, sizeof *r);
 	assert_int_equal(engine_solve(&s, &env->model, env->cat, r), 0);
 	return r;
+}
+
+/* The SAR example solved with the shipped data. */
+static struct solve_result *
+solve_sar_example(struct cli_env *env)
+{
+	return solve_example(env, "examples/sar_imaging_quad.json");
+}
+
+/* An envelope the propeller can fly (issue 33): the record's top climb
+ * stays below the propeller's pitch speed at the rotor speed full
+ * throttle reaches in that climb (pitch × rpm: the propeller advances
+ * less than its pitch per turn), and so below its zero-thrust speed; the
+ * climb turns the rotor at least as fast as full throttle at rest (the
+ * propeller unloads).  The top level speed, of the record and of the
+ * continuous design, is a physical limit (the thrust left at the inflow
+ * or the 35° pitch), never the end of the sweep's grid or a search
+ * bound: below the grid's end, or beyond it only as such a limit. */
+static void
+check_envelope(const char *path)
+{
+	struct cli_env env;
+	struct solve_result *r = solve_example(&env, path);
+	assert_true(r->parts_selected);
+	const struct res_run *o = &r->closed;
+	const struct res_perf *pf = &o->perf;
+	assert_true(pf->valid);
+	double pitch_m = in_to_m(o->opt.prop_pitch_in);
+	double d_m = in_to_m(o->opt.prop_diameter_in);
+	double n_climb = pf->max_climb_rpm / S_PER_MIN;
+	assert_true(pf->max_climb_ms > 0.0);
+	assert_int_equal(pf->max_climb_limit, RES_LIMIT_INFLOW);
+	assert_true(pf->max_climb_rpm >= o->rpm_peak);
+	assert_true(pf->max_climb_ms < pitch_m * n_climb);
+	assert_true(pf->max_climb_ms < prop_j0(pitch_m / d_m) * n_climb * d_m);
+	/* ... far below the climb the static thrust alone would promise. */
+	assert_true(pf->max_climb_ms < 1.25 * pitch_m * o->rpm_peak / S_PER_MIN);
+	const struct res_run *runs[] = { o, &r->custom, &r->baseline };
+	for (size_t i = 0; i < sizeof runs / sizeof runs[0]; i++) {
+		double v = runs[i]->v_max_ms;
+		enum res_limit l = runs[i]->v_max_limit;
+		assert_true(v > 0.0);
+		assert_true(l == RES_LIMIT_INFLOW || l == RES_LIMIT_PITCH);
+		assert_true(v != MISSION_SWEEP_V1_MS);
+		assert_true(v < MISSION_SWEEP_V1_MS || l != RES_LIMIT_BOUND);
+	}
+	assert_true(pf->max_speed_ms == o->v_max_ms);
+	assert_int_equal(pf->max_speed_limit, o->v_max_limit);
+	free(r);
+	cli_env_free(&env);
+}
+
+static void
+engine_sar_envelope_should_be_one_the_propeller_can_fly(void **state)
+{
+	(void)state;
+	check_envelope("examples/sar_imaging_quad.json");
+}
+
+static void
+engine_agri_envelope_should_be_one_the_propeller_can_fly(void **state)
+{
+	(void)state;
+	check_envelope("examples/agri_spray_octo.json");
 }
 
 /* The design of record carries its figures beyond the mission (worked out
@@ -821,6 +886,8 @@ main(void)
 		T(engine_nmc_and_lihv_should_both_converge_with_different_batteries),
 		T(engine_pack_should_heat_by_what_its_losses_say),
 		T(engine_record_should_carry_its_figures_and_speed_curve),
+		T(engine_sar_envelope_should_be_one_the_propeller_can_fly),
+		T(engine_agri_envelope_should_be_one_the_propeller_can_fly),
 		T(engine_auto_cells_should_not_stop_at_a_runaway_cell_count),
 		T(engine_li_s_should_converge_with_enough_series_cells),
 		T(engine_coaxial_x8_should_converge_with_the_quad_overlap_limit),

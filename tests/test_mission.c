@@ -12,6 +12,7 @@
 #include "test_util.h"
 #include "test_fixtures.h"
 #include "physics/mission.h"
+#include "physics/prop.h"
 #include "util/stats.h"
 #include "util/units.h"
 
@@ -114,8 +115,13 @@ mission_sweep_should_cover_1_to_30_m_s_in_half_steps(void **state)
 	/* The 35° pitch limit ends the usable range: F_d grows with V², so
 	 * at 25 m/s F_d = 9.190330453 (25/13.85)² = 29.9441 N, θ = atan(29.9441 /
 	 * 43.0022) = 34.85° (within), at 25.5 m/s F_d = 31.1527 N, θ = 35.92°
-	 * (beyond) → v_max = 25 m/s. */
-	assert_rel(v_max, 25.0, 0.0);
+	 * (beyond).  Between them, to the millimetre per second: F_d = W tan 35°
+	 * = 43.00216025 · 0.7002075382 = 30.1104 N at V = 13.85 sqrt(30.1104 /
+	 * 9.190330453) = 25.06933 m/s → v_max = 25.069 m/s, the pitch's. */
+	assert_rel(v_max, 25.069, 1e-12);
+	assert_rel(mission_pitch_limit_speed_ms(&m, 4.385), 25.0693306, 1e-8);
+	assert_int_equal(mission_top_speed_limit(&m, 4.385, v_max),
+	    MISSION_LIMIT_PITCH);
 }
 
 static void
@@ -134,9 +140,9 @@ mission_max_climb_should_stop_where_the_climb_drag_meets_the_thrust(void **state
 	double v = mission_max_climb_ms(&m, 4.385, 11.0, 20.0);
 	struct mission_power p;
 	mission_power(&m, 4.385, v, 0.0, &p);
-	assert_false(mission_beyond_limits(&p, 11.0));
+	assert_false(mission_beyond_limits(&m, &p, 11.0));
 	mission_power(&m, 4.385, v + 0.01, 0.0, &p);
-	assert_true(mission_beyond_limits(&p, 11.0));
+	assert_true(mission_beyond_limits(&m, &p, 11.0));
 }
 
 static void
@@ -147,10 +153,85 @@ mission_sweep_should_stop_v_max_at_the_thrust_limit(void **state)
 	double v[64], pw[64], v_min, v_max;
 	fixture_hand_model(&m, false);
 	/* Thrust per rotor 10.99331604 N at 13.85 m/s; with a limit of 11.0 N
-	 * the highest speed within it lies between 13.5 and 14.5 m/s. */
+	 * (and no propeller pitch: the same full thrust at every speed) the
+	 * drag may reach sqrt(44² - 43.00216025²) = 9.317409 N, at V = 13.85
+	 * sqrt(9.317409 / 9.190330453) = 13.945430 m/s → 13.945 on the
+	 * millimetre lattice, between the grid's 13.5 and 14.0. */
 	(void)mission_speed_sweep(&m, 4.385, 11.0, v, pw, 64, &v_min, &v_max);
-	assert_true(v_max >= 13.5 && v_max <= 14.0);
+	assert_rel(v_max, 13.945, 1e-12);
 	assert_true(v_min <= v_max);
+	assert_int_equal(mission_top_speed_limit(&m, 4.385, v_max),
+	    MISSION_LIMIT_THRUST);
+}
+
+/* The envelope with the propeller's C_T(J): P/D 0.5, J0 = 1.15 · 0.5 =
+ * 0.575, full thrust 16 N per rotor at rest, reached at n = sqrt(16 /
+ * (0.12 · 1.2249781262 · 0.3385⁴)) = 91.05166 rev/s (zero thrust at
+ * J0 n D = 17.72207 m/s).  At 5 m/s of inflow J = 5 / (91.05166 · 0.3385)
+ * = 0.162228, x = 0.282136, C_T / C_T0 = 1 - 0.35 x - 0.65 x² = 0.849513:
+ * 13.59221 N.  The top climb, where 4 · 16 · C_T(J)/C_T0 = W + ½ ρ V²
+ * C_d,v S_ref: 7.98901 m/s (by hand, bisection), against 12.5 m/s or more
+ * with the static 16 N at every speed. */
+static void
+mission_envelope_should_lose_thrust_with_the_inflow(void **state)
+{
+	(void)state;
+	struct mission_model m;
+	fixture_hand_model(&m, false);
+	m.prop_j0 = 0.575;
+	assert_rel(mission_thrust_available_n(&m, 16.0, 0.0), 16.0, 0.0);
+	assert_rel(mission_thrust_available_n(&m, 16.0, 5.0), 13.59221, 1e-6);
+	assert_true(fabs(mission_thrust_available_n(&m, 16.0, 17.72207)) < 1e-4);
+	assert_rel(mission_max_climb_ms(&m, 4.385, 16.0, 30.0), 7.98901, 1e-4);
+	/* Without the pitch: the static thrust at every climb rate. */
+	m.prop_j0 = 0.0;
+	assert_true(mission_max_climb_ms(&m, 4.385, 16.0, 30.0) > 12.5);
+	/* In level flight the disk tilts by the pitch: its inflow is
+	 * V sin θ, sin θ = F_d / |T| (13.85 m/s: 9.190330453 / 43.97326 · 13.85). */
+	struct mission_power p;
+	mission_power(&m, 4.385, 0.0, 13.85, &p);
+	assert_rel(p.axial_ms, 13.85 * 9.190330453 / (4.0 * 10.99331604), 1e-8);
+	mission_power(&m, 4.385, 2.85, 0.0, &p);
+	assert_rel(p.axial_ms, 2.85, 0.0);
+}
+
+/* A slippery body: every grid speed is within the limits, and the top
+ * speed is searched past the grid's end (30 m/s), to the pitch limit's
+ * speed when the thrust lasts (C_d,h 0.6: 25.0693306 / sqrt(0.6) =
+ * 32.364367 m/s → 32.364), else to where the thrust left at the inflow
+ * ends; never the grid's end itself. */
+static void
+mission_top_speed_past_the_grid_should_be_searched_to_a_physical_limit(void **state)
+{
+	(void)state;
+	struct mission_model m;
+	double v[64], pw[64], v_min, v_max, s_min, s_max;
+	fixture_hand_model(&m, false);
+	m.cd_h = 0.6;
+	(void)mission_speed_sweep(&m, 4.385, 1e3, v, pw, 64, &v_min, &v_max);
+	assert_rel(v_max, 32.364, 1e-12);
+	assert_int_equal(mission_top_speed_limit(&m, 4.385, v_max),
+	    MISSION_LIMIT_PITCH);
+	mission_speed_search(&m, 4.385, 1e3, &s_min, &s_max);
+	assert_true(s_max == v_max && s_min == v_min);
+	/* Thrust that lasts past the grid but not to the pitch limit. */
+	m.prop_j0 = 0.575;
+	double t_max_n = 30.0;
+	(void)mission_speed_sweep(&m, 4.385, t_max_n, v, pw, 64, &v_min, &v_max);
+	assert_true(v_max > MISSION_SWEEP_V1_MS && v_max < 32.364);
+	assert_int_equal(mission_top_speed_limit(&m, 4.385, v_max),
+	    MISSION_LIMIT_THRUST);
+	struct mission_power p;
+	mission_power(&m, 4.385, 0.0, v_max, &p);
+	assert_false(mission_beyond_limits(&m, &p, t_max_n));
+	mission_power(&m, 4.385, 0.0, v_max + 0.001, &p);
+	assert_true(mission_beyond_limits(&m, &p, t_max_n));
+	mission_speed_search(&m, 4.385, t_max_n, &s_min, &s_max);
+	assert_true(s_max == v_max && s_min == v_min);
+	struct mission_speed_hint h = { true, 59, 10, 30500 };
+	mission_speed_search_hinted(&m, 4.385, t_max_n, &s_min, &s_max, &h);
+	assert_true(s_max == v_max);
+	assert_true(h.k_max == lround(v_max * MISSION_SPEED_RES_PER_MS));
 }
 
 /* A thrust limit a hair above hover: the sweep's first speed (1 m/s) is
@@ -171,9 +252,9 @@ mission_top_speed_below_the_first_grid_point_should_be_bisected(void **state)
 	assert_rel(s_max, v_max, 0.0);
 	struct mission_power p;
 	mission_power(&m, 4.385, 0.0, v_max, &p);
-	assert_false(mission_beyond_limits(&p, limit_n));
+	assert_false(mission_beyond_limits(&m, &p, limit_n));
 	mission_power(&m, 4.385, 0.0, v_max + 0.01, &p);
-	assert_true(mission_beyond_limits(&p, limit_n));
+	assert_true(mission_beyond_limits(&m, &p, limit_n));
 	/* A requested 5 m/s is flown at that top speed, within full thrust. */
 	assert_rel(mission_forward_flown_ms(&m, 4.385, limit_n, 5.0, 0.0), v_max, 0.0);
 	(void)mission_speed_sweep(&m, 4.385, 0.24 * w_n, v, pw, 64, &v_min, &v_max);
@@ -215,7 +296,8 @@ mission_search_should_find_the_sweeps_speeds_on_random_aircraft(void **state)
 		assert_true(s_max == v_max);
 		/* From any hint, near or far, even off the grid: the same. */
 		struct mission_speed_hint h = { true, (int)stats_rng_uniform(&g, -3.0, 65.0),
-		    (int)stats_rng_uniform(&g, -3.0, 65.0) };
+		    (int)stats_rng_uniform(&g, -3.0, 65.0),
+		    (long)stats_rng_uniform(&g, 0.0, 60000.0) };
 		mission_speed_search_hinted(&m, mass_kg, t_max_n, &s_min, &s_max, &h);
 		assert_true(s_min == v_min);
 		assert_true(s_max == v_max);
@@ -240,14 +322,18 @@ mission_search_hint_should_name_the_grid_points_of_its_answers(void **state)
 	fixture_hand_model(&m, false);
 	double mass_kg = 4.0;
 	double t_max_n = 2.0 * mass_kg * G0_M_S2 / (double)m.n_rotors;
-	struct mission_speed_hint h = { false, 0, 0 };
+	struct mission_speed_hint h = { false, 0, 0, 0 };
 	double s_min, s_max;
 	mission_speed_search_hinted(&m, mass_kg, t_max_n, &s_min, &s_max, &h);
 	assert_true(h.set);
 	assert_true(h.i_min > 0 && h.i_min < h.n_ok - 1);
 	assert_true(s_min == MISSION_SWEEP_V0_MS + MISSION_SWEEP_STEP_MS * h.i_min);
-	assert_true(s_max == MISSION_SWEEP_V0_MS
+	/* The top speed lies between the last grid speed within the limits
+	 * and the first past them, on the millimetre lattice. */
+	assert_true(s_max >= MISSION_SWEEP_V0_MS
 	    + MISSION_SWEEP_STEP_MS * (h.n_ok - 1));
+	assert_true(s_max < MISSION_SWEEP_V0_MS + MISSION_SWEEP_STEP_MS * h.n_ok);
+	assert_true(s_max == (double)h.k_max / MISSION_SPEED_RES_PER_MS);
 	/* Searched again from it: the same answers and the same hint. */
 	struct mission_speed_hint h2 = h;
 	double s_min2, s_max2;
@@ -255,6 +341,7 @@ mission_search_hint_should_name_the_grid_points_of_its_answers(void **state)
 	assert_true(s_min2 == s_min && s_max2 == s_max);
 	assert_int_equal(h2.n_ok, h.n_ok);
 	assert_int_equal(h2.i_min, h.i_min);
+	assert_true(h2.k_max == h.k_max);
 }
 
 int
@@ -268,6 +355,8 @@ main(void)
 		cmocka_unit_test(mission_sweep_should_cover_1_to_30_m_s_in_half_steps),
 		cmocka_unit_test(mission_max_climb_should_stop_where_the_climb_drag_meets_the_thrust),
 		cmocka_unit_test(mission_sweep_should_stop_v_max_at_the_thrust_limit),
+		cmocka_unit_test(mission_envelope_should_lose_thrust_with_the_inflow),
+		cmocka_unit_test(mission_top_speed_past_the_grid_should_be_searched_to_a_physical_limit),
 		cmocka_unit_test(mission_top_speed_below_the_first_grid_point_should_be_bisected),
 		cmocka_unit_test(mission_search_should_find_the_sweeps_speeds_on_random_aircraft),
 		cmocka_unit_test(mission_search_hint_should_name_the_grid_points_of_its_answers),

@@ -76,6 +76,17 @@ motor_at_voltage_should_balance_motor_and_propeller_torque(void **state)
 	assert_rel(p.torque_nm, 1.090486543914, 1e-10);
 	assert_rel(p.voltage_v, 22.85, 1e-12);
 	assert_true(p.efficiency > 0.0 && p.efficiency <= 1.0);
+	/* The same motor held at that speed on that voltage: the same point. */
+	struct motor_point q;
+	motor_at_voltage_rps(&m385, 25.0, 22.85, 122.716348134226, &q);
+	assert_rel(q.current_a, 44.615261278372, 1e-10);
+	assert_rel(q.torque_nm, 1.090486543914, 1e-10);
+	/* Faster, it draws less (the back-EMF): at 130.5 rev/s
+	 * I = (22.85 - 2π · 0.024803367755 · 130.5) / 0.0835 = 30.087876 A. */
+	motor_at_voltage_rps(&m385, 25.0, 22.85, 130.5, &q);
+	assert_rel(q.current_a, (22.85 - 2.0 * M_PI * 0.024803367754581 * 130.5)
+	    / 0.0835, 1e-12);
+	assert_rel(q.current_a, 30.087876, 1e-6);
 }
 
 static void

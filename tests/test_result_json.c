@@ -193,6 +193,7 @@ fill_run(struct rng *g, struct res_run *run, const struct fixture_size *sz)
 		val(g, 0.03, 0.4), val(g, 5, 60), val(g, 100, 2000) };
 	run->arm_wall_floor_binds = false;
 	run->min_fraction_binds = true;
+	run->v_max_limit = RES_LIMIT_PITCH;
 	run->n_trace = sz->trace;
 	for (int i = 0; i < sz->trace; i++) {
 		struct res_sample *s = &run->trace[i];
@@ -424,7 +425,7 @@ result_json_should_hold_every_product_key_per_run(void **state)
 		"resonance_margin", "max_battery_temp_c", "thermal_margin_c",
 		"min_terminal_voltage_v", "time_series", "continuous_optimum",
 		"feasible", "ran", "checks", "speed_sweep", "endurance_explorer",
-		"selected", "bom"
+		"selected", "bom", "v_max_limited_by"
 	};
 	static const char *const phase_keys[] = {
 		"phase", "duration_s", "power_w", "current_a", "energy_wh"
@@ -453,6 +454,8 @@ result_json_should_hold_every_product_key_per_run(void **state)
 				get(ph, phase_keys[i]);
 			assert_string_equal(str(ph, "phase"), res_phase_name[p]);
 		}
+		/* What ends the top speed, next to it. */
+		assert_string_equal(str(run, "v_max_limited_by"), "pitch_limit");
 	}
 	/* The baseline is not mapped to parts; the custom design's parts and
 	 * BOM are the top level's. */
@@ -912,6 +915,43 @@ result_json_should_escape_strings(void **state)
 	free(r);
 }
 
+/* The design of record's envelope figures carry what limits them, next to
+ * each figure, by name; the climb also its rotor speed. */
+static void
+result_json_should_name_what_limits_the_envelope(void **state)
+{
+	(void)state;
+	struct solve_result *r = fixture_new(&SMALL);
+	struct res_perf *pf = &r->closed.perf;
+	pf->valid = true;
+	pf->max_speed_ms = 23.857;
+	pf->max_speed_limit = RES_LIMIT_INFLOW;
+	pf->max_climb_ms = 11.285;
+	pf->max_climb_limit = RES_LIMIT_INFLOW;
+	pf->max_climb_rpm = 4385.25;
+	cJSON *root = render_parse(r, NULL);
+	const cJSON *perf = get(get(root, "design_of_record"), "performance");
+	assert_exact(num(perf, "max_speed_ms"), 23.857);
+	assert_string_equal(str(perf, "max_speed_limited_by"), "propeller_inflow");
+	assert_exact(num(perf, "max_climb_ms"), 11.285);
+	assert_string_equal(str(perf, "max_climb_limited_by"), "propeller_inflow");
+	assert_exact(num(perf, "max_climb_rpm"), 4385.25);
+	/* Each key follows its figure. */
+	assert_string_equal(get(perf, "max_speed_ms")->next->string,
+	    "max_speed_limited_by");
+	assert_string_equal(get(perf, "max_climb_ms")->next->string,
+	    "max_climb_limited_by");
+	cJSON_Delete(root);
+	pf->max_speed_limit = RES_LIMIT_PITCH;
+	pf->max_climb_limit = RES_LIMIT_BOUND;
+	root = render_parse(r, NULL);
+	perf = get(get(root, "design_of_record"), "performance");
+	assert_string_equal(str(perf, "max_speed_limited_by"), "pitch_limit");
+	assert_string_equal(str(perf, "max_climb_limited_by"), "search_bound");
+	cJSON_Delete(root);
+	free(r);
+}
+
 /* Byte comparison with the golden file; AEROEVAL_UPDATE_GOLDEN=1 rewrites it. */
 static void
 result_json_should_match_golden_file(void **state)
@@ -939,6 +979,7 @@ main(void)
 		cmocka_unit_test(result_json_renders_should_be_byte_identical),
 		cmocka_unit_test(result_json_numbers_should_print_shortest_exact_form),
 		cmocka_unit_test(result_json_should_escape_strings),
+		cmocka_unit_test(result_json_should_name_what_limits_the_envelope),
 		cmocka_unit_test(result_json_should_match_golden_file),
 	};
 	return cmocka_run_group_tests(tests, NULL, NULL);

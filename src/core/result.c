@@ -11,6 +11,8 @@
  * dossier; index = enum value. */
 const char *const res_phase_name[PHASE_MAX] = { "climb", "forward", "hover" };
 const char *const res_op_name[OP_MAX] = { "hover", "climb", "cruise", "full throttle" };
+const char *const res_limit_name[RES_LIMIT_MAX] = { "none", "propeller_inflow",
+	"pitch_limit", "search_bound" };
 
 const struct res_check *
 res_tightest_check(const struct res_run *run)

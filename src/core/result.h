@@ -31,6 +31,19 @@
 enum res_phase_id { PHASE_CLIMB, PHASE_FORWARD, PHASE_HOVER, PHASE_MAX };
 extern const char *const res_phase_name[PHASE_MAX]; /* "climb", "forward", "hover" */
 
+/* What ends a flight envelope figure (top speed, maximum climb). */
+enum res_limit {
+	RES_LIMIT_NONE,           /* not worked out */
+	RES_LIMIT_INFLOW,         /* the propeller's full thrust at the inflow
+	                             through its disk no longer carries weight
+	                             and drag (prop.h, C_T(J)) */
+	RES_LIMIT_PITCH,          /* the 35° body-pitch limit */
+	RES_LIMIT_BOUND,          /* the search's bound, not a physical limit */
+	RES_LIMIT_MAX
+};
+/* "none", "propeller_inflow", "pitch_limit", "search_bound" */
+extern const char *const res_limit_name[RES_LIMIT_MAX];
+
 /* Mass breakdown; the items sum to total_kg. */
 struct res_mass {
 	double payload_kg;      /* payload at takeoff */
@@ -156,8 +169,15 @@ struct res_perf {
 	double hover_time_s;      /* hover at takeoff mass down to the reserve */
 	double mixed_time_s;      /* the mission's phase mix down to the reserve */
 	double full_throttle_time_s; /* full throttle down to the reserve */
-	double max_speed_ms;      /* level flight within thrust and 35° pitch */
-	double max_climb_ms;      /* vertical, at full throttle */
+	double max_speed_ms;      /* level flight within the full thrust at its
+	                             inflow and 35° pitch */
+	enum res_limit max_speed_limit; /* which of them ends it */
+	double max_climb_ms;      /* vertical, at full throttle, the motor and
+	                             propeller at the climb's inflow */
+	enum res_limit max_climb_limit; /* what ends it */
+	double max_climb_rpm;     /* the rotor's speed at full throttle in
+	                             that climb (above the static full-throttle
+	                             rpm: the propeller unloads) */
 	double max_tilt_deg;      /* bank holding altitude at full throttle */
 	double spare_payload_kg;  /* more payload before T/W falls below the target */
 	double throttle_needed;   /* the highest throttle the mission needs
@@ -227,6 +247,8 @@ struct res_run {
 	double optimal_speed_ms;  /* forward speed used (auto: minimum power) */
 	double v_min_power_ms;    /* minimum-power speed of the sweep */
 	double v_max_ms;          /* highest forward speed the thrust margin allows */
+	enum res_limit v_max_limit; /* what ends it: the thrust at the inflow,
+	                             the pitch limit */
 	double climb_limit_ms;    /* the fastest climb the thrust allows, flown
 	                             instead of the mission's when that is
 	                             beyond it; 0 when the mission's is within */

@@ -33,6 +33,24 @@ report_div(double a, double b)
 }
 
 const char *
+report_limit_phrase(enum res_limit l, bool climb)
+{
+	switch (l) {
+	case RES_LIMIT_INFLOW:
+		return climb ? "limited by the propellers' thrust at the climb's inflow"
+		    : "limited by the propellers' thrust against drag at that speed's inflow";
+	case RES_LIMIT_PITCH:
+		return "limited by the 35° pitch limit";
+	case RES_LIMIT_BOUND:
+		return "at least: the search's bound, not a limit of the aircraft";
+	case RES_LIMIT_NONE:
+	case RES_LIMIT_MAX:
+	default:
+		return climb ? "" : "within full thrust and 35° pitch";
+	}
+}
+
+const char *
 report_num(char *buf, size_t n, double x, int dec)
 {
 	if (numfmt_fixed(buf, n, x, dec) == 0)

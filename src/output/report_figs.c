@@ -156,9 +156,10 @@ sweep_figure(struct rep *rp)
 	}
 	doc_figure(rp->d, p, report_sfmt(&sb, "Electrical power required vs forward speed at takeoff mass; "
 	           "for the %s the minimum-power speed (%s m/s), the flown speed (%s m/s) and the highest "
-	           "speed its thrust allows (%s m/s).", rp->buildable ? "design of record" : "continuous design",
+	           "speed (%s m/s, %s).", rp->buildable ? "design of record" : "continuous design",
 	           report_num(b1, sizeof b1, rec->v_min_power_ms, 1), report_num(b2, sizeof b2, fv, 1),
-	           report_num(b3, sizeof b3, rec->v_max_ms, 1)));
+	           report_num(b3, sizeof b3, rec->v_max_ms, 1),
+	           report_limit_phrase(rec->v_max_limit, false)));
 	plot_free(p);
 	strbuf_free(&sb);
 }

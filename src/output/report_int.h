@@ -90,6 +90,10 @@ const char *report_sfmt(struct strbuf *sb, const char *fmt, ...)
 double report_div(double a, double b);
 /* s, or "—" when s is NULL or empty. */
 const char *report_or_absent(const char *s);
+/* What ends an envelope figure (a top speed, a climb when climb), in one
+ * short phrase of the client's words: "limited by the 35° pitch limit";
+ * "" for a climb whose limit was not worked out. */
+const char *report_limit_phrase(enum res_limit l, bool climb);
 
 /* Appends a number cell: "—" when x is not finite. */
 void report_cell_num(struct doc_table *t, enum doc_cell style, double x, int dec);

@@ -322,11 +322,14 @@ performance(struct rep *rp)
 	                             report_num(b2, sizeof b2, pf->mixed_time_s / 60.0, 1),
 	                             report_num(b3, sizeof b3, pf->full_throttle_time_s / 60.0, 1)));
 	k[n] = "Maximum level speed";
-	v[n++] = xstrdup(report_sfmt(&sb, "%s" NBSP "m/s (within full thrust and 35° pitch)",
-	                             report_num(b1, sizeof b1, pf->max_speed_ms, 1)));
+	v[n++] = xstrdup(report_sfmt(&sb, "%s" NBSP "m/s (%s)",
+	                             report_num(b1, sizeof b1, pf->max_speed_ms, 1),
+	                             report_limit_phrase(pf->max_speed_limit, false)));
 	k[n] = "Maximum climb rate";
-	v[n++] = xstrdup(report_sfmt(&sb, "%s" NBSP "m/s (vertical, full throttle)",
-	                             report_num(b1, sizeof b1, pf->max_climb_ms, 1)));
+	v[n++] = xstrdup(report_sfmt(&sb, "%s" NBSP "m/s (vertical, full throttle%s%s)",
+	                             report_num(b1, sizeof b1, pf->max_climb_ms, 1),
+	                             pf->max_climb_limit != RES_LIMIT_NONE ? "; " : "",
+	                             report_limit_phrase(pf->max_climb_limit, true)));
 	k[n] = "Maximum tilt";
 	v[n++] = xstrdup(report_sfmt(&sb, "%s° holding altitude at full throttle",
 	                             report_num(b1, sizeof b1, pf->max_tilt_deg, 0)));

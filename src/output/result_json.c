@@ -331,6 +331,7 @@ put_run_fields(struct jsonw *w, const struct res_run *run,
 	jsonw_number(w, "optimal_speed_ms", run->optimal_speed_ms);
 	jsonw_number(w, "v_min_power_ms", run->v_min_power_ms);
 	jsonw_number(w, "v_max_ms", run->v_max_ms);
+	jsonw_string(w, "v_max_limited_by", res_limit_name[run->v_max_limit]);
 	int ns = jw_count(w, "speed_sweep", run->n_sweep, RES_MAX_SWEEP);
 	jsonw_object(w, "speed_sweep");
 	jw_num_array(w, "v_ms", run->sweep_v_ms, ns);
@@ -433,7 +434,10 @@ put_perf(struct jsonw *w, const struct res_perf *pf)
 	jsonw_number(w, "mixed_time_s", pf->mixed_time_s);
 	jsonw_number(w, "full_throttle_time_s", pf->full_throttle_time_s);
 	jsonw_number(w, "max_speed_ms", pf->max_speed_ms);
+	jsonw_string(w, "max_speed_limited_by", res_limit_name[pf->max_speed_limit]);
 	jsonw_number(w, "max_climb_ms", pf->max_climb_ms);
+	jsonw_string(w, "max_climb_limited_by", res_limit_name[pf->max_climb_limit]);
+	jsonw_number(w, "max_climb_rpm", pf->max_climb_rpm);
 	jsonw_number(w, "max_tilt_deg", pf->max_tilt_deg);
 	jsonw_number(w, "spare_payload_kg", pf->spare_payload_kg);
 	jsonw_number(w, "throttle_needed", pf->throttle_needed);

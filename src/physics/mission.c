@@ -4,6 +4,7 @@
 #include <stddef.h>
 #include <string.h>
 
+#include "physics/prop.h"
 #include "util/units.h"
 
 static void
@@ -78,16 +79,21 @@ phase_power(const struct mission_model *m, double mass_kg, double v_climb_ms,
 
 	out->pitch_deg = 0.0;
 	out->drag_n = 0.0;
+	out->axial_ms = 0.0;
 	if (v_fwd_ms > 0.0) {
 		out->drag_n = aero_drag_n(rho, v_fwd_ms, m->cd_h, s_fwd_m2);
 		out->pitch_deg = atan(out->drag_n / weight_n) * 180.0 / M_PI;
-		out->thrust_per_rotor_n = sqrt(weight_n * weight_n
-		    + out->drag_n * out->drag_n) / n;
+		double total_n = sqrt(weight_n * weight_n
+		    + out->drag_n * out->drag_n);
+		out->thrust_per_rotor_n = total_n / n;
+		/* The disk tilts by the pitch: sin θ = F_d / |T|. */
+		out->axial_ms = v_fwd_ms * out->drag_n / total_n;
 		parasite_w = out->drag_n * v_fwd_ms / n;
 	} else if (v_climb_ms > 0.0) {
 		double s_ref = aero_ref_area_m2(m->f_scale, mass_kg, m->added_drag_m2);
 		out->drag_n = aero_drag_n(rho, v_climb_ms, m->cd_v, s_ref);
 		out->thrust_per_rotor_n = (weight_n + out->drag_n) / n;
+		out->axial_ms = v_climb_ms;
 	} else {
 		out->thrust_per_rotor_n = weight_n / n;
 	}
@@ -115,6 +121,7 @@ mission_peak_power(const struct mission_model *m, double thrust_per_rotor_n,
 	out->thrust_per_rotor_n = thrust_per_rotor_n;
 	out->drag_n = 0.0;
 	out->pitch_deg = 0.0;
+	out->axial_ms = 0.0;
 	aero_rotor_power(&m->rotor, &m->air, thrust_per_rotor_n, 0.0, 0.0, 0.0,
 	    &out->rotor);
 	apply_coaxial(m, &out->rotor);
@@ -130,7 +137,7 @@ mission_forward_flown_ms(const struct mission_model *m, double mass_kg,
 		return v_fwd_ms;
 	struct mission_power p;
 	mission_power(m, mass_kg, 0.0, v_fwd_ms, &p);
-	if (!mission_beyond_limits(&p, max_thrust_per_rotor_n))
+	if (!mission_beyond_limits(m, &p, max_thrust_per_rotor_n))
 		return v_fwd_ms;
 	if (!(v_max_ms > 0.0)) {
 		double v_min_ms;
@@ -142,8 +149,9 @@ mission_forward_flown_ms(const struct mission_model *m, double mass_kg,
 
 /* The top climb (climb) or forward speed in [0, hi_ms] whose point stays
  * within the limits, for a speed hi_ms is past them: thrust (and pitch)
- * grow with the speed's drag, so bisect to 1 mm/s keeping the low end
- * within them; 0 when hover itself is not. */
+ * grow with the speed's drag while the full thrust left at the inflow
+ * falls, so bisect to 1 mm/s keeping the low end within them; 0 when
+ * hover itself is not. */
 static double
 top_speed_within(const struct mission_model *m, double mass_kg,
                  double s_fwd_m2, double max_thrust_per_rotor_n,
@@ -151,14 +159,14 @@ top_speed_within(const struct mission_model *m, double mass_kg,
 {
 	struct mission_power p;
 	phase_power(m, mass_kg, 0.0, 0.0, 0.0, &p);
-	if (mission_beyond_limits(&p, max_thrust_per_rotor_n))
+	if (mission_beyond_limits(m, &p, max_thrust_per_rotor_n))
 		return 0.0;
 	double lo = 0.0, hi = hi_ms;
 	for (int i = 0; i < 64 && hi - lo > 1e-3; i++) {
 		double mid = 0.5 * (lo + hi);
 		phase_power(m, mass_kg, climb ? mid : 0.0, climb ? 0.0 : mid,
 		    climb ? 0.0 : s_fwd_m2, &p);
-		if (mission_beyond_limits(&p, max_thrust_per_rotor_n))
+		if (mission_beyond_limits(m, &p, max_thrust_per_rotor_n))
 			hi = mid;
 		else
 			lo = mid;
@@ -172,7 +180,7 @@ mission_max_climb_ms(const struct mission_model *m, double mass_kg,
 {
 	struct mission_power p;
 	mission_power(m, mass_kg, v_hi_ms, 0.0, &p);
-	if (!mission_beyond_limits(&p, max_thrust_per_rotor_n))
+	if (!mission_beyond_limits(m, &p, max_thrust_per_rotor_n))
 		return v_hi_ms;
 	return top_speed_within(m, mass_kg, 0.0, max_thrust_per_rotor_n, v_hi_ms,
 	    true);
@@ -192,12 +200,151 @@ sweep_speed_ms(int i)
 	return MISSION_SWEEP_V0_MS + MISSION_SWEEP_STEP_MS * (double)i;
 }
 
+double
+mission_thrust_available_n(const struct mission_model *m,
+                           double max_thrust_per_rotor_n, double v_axial_ms)
+{
+	if (!(m->prop_j0 > 0.0) || !(v_axial_ms > 0.0))
+		return max_thrust_per_rotor_n;
+	double d = m->rotor.diameter_m;
+	double rps = aero_rps_for_thrust(max_thrust_per_rotor_n, m->rotor.ct,
+	    m->air.rho_kg_m3, d);
+	return max_thrust_per_rotor_n * prop_ct_ratio(prop_advance_ratio(
+	    v_axial_ms, rps, d), m->prop_j0);
+}
+
 bool
-mission_beyond_limits(const struct mission_power *p,
+mission_beyond_limits(const struct mission_model *m,
+                      const struct mission_power *p,
                       double max_thrust_per_rotor_n)
 {
-	return p->thrust_per_rotor_n > max_thrust_per_rotor_n
+	return p->thrust_per_rotor_n > mission_thrust_available_n(m,
+	    max_thrust_per_rotor_n, p->axial_ms)
 	    || p->pitch_deg > MISSION_PITCH_MAX_DEG;
+}
+
+double
+mission_pitch_limit_speed_ms(const struct mission_model *m, double mass_kg)
+{
+	/* ½ ρ V² C_d S = W tan θ_max. */
+	double cds = m->cd_h * forward_ref_area_m2(m, mass_kg);
+	if (!(cds > 0.0))
+		return MISSION_SPEED_CAP_MS;
+	double v = sqrt(2.0 * mass_kg * G0_M_S2
+	    * tan(MISSION_PITCH_MAX_DEG * M_PI / 180.0)
+	    / (m->air.rho_kg_m3 * cds));
+	return v < MISSION_SPEED_CAP_MS ? v : MISSION_SPEED_CAP_MS;
+}
+
+enum mission_limit
+mission_top_speed_limit(const struct mission_model *m, double mass_kg,
+                        double v_max_ms)
+{
+	if (v_max_ms >= MISSION_SPEED_CAP_MS)
+		return MISSION_LIMIT_BOUND;
+	struct mission_power p;
+	mission_power(m, mass_kg, 0.0, v_max_ms + 1.0 / MISSION_SPEED_RES_PER_MS,
+	    &p);
+	return p.pitch_deg > MISSION_PITCH_MAX_DEG ? MISSION_LIMIT_PITCH
+	    : MISSION_LIMIT_THRUST;
+}
+
+/* Speed k of the top-speed lattice. */
+static double
+lattice_ms(long k)
+{
+	return (double)k / MISSION_SPEED_RES_PER_MS;
+}
+
+/* Is forward speed k of the lattice within the limits? */
+static bool
+lattice_within(const struct mission_model *m, double mass_kg, double s_fwd_m2,
+               double max_thrust_per_rotor_n, long k)
+{
+	struct mission_power p;
+	phase_power(m, mass_kg, 0.0, lattice_ms(k), s_fwd_m2, &p);
+	return !mission_beyond_limits(m, &p, max_thrust_per_rotor_n);
+}
+
+/* The highest lattice speed within the limits in [lo, hi), lo within and
+ * hi past them (thrust and pitch needs only grow with the speed, the
+ * thrust left only falls).  A guess in (lo, hi) (a previous search's
+ * answer, at a mass close by) grows a bracket from it in steps of 1, 2,
+ * 4, ... lattice points first; the answer is the same either way. */
+static long
+lattice_top(const struct mission_model *m, double mass_kg, double s_fwd_m2,
+            double max_thrust_per_rotor_n, long lo, long hi, long guess)
+{
+	if (guess > lo && guess < hi) {
+		long step = 1;
+		if (lattice_within(m, mass_kg, s_fwd_m2, max_thrust_per_rotor_n,
+		    guess)) {
+			lo = guess;
+			while (lo + step < hi && lattice_within(m, mass_kg, s_fwd_m2,
+			    max_thrust_per_rotor_n, lo + step)) {
+				lo += step;
+				step *= 2;
+			}
+			if (lo + step < hi)
+				hi = lo + step;
+		} else {
+			hi = guess;
+			while (hi - step > lo && !lattice_within(m, mass_kg, s_fwd_m2,
+			    max_thrust_per_rotor_n, hi - step)) {
+				hi -= step;
+				step *= 2;
+			}
+			if (hi - step > lo)
+				lo = hi - step;
+		}
+	}
+	while (hi - lo > 1) {
+		long mid = lo + (hi - lo) / 2;
+		if (lattice_within(m, mass_kg, s_fwd_m2, max_thrust_per_rotor_n, mid))
+			lo = mid;
+		else
+			hi = mid;
+	}
+	return lo;
+}
+
+/* The top speed, the sweep's grid searched: n_ok grid speeds (a prefix)
+ * within the limits.  None: bisected below the first.  Some: on the
+ * lattice between the last within and the first past them.  All: on the
+ * lattice between the grid's end and the pitch-limit speed, past which
+ * the pitch alone is beyond its limit (MISSION_SPEED_CAP_MS for a body
+ * without drag, reported as that bound).  *k_guess: a previous answer on
+ * the lattice (0 none), and this one. */
+static double
+top_speed(const struct mission_model *m, double mass_kg, double s_fwd_m2,
+          double max_thrust_per_rotor_n, int n_ok, long *k_guess)
+{
+	if (n_ok == 0) {
+		*k_guess = 0;
+		return top_speed_within(m, mass_kg, s_fwd_m2, max_thrust_per_rotor_n,
+		    MISSION_SWEEP_V0_MS, false);
+	}
+	long lo = lround(sweep_speed_ms(n_ok - 1) * MISSION_SPEED_RES_PER_MS);
+	long hi;
+	if (n_ok <= sweep_last()) {
+		hi = lround(sweep_speed_ms(n_ok) * MISSION_SPEED_RES_PER_MS);
+	} else {
+		long kp = (long)floor(mission_pitch_limit_speed_ms(m, mass_kg)
+		    * MISSION_SPEED_RES_PER_MS);
+		if (kp <= lo) {
+			*k_guess = lo;
+			return lattice_ms(lo);
+		}
+		/* At the pitch limit and within thrust: the pitch binds. */
+		if (lattice_within(m, mass_kg, s_fwd_m2, max_thrust_per_rotor_n, kp)) {
+			*k_guess = kp;
+			return lattice_ms(kp);
+		}
+		hi = kp;
+	}
+	*k_guess = lattice_top(m, mass_kg, s_fwd_m2, max_thrust_per_rotor_n, lo, hi,
+	    *k_guess);
+	return lattice_ms(*k_guess);
 }
 
 int
@@ -208,9 +355,8 @@ mission_speed_sweep(const struct mission_model *m, double mass_kg,
 {
 	int n = 0;
 	double best = 0.0;
-	bool limited = false;
+	int n_ok = -1;
 	*v_min_power_ms = MISSION_SWEEP_V0_MS;
-	*v_max_ms = MISSION_SWEEP_V1_MS;
 	int steps = sweep_last();
 	double s_fwd_m2 = forward_ref_area_m2(m, mass_kg); /* the same at every speed */
 	for (int i = 0; i <= steps; i++) {
@@ -222,18 +368,17 @@ mission_speed_sweep(const struct mission_model *m, double mass_kg,
 			power_w[n] = p.electrical_w;
 			n++;
 		}
-		bool over = mission_beyond_limits(&p, max_thrust_per_rotor_n);
-		if (over && !limited) {
-			limited = true;
-			*v_max_ms = i > 0 ? v - MISSION_SWEEP_STEP_MS
-			    : top_speed_within(m, mass_kg, s_fwd_m2,
-			    max_thrust_per_rotor_n, MISSION_SWEEP_V0_MS, false);
-		}
+		bool over = mission_beyond_limits(m, &p, max_thrust_per_rotor_n);
+		if (over && n_ok < 0)
+			n_ok = i;
 		if (!over && (i == 0 || p.electrical_w < best)) {
 			best = p.electrical_w;
 			*v_min_power_ms = v;
 		}
 	}
+	long k = 0;
+	*v_max_ms = top_speed(m, mass_kg, s_fwd_m2, max_thrust_per_rotor_n,
+	    n_ok < 0 ? steps + 1 : n_ok, &k);
 	return n;
 }
 
@@ -254,7 +399,7 @@ memo_at(struct sweep_memo *s, int i)
 	struct mission_power p;
 	phase_power(s->m, s->mass_kg, 0.0, sweep_speed_ms(i), s->s_fwd_m2, &p);
 	s->power_w[i] = p.electrical_w;
-	s->over[i] = mission_beyond_limits(&p, s->max_thrust_n);
+	s->over[i] = mission_beyond_limits(s->m, &p, s->max_thrust_n);
 }
 
 /* The tests the search bisects on, each monotone in i on the grid: past
@@ -336,9 +481,9 @@ mission_speed_search_hinted(const struct mission_model *m, double mass_kg,
 	bool hinted = hint != NULL && hint->set;
 	/* The speeds within the limits are a prefix 0..n_ok-1. */
 	int n_ok = first_true(&s, over_at, 0, last + 1, hinted ? hint->n_ok : -1);
-	*v_max_ms = n_ok == 0 ? top_speed_within(m, mass_kg, s.s_fwd_m2,
-	    max_thrust_per_rotor_n, MISSION_SWEEP_V0_MS, false) : n_ok <= last
-	    ? sweep_speed_ms(n_ok) - MISSION_SWEEP_STEP_MS : MISSION_SWEEP_V1_MS;
+	long k_max = hinted ? hint->k_max : 0;
+	*v_max_ms = top_speed(m, mass_kg, s.s_fwd_m2, max_thrust_per_rotor_n, n_ok,
+	    &k_max);
 	*v_min_power_ms = MISSION_SWEEP_V0_MS;
 	int i_min = 0;
 	if (n_ok > 0) {
@@ -348,7 +493,7 @@ mission_speed_search_hinted(const struct mission_model *m, double mass_kg,
 		*v_min_power_ms = sweep_speed_ms(i_min);
 	}
 	if (hint != NULL)
-		*hint = (struct mission_speed_hint){ true, n_ok, i_min };
+		*hint = (struct mission_speed_hint){ true, n_ok, i_min, k_max };
 }
 
 void

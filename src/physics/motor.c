@@ -90,6 +90,15 @@ motor_at_voltage(const struct motor_model *m, double temp_c, double v_v,
 	return true;
 }
 
+void
+motor_at_voltage_rps(const struct motor_model *m, double temp_c, double v_v,
+                     double rps, struct motor_point *out)
+{
+	double k = motor_k_nm_a(m->kv_rpm_per_v);
+	double r = therm_winding_resistance_ohm(m->resistance_ohm, temp_c);
+	point_from(m, r, k, (v_v - 2.0 * M_PI * k * rps) / r, rps, out);
+}
+
 double
 motor_thermal_resistance_k_w(double mass_kg)
 {

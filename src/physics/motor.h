@@ -70,6 +70,14 @@ void motor_at_shaft(const struct motor_model *m, double temp_c, double shaft_w,
 bool motor_at_voltage(const struct motor_model *m, double temp_c, double v_v,
                       double kq_nm_s2, struct motor_point *out);
 
+/* The point of the motor on terminal voltage v_v turning at rps: the
+ * current the voltage drives past the back-EMF, I = (V - 2π K n) / R(T),
+ * and the torque it gives.  For a load whose torque is not quadratic in n
+ * (a propeller at an advance ratio: prop.h): the caller balances the
+ * torques. */
+void motor_at_voltage_rps(const struct motor_model *m, double temp_c, double v_v,
+                          double rps, struct motor_point *out);
+
 /* Winding-to-air thermal resistance and heat capacity of a motor of mass
  * mass_kg: surface ∝ m^(2/3), so R_th = 3 K/W × (m / 0.1 kg)^(-2/3). */
 double motor_thermal_resistance_k_w(double mass_kg);

@@ -10,6 +10,20 @@
  * power T^(3/2) / sqrt(2ρA) over P), and is what the mission model's rotor
  * uses for the real part (installed penalty and interference on top).
  *
+ * Away from the static point the coefficients depend on the advance ratio
+ * J = V_axial / (n D), the distance the propeller advances per revolution
+ * over its diameter.  Thrust falls as J grows and vanishes at the
+ * zero-thrust advance ratio J0, a little beyond the geometric pitch:
+ *
+ *     x = J / J0,   J0 = k P/D (k = 1.15)
+ *     C_T(J) = C_T0 (1 - a x - (1 - a) x²)      a = 0.35
+ *     C_P(J) = C_P0 (1 - b x²)                  b = 0.55
+ *
+ * fitted to the UIUC Propeller Database's wind-tunnel runs (prop.c gives
+ * the data).  The catalogue publishes static coefficients only, so the
+ * model stands for every propeller; J is the free-stream axial speed, as
+ * in the tunnel (the induced velocity is inside the measured curves).
+ *
  * Physics layer: pure functions, SI units.
  */
 #ifndef AEROEVAL_PROP_H
@@ -46,5 +60,30 @@ double prop_power_w(const struct prop_coeffs *c, double rho_kg_m3,
 
 /* The torque factor kq with Q = kq n²: C_P ρ D⁵ / 2π. */
 double prop_kq_nm_s2(const struct prop_coeffs *c, double rho_kg_m3, double d_m);
+
+/* The advance-ratio model (see above; prop.c gives the data). */
+#define PROP_J0_PER_PD   1.15  /* k: zero-thrust J over P/D, - */
+#define PROP_CT_LINEAR   0.35  /* a: the linear share of the thrust decline */
+#define PROP_CP_DROP     0.55  /* b: C_P falls to 1 - b of static at J0 */
+
+/* Zero-thrust advance ratio J0 = k P/D of a propeller of this pitch over
+ * diameter (k = PROP_J0_PER_PD); 0 when the ratio is not positive. */
+double prop_j0(double pitch_over_diameter);
+
+/* C_T(J) / C_T0 and C_P(J) / C_P0 at advance ratio j of a propeller whose
+ * zero-thrust advance ratio is j0 > 0: 1 at J <= 0 (static; a descent is
+ * not modelled), the thrust ratio falling monotonically to 0 at J0 and
+ * negative beyond (windmilling), the power ratio falling from 1 to
+ * 1 - b at J0.  With j0 <= 0 (no pitch known) both are 1. */
+double prop_ct_ratio(double j, double j0);
+double prop_cp_ratio(double j, double j0);
+
+/* Advance ratio J = V / (n D) of axial speed v_ms at n rev/s; 0 for a
+ * non-positive speed or rotation. */
+double prop_advance_ratio(double v_ms, double rps, double d_m);
+
+/* The axial speed at which the propeller turning at n rev/s gives no
+ * thrust: J0 n D. */
+double prop_zero_thrust_speed_ms(double j0, double rps, double d_m);
 
 #endif

@@ -16,7 +16,16 @@
 
 #define TEMP_ITERATIONS   8      /* winding temperature ↔ resistance */
 #define BUS_ITERATIONS    50     /* bisection steps of the full-throttle voltage */
-#define CLIMB_MAX_MS      30.0   /* highest climb rate searched */
+#define RPS_ITERATIONS    100    /* bound on the steps of the full-throttle
+                                    rotor speed at an advance ratio */
+#define RPS_REL_TOL       1e-13  /* ... to this share of the no-load speed,
+                                    or of the pack's voltage in the gap */
+#define CLIMB_MAX_MS      30.0   /* highest climb rate searched for a
+                                    propeller without a pitch (no zero-
+                                    thrust speed to bound it): then reported
+                                    as the search's bound */
+#define ENVELOPE_TOL_MS   1e-3   /* top speed and climb to 1 mm/s */
+#define ENVELOPE_ITERATIONS 64   /* their bisections' bound */
 #define GAMMA_BISECT      8      /* goal-relaxation bisection steps */
 #define ENDURANCE_STEPS   60
 
@@ -32,6 +41,11 @@ struct perf_ctx {
 	double hover_temp_c;          /* steady winding temperature at hover */
 	double v_climb_ms;            /* the climb flown: the mission's, or the
 	                                 fastest full thrust allows */
+	double j0;                    /* the propeller's zero-thrust advance
+	                                 ratio (prop.h; 0 without a pitch) */
+	double thrust_scale;          /* full thrust over the model's at rest:
+	                                 below 1 for an integrated system its
+	                                 maker caps (capped_full_throttle()) */
 };
 
 static int
@@ -70,6 +84,10 @@ build(const struct sizing_params *p, const struct perf_craft *c,
 	m->rotor.fom = installed_fom(p, c, aero_interference(p->interference_c,
 	    c->arm.d_out_m, c->prop_diameter_m));
 	m->eta_drive = 1.0; /* not read: the motor gives the drive's losses */
+	x->j0 = c->prop_diameter_m > 0.0 ? prop_j0(c->prop_pitch_m
+	    / c->prop_diameter_m) : 0.0;
+	m->prop_j0 = x->j0;
+	x->thrust_scale = 1.0;
 	x->v_oc_nom_v = (double)c->cells * p->chem->v_nom;
 	m->bus_voltage_v = x->v_oc_nom_v;
 	m->real_drive = true;
@@ -201,41 +219,161 @@ full_op(const struct perf_ctx *x, const struct motor_point *pt,
 	op->electrical_w = v_b * i_b;
 }
 
-/* Full throttle: the motor on the pack's loaded voltage turns the rotor
- * until its torque meets the propeller's, and the pack's voltage sags
- * under the current that draws.  The terminal voltage V solves
- * V = V_oc - R (N I_motor(V) + P_other / V); the right side falls as V
- * rises, so the root is unique and bisection finds it.  False when the
- * motor cannot turn at all. */
+/* The pack's terminal voltage when the motors draw i_motor_a each and the
+ * rest (ESC switching, auxiliary load) other_w: the larger root of
+ * V = V_oc - R (N I + P_other / V), V² - (V_oc - R N I) V + R P_other = 0.
+ * False when the pack cannot deliver it (the voltage collapses). */
 static bool
-full_throttle(const struct perf_ctx *x, struct res_op *op)
+bus_voltage(const struct perf_ctx *x, double i_motor_a, double other_w,
+            double *v_b)
+{
+	double a = x->v_oc_nom_v - x->r_sys_ohm * (double)x->model.n_rotors
+	    * i_motor_a;
+	double disc = a * a - 4.0 * x->r_sys_ohm * other_w;
+	if (!(a > 0.0) || disc < 0.0)
+		return false;
+	*v_b = 0.5 * (a + sqrt(disc));
+	return true;
+}
+
+/* At full throttle with an axial inflow of v_axial_ms, the rotor turning
+ * n rev/s: the voltage the motor needs, 2π K n + I R(T) with the current
+ * the propeller's torque kq C_P(J)/C_P0 n² sets (I = Q / K + I0), less the
+ * voltage the pack gives at that current (*v_pack; 0 where it collapses).
+ * It rises with n. */
+static double
+throttle_gap(const struct perf_ctx *x, double v_axial_ms, double n,
+             double other_w, double *v_pack)
+{
+	const struct perf_craft *c = x->c;
+	double k = motor_k_nm_a(c->motor.kv_rpm_per_v);
+	double r = therm_winding_resistance_ohm(c->motor.resistance_ohm,
+	    x->hover_temp_c);
+	double q = x->kq_nm_s2 * prop_cp_ratio(prop_advance_ratio(v_axial_ms, n,
+	    c->prop_diameter_m), x->j0) * n * n;
+	double i_m = q / k + c->motor.no_load_current_a;
+	if (!bus_voltage(x, i_m, other_w, v_pack))
+		*v_pack = 0.0;
+	return 2.0 * M_PI * k * n + i_m * r - *v_pack;
+}
+
+/* Full throttle with an axial inflow of v_axial_ms: the motor on the
+ * pack's loaded voltage turns the rotor until its torque meets the
+ * propeller's, and the pack's voltage sags under the current that draws.
+ * *pt gets one motor's point, *i_b and *v_b the pack's current and
+ * voltage.  False when the motor cannot turn at all.
+ *
+ * At rest (v_axial_ms 0) the propeller's torque is kq n² (the installed
+ * kq) and motor_at_voltage() solves the motor on a voltage V; the
+ * terminal voltage solves V = V_oc - R (N I_motor(V) + P_other / V), whose
+ * right side falls as V rises, so bisection on V finds it.  With an inflow
+ * the torque is kq C_P(J)/C_P0 n², J = V / (n D) (prop.h): then the speed
+ * n is solved for instead.  At n the propeller's torque sets the current,
+ * I = Q / K + I0, and so the voltage the motor needs, 2π K n + I R(T);
+ * both rise with n while the voltage the pack gives at that current falls,
+ * so they meet once between rest and the no-load speed on the full pack
+ * (throttle_gap()). */
+static bool
+full_throttle_at(const struct perf_ctx *x, double v_axial_ms,
+                 struct motor_point *pt, double *i_b, double *v_b)
 {
 	const struct perf_craft *c = x->c;
 	const struct mission_model *m = &x->model;
 	double n_rot = (double)m->n_rotors;
 	double other_w = 0.5 * MISSION_F_PWM_HZ * MISSION_C_OSS_F
 	    * x->v_oc_nom_v * x->v_oc_nom_v * n_rot + m->aux_w;
-	double lo = 0.0, hi = x->v_oc_nom_v;
-	struct motor_point pt;
-	if (!motor_at_voltage(&c->motor, x->hover_temp_c, hi, x->kq_nm_s2, &pt))
-		return false;
-	for (int k = 0; k < BUS_ITERATIONS; k++) {
-		double v = 0.5 * (lo + hi);
-		double i_b = motor_at_voltage(&c->motor, x->hover_temp_c, v,
-		    x->kq_nm_s2, &pt) ? n_rot * pt.current_a : 0.0;
-		i_b += other_w / v;
-		if (x->v_oc_nom_v - x->r_sys_ohm * i_b > v)
-			lo = v;
-		else
-			hi = v;
+	if (!(v_axial_ms > 0.0) || !(x->j0 > 0.0)) {
+		double lo = 0.0, hi = x->v_oc_nom_v;
+		if (!motor_at_voltage(&c->motor, x->hover_temp_c, hi, x->kq_nm_s2,
+		    pt))
+			return false;
+		for (int k = 0; k < BUS_ITERATIONS; k++) {
+			double v = 0.5 * (lo + hi);
+			double i = motor_at_voltage(&c->motor, x->hover_temp_c, v,
+			    x->kq_nm_s2, pt) ? n_rot * pt->current_a : 0.0;
+			i += other_w / v;
+			if (x->v_oc_nom_v - x->r_sys_ohm * i > v)
+				lo = v;
+			else
+				hi = v;
+		}
+		*v_b = lo;
+		if (!motor_at_voltage(&c->motor, x->hover_temp_c, lo, x->kq_nm_s2, pt))
+			return false;
+		*i_b = n_rot * pt->current_a + other_w / lo;
+		return true;
 	}
-	double v = lo;
-	if (!motor_at_voltage(&c->motor, x->hover_temp_c, v, x->kq_nm_s2, &pt))
+	/* Regula falsi with the Illinois step (the end that stays put has
+	 * its gap halved): the gap is smooth and monotone, so it closes in a
+	 * few steps where bisection takes fifty. */
+	double k = motor_k_nm_a(c->motor.kv_rpm_per_v);
+	double lo = 0.0, hi = x->v_oc_nom_v / (2.0 * M_PI * k), v_pack = 0.0;
+	double g_lo = throttle_gap(x, v_axial_ms, lo, other_w, &v_pack);
+	double g_hi = throttle_gap(x, v_axial_ms, hi, other_w, &v_pack);
+	if (!(g_lo < 0.0))
+		return false;   /* the pack cannot even push the no-load current */
+	double n = hi, tol = RPS_REL_TOL * hi;
+	int side = 0;
+	for (int i = 0; i < RPS_ITERATIONS && g_hi > 0.0 && hi - lo > tol; i++) {
+		n = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+		if (!(n > lo && n < hi))
+			n = 0.5 * (lo + hi);
+		double g = throttle_gap(x, v_axial_ms, n, other_w, &v_pack);
+		if (fabs(g) <= RPS_REL_TOL * x->v_oc_nom_v)
+			break;
+		if (g < 0.0) {
+			lo = n;
+			g_lo = g;
+			if (side < 0)
+				g_hi *= 0.5;
+			side = -1;
+		} else {
+			hi = n;
+			g_hi = g;
+			if (side > 0)
+				g_lo *= 0.5;
+			side = 1;
+		}
+	}
+	(void)throttle_gap(x, v_axial_ms, n, other_w, &v_pack);
+	if (!(v_pack > 0.0))
 		return false;
-	double i_b = n_rot * pt.current_a + other_w / v;
-	full_op(x, &pt, prop_thrust_n(&c->prop, m->air.rho_kg_m3, pt.rps,
-	    c->prop_diameter_m), 1.0, i_b, v, op);
+	motor_at_voltage_rps(&c->motor, x->hover_temp_c, v_pack, n, pt);
+	*v_b = v_pack;
+	*i_b = n_rot * pt->current_a + other_w / v_pack;
 	return true;
+}
+
+/* Full throttle at rest: the table's row. */
+static bool
+full_throttle(const struct perf_ctx *x, struct res_op *op)
+{
+	const struct perf_craft *c = x->c;
+	struct motor_point pt;
+	double i_b, v_b;
+	if (!full_throttle_at(x, 0.0, &pt, &i_b, &v_b))
+		return false;
+	full_op(x, &pt, prop_thrust_n(&c->prop, x->model.air.rho_kg_m3, pt.rps,
+	    c->prop_diameter_m), 1.0, i_b, v_b, op);
+	return true;
+}
+
+/* One rotor's full thrust with an axial inflow of v_axial_ms: C_T(J) of
+ * the propeller at the speed the torque balance gives, times the maker's
+ * cap of an integrated system (thrust_scale); 0 when the motor cannot
+ * turn, negative past the zero-thrust advance ratio. */
+static double
+full_thrust_at_n(const struct perf_ctx *x, double v_axial_ms)
+{
+	const struct perf_craft *c = x->c;
+	struct motor_point pt;
+	double i_b, v_b;
+	if (!full_throttle_at(x, v_axial_ms, &pt, &i_b, &v_b))
+		return 0.0;
+	double d = c->prop_diameter_m;
+	return x->thrust_scale * prop_ct_ratio(prop_advance_ratio(v_axial_ms,
+	    pt.rps, d), x->j0) * prop_thrust_n(&c->prop, x->model.air.rho_kg_m3,
+	    pt.rps, d);
 }
 
 /* An integrated power system gives at most the thrust its maker
@@ -273,6 +411,19 @@ capped_full_throttle(const struct perf_ctx *x, struct res_op *op)
 	full_op(x, &pt, thrust_n, v_b > 0.0 && pt.voltage_v < v_b
 	    ? pt.voltage_v / v_b : 1.0, i_b, v_b, op);
 	return true;
+}
+
+/* An integrated system's full thrust at rest is capped at its maker's
+ * figure (capped_full_throttle()); the envelope scales the model's thrust
+ * at every inflow by the same share.  After settle_hover(). */
+static void
+set_thrust_scale(struct perf_ctx *x)
+{
+	struct res_op op;
+	x->thrust_scale = 1.0;
+	if (x->c->max_thrust_n > 0.0 && full_throttle(x, &op)
+	    && op.thrust_n > x->c->max_thrust_n)
+		x->thrust_scale = x->c->max_thrust_n / op.thrust_n;
 }
 
 /* Fly the mission at goal relaxation gamma into run's trace and dis. */
@@ -323,22 +474,100 @@ relaxed_gamma(const struct perf_ctx *x, double v_fwd_ms, double reserve_soc)
 	return lo;
 }
 
-/* The highest vertical climb rate whose power and thrust full throttle
- * covers, by bisection on the climb speed. */
-static double
-max_climb_ms(struct perf_ctx *x, double mass_kg, const struct res_op *full)
+/* Does full throttle at a vertical climb of v_ms still carry the weight
+ * and the climb's drag, the propeller's thrust taken at the climb's
+ * inflow? */
+static bool
+climb_within(const struct perf_ctx *x, double mass_kg, double v_ms)
 {
-	double lo = 0.0, hi = CLIMB_MAX_MS;
-	for (int k = 0; k < 30; k++) {
+	struct mission_power mp;
+	mission_power(&x->model, mass_kg, v_ms, 0.0, &mp);
+	return mp.thrust_per_rotor_n <= full_thrust_at_n(x, v_ms);
+}
+
+/* The highest vertical climb rate at full throttle: thrust falls with the
+ * climb's inflow as C_T(J) does while the motor speeds up as the
+ * propeller's torque falls, and weight plus drag must still be carried.
+ * Bisection to 1 mm/s between rest and the zero-thrust speed at the motor's
+ * no-load speed on the full pack, J0 n D: the propeller gives no thrust
+ * there at any speed the motor turns, so the bound is never the answer.
+ * Without a pitch (no J0) CLIMB_MAX_MS bounds it, reported as the bound
+ * when reached.  0 when full throttle does not even hover. */
+static double
+max_climb_ms(const struct perf_ctx *x, double mass_kg, enum res_limit *limit,
+             double *rpm)
+{
+	*limit = RES_LIMIT_INFLOW;
+	*rpm = 0.0;
+	if (!climb_within(x, mass_kg, 0.0))
+		return 0.0;
+	double k = motor_k_nm_a(x->c->motor.kv_rpm_per_v);
+	double hi = x->j0 > 0.0 ? prop_zero_thrust_speed_ms(x->j0,
+	    x->v_oc_nom_v / (2.0 * M_PI * k), x->c->prop_diameter_m) : CLIMB_MAX_MS;
+	if (climb_within(x, mass_kg, hi)) {
+		*limit = RES_LIMIT_BOUND;
+		return hi;
+	}
+	double lo = 0.0;
+	for (int i = 0; i < ENVELOPE_ITERATIONS && hi - lo > ENVELOPE_TOL_MS; i++) {
 		double mid = 0.5 * (lo + hi);
-		struct mission_power mp;
-		mission_power(&x->model, mass_kg, mid, 0.0, &mp);
-		if (mp.thrust_per_rotor_n <= full->thrust_n
-		    && mp.electrical_w <= full->electrical_w)
+		if (climb_within(x, mass_kg, mid))
 			lo = mid;
 		else
 			hi = mid;
 	}
+	struct motor_point pt;
+	double i_b, v_b;
+	if (full_throttle_at(x, lo, &pt, &i_b, &v_b))
+		*rpm = pt.rps * S_PER_MIN;
+	return lo;
+}
+
+/* Is level flight at v_ms within the limits: the pitch under
+ * MISSION_PITCH_MAX_DEG, and full throttle's thrust at the axial inflow
+ * V sin θ through the tilted disk carrying weight and drag?  *pitch_over
+ * says whether the pitch is past its limit. */
+static bool
+level_within(const struct perf_ctx *x, double mass_kg, double v_ms,
+             bool *pitch_over)
+{
+	struct mission_power mp;
+	mission_power(&x->model, mass_kg, 0.0, v_ms, &mp);
+	*pitch_over = mp.pitch_deg > MISSION_PITCH_MAX_DEG;
+	return !*pitch_over
+	    && mp.thrust_per_rotor_n <= full_thrust_at_n(x, mp.axial_ms);
+}
+
+/* The top level speed of the design of record: the pitch limit's speed
+ * (mission.h) when full thrust still carries the aircraft there, else the
+ * speed where it no longer does, by bisection to 1 mm/s.  Past the pitch
+ * limit's speed the pitch alone is beyond it, so the search's bound is a
+ * physical limit (MISSION_SPEED_CAP_MS only for a body without drag,
+ * reported as the bound).  0 when full throttle does not even hover. */
+static double
+max_level_ms(const struct perf_ctx *x, double mass_kg, enum res_limit *limit)
+{
+	bool pitch_over;
+	*limit = RES_LIMIT_INFLOW;
+	if (!level_within(x, mass_kg, 0.0, &pitch_over))
+		return 0.0;
+	double hi = mission_pitch_limit_speed_ms(&x->model, mass_kg);
+	if (level_within(x, mass_kg, hi, &pitch_over)) {
+		*limit = hi >= MISSION_SPEED_CAP_MS ? RES_LIMIT_BOUND : RES_LIMIT_PITCH;
+		return hi;
+	}
+	double lo = 0.0;
+	bool hi_pitch = pitch_over;
+	for (int i = 0; i < ENVELOPE_ITERATIONS && hi - lo > ENVELOPE_TOL_MS; i++) {
+		double mid = 0.5 * (lo + hi);
+		if (level_within(x, mass_kg, mid, &pitch_over)) {
+			lo = mid;
+		} else {
+			hi = mid;
+			hi_pitch = pitch_over;
+		}
+	}
+	*limit = hi_pitch ? RES_LIMIT_PITCH : RES_LIMIT_INFLOW;
 	return lo;
 }
 
@@ -365,7 +594,8 @@ figures(struct perf_ctx *x, struct res_run *run, struct res_perf *pf)
 	double used = 1.0 - run->end_soc;
 	pf->mixed_time_s = used > 0.0 && run->flight_time_s > 0.0
 	    ? run->flight_time_s * (1.0 - reserve) / used : 0.0;
-	pf->max_climb_ms = max_climb_ms(x, mass, full);
+	pf->max_climb_ms = max_climb_ms(x, mass, &pf->max_climb_limit,
+	    &pf->max_climb_rpm);
 	double ratio = n_rot * full->thrust_n / weight_n;
 	pf->max_tilt_deg = ratio > 1.0 ? acos(1.0 / ratio) * 180.0 / M_PI : 0.0;
 	/* T/W of the role's thrust target, 1 / θ² (paper §II-E). */
@@ -491,19 +721,27 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 		memset(&pf->op[OP_FULL], 0, sizeof pf->op[OP_FULL]);
 	const struct res_op *full = &pf->op[OP_FULL];
 
-	/* Forward speed: the minimum-power speed when "auto", and the top
-	 * speed the real rotor's full thrust allows, found on the sweep's grid
-	 * (the sweep itself is a figure: perf_figures()). */
+	/* Forward speed: the minimum-power speed when "auto", found on the
+	 * sweep's grid within the rotor's limits (the sweep itself is a
+	 * figure: perf_figures()); the top speed, the real motor and
+	 * propeller at the inflow through the tilted disk. */
+	set_thrust_scale(&x);
+	double v_top_search_ms; /* the model's own, at a held rotor speed: unused */
 	mission_speed_search(&x.model, mass, full->thrust_n,
-	    &run->v_min_power_ms, &run->v_max_ms);
+	    &run->v_min_power_ms, &v_top_search_ms);
+	run->v_max_ms = max_level_ms(&x, mass, &run->v_max_limit);
 	double v_fwd = p->v_auto ? run->v_min_power_ms : p->v_forward_ms;
 	run->optimal_speed_ms = v_fwd;
 	/* What full thrust (or the pitch limit) does not reach is flown at the
 	 * fastest it does (FORWARD_SPEED, CLIMB_SPEED report the shortfall). */
-	v_fwd = mission_forward_flown_ms(&x.model, mass, full->thrust_n, v_fwd,
-	    run->v_max_ms);
-	x.v_climb_ms = p->v_climb_ms > 0.0 ? mission_max_climb_ms(&x.model, mass,
-	    full->thrust_n, p->v_climb_ms) : p->v_climb_ms;
+	if (v_fwd > run->v_max_ms)
+		v_fwd = run->v_max_ms;
+	x.v_climb_ms = p->v_climb_ms;
+	if (p->v_climb_ms > 0.0 && !climb_within(&x, mass, p->v_climb_ms)) {
+		enum res_limit climb_limit;
+		double climb_rpm;
+		x.v_climb_ms = max_climb_ms(&x, mass, &climb_limit, &climb_rpm);
+	}
 	run->climb_limit_ms = x.v_climb_ms < p->v_climb_ms ? x.v_climb_ms : 0.0;
 	phase_op(&x, mass, x.v_climb_ms > 0.0 ? x.v_climb_ms : 1.0, 0.0, &mp,
 	    &pf->op[OP_CLIMB]);
@@ -570,6 +808,7 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 	pf->prop_cp = c->prop.cp;
 	pf->prop_coeffs_measured = c->prop.measured;
 	pf->max_speed_ms = run->v_max_ms;
+	pf->max_speed_limit = run->v_max_limit;
 	pf->landing_soc = run->end_soc;
 
 	/* Every number it produced must be a number. */
@@ -596,6 +835,7 @@ perf_figures(const struct sizing_params *p, const struct perf_craft *c,
 	if (run->climb_limit_ms > 0.0)
 		x.v_climb_ms = run->climb_limit_ms;
 	settle_hover(&x, c->mass.total_kg);
+	set_thrust_scale(&x);
 	struct res_perf *pf = &run->perf;
 	figures(&x, run, pf);
 	/* The power-vs-speed figure, limited by the real rotor's full thrust;

@@ -10,6 +10,7 @@
 #include "sizing/airframe.h"
 #include "physics/discharge.h"
 #include "physics/mission.h"
+#include "physics/prop.h"
 #include "util/strbuf.h"
 #include "physics/structure.h"
 #include "physics/therm.h"
@@ -95,6 +96,22 @@ sizing_pitch_m(double diameter_m, double induced_ms, double rps)
 	double phi = atan(induced_ms / omega_r);
 	double theta = phi + BLADE_INCIDENCE_DEG * M_PI / 180.0;
 	return 2.0 * M_PI * r75 * tan(theta);
+}
+
+enum res_limit
+sizing_limit(enum mission_limit l)
+{
+	switch (l) {
+	case MISSION_LIMIT_THRUST:
+		return RES_LIMIT_INFLOW;
+	case MISSION_LIMIT_PITCH:
+		return RES_LIMIT_PITCH;
+	case MISSION_LIMIT_BOUND:
+		return RES_LIMIT_BOUND;
+	case MISSION_LIMIT_NONE:
+	default:
+		return RES_LIMIT_NONE;
+	}
 }
 
 static int
@@ -331,6 +348,13 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 	m->rotor.n_blades = p->n_blades;
 	m->eta_drive = p->eta_drive;
 	m->bus_voltage_v = (double)ls->cells * p->chem->v_nom;
+	/* The envelope: full thrust falls with the inflow as the propeller's
+	 * C_T(J) does, for the pitch the rotor gets (eval_phases()'s: the
+	 * locked one, or the hover-inflow law). */
+	double pitch_m = p->prop_locked ? p->prop_pitch_m : sizing_pitch_m(d,
+	    aero_hover_induced_ms(e->t_hover_n, air->rho_kg_m3,
+	    0.25 * M_PI * d * d), e->rps_hover);
+	m->prop_j0 = prop_j0(pitch_m / d);
 
 	/* Forward speed: the minimum-power speed when "auto". */
 	e->v_fwd_ms = p->v_forward_ms;
@@ -622,7 +646,7 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 	int cells = p->cells_fixed > 0 ? p->cells_fixed : p->cells_lo;
 	if (p->parts.active && p->parts.cells > 0)
 		cells = p->parts.cells;
-	struct mission_speed_hint hint = { false, 0, 0 };
+	struct mission_speed_hint hint = { false, 0, 0, 0 };
 	struct loop_state ls = { cells, 0.02 * p->wheelbase_m, gamma_time, &hint };
 	/* A catalogue battery's capacity is the part's whatever c says (see
 	 * evaluate_masses()), so it needs no seed evaluation. */
@@ -789,7 +813,7 @@ lipschitz(const struct sizing_params *p_in, const struct loop_state *ls,
 	struct eval a, b;
 	double ca = c_star, cb = c_star;
 	/* Its evaluations lie within 2h of one another: one speed hint. */
-	struct mission_speed_hint hint = { false, 0, 0 };
+	struct mission_speed_hint hint = { false, 0, 0, 0 };
 	struct loop_state near = *ls;
 	near.speed_hint = &hint;
 	ls = &near;
@@ -865,6 +889,8 @@ record_run(const struct sizing_params *p, struct eval *e,
 	out->climb_limit_ms = e->climb_limit_ms;
 	out->v_min_power_ms = e->v_min_power_ms;
 	out->v_max_ms = e->v_max_ms;
+	out->v_max_limit = e->v_max_ms > 0.0 ? sizing_limit(mission_top_speed_limit(
+	    &e->model, e->mass_kg, e->v_max_ms)) : RES_LIMIT_NONE;
 
 	out->thrust_to_weight = 1.0 / (e->throttle * e->throttle);
 	out->hover_throttle = e->throttle;

@@ -157,5 +157,8 @@ double sizing_motor_kg(double power_max_w, double omega_max_rad_s);
  * inflow angle + 4° incidence, m. */
 double sizing_pitch_m(double diameter_m, double induced_ms, double rps);
 
+/* The result's name for a mission-model envelope limit. */
+enum res_limit sizing_limit(enum mission_limit l);
+
 
 #endif
