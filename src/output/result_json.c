@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/model.h"
 #include "output/bom_csv.h"
 #include "util/numfmt.h"
 #include "util/xalloc.h"
@@ -511,6 +512,78 @@ put_phases(struct jw *w, const struct res_run *run)
 	jw_close(w);
 }
 
+/* What the run flew: its role's duty profile, segment by kind, and what
+ * the profile made of the mission (physics/duty.h). */
+static void
+put_duty(struct jw *w, const struct res_run *run)
+{
+	const struct res_duty *d = &run->duty;
+	int kind = d->kind >= 0 && d->kind < DUTY_KIND_MAX ? d->kind : DUTY_PHASES;
+	jw_obj(w, "duty_profile");
+	jw_lit(w, "profile", duty_kind_name[kind]);
+	JW_STR(w, "source", d->source);
+	jw_num(w, "full_throttle_power_w", d->full_throttle_power_w);
+	jw_num(w, "mean_power_w", d->mean_power_w);
+	jw_num(w, "peak_power_w", d->peak_power_w);
+	int n = jw_count(w, "segments", d->n_groups, RES_MAX_DUTY_GROUPS);
+	jw_arr(w, "segments");
+	for (int i = 0; i < n; i++) {
+		const struct res_duty_group *g = &d->group[i];
+		jw_obj(w, NULL);
+		JW_STR(w, "segment", g->name);
+		jw_phase(w, "phase", g->phase);
+		jw_int(w, "count", g->count);
+		jw_num(w, "duration_s", g->duration_s);
+		jw_num(w, "power_w", g->power_w);
+		jw_num(w, "current_a", g->current_a);
+		jw_num(w, "energy_wh", g->energy_wh);
+		if (g->fraction > 0.0)
+			jw_num(w, "fraction_of_full_throttle", g->fraction);
+		else
+			jw_null(w, "fraction_of_full_throttle");
+		jw_close(w);
+	}
+	jw_close(w);
+	if (kind == DUTY_RACE) {
+		jw_obj(w, "race");
+		jw_int(w, "laps", d->n_laps);
+		jw_num(w, "lap_s", d->lap_s);
+		jw_num(w, "race_s", d->race_s);
+		jw_num(w, "mean_power_w", d->race_mean_power_w);
+		jw_num(w, "mean_current_a", d->race_mean_current_a);
+		jw_num(w, "mean_fraction_of_full_throttle", d->lap_mean_fraction);
+		jw_num(w, "peak_fraction_of_full_throttle", d->lap_peak_fraction);
+		jw_close(w);
+	} else {
+		jw_null(w, "race");
+	}
+	if (kind == DUTY_SPRAY) {
+		jw_obj(w, "spray");
+		jw_num(w, "swath_length_m", d->swath_length_m);
+		jw_int(w, "passes", d->n_passes);
+		jw_int(w, "turns", d->n_turns);
+		jw_num(w, "pass_m", d->pass_m);
+		jw_num(w, "turn_s", d->turn_s);
+		jw_num(w, "transit_m", d->transit_m);
+		jw_num(w, "spraying_s", d->spray_s);
+		jw_num(w, "spray_rate_kg_s", d->spray_rate_kg_s);
+		jw_num(w, "tank_shed_kg", d->tank_shed_kg);
+		jw_close(w);
+	} else {
+		jw_null(w, "spray");
+	}
+	if (d->drop_time_s >= 0.0 && d->drop_mass_kg > 0.0) {
+		jw_obj(w, "drop");
+		jw_num(w, "time_s", d->drop_time_s);
+		jw_num(w, "mass_kg", d->drop_mass_kg);
+		jw_close(w);
+	} else {
+		jw_null(w, "drop");
+	}
+	jw_num(w, "landing_payload_kg", d->landing_payload_kg);
+	jw_close(w);
+}
+
 /* One column of the discharge trace: the double at byte offset `off` of
  * every sample. */
 static void
@@ -617,6 +690,7 @@ put_run_fields(struct jw *w, const struct res_run *run,
 	jw_num(w, "nominal_voltage_v", run->nominal_voltage_v);
 
 	put_phases(w, run);
+	put_duty(w, run);
 	jw_num(w, "approved_hover_time_s", run->approved_time_s[PHASE_HOVER]);
 	jw_num(w, "approved_climb_time_s", run->approved_time_s[PHASE_CLIMB]);
 	jw_num(w, "approved_forward_time_s", run->approved_time_s[PHASE_FORWARD]);
