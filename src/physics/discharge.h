@@ -1,9 +1,11 @@
 /* discharge.h — the time-step discharge simulation (paper Module 4).
  *
- * Flies the mission phase by phase (climb, forward, hover) with the
- * Tremblay–Dessaint pack (C-rate-scaled OCV, temperature- and age-dependent
- * resistance, current from the quadratic power balance), the transient pack
- * temperature, and the payload shedding of the role.  It stops early on
+ * Flies the mission segment by segment, as the role's duty plan lays it
+ * out (duty.h: the paper's climb, forward and hover, or laps, passes and
+ * turns, an out-leg and a return), with the Tremblay–Dessaint pack
+ * (C-rate-scaled OCV, temperature- and age-dependent resistance, current
+ * from the quadratic power balance), the transient pack temperature, and
+ * the payload the plan sheds.  It stops early on
  * voltage collapse, power overflow, the terminal-voltage floor, an empty
  * pack or thermal runaway (60 °C), and says which.  The sampled trace is
  * what the dossier plots.
