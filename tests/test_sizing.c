@@ -2,7 +2,8 @@
  * of eq. (altcorrect), the reserve left by the 20 % capacity margin, the
  * series-cell rule, the hover pitch, and the fixed-point run itself on a
  * mission built from spec_defaults() (convergence criterion, history, mass
- * breakdown, the delivery drop at r_drop · t_total in the trace, goal
+ * breakdown, the delivery drop after the out-leg and the sprayer's tank
+ * shed on its passes in the trace, goal
  * relaxation bounds).  Tests run from the repository root (data/).
  */
 #include "test_util.h"
@@ -160,25 +161,28 @@ sizing_run_should_converge_to_a_1_g_fixed_point(void **state)
 }
 
 static void
-sizing_run_should_drop_the_parcel_at_r_drop_times_t_total(void **state)
+sizing_run_should_drop_the_parcel_after_the_out_leg_and_the_hover(void **state)
 {
 	struct fixture *f = *state;
 	struct mission_spec s;
 	struct res_run *o = xcalloc(1, sizeof *o);
 	delivery_mission(&s);
 	assert_int_equal(run(&f->env.model, &s, o), SIZING_CONVERGED);
-	/* t_total = 60 + 1500 + 180 = 1740 s, t_drop = 0.5 · 1740 = 870 s;
-	 * the aircraft is 3.5 kg lighter after it. */
+	/* Out and back (data/roles.json): climb 60 s, the out-leg 0.5 · 1500 s
+	 * with the parcel, 180 s hovering over the drop point, the release at
+	 * 60 + 750 + 180 = 990 s, and the 750 s return leg 3.5 kg lighter. */
 	double m0 = o->trace[0].mass_kg;
 	/* The simulation flies the fixed point M*, the record holds f(M*). */
 	assert_true(fabs(m0 - o->mass.total_kg) < SIZING_TOL_KG);
+	assert_rel(o->duty.drop_time_s, 990.0, 1e-12);
+	assert_rel(o->duty.drop_mass_kg, 3.5, 1e-12);
 	int before = 0, after = 0;
 	for (int i = 0; i < o->n_trace; i++) {
 		const struct res_sample *t = &o->trace[i];
-		if (t->t_s < 850.0) {
+		if (t->t_s <= 990.0 + 1e-6) {
 			assert_rel(t->mass_kg, m0, 1e-12);
 			before++;
-		} else if (t->t_s > 890.0) {
+		} else {
 			assert_rel(t->mass_kg, m0 - 3.5, 1e-9);
 			after++;
 		}
@@ -189,13 +193,18 @@ sizing_run_should_drop_the_parcel_at_r_drop_times_t_total(void **state)
 }
 
 static void
-sizing_run_should_spray_the_tank_linearly_over_the_mission(void **state)
+sizing_run_should_spray_the_tank_on_the_passes_only(void **state)
 {
 	struct fixture *f = *state;
 	struct mission_spec s;
 	struct res_run *o = xcalloc(1, sizeof *o);
-	/* 6.385 kg of liquid on an agricultural octo; no spray rate given:
-	 * ṁ = 6.385 / (30 + 300 + 600) = 6.385 / 930 = 0.006865591 kg/s */
+	/* 6.385 kg of liquid on an agricultural octo, no spray rate given.
+	 * Forward 300 s at 5 m/s = 1500 m: 50 m to the field and back, 1400 m
+	 * of passes of at most 125 m: 12 passes, 11 turns of 2 · 5 / 2.5 + 3
+	 * = 7 s.  The climb [0, 30] and the transit [30, 40] fly the full
+	 * tank; the passes spray it out at 6.385 / 280 kg/s, the turns
+	 * between them shed nothing; the last pass ends at 30 + 10 + 280 + 77
+	 * = 397 s, the transit back and the 600 s hover fly the empty tank. */
 	spec_defaults(&s);
 	SET(&s, PAYLOAD_KG, payload_kg, 6.385);
 	SET(&s, MAX_DIAMETER_M, max_diameter_m, 1.85);
@@ -207,18 +216,25 @@ sizing_run_should_spray_the_tank_linearly_over_the_mission(void **state)
 	SET(&s, V_FORWARD_MS, v_forward_ms, 5.0);
 	SET(&s, ROLE_TYPE, payload_role.type, ROLE_AGRICULTURE);
 	assert_int_equal(run(&f->env.model, &s, o), SIZING_CONVERGED);
-	double rate = 6.385 / 930.0;
+	assert_int_equal(o->duty.n_passes, 12);
+	assert_int_equal(o->duty.n_turns, 11);
+	assert_rel(o->duty.turn_s, 7.0, 1e-12);
+	assert_rel(o->duty.spray_rate_kg_s, 6.385 / 280.0, 1e-12);
+	assert_rel(o->flight_time_s, 1007.0, 1e-9);
 	double m0 = o->trace[0].mass_kg;
-	assert_true(o->n_trace > 50);
-	/* Each sample holds the mid-step mass of the step ending at t_s, so it
-	 * lies within one step (≤ 930/50 s) of the straight line. */
+	int falling = 0;
 	for (int i = 1; i < o->n_trace; i++) {
-		double want = m0 - rate * o->trace[i].t_s;
-		assert_true(fabs(o->trace[i].mass_kg - want) <= rate * 18.6);
-		assert_true(o->trace[i].mass_kg <= o->trace[i - 1].mass_kg);
+		const struct res_sample *t = &o->trace[i];
+		assert_true(t->mass_kg <= o->trace[i - 1].mass_kg);
+		if (t->t_s <= 40.0 + 1e-9)
+			assert_rel(t->mass_kg, m0, 1e-12);
+		else if (t->t_s >= 397.0 + 1e-6)
+			assert_rel(t->mass_kg, m0 - 6.385, 1e-9);
+		else
+			falling++;
 	}
-	/* the tank is (almost) empty at the end */
-	assert_true(fabs(o->trace[o->n_trace - 1].mass_kg - (m0 - 6.385)) <= rate * 18.6);
+	assert_true(falling >= 12);
+	assert_rel(o->trace[o->n_trace - 1].t_s, 1007.0, 1e-9);
 	free(o);
 }
 
@@ -363,8 +379,8 @@ main(void)
 		cmocka_unit_test(sizing_reserve_soc_should_be_one_sixth),
 		cmocka_unit_test(sizing_pitch_should_be_inflow_angle_plus_4_degrees_at_75_percent_radius),
 		cmocka_unit_test_setup_teardown(sizing_run_should_converge_to_a_1_g_fixed_point, setup, teardown),
-		cmocka_unit_test_setup_teardown(sizing_run_should_drop_the_parcel_at_r_drop_times_t_total, setup, teardown),
-		cmocka_unit_test_setup_teardown(sizing_run_should_spray_the_tank_linearly_over_the_mission, setup, teardown),
+		cmocka_unit_test_setup_teardown(sizing_run_should_drop_the_parcel_after_the_out_leg_and_the_hover, setup, teardown),
+		cmocka_unit_test_setup_teardown(sizing_run_should_spray_the_tank_on_the_passes_only, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_relaxation_should_scale_times_by_a_gamma_of_at_least_0_05, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_run_should_never_relax_a_thrust_target, setup, teardown),
 		cmocka_unit_test_setup_teardown(sizing_cells_should_be_the_lightest_within_the_current_budget, setup, teardown),

@@ -3,6 +3,9 @@
 
 #include <string.h>
 
+const char *const duty_kind_name[DUTY_KIND_MAX] = { "phases", "race",
+	"spray_sorties", "out_and_back" };
+
 const struct batt_chem *
 model_chem(const struct model_data *m, const char *name)
 {

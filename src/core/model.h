@@ -32,6 +32,40 @@ struct batt_chem {
 
 enum shed_kind { SHED_NONE, SHED_DROP, SHED_SPRAY };
 
+/* How a role flies its mission (data/roles.json "duty"; docs/model.md,
+ * "Duty cycles"): the paper's three phases, a race of repeating laps, spray
+ * sorties with a turn at each swath end, or an out-and-back delivery with
+ * the drop at the far end. */
+enum duty_kind { DUTY_PHASES, DUTY_RACE, DUTY_SPRAY, DUTY_OUT_AND_BACK,
+	DUTY_KIND_MAX };
+extern const char *const duty_kind_name[DUTY_KIND_MAX]; /* "phases", ... */
+
+#define MODEL_MAX_LAP 6          /* pieces of a race lap */
+#define MODEL_DUTY_SOURCE 640    /* bytes of a profile's source text */
+
+/* One piece of a race lap: its share of the lap's time and the battery
+ * power it draws as a fraction of the design's full-throttle power. */
+struct model_lap_piece {
+	char name[32];              /* "full-throttle burst" */
+	double share;               /* of the lap's time; the shares sum to 1 */
+	double power_fraction;      /* of the full-throttle power, (0, 1] */
+};
+
+/* A role's duty profile. */
+struct model_duty {
+	enum duty_kind kind;
+	/* race */
+	double lap_s;               /* one lap, s */
+	int n_lap;                  /* pieces of a lap */
+	struct model_lap_piece lap[MODEL_MAX_LAP];
+	/* spray sorties */
+	double swath_length_m;      /* one spraying pass, m */
+	double turn_accel_m_s2;     /* braking and acceleration at a swath end */
+	double turn_yaw_s;          /* the yaw at a swath end, s */
+	double transit_m;           /* take-off point to the field, each way, m */
+	char source[MODEL_DUTY_SOURCE]; /* where the numbers come from */
+};
+
 /* One row of data/roles.json (paper Table roles). */
 struct model_role {
 	double thrust_margin;           /* 1 - hover throttle */
@@ -46,6 +80,7 @@ struct model_role {
 	double h_conv_w_m2k;            /* battery convection coefficient */
 	double burst_factor;            /* 10 s burst / continuous battery power */
 	enum shed_kind shedding;        /* payload shedding */
+	struct model_duty duty;         /* how the role flies its mission */
 };
 
 /* One row of data/airframes.json. */

@@ -75,6 +75,49 @@ struct res_phase {
 	double tip_mach;          /* rotor tip Mach */
 };
 
+/* The duty cycle a run flew (physics/duty.h): its segments grouped by
+ * kind, and what the role's profile made of the mission. */
+#define RES_MAX_DUTY_GROUPS 10
+#define RES_DUTY_NAME       40
+#define RES_DUTY_SOURCE     640   /* MODEL_DUTY_SOURCE */
+
+struct res_duty_group {
+	char name[RES_DUTY_NAME]; /* "spraying pass" */
+	int phase;                /* enum res_phase_id its time counts in */
+	int count;                /* how many the mission flew */
+	double duration_s;        /* their time together */
+	double fraction;          /* race pieces: of the full-throttle power */
+	double power_w;           /* mean battery power (energy / time) */
+	double current_a;         /* mean battery current */
+	double energy_wh;         /* drawn from the battery */
+};
+
+struct res_duty {
+	int kind;                 /* enum duty_kind (core/model.h) */
+	char source[RES_DUTY_SOURCE]; /* where the profile's numbers come from */
+	int n_groups;
+	struct res_duty_group group[RES_MAX_DUTY_GROUPS];
+	double full_throttle_power_w; /* the design's, at the battery */
+	double mean_power_w;      /* the flight's energy over its time */
+	double peak_power_w;      /* the highest power a step drew */
+	/* race */
+	int n_laps;
+	double lap_s;
+	double race_s;            /* the laps' time */
+	double race_mean_power_w; /* their energy over their time */
+	double race_mean_current_a;
+	double lap_mean_fraction; /* of the full-throttle power, as flown */
+	double lap_peak_fraction;
+	/* spray sorties */
+	int n_passes, n_turns;
+	double swath_length_m, pass_m, turn_s, transit_m;
+	double spray_s, spray_rate_kg_s, tank_shed_kg;
+	/* out and back */
+	double drop_time_s;       /* < 0: no release */
+	double drop_mass_kg;
+	double landing_payload_kg;/* payload at touchdown */
+};
+
 /* One sample of the discharge simulation. */
 struct res_sample {
 	double t_s;          /* time since takeoff */
@@ -239,6 +282,7 @@ struct res_run {
 
 	/* mission */
 	struct res_phase phase[PHASE_MAX];
+	struct res_duty duty;     /* the duty cycle flown (the profile's segments) */
 	double approved_time_s[PHASE_MAX];
 	double flight_time_s;     /* total approved mission time */
 	double hover_endurance_s; /* hover-only endurance to the reserve */

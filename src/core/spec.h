@@ -213,9 +213,9 @@ X(ROLE_CG_SHIFT_M, "payload_role.cg_shift_m", SPEC_NUM, payload_role.cg_shift_m,
 X(ROLE_DROP_MASS_KG, "payload_role.delivery_drop_mass_kg", SPEC_NUM, payload_role.delivery_drop_mass_kg, "kg", 0, 0, 500, SPEC_F_DERIVED, NULL, \
   "Delivery: mass released at the drop (default: the whole payload)") \
 X(ROLE_DROP_TIME_RATIO, "payload_role.delivery_drop_time_ratio", SPEC_NUM, payload_role.delivery_drop_time_ratio, "", 0.5, 0, 1, 0, NULL, \
-  "Delivery: drop time as a fraction of the mission time") \
+  "Delivery: the out-leg's share of the forward time; the parcel is carried out, hovered over the drop point for t_hover_s and released, and the rest of the forward time is the return leg (0.5: out and back)") \
 X(ROLE_SPRAY_RATE, "payload_role.spray_rate_kg_per_s", SPEC_NUM, payload_role.spray_rate_kg_per_s, "kg/s", 0, 0, 20, SPEC_F_ZERO_AUTO | SPEC_F_DERIVED, NULL, \
-  "Agriculture: liquid spray rate (0 = payload spread evenly over the mission)") \
+  "Agriculture: liquid spray rate while spraying (0 = the tank empties at the end of the last spraying pass)") \
 X(ROLE_RACING_LOAD_FACTOR, "payload_role.racing_load_factor", SPEC_NUM, payload_role.racing_load_factor, "g", 10, 1, 20, SPEC_F_DERIVED, NULL, \
   "Racing: arm design load factor") \
 X(ROLE_AG_MAX_DOWNWASH, "payload_role.ag_max_downwash_ms", SPEC_NUM, payload_role.ag_max_downwash_ms, "m/s", 17, 1, 40, 0, NULL, \

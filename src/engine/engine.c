@@ -214,6 +214,7 @@ engine_params(const struct mission_spec *s, const struct model_data *md,
 	p->h_conv_w_m2k = ro->h_conv_w_m2k;
 	p->burst_factor = ro->burst_factor;
 	p->small_platform = cls->small_platform || role == ROLE_RACING;
+	p->duty = &ro->duty;
 	p->shed = baseline || !pr->mass_shedding ? SHED_NONE : ro->shedding;
 	p->drop_mass_kg = pr->delivery_drop_mass_kg;
 	p->drop_ratio = pr->delivery_drop_time_ratio;

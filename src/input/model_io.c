@@ -238,6 +238,97 @@ rd_all_present(struct rd *r, const char *array, const bool *seen,
 			               " \"%s\"", names[k]);
 }
 
+/* Keys of a duty profile that only some profiles read: present where the
+ * profile does not read it is an error (the numbers would be ignored). */
+static void
+duty_unread(struct rd *r, const char *const *keys, enum duty_kind kind)
+{
+	for (int i = 0; keys[i] != NULL; i++)
+		if (cJSON_GetObjectItemCaseSensitive(r->obj, keys[i]) != NULL)
+			rd_error(r, DIAG_INCONSISTENT, keys[i], ": not read by the "
+			         "\"%s\" profile", duty_kind_name[kind]);
+}
+
+/* The laps of a race: pieces whose shares sum to 1. */
+static void
+load_lap(struct rd *r, struct model_duty *d)
+{
+	static const char *const keys[] = { "name", "share", "power_fraction",
+		"note", NULL };
+	char path[64];
+	const cJSON *a = rd_get(r, "lap", "an array of lap pieces");
+	rd_path(r, "lap", path, sizeof path);
+	if (a == NULL || !json_in_expect(r->ji, a, path, cJSON_Array, "an array"))
+		return;
+	struct rd sub = *r;
+	double sum = 0.0;
+	int i = 0;
+	const cJSON *it;
+	cJSON_ArrayForEach(it, a) {
+		if (i >= MODEL_MAX_LAP) {
+			json_in_report(r->ji, DIAG_TOO_MANY, it, JSON_IN_VALUE, path,
+			               " (at most %d lap pieces)", MODEL_MAX_LAP);
+			break;
+		}
+		if (rd_entry(&sub, path, i, it, keys) == NULL) {
+			i++;
+			continue;
+		}
+		struct model_lap_piece *pc = &d->lap[i];
+		rd_str(&sub, "name", pc->name, sizeof pc->name);
+		pc->share = rd_num(&sub, "share", 0.001, 1);
+		pc->power_fraction = rd_num(&sub, "power_fraction", 0.001, 1);
+		sum += pc->share;
+		i++;
+	}
+	d->n_lap = i;
+	if (i == 0)
+		json_in_report(r->ji, DIAG_MISSING_ENTRY, a, JSON_IN_VALUE, path,
+		               " (at least one lap piece)");
+	else if (fabs(sum - 1.0) > 1e-6)
+		rd_error(r, DIAG_INCONSISTENT, "lap", ": the pieces' shares sum to "
+		         "%g, not 1", sum);
+}
+
+/* A role's duty profile: the object "duty" of its entry. */
+static void
+load_duty(struct rd *r, struct model_duty *d)
+{
+	static const char *const keys[] = { "profile", "source", "lap_s", "lap",
+		"swath_length_m", "turn_accel_m_s2", "turn_yaw_s", "transit_m",
+		"note", NULL };
+	static const char *const race_keys[] = { "lap_s", "lap", NULL };
+	static const char *const spray_keys[] = { "swath_length_m",
+		"turn_accel_m_s2", "turn_yaw_s", "transit_m", NULL };
+	char path[64];
+	memset(d, 0, sizeof *d);
+	const cJSON *o = rd_get(r, "duty", "an object: the role's duty profile");
+	rd_path(r, "duty", path, sizeof path);
+	if (o == NULL || !json_in_expect(r->ji, o, path, cJSON_Object, "an object"))
+		return;
+	struct rd sub = *r;
+	snprintf(sub.entry, sizeof sub.entry, "%s", path);
+	sub.obj = o;
+	json_in_check_keys(r->ji, o, sub.entry, keys, JSON_IN_COMMENTS);
+	int k = rd_enum(&sub, "profile", duty_kind_name);
+	d->kind = k < 0 ? DUTY_PHASES : (enum duty_kind)k;
+	rd_str(&sub, "source", d->source, sizeof d->source);
+	if (d->kind == DUTY_RACE) {
+		d->lap_s = rd_num(&sub, "lap_s", 1, 600);
+		load_lap(&sub, d);
+	} else {
+		duty_unread(&sub, race_keys, d->kind);
+	}
+	if (d->kind == DUTY_SPRAY) {
+		d->swath_length_m = rd_num(&sub, "swath_length_m", 1, 5000);
+		d->turn_accel_m_s2 = rd_num(&sub, "turn_accel_m_s2", 0.1, 20);
+		d->turn_yaw_s = rd_num(&sub, "turn_yaw_s", 0, 60);
+		d->transit_m = rd_num(&sub, "transit_m", 0, 10000);
+	} else {
+		duty_unread(&sub, spray_keys, d->kind);
+	}
+}
+
 static void
 load_roles(struct rd *r, struct model_data *m)
 {
@@ -245,7 +336,7 @@ load_roles(struct rd *r, struct model_data *m)
 		"thrust_to_weight_source", "load_factor", "aux_power_w",
 		"aux_reference_mass_kg", "added_drag_m2", "forward_drag_multiplier",
 		"integration_overhead_frac", "c_motor", "c_esc", "h_conv_w_m2k",
-		"battery_burst_factor", "shedding", "note", NULL };
+		"battery_burst_factor", "shedding", "duty", "note", NULL };
 	static const char *const shed[] = { "none", "drop", "spray", NULL };
 	bool seen[ROLE_MAX] = { false };
 	const cJSON *a = rd_array(r, "roles");
@@ -281,6 +372,7 @@ load_roles(struct rd *r, struct model_data *m)
 		ro->burst_factor = rd_num(r, "battery_burst_factor", 1, 10);
 		int sh = rd_enum(r, "shedding", shed);
 		ro->shedding = sh < 0 ? SHED_NONE : (enum shed_kind)sh;
+		load_duty(r, &ro->duty);
 	}
 	rd_all_present(r, "roles", seen, spec_enum_role, ROLE_MAX);
 }

@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "core/checks.h"
+#include "core/model.h"
 #include "output/doc.h"
 #include "output/plot.h"
 #include "output/report_int.h"
@@ -164,6 +165,87 @@ sweep_figure(struct rep *rp)
 	strbuf_free(&sb);
 }
 
+/* The duty cycle the design of record flew, in one paragraph (nothing
+ * for the paper's three phases, which the next paragraph states). */
+static void
+duty_paragraph(struct rep *rp)
+{
+	const struct res_run *rec = rp->rec;
+	const struct res_duty *d = &rec->duty;
+	const struct mission_spec *s = &rp->r->mission;
+	struct strbuf sb = STRBUF_INIT, tail = STRBUF_INIT, mid = STRBUF_INIT;
+	char b[8][48];
+	double reserve = 100.0 * rec->reserve_soc;
+	report_sfmt(&tail, " The pack lands at %s" NBSP "%% charge (reserve %s" NBSP "%%) and "
+	    "peaks at %s" NBSP "°C in %s" NBSP "°C air. The profile and its sources are in "
+	    "data/roles.json; result.json lists every segment (duty_profile).",
+	    report_num(b[6], sizeof b[6], 100.0 * rec->end_soc, 0),
+	    report_num(b[7], sizeof b[7], reserve, 0),
+	    report_num(b[4], sizeof b[4], rec->max_battery_temp_c, 1),
+	    report_num(b[5], sizeof b[5], s->ambient_temp_c, 1));
+	switch (d->kind) {
+	case DUTY_RACE:
+		doc_paragraph(rp->d, report_sfmt(&sb, "The forward time is flown as a race: %d laps "
+		    "of %s" NBSP "s, each a full-throttle burst, a high-speed run and a corner, drawing "
+		    "%s" NBSP "W on average (%s" NBSP "%% of the %s" NBSP "W full-throttle power) and "
+		    "%s" NBSP "A from the pack; the climb and the hover are flown as asked.%s",
+		    d->n_laps, report_num(b[0], sizeof b[0], d->lap_s, 1),
+		    report_num(b[1], sizeof b[1], d->race_mean_power_w, 0),
+		    report_num(b[2], sizeof b[2], 100.0 * d->lap_mean_fraction, 0),
+		    report_num(b[3], sizeof b[3], d->full_throttle_power_w, 0),
+		    report_num(b[4], sizeof b[4], d->race_mean_current_a, 1), strbuf_str(&tail)));
+		break;
+	case DUTY_SPRAY:
+		doc_paragraph(rp->d, report_sfmt(&sb, "The forward distance is flown as a spray sortie: "
+		    "%s" NBSP "m to the field, %d passes of %s" NBSP "m (the swath length "
+		    "%s" NBSP "m) with %d turns of %s" NBSP "s at the swath ends (brake, yaw, "
+		    "accelerate), and %s" NBSP "m back; %s.%s",
+		    report_num(b[0], sizeof b[0], d->transit_m, 0), d->n_passes,
+		    report_num(b[1], sizeof b[1], d->pass_m, 0),
+		    report_num(b[2], sizeof b[2], d->swath_length_m, 0), d->n_turns,
+		    report_num(b[3], sizeof b[3], d->turn_s, 1),
+		    report_num(b[6], sizeof b[6], d->transit_m, 0),
+		    d->tank_shed_kg > 0.0 ? report_sfmt(&mid, "%s" NBSP "kg of liquid is shed "
+		    "while spraying", report_num(b[7], sizeof b[7], d->tank_shed_kg, 2))
+		    : "the tank is carried full throughout (static sizing)", strbuf_str(&tail)));
+		break;
+	case DUTY_OUT_AND_BACK: {
+		double out_s = 0.0, back_s = 0.0, hover_s = 0.0;
+		for (int i = 0; i < d->n_groups; i++) {
+			const struct res_duty_group *g = &d->group[i];
+			if (g->phase == PHASE_HOVER)
+				hover_s += g->duration_s;
+			else if (g->phase == PHASE_FORWARD && out_s == 0.0)
+				out_s = g->duration_s;
+			else if (g->phase == PHASE_FORWARD)
+				back_s += g->duration_s;
+		}
+		if (d->drop_time_s >= 0.0 && d->drop_mass_kg > 0.0)
+			doc_paragraph(rp->d, report_sfmt(&sb, "The mission is flown out and back: "
+			    "%s" NBSP "s out with the %s" NBSP "kg parcel, %s" NBSP "s hovering over "
+			    "the drop point, the release at %s" NBSP "s, and %s" NBSP "s back "
+			    "without it.%s", report_num(b[0], sizeof b[0], out_s, 0),
+			    report_num(b[1], sizeof b[1], d->drop_mass_kg, 2),
+			    report_num(b[2], sizeof b[2], hover_s, 0),
+			    report_num(b[3], sizeof b[3], d->drop_time_s, 0),
+			    report_num(b[6], sizeof b[6], back_s, 0), strbuf_str(&tail)));
+		else
+			doc_paragraph(rp->d, report_sfmt(&sb, "The mission is flown out and back "
+			    "with the payload aboard throughout (static sizing): %s" NBSP "s out, "
+			    "%s" NBSP "s hovering at the far end and %s" NBSP "s back.%s",
+			    report_num(b[0], sizeof b[0], out_s, 0),
+			    report_num(b[2], sizeof b[2], hover_s, 0),
+			    report_num(b[6], sizeof b[6], back_s, 0), strbuf_str(&tail)));
+		break;
+	}
+	default:
+		break;
+	}
+	strbuf_free(&mid);
+	strbuf_free(&tail);
+	strbuf_free(&sb);
+}
+
 /* Section: the phase tables of the record and its references and the
  * power-vs-speed sweep. */
 void
@@ -174,15 +256,20 @@ report_sec_mission(struct rep *rp, const char *title)
 	struct strbuf sb = STRBUF_INIT;
 	char b1[48], b2[48];
 	report_heading(rp, title);
+	duty_paragraph(rp);
 	int shed = r->mission.payload_role.mass_shedding &&
 	           (r->mission.payload_role.type == ROLE_DELIVERY ||
 	            r->mission.payload_role.type == ROLE_AGRICULTURE);
-	doc_paragraph(rp->d, report_sfmt(&sb, "The mission is flown as climb, forward flight and hover%s. "
+	bool profile = rec->duty.kind != DUTY_PHASES;
+	doc_paragraph(rp->d, report_sfmt(&sb, "%s%s. "
 	              "Electrical power is at the battery terminals and includes %s" NBSP "W of auxiliary "
 	              "load; energy is what each phase draws from the pack of the %s (%s" NBSP "Wh nominal, "
 	              "%dS %s).",
+	              profile ? "The tables total the segments by the phase whose time they fly"
+	                      : "The mission is flown as climb, forward flight and hover",
 	              shed ? "; payload leaves the aircraft on the way (drop or spray), so the later "
-	                     "phases fly lighter than the takeoff mass" : " at the takeoff mass",
+	                     "phases fly lighter than the takeoff mass" : profile ? ""
+	                     : " at the takeoff mass",
 	              report_num(b1, sizeof b1, rec->aux_power_w, 0),
 	              rp->buildable ? "design of record" : "continuous design",
 	              report_num(b2, sizeof b2, rec->energy_wh, 1), rec->cell_count, rec->chemistry));

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/model.h"
 #include "output/bom_csv.h"
 #include "util/jsonw.h"
 
@@ -213,6 +214,78 @@ put_phases(struct jsonw *w, const struct res_run *run)
 	jsonw_end(w);
 }
 
+/* What the run flew: its role's duty profile, segment by kind, and what
+ * the profile made of the mission (physics/duty.h). */
+static void
+put_duty(struct jsonw *w, const struct res_run *run)
+{
+	const struct res_duty *d = &run->duty;
+	int kind = d->kind >= 0 && d->kind < DUTY_KIND_MAX ? d->kind : DUTY_PHASES;
+	jsonw_object(w, "duty_profile");
+	jsonw_string(w, "profile", duty_kind_name[kind]);
+	JW_STR(w, "source", d->source);
+	jsonw_number(w, "full_throttle_power_w", d->full_throttle_power_w);
+	jsonw_number(w, "mean_power_w", d->mean_power_w);
+	jsonw_number(w, "peak_power_w", d->peak_power_w);
+	int n = jw_count(w, "segments", d->n_groups, RES_MAX_DUTY_GROUPS);
+	jsonw_array(w, "segments");
+	for (int i = 0; i < n; i++) {
+		const struct res_duty_group *g = &d->group[i];
+		jsonw_object(w, NULL);
+		JW_STR(w, "segment", g->name);
+		jw_phase(w, "phase", g->phase);
+		jsonw_int(w, "count", g->count);
+		jsonw_number(w, "duration_s", g->duration_s);
+		jsonw_number(w, "power_w", g->power_w);
+		jsonw_number(w, "current_a", g->current_a);
+		jsonw_number(w, "energy_wh", g->energy_wh);
+		if (g->fraction > 0.0)
+			jsonw_number(w, "fraction_of_full_throttle", g->fraction);
+		else
+			jsonw_null(w, "fraction_of_full_throttle");
+		jsonw_end(w);
+	}
+	jsonw_end(w);
+	if (kind == DUTY_RACE) {
+		jsonw_object(w, "race");
+		jsonw_int(w, "laps", d->n_laps);
+		jsonw_number(w, "lap_s", d->lap_s);
+		jsonw_number(w, "race_s", d->race_s);
+		jsonw_number(w, "mean_power_w", d->race_mean_power_w);
+		jsonw_number(w, "mean_current_a", d->race_mean_current_a);
+		jsonw_number(w, "mean_fraction_of_full_throttle", d->lap_mean_fraction);
+		jsonw_number(w, "peak_fraction_of_full_throttle", d->lap_peak_fraction);
+		jsonw_end(w);
+	} else {
+		jsonw_null(w, "race");
+	}
+	if (kind == DUTY_SPRAY) {
+		jsonw_object(w, "spray");
+		jsonw_number(w, "swath_length_m", d->swath_length_m);
+		jsonw_int(w, "passes", d->n_passes);
+		jsonw_int(w, "turns", d->n_turns);
+		jsonw_number(w, "pass_m", d->pass_m);
+		jsonw_number(w, "turn_s", d->turn_s);
+		jsonw_number(w, "transit_m", d->transit_m);
+		jsonw_number(w, "spraying_s", d->spray_s);
+		jsonw_number(w, "spray_rate_kg_s", d->spray_rate_kg_s);
+		jsonw_number(w, "tank_shed_kg", d->tank_shed_kg);
+		jsonw_end(w);
+	} else {
+		jsonw_null(w, "spray");
+	}
+	if (d->drop_time_s >= 0.0 && d->drop_mass_kg > 0.0) {
+		jsonw_object(w, "drop");
+		jsonw_number(w, "time_s", d->drop_time_s);
+		jsonw_number(w, "mass_kg", d->drop_mass_kg);
+		jsonw_end(w);
+	} else {
+		jsonw_null(w, "drop");
+	}
+	jsonw_number(w, "landing_payload_kg", d->landing_payload_kg);
+	jsonw_end(w);
+}
+
 /* One column of the discharge trace: the double at byte offset `off` of
  * every sample. */
 static void
@@ -322,6 +395,7 @@ put_run_fields(struct jsonw *w, const struct res_run *run,
 	jsonw_number(w, "nominal_voltage_v", run->nominal_voltage_v);
 
 	put_phases(w, run);
+	put_duty(w, run);
 	jsonw_number(w, "approved_hover_time_s", run->approved_time_s[PHASE_HOVER]);
 	jsonw_number(w, "approved_climb_time_s", run->approved_time_s[PHASE_CLIMB]);
 	jsonw_number(w, "approved_forward_time_s", run->approved_time_s[PHASE_FORWARD]);

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "physics/therm.h"
+#include "util/strbuf.h"
 #include "util/units.h"
 
 #define MIN_STEPS_PER_PHASE 4
@@ -57,56 +58,105 @@ step_init(const struct discharge_pack *p, double hac_w_k, double ambient_c,
  * current and the lowest terminal voltage). */
 struct step_out {
 	double i_a;                  /* mean current over the step */
-	double i0_a, v_oc0_v, v_term0_v; /* at its start */
-	double i1_a, v_oc1_v, v_term1_v; /* at its end */
+	double p_w;                  /* mean battery power over the step */
+	double i0_a, v_oc0_v, v_term0_v, p0_w; /* at its start */
+	double i1_a, v_oc1_v, v_term1_v, p1_w; /* at its end */
 };
 
+/* What a step asks of the pack: a power, and for a piece of a race the
+ * full-throttle point it is a fraction of. */
+struct demand {
+	double power_w;              /* asked */
+	double full_w;               /* > 0: full throttle gives full_w ... */
+	double full_v;               /* ... at this terminal voltage */
+};
+
+/* The power the pack's terminal voltage v_term allows at full throttle:
+ * the rotors turn with the voltage and their power goes as the speed
+ * cubed, P = P_full (V / V_full)³. */
+static inline double
+full_at(const struct demand *d, double v_term)
+{
+	double x = v_term / d->full_v;
+	return d->full_w * x * x * x;
+}
+
 /* The pack's current, open-circuit and terminal voltage at (soc, temp_c)
- * with b_eff at c_rate, drawing power_w.  DIS_COMPLETED when the pack can
+ * with b_eff at c_rate, drawing the demand d, and the power it draws
+ * (*p_w: the demand, or for a race's piece what full throttle gives on
+ * the sagging pack when that is less: a punch-out on a tired pack is
+ * weaker, not an end of the race).  DIS_COMPLETED when the pack can
  * deliver it, else the end code. */
 static inline enum discharge_end
-pack_draw(const struct step_ctx *sc, double power_w, double soc, double temp_c,
-          double c_rate, double *i_a, double *v_oc_v, double *v_term_v,
-          double *r_sys_ohm)
+pack_draw(const struct step_ctx *sc, const struct demand *d, double soc,
+          double temp_c, double c_rate, double *i_a, double *v_oc_v,
+          double *v_term_v, double *r_sys_ohm, double *p_w)
 {
 	const struct discharge_pack *p = sc->p;
 	double r_sys = batt_r_sys_at(&sc->rs, temp_c);
 	double v_oc = (double)p->cells * batt_ocv_cell(p->chem, soc, c_rate);
-	enum batt_status bs = batt_current_a(v_oc, r_sys, power_w, i_a);
+	enum batt_status bs = batt_current_a(v_oc, r_sys, d->power_w, i_a);
 	if (bs == BATT_OVERFLOW)
 		return DIS_OVERFLOW;
+	double power = d->power_w;
+	double v_term = bs == BATT_OK ? v_oc - *i_a * r_sys : 0.0;
+	if (d->full_w > 0.0 && d->full_v > 0.0
+	    && (bs == BATT_COLLAPSE || full_at(d, v_term) < power)) {
+		/* Full throttle on the sagging pack: V solves
+		 * P_full (V / V_f)³ = V (V_oc - V) / R, i.e.
+		 * P_full R V² + V_f³ V - V_f³ V_oc = 0. */
+		double vf3 = d->full_v * d->full_v * d->full_v;
+		double a = d->full_w * r_sys;
+		v_term = a > 0.0 ? 2.0 * vf3 * v_oc / (vf3 + sqrt(vf3 * vf3
+		    + 4.0 * a * vf3 * v_oc)) : v_oc;
+		power = full_at(d, v_term);
+		*i_a = v_term > 0.0 ? power / v_term : 0.0;
+		bs = v_term > 0.0 ? BATT_OK : BATT_COLLAPSE;
+	}
+	double v_cut = (double)p->cells * p->chem->v_cutoff;
+	if (d->full_w > 0.0 && v_oc > v_cut && (bs == BATT_COLLAPSE || v_term < v_cut)) {
+		/* A race's piece is flown down to the cut-off, not past it: the
+		 * throttle gives what the pack delivers there (the pilot, or the
+		 * ESC's low-voltage limit, holds it back). */
+		v_term = v_cut;
+		power = v_cut * (v_oc - v_cut) / r_sys;
+		*i_a = power / v_cut;
+		bs = BATT_OK;
+	}
 	if (bs == BATT_COLLAPSE)
 		return DIS_COLLAPSE;
 	*v_oc_v = v_oc;
-	*v_term_v = v_oc - *i_a * r_sys;
+	*v_term_v = v_term;
 	*r_sys_ohm = r_sys;
+	*p_w = power;
 	if (*v_term_v < (double)p->cells * p->chem->v_cutoff)
 		return DIS_VOLTAGE_FLOOR;
 	return DIS_COMPLETED;
 }
 
-/* One step: draw power_w for sc->dt_s, by Heun's predictor-corrector: the
- * start's current predicts the end of the step, and the mean of the
- * currents (and heats) at both ends moves the state.  It is second order:
- * 30 steps over a mission come within 3e-5 of the converged charge, where
- * explicit Euler needs thousands.  Returns DIS_COMPLETED when the step was
- * flown, else the end code (a limit reached at either end: the step is
- * then not flown). */
+/* One step: draw the demand d for sc->dt_s, by Heun's predictor-corrector:
+ * the start's current predicts the end of the step, and the mean of the
+ * currents (and heats, and powers) at both ends moves the state.  It is
+ * second order: 30 steps over a mission come within 3e-5 of the converged
+ * charge, where explicit Euler needs thousands.  Returns DIS_COMPLETED
+ * when the step was flown, else the end code (a limit reached at either
+ * end: the step is then not flown). */
 static inline enum discharge_end
-step(const struct step_ctx *sc, double power_w, struct cell_state *st,
+step(const struct step_ctx *sc, const struct demand *d, struct cell_state *st,
      struct step_out *so)
 {
 	const struct discharge_pack *p = sc->p;
 	double dt_s = sc->dt_s;
 	double r_esc = sc->rs.r_esc_ohm;
 	double r0, r1;
-	enum discharge_end e = pack_draw(sc, power_w, st->soc, st->temp_c,
-	    st->c_rate, &so->i0_a, &so->v_oc0_v, &so->v_term0_v, &r0);
+	enum discharge_end e = pack_draw(sc, d, st->soc, st->temp_c,
+	    st->c_rate, &so->i0_a, &so->v_oc0_v, &so->v_term0_v, &r0, &so->p0_w);
 	if (e != DIS_COMPLETED) {
 		/* The end is the start: nothing was flown. */
 		so->i1_a = so->i0_a;
 		so->v_oc1_v = so->v_oc0_v;
 		so->v_term1_v = so->v_term0_v;
+		so->p1_w = so->p0_w;
 		return e;
 	}
 	double i0 = so->i0_a;
@@ -115,13 +165,15 @@ step(const struct step_ctx *sc, double power_w, struct cell_state *st,
 	double temp_pred_c = therm_step_apply(&sc->ts, st->temp_c, sc->ambient_c,
 	    heat0_w);
 	double soc_pred = st->soc - i0 * dt_s / (S_PER_H * p->capacity_ah);
-	e = pack_draw(sc, power_w, soc_pred, temp_pred_c, i0 / p->capacity_ah,
-	    &so->i1_a, &so->v_oc1_v, &so->v_term1_v, &r1);
+	e = pack_draw(sc, d, soc_pred, temp_pred_c, i0 / p->capacity_ah,
+	    &so->i1_a, &so->v_oc1_v, &so->v_term1_v, &r1, &so->p1_w);
 	if (e != DIS_COMPLETED)
 		return e;
 	double i1 = so->i1_a;
 	double heat1_w = i1 * i1 * (r1 - r_esc);
 	so->i_a = 0.5 * (i0 + i1);
+	/* A constant demand is drawn exactly (the same bits as asked). */
+	so->p_w = so->p0_w == so->p1_w ? so->p0_w : 0.5 * (so->p0_w + so->p1_w);
 	st->temp_c = therm_step_apply(&sc->ts, st->temp_c, sc->ambient_c,
 	    0.5 * (heat0_w + heat1_w));
 	st->soc -= so->i_a * dt_s / (S_PER_H * p->capacity_ah);
@@ -152,32 +204,131 @@ record(struct res_sample *trace, int max_trace, int *n_trace, double t,
 	s->phase = phase;
 }
 
-/* The electrical power the mission draws at mass_kg in a phase flown at
- * these speeds. */
-static double
-electric_power_w(const struct discharge_mission *mis, double v_climb_ms,
-                 double v_fwd_ms, double mass_kg)
-{
-	struct mission_power pw;
-	mission_power(mis->model, mass_kg, v_climb_ms, v_fwd_ms, &pw);
-	return pw.electrical_w;
-}
-
-/* The electrical power at one mass, remembered for the next call. */
-struct power_memo {
-	double mass_kg;        /* -1: none yet */
-	double power_w;
+/* A segment's battery and shaft power at one mass. */
+struct seg_power {
+	double power_w;        /* at the battery */
+	double shaft_w;        /* all rotors */
 };
 
-static double
-memo_power_w(const struct discharge_mission *mis, double v_climb_ms,
-             double v_fwd_ms, struct power_memo *pm, double mass_kg)
+/* The power segment s draws at mass_kg (duty.h's laws). */
+static void
+segment_power(const struct discharge_mission *mis,
+              const struct duty_segment *s, double mass_kg,
+              struct seg_power *out)
+{
+	const struct mission_model *m = mis->model;
+	struct mission_power mp;
+	switch (s->law) {
+	case DUTY_LAW_THROTTLE: {
+		/* A fraction of full throttle, and never less than the hover
+		 * power: a racer that drew less would be sinking. */
+		mission_power(m, mass_kg, 0.0, 0.0, &mp);
+		double p = s->fraction * mis->full_throttle_w;
+		if (p > mp.electrical_w) {
+			out->power_w = p;
+			out->shaft_w = s->fraction * mis->full_throttle_shaft_w;
+			if (out->shaft_w < mp.shaft_w)
+				out->shaft_w = mp.shaft_w;
+			if (out->shaft_w > out->power_w)
+				out->shaft_w = out->power_w;
+		} else {
+			out->power_w = mp.electrical_w;
+			out->shaft_w = mp.shaft_w;
+		}
+		return;
+	}
+	case DUTY_LAW_TURN: {
+		/* Brake from v at a, yaw hovering, accelerate back to v at a.
+		 * Braking and accelerating tilt the thrust: the rotors carry
+		 * the weight and m a, M sqrt(1 + (a/g)²) in all; accelerating
+		 * also gives the aircraft its kinetic energy, m a v̄ with v̄ =
+		 * v / 2, through the drive's efficiency at that point.  Braking
+		 * recovers none of it (no regeneration). */
+		double a = s->accel_m_s2, v = s->v_fwd_ms;
+		double t_b = 0.5 * (s->dur_s - s->yaw_s);
+		if (t_b < 0.0)
+			t_b = 0.0;
+		struct mission_power hv, tilt;
+		mission_power(m, mass_kg, 0.0, 0.0, &hv);
+		mission_power(m, mass_kg * sqrt(1.0 + (a / G0_M_S2) * (a / G0_M_S2)),
+		    0.0, 0.0, &tilt);
+		double drive_w = tilt.electrical_w - tilt.switching_w - m->aux_w;
+		double eta = drive_w > 0.0 && tilt.shaft_w > 0.0
+		    ? tilt.shaft_w / drive_w : 1.0;
+		if (eta > 1.0)
+			eta = 1.0;
+		double kin_w = mass_kg * a * 0.5 * v;
+		double e_j = tilt.electrical_w * 2.0 * t_b + hv.electrical_w * s->yaw_s
+		    + kin_w / eta * t_b;
+		double es_j = tilt.shaft_w * 2.0 * t_b + hv.shaft_w * s->yaw_s
+		    + kin_w * t_b;
+		out->power_w = s->dur_s > 0.0 ? e_j / s->dur_s : hv.electrical_w;
+		out->shaft_w = s->dur_s > 0.0 ? es_j / s->dur_s : hv.shaft_w;
+		return;
+	}
+	case DUTY_LAW_FLIGHT:
+	default:
+		mission_power(m, mass_kg, s->v_climb_ms, s->v_fwd_ms, &mp);
+		out->power_w = mp.electrical_w;
+		out->shaft_w = mp.shaft_w;
+		return;
+	}
+}
+
+/* The power at one mass, remembered for the next call (the power is a
+ * pure function of the mass within a segment). */
+struct power_memo {
+	double mass_kg;        /* -1: none yet */
+	struct seg_power p;
+};
+
+static const struct seg_power *
+memo_power(const struct discharge_mission *mis, const struct duty_segment *s,
+           struct power_memo *pm, double mass_kg)
 {
 	if (pm->mass_kg != mass_kg) {
 		pm->mass_kg = mass_kg;
-		pm->power_w = electric_power_w(mis, v_climb_ms, v_fwd_ms, mass_kg);
+		segment_power(mis, s, mass_kg, &pm->p);
 	}
-	return pm->power_w;
+	return &pm->p;
+}
+
+/* The plan a discharge flies: its own, or the three phases of the legacy
+ * fields in *buf. */
+static const struct duty_plan *
+mission_plan(const struct discharge_mission *mis, struct duty_plan *buf)
+{
+	if (mis->plan != NULL)
+		return mis->plan;
+	duty_plan_phases(mis->duration_s, mis->speed_ms[PHASE_CLIMB],
+	    mis->speed_ms[PHASE_FORWARD], &mis->shed, buf);
+	return buf;
+}
+
+/* Steps of segment s: its share of `steps` (at least 4 for a whole phase
+ * of the paper's mission, at least one for a piece of a profile). */
+static int
+segment_steps(const struct duty_segment *s, int steps, double total_s)
+{
+	int n = total_s > 0.0 ? (int)((double)steps * s->dur_s / total_s) : 0;
+	int lo = s->whole_phase ? MIN_STEPS_PER_PHASE : 1;
+	return n < lo ? lo : n;
+}
+
+double
+discharge_plan_energy_wh(const struct discharge_mission *mis)
+{
+	struct duty_plan buf;
+	const struct duty_plan *pl = mission_plan(mis, &buf);
+	double wh = 0.0;
+	for (int i = 0; i < pl->n_seg; i++) {
+		const struct duty_segment *s = &pl->seg[i];
+		struct seg_power sp;
+		segment_power(mis, s, mis->dry_mass_kg
+		    + duty_payload_mean(s, 0.0, s->dur_s), &sp);
+		wh += sp.power_w * s->dur_s / S_PER_H;
+	}
+	return wh;
 }
 
 void
@@ -186,11 +337,13 @@ discharge_run(const struct discharge_pack *pack,
               struct res_sample *trace, int max_trace, int *n_trace,
               struct discharge_out *out)
 {
+	struct duty_plan buf;
+	const struct duty_plan *pl = mission_plan(mis, &buf);
 	struct cell_state st = { 1.0, mis->ambient_c, 0.0 };
 	/* The pack's convective conductance is constant: computed once, not
 	 * per step (it costs a pow). */
 	double hac = therm_hac_w_k(pack->mass_kg, pack->h_conv_w_m2k);
-	double total_s = 0.0;
+	double total_s = pl->total_s;
 	int dummy = 0;
 	if (n_trace == NULL)
 		n_trace = &dummy;
@@ -199,68 +352,61 @@ discharge_run(const struct discharge_pack *pack,
 	out->end = DIS_COMPLETED;
 	out->peak_temp_c = st.temp_c;
 	out->min_v_term_v = (double)pack->cells * pack->chem->v_full;
-	for (int ph = 0; ph < PHASE_MAX; ph++)
-		total_s += mis->duration_s[ph];
+	out->end_payload_kg = pl->n_seg > 0 ? pl->seg[0].payload0_kg : 0.0;
+
+	/* A plan of more steps than the trace holds is recorded every
+	 * stride-th step, and always at its last. */
+	int n_steps = 0;
+	for (int i = 0; i < pl->n_seg; i++)
+		n_steps += segment_steps(&pl->seg[i], steps, total_s);
+	int stride = 1;
+	if (trace != NULL && max_trace > 1 && n_steps + 1 > max_trace)
+		stride = (n_steps + max_trace - 2) / (max_trace - 1);
 
 	double t = 0.0;
+	double ph_e[PHASE_MAX] = { 0 }, ph_es[PHASE_MAX] = { 0 };
+	double ph_q[PHASE_MAX] = { 0 }, ph_t[PHASE_MAX] = { 0 };
 	bool first = true;
-	for (int ph = 0; ph < PHASE_MAX && out->end == DIS_COMPLETED; ph++) {
-		double dur = mis->duration_s[ph];
-		if (!(dur > 0.0))
-			continue;
-		int n = total_s > 0.0 ? (int)((double)steps * dur / total_s) : 0;
-		if (n < MIN_STEPS_PER_PHASE)
-			n = MIN_STEPS_PER_PHASE;
-		double dt = dur / (double)n;
+	int k_all = 0;
+	for (int i = 0; i < pl->n_seg && out->end == DIS_COMPLETED; i++) {
+		const struct duty_segment *sg = &pl->seg[i];
+		int n = segment_steps(sg, steps, total_s);
+		double dt = sg->dur_s / (double)n;
 		struct step_ctx sc;
 		step_init(pack, hac, mis->ambient_c, dt, &sc);
-		double v_climb = ph == PHASE_CLIMB ? mis->speed_ms[ph] : 0.0;
-		double v_fwd = ph == PHASE_FORWARD ? mis->speed_ms[ph] : 0.0;
-		double mass = mis->dry_mass_kg + role_payload_at(&mis->shed, t);
-		struct power_memo pm = { -1.0, 0.0 };
-		double power_w = memo_power_w(mis, v_climb, v_fwd, &pm, mass);
-		double e_wh = 0.0, q_ah = 0.0, p_sum = 0.0;
+		struct power_memo pm = { -1.0, { 0.0, 0.0 } };
+		double e_wh = 0.0, es_wh = 0.0, q_ah = 0.0;
 		int flown = 0;
 		for (int k = 0; k < n; k++) {
-			if (mis->shed.kind == SHED_DROP) {
-				/* The power is a pure function of the mass, which a
-				 * drop changes at one instant: a step that holds the
-				 * drop draws each mass's power for its share of the
-				 * step (its energy is then exact), and between drops
-				 * the power is reused. */
-				double m0 = mis->dry_mass_kg + role_payload_at(&mis->shed, t);
-				double m1 = mis->dry_mass_kg
-				    + role_payload_at(&mis->shed, t + dt);
-				mass = mis->dry_mass_kg
-				    + role_payload_at(&mis->shed, t + 0.5 * dt);
-				double p0 = memo_power_w(mis, v_climb, v_fwd, &pm, m0);
-				power_w = p0;
-				if (m1 != m0) {
-					double before = (mis->shed.drop_time_s - t) / dt;
-					before = before < 0.0 ? 0.0 : before > 1.0 ? 1.0 : before;
-					double p1 = memo_power_w(mis, v_climb, v_fwd, &pm, m1);
-					power_w = before * p0 + (1.0 - before) * p1;
-				}
-			} else if (mis->shed.kind == SHED_SPRAY) {
-				/* The tank empties along the step: its mean mass over
-				 * the step (the mid-step mass unless the tank runs dry
-				 * within it).  The steps' means average to the phase's,
-				 * so the phase's mean power is at least the power at its
-				 * mean mass, the record's shaft power (power is convex
-				 * in mass). */
-				mass = mis->dry_mass_kg
-				    + role_payload_mean(&mis->shed, t, t + dt);
-				power_w = memo_power_w(mis, v_climb, v_fwd, &pm, mass);
+			/* The payload's mean over the step: a tank emptying along
+			 * it (the mid-step mass until it runs dry within it).  The
+			 * steps' means average to the segment's, so its mean power
+			 * is at least the power at its mean mass (power is convex
+			 * in mass). */
+			double tau = (double)k * dt;
+			double payload = duty_payload_mean(sg, tau, tau + dt);
+			double mass = mis->dry_mass_kg + payload;
+			const struct seg_power *sp = memo_power(mis, sg, &pm, mass);
+			struct demand dmd = { sp->power_w, 0.0, 0.0 };
+			if (sg->law == DUTY_LAW_THROTTLE) {
+				dmd.full_w = mis->full_throttle_w;
+				dmd.full_v = mis->full_throttle_v;
 			}
 			struct step_out so;
-			enum discharge_end e = step(&sc, power_w, &st, &so);
+			enum discharge_end e = step(&sc, &dmd, &st, &so);
+			/* What the pack gave: the demand, or less at full throttle
+			 * on a sagging pack (the shaft power in proportion). */
+			double power_w = e == DIS_COMPLETED || e == DIS_DEPLETED
+			    || e == DIS_THERMAL ? so.p_w : so.p0_w;
+			double shaft_w = sp->power_w > 0.0 && power_w < sp->power_w
+			    ? sp->shaft_w * power_w / sp->power_w : sp->shaft_w;
 			if (e == DIS_OVERFLOW || e == DIS_COLLAPSE) {
 				out->end = e;
 				break;
 			}
 			if (first) {
 				record(trace, max_trace, n_trace, 0.0, &(struct cell_state){ 1.0, mis->ambient_c, 0.0 },
-				    so.v_oc0_v, so.v_term0_v, so.i0_a, power_w, mass, ph);
+				    so.v_oc0_v, so.v_term0_v, so.i0_a, so.p0_w, mass, sg->phase);
 				first = false;
 			}
 			/* Both ends of the step count for the extremes: the end
@@ -278,29 +424,108 @@ discharge_run(const struct discharge_pack *pack,
 			}
 			t += dt;
 			flown++;
+			k_all++;
 			e_wh += power_w * dt / S_PER_H;
+			es_wh += shaft_w * dt / S_PER_H;
 			q_ah += so.i_a * dt / S_PER_H;
-			p_sum += power_w;
+			if (power_w > out->peak_power_w)
+				out->peak_power_w = power_w;
+			out->end_payload_kg = duty_payload_at(sg, tau + dt);
 			if (st.temp_c > out->peak_temp_c)
 				out->peak_temp_c = st.temp_c;
-			record(trace, max_trace, n_trace, t, &st, so.v_oc1_v, so.v_term1_v,
-			    so.i1_a, power_w, mass, ph);
+			bool last = (i + 1 == pl->n_seg && k + 1 == n) || e != DIS_COMPLETED;
+			if (k_all % stride == 0 || last)
+				record(trace, max_trace, n_trace, t, &st, so.v_oc1_v,
+				    so.v_term1_v, so.i1_a, power_w, mass, sg->phase);
 			if (e != DIS_COMPLETED) {
 				out->end = e;
 				break;
 			}
 		}
-		out->phase_energy_wh[ph] = e_wh;
+		int ph = sg->phase;
+		ph_e[ph] += e_wh;
+		ph_es[ph] += es_wh;
+		ph_q[ph] += q_ah;
+		ph_t[ph] += dt * (double)flown;
+		if (sg->group >= 0 && sg->group < DUTY_MAX_GROUP) {
+			out->group_energy_wh[sg->group] += e_wh;
+			out->group_ah[sg->group] += q_ah;
+			out->group_time_s[sg->group] += dt * (double)flown;
+		}
 		out->wh_used += e_wh;
 		out->ah_used += q_ah;
-		if (flown > 0) {
-			double span = dt * (double)flown;
-			out->phase_mean_current_a[ph] = q_ah * S_PER_H / span;
-			out->phase_mean_power_w[ph] = p_sum / (double)flown;
+	}
+	for (int ph = 0; ph < PHASE_MAX; ph++) {
+		out->phase_energy_wh[ph] = ph_e[ph];
+		if (ph_t[ph] > 0.0) {
+			out->phase_mean_current_a[ph] = ph_q[ph] * S_PER_H / ph_t[ph];
+			out->phase_mean_power_w[ph] = ph_e[ph] * S_PER_H / ph_t[ph];
+			out->phase_mean_shaft_w[ph] = ph_es[ph] * S_PER_H / ph_t[ph];
 		}
 	}
 	out->t_end_s = t;
 	out->end_soc = st.soc > 0.0 ? st.soc : 0.0;
+}
+
+void
+discharge_duty_record(const struct duty_plan *pl, const struct discharge_out *out,
+                      double full_throttle_w, const char *source,
+                      struct res_duty *rec)
+{
+	memset(rec, 0, sizeof *rec);
+	rec->kind = (int)pl->kind;
+	if (source != NULL)
+		str_copy(rec->source, sizeof rec->source, source);
+	rec->full_throttle_power_w = full_throttle_w;
+	rec->mean_power_w = out->t_end_s > 0.0
+	    ? out->wh_used * S_PER_H / out->t_end_s : 0.0;
+	rec->peak_power_w = out->peak_power_w;
+	rec->n_groups = pl->n_group < RES_MAX_DUTY_GROUPS ? pl->n_group
+	    : RES_MAX_DUTY_GROUPS;
+	double race_e = 0.0, race_q = 0.0;
+	for (int g = 0; g < rec->n_groups; g++) {
+		const struct duty_group *dg = &pl->group[g];
+		struct res_duty_group *r = &rec->group[g];
+		str_copy(r->name, sizeof r->name, dg->name);
+		r->phase = dg->phase;
+		r->count = dg->count;
+		r->duration_s = out->group_time_s[g];
+		r->fraction = dg->fraction;
+		r->energy_wh = out->group_energy_wh[g];
+		if (r->duration_s > 0.0) {
+			r->power_w = r->energy_wh * S_PER_H / r->duration_s;
+			r->current_a = out->group_ah[g] * S_PER_H / r->duration_s;
+		}
+		if (pl->kind == DUTY_RACE && dg->fraction > 0.0) {
+			rec->race_s += r->duration_s;
+			race_e += r->energy_wh;
+			race_q += out->group_ah[g];
+		}
+	}
+	rec->n_laps = pl->n_laps;
+	rec->lap_s = pl->lap_s;
+	if (rec->race_s > 0.0) {
+		rec->race_mean_power_w = race_e * S_PER_H / rec->race_s;
+		rec->race_mean_current_a = race_q * S_PER_H / rec->race_s;
+	}
+	/* As flown: the hover floor may lift a corner above its fraction. */
+	rec->lap_mean_fraction = full_throttle_w > 0.0
+	    ? rec->race_mean_power_w / full_throttle_w : 0.0;
+	rec->lap_peak_fraction = pl->lap_peak_fraction;
+	rec->n_passes = pl->n_passes;
+	rec->n_turns = pl->n_turns;
+	rec->swath_length_m = pl->swath_length_m;
+	rec->pass_m = pl->pass_m;
+	rec->turn_s = pl->turn_s;
+	rec->transit_m = pl->transit_m;
+	rec->spray_s = pl->spray_s;
+	rec->spray_rate_kg_s = pl->spray_rate_kg_s;
+	double p0 = pl->n_seg > 0 ? pl->seg[0].payload0_kg : 0.0;
+	rec->landing_payload_kg = out->end_payload_kg;
+	rec->tank_shed_kg = pl->kind == DUTY_SPRAY || pl->spray_rate_kg_s > 0.0
+	    ? p0 - out->end_payload_kg : 0.0;
+	rec->drop_time_s = pl->drop_time_s;
+	rec->drop_mass_kg = pl->drop_mass_kg;
 }
 
 double
@@ -345,7 +570,8 @@ discharge_power_endurance_s(const struct discharge_pack *pack, double power_w,
 	for (int k = 0; k < ENDURANCE_MAX_STEPS; k++) {
 		struct step_out so;
 		double soc0 = st.soc;
-		enum discharge_end e = step(&sc, power_w, &st, &so);
+		struct demand dmd = { power_w, 0.0, 0.0 };
+		enum discharge_end e = step(&sc, &dmd, &st, &so);
 		if (e == DIS_OVERFLOW || e == DIS_COLLAPSE || e == DIS_VOLTAGE_FLOOR)
 			return t;
 		if (st.soc <= reserve_soc) {

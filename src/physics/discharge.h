@@ -1,9 +1,11 @@
 /* discharge.h — the time-step discharge simulation (paper Module 4).
  *
- * Flies the mission phase by phase (climb, forward, hover) with the
- * Tremblay–Dessaint pack (C-rate-scaled OCV, temperature- and age-dependent
- * resistance, current from the quadratic power balance), the transient pack
- * temperature, and the payload shedding of the role.  It stops early on
+ * Flies the mission segment by segment, as the role's duty plan lays it
+ * out (duty.h: the paper's climb, forward and hover, or laps, passes and
+ * turns, an out-leg and a return), with the Tremblay–Dessaint pack
+ * (C-rate-scaled OCV, temperature- and age-dependent resistance, current
+ * from the quadratic power balance), the transient pack temperature, and
+ * the payload the plan sheds.  It stops early on
  * voltage collapse, power overflow, the terminal-voltage floor, an empty
  * pack or thermal runaway (60 °C), and says which.  The sampled trace is
  * what the dossier plots.
@@ -14,6 +16,7 @@
 #include <stdbool.h>
 
 #include "physics/batt.h"
+#include "physics/duty.h"
 #include "physics/mission.h"
 #include "core/result.h"
 #include "physics/role.h"
@@ -42,12 +45,22 @@ struct discharge_pack {
 	                            the chemistry profile's R_sys (eq. rsys) */
 };
 
+/* The mission to fly: a duty plan (duty.h), or, when plan is NULL, the
+ * paper's three phases with the legacy shedding below. */
 struct discharge_mission {
 	const struct mission_model *model;
 	double dry_mass_kg;              /* aircraft without payload */
-	struct role_shedding shed;       /* payload over time */
-	double duration_s[PHASE_MAX];    /* phase durations (already relaxed) */
-	double speed_ms[PHASE_MAX];      /* climb speed, forward speed, 0 */
+	const struct duty_plan *plan;    /* the segments to fly, or NULL */
+	double full_throttle_w;          /* battery power at full throttle (the
+	                                    race's pieces are fractions of it) */
+	double full_throttle_shaft_w;    /* its shaft power, all rotors */
+	double full_throttle_v;          /* the terminal voltage it is given at:
+	                                    on a sagging pack full throttle gives
+	                                    less, P_full (V / V_full)³ */
+	struct role_shedding shed;       /* plan NULL: payload over time */
+	double duration_s[PHASE_MAX];    /* plan NULL: phase durations */
+	double speed_ms[PHASE_MAX];      /* plan NULL: climb speed, forward
+	                                    speed, 0 */
 	double ambient_c;                /* air temperature */
 };
 
@@ -62,7 +75,14 @@ struct discharge_out {
 	double peak_current_a;
 	double phase_energy_wh[PHASE_MAX];
 	double phase_mean_current_a[PHASE_MAX];
-	double phase_mean_power_w[PHASE_MAX];
+	double phase_mean_power_w[PHASE_MAX];  /* energy / time flown */
+	double phase_mean_shaft_w[PHASE_MAX];  /* shaft energy / time flown */
+	double peak_power_w;                   /* the highest step power */
+	/* Per group of the plan (duty_plan.group): what its segments drew. */
+	double group_energy_wh[DUTY_MAX_GROUP];
+	double group_ah[DUTY_MAX_GROUP];
+	double group_time_s[DUTY_MAX_GROUP];
+	double end_payload_kg;                 /* payload when the flight ended */
 };
 
 /* Simulate the mission with about `steps` time steps in all (at least 4 per
@@ -72,6 +92,17 @@ void discharge_run(const struct discharge_pack *pack,
                    const struct discharge_mission *mis, int steps,
                    struct res_sample *trace, int max_trace, int *n_trace,
                    struct discharge_out *out);
+
+/* The battery energy of a plan at a constant dry mass, each segment's
+ * power at its mean payload, no battery flown: a seed for sizing, Wh. */
+double discharge_plan_energy_wh(const struct discharge_mission *mis);
+
+/* What a run flew, for the dossier: the plan's groups with what the
+ * discharge out drew in each, and the profile's figures. */
+void discharge_duty_record(const struct duty_plan *plan,
+                           const struct discharge_out *out,
+                           double full_throttle_w, const char *source,
+                           struct res_duty *rec);
 
 /* Hover endurance at constant mass_kg from full charge down to reserve_soc
  * (or the voltage floor, or a thermal stop), s.  aux_w replaces the model's

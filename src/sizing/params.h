@@ -60,6 +60,8 @@ struct sizing_params {
 	double h_conv_w_m2k;
 	double burst_factor;         /* 10 s burst / continuous battery power */
 	bool small_platform;         /* racing/small wiring coefficient */
+	const struct model_duty *duty; /* the role's duty profile (NULL: the
+	                              * paper's three phases) */
 	enum shed_kind shed;
 	double drop_mass_kg;
 	double drop_ratio;

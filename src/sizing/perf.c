@@ -46,6 +46,9 @@ struct perf_ctx {
 	double thrust_scale;          /* full thrust over the model's at rest:
 	                                 below 1 for an integrated system its
 	                                 maker caps (capped_full_throttle()) */
+	double full_w;                /* battery power at full throttle */
+	double full_shaft_w;          /* its shaft power, all rotors */
+	double full_v;                /* ... on this terminal voltage */
 };
 
 static int
@@ -432,14 +435,16 @@ fly(const struct perf_ctx *x, double gamma, double v_fwd_ms,
     struct res_run *run, struct discharge_out *dis)
 {
 	const struct sizing_params *p = x->p;
+	struct duty_plan plan;
+	sizing_plan(p, gamma, x->v_climb_ms, v_fwd_ms, &plan);
 	struct discharge_mission dm;
+	memset(&dm, 0, sizeof dm);
 	dm.model = &x->model;
 	dm.dry_mass_kg = x->c->mass.total_kg - p->payload_kg;
-	sizing_shedding(p, gamma, &dm.shed);
-	sizing_durations(p, gamma, dm.duration_s);
-	dm.speed_ms[PHASE_CLIMB] = x->v_climb_ms;
-	dm.speed_ms[PHASE_FORWARD] = v_fwd_ms;
-	dm.speed_ms[PHASE_HOVER] = 0.0;
+	dm.plan = &plan;
+	dm.full_throttle_w = x->full_w;
+	dm.full_throttle_shaft_w = x->full_shaft_w;
+	dm.full_throttle_v = x->full_v;
 	dm.ambient_c = p->ambient_c;
 	discharge_run(&x->pack, &dm, SIZING_FINAL_STEPS,
 	    run != NULL ? run->trace : NULL, run != NULL ? RES_MAX_TRACE : 0,
@@ -652,12 +657,12 @@ record_phases(struct perf_ctx *x, double gamma, double v_fwd_ms,
               const struct discharge_out *dis, struct res_run *run)
 {
 	const struct sizing_params *p = x->p;
-	double d[PHASE_MAX];
-	sizing_durations(p, gamma, d);
-	struct role_shedding shed;
-	sizing_shedding(p, gamma, &shed);
+	struct duty_plan plan;
+	sizing_plan(p, gamma, x->v_climb_ms, v_fwd_ms, &plan);
+	const double *d = plan.phase_s;
+	discharge_duty_record(&plan, dis, x->full_w,
+	    p->duty != NULL ? p->duty->source : NULL, &run->duty);
 	double dry = x->c->mass.total_kg - p->payload_kg;
-	double t0 = 0.0;
 	run->flight_time_s = 0.0;
 	for (int i = 0; i < PHASE_MAX; i++) {
 		struct res_phase *ph = &run->phase[i];
@@ -665,14 +670,18 @@ record_phases(struct perf_ctx *x, double gamma, double v_fwd_ms,
 		double v_f = i == PHASE_FORWARD ? v_fwd_ms : 0.0;
 		struct mission_power mp;
 		struct res_op op;
-		phase_op(x, dry + role_payload_mean(&shed, t0, t0 + d[i]), v_c, v_f,
+		phase_op(x, dry + duty_phase_mean_payload(&plan, i), v_c, v_f,
 		    &mp, &op);
 		run->approved_time_s[i] = d[i];
 		run->flight_time_s += d[i];
 		ph->duration_s = d[i];
 		ph->speed_ms = v_c + v_f;
 		ph->thrust_per_rotor_n = mp.thrust_per_rotor_n;
-		ph->shaft_power_w = mp.shaft_w;
+		/* A profile's phase is segments of their own powers (laps,
+		 * turns): its shaft power is theirs, as flown. */
+		ph->shaft_power_w = plan.kind != DUTY_PHASES
+		    && dis->phase_mean_shaft_w[i] > 0.0
+		    ? dis->phase_mean_shaft_w[i] : mp.shaft_w;
 		ph->power_w = dis->phase_mean_power_w[i] > 0.0
 		    ? dis->phase_mean_power_w[i] : mp.electrical_w;
 		ph->current_a = dis->phase_mean_current_a[i];
@@ -687,7 +696,6 @@ record_phases(struct perf_ctx *x, double gamma, double v_fwd_ms,
 			run->perf.sustained_motor_current_a = op.motor_current_a;
 		ph->pitch_deg = mp.pitch_deg;
 		ph->tip_mach = mp.rotor.tip_mach;
-		t0 += d[i];
 	}
 	run->forward_pitch_deg = run->phase[PHASE_FORWARD].pitch_deg;
 }
@@ -720,6 +728,10 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 	    || !capped_full_throttle(&x, &pf->op[OP_FULL]))
 		memset(&pf->op[OP_FULL], 0, sizeof pf->op[OP_FULL]);
 	const struct res_op *full = &pf->op[OP_FULL];
+	/* A race's pieces are fractions of this power. */
+	x.full_w = full->electrical_w;
+	x.full_shaft_w = full->power_shaft_w * (double)p->n_rotors;
+	x.full_v = full->bus_voltage_v;
 
 	/* Forward speed: the minimum-power speed when "auto", found on the
 	 * sweep's grid within the rotor's limits (the sweep itself is a

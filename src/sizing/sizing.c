@@ -139,18 +139,21 @@ sizing_total_duration(const struct sizing_params *p, double gamma_time)
 }
 
 void
-sizing_shedding(const struct sizing_params *p, double gamma_time,
-                struct role_shedding *s)
+sizing_plan(const struct sizing_params *p, double gamma_time, double v_climb_ms,
+            double v_fwd_ms, struct duty_plan *out)
 {
-	double t_total = sizing_total_duration(p, gamma_time);
-	memset(s, 0, sizeof *s);
-	s->kind = p->shed;
-	s->payload0_kg = p->payload_kg;
-	s->drop_mass_kg = p->drop_mass_kg < p->payload_kg ? p->drop_mass_kg : p->payload_kg;
-	s->drop_time_s = p->drop_ratio * t_total;
-	s->spray_mass_kg = p->payload_kg;
-	s->spray_rate_kg_s = p->spray_rate_kg_s > 0.0 ? p->spray_rate_kg_s
-	    : (t_total > 0.0 ? p->payload_kg / t_total : 0.0);
+	struct duty_input in;
+	memset(&in, 0, sizeof in);
+	in.duty = p->duty;
+	sizing_durations(p, gamma_time, in.duration_s);
+	in.v_climb_ms = v_climb_ms;
+	in.v_fwd_ms = v_fwd_ms;
+	in.payload_kg = p->payload_kg;
+	in.shed = p->shed;
+	in.drop_mass_kg = p->drop_mass_kg;
+	in.drop_ratio = p->drop_ratio;
+	in.spray_rate_kg_s = p->spray_rate_kg_s;
+	duty_plan_build(&in, out);
 }
 
 /* A real catalogue battery (BOM-closed run): its capacity is fixed. */
@@ -181,6 +184,16 @@ pack_of(const struct sizing_params *p, const struct eval *e,
 	pk->n_rotors = p->n_rotors;
 	pk->h_conv_w_m2k = p->h_conv_w_m2k;
 	pk->r_cells_ohm = 0.0; /* the chemistry profile's (eq. rsys) */
+	/* A role whose packs burst above the ordinary twice their continuous
+	 * power (racing's high-C packs, data/roles.json) delivers that power
+	 * through proportionally less resistance than the profile's. */
+	if (p->burst_factor > SIZING_BURST_ORDINARY) {
+		struct batt_r_sys rs;
+		batt_r_sys_init(p->chem, e->cells, e->capacity_ah, p->cycles,
+		    p->n_rotors, &rs);
+		pk->r_cells_ohm = rs.r_cells_ohm * SIZING_BURST_ORDINARY
+		    / p->burst_factor;
+	}
 }
 
 /* The three phase powers of an evaluation, and the hover pitch they give
@@ -236,16 +249,34 @@ cells_masses(const struct sizing_params *p, int cells, double energy_wh,
 	for (int i = 0; i < PHASE_MAX; i++)
 		if (p->duration_s[i] > 0.0 && e->ph[i].electrical_w > p_sustained)
 			p_sustained = e->ph[i].electrical_w;
-	double m_power = fmax(p_sustained,
+	/* A race sustains its laps' mean power (its bursts are the burst's). */
+	if (p->duration_s[PHASE_FORWARD] > 0.0) {
+		double race_w = duty_lap_mean_fraction(p->duty) * e->peak.electrical_w;
+		if (race_w > p_sustained)
+			p_sustained = race_w;
+	}
+	/* A role's high-burst packs (racing) carry their sustained power in
+	 * the same proportion: burst_factor / SIZING_BURST_ORDINARY times the
+	 * profile's (the racing packs of data/roles.json deliver about 2.4
+	 * times its continuous specific power). */
+	double sustain = p->burst_factor > SIZING_BURST_ORDINARY
+	    ? p->burst_factor / SIZING_BURST_ORDINARY : 1.0;
+	/* The cells that deliver it store e_spec / p_spec of energy per watt;
+	 * the pack is that energy's pack (its own packaging, not the
+	 * energy-sized one's: a longer mission never lightens it). */
+	double e_power_wh = fmax(p_sustained / sustain,
 	    e->peak.electrical_w / p->burst_factor)
-	    / p->chem->p_spec_w_kg * e->eta_pkg;
+	    / p->chem->p_spec_w_kg * p->chem->e_spec_wh_kg;
+	double m_power = e_power_wh > e_nom_wh ? batt_pack_mass_kg(p->chem,
+	    e_power_wh, p->pack_count, e->cells, p->e_pack_override_wh_kg)
+	    : m_energy;
 	if (battery_fixed(p)) {
 		e->mass.battery_kg = p->parts.battery_kg;
 	} else if (!p->capacity_locked && m_power > m_energy) {
 		e->power_binds = true;
 		e->mass.battery_kg = m_power;
-		e->capacity_ah = batt_pack_energy_wh(p->chem, m_power, p->pack_count,
-		    e->cells, p->e_pack_override_wh_kg) / v_nom;
+		e->capacity_ah = e_power_wh / v_nom;
+		e->eta_pkg = p->chem->e_spec_wh_kg * m_power / e_power_wh;
 	} else {
 		e->mass.battery_kg = m_energy;
 	}
@@ -430,6 +461,25 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 	*e = best;
 }
 
+/* The mission an evaluation e flies at goal relaxation gamma_time: its
+ * role's plan at e's speeds (into *plan) and the discharge's view of it,
+ * the full-throttle power of e's thrust target included. */
+static void
+mission_of(const struct sizing_params *p, double gamma_time,
+           const struct eval *e, struct duty_plan *plan,
+           struct discharge_mission *dm)
+{
+	sizing_plan(p, gamma_time, e->v_climb_ms, e->v_fwd_ms, plan);
+	dm->model = &e->model;
+	dm->dry_mass_kg = e->mass_kg - p->payload_kg;
+	dm->plan = plan;
+	dm->full_throttle_w = e->peak.electrical_w;
+	dm->full_throttle_shaft_w = e->peak.shaft_w;
+	/* The KV is chosen to reach full-throttle rpm at full charge. */
+	dm->full_throttle_v = (double)e->cells * p->chem->v_full;
+	dm->ambient_c = p->ambient_c;
+}
+
 /* Fly the mission of an evaluate_masses() result e in `steps` steps at
  * goal relaxation gamma_time, trace into rec when given, and set the
  * capacity it needs. */
@@ -439,20 +489,15 @@ evaluate_flight(const struct sizing_params *p, double gamma_time, int steps,
 {
 	struct discharge_pack pk;
 	pack_of(p, e, &pk);
+	struct duty_plan plan;
 	struct discharge_mission dm;
-	dm.model = &e->model;
-	dm.dry_mass_kg = e->mass_kg - p->payload_kg;
-	sizing_shedding(p, gamma_time, &dm.shed);
-	sizing_durations(p, gamma_time, dm.duration_s);
-	dm.speed_ms[PHASE_CLIMB] = e->v_climb_ms;
-	dm.speed_ms[PHASE_FORWARD] = e->v_fwd_ms;
-	dm.speed_ms[PHASE_HOVER] = 0.0;
-	dm.ambient_c = p->ambient_c;
+	memset(&dm, 0, sizeof dm);
+	mission_of(p, gamma_time, e, &plan, &dm);
 	discharge_run(&pk, &dm, steps, rec ? rec->trace : NULL,
 	    rec ? RES_MAX_TRACE : 0, rec ? &rec->n_trace : NULL, &e->dis);
 
 	/* Capacity the mission needs, with the 20 % margin. */
-	double t_req = sizing_total_duration(p, gamma_time);
+	double t_req = plan.total_s;
 	switch (e->dis.end) {
 	case DIS_COMPLETED:
 		e->c_target_ah = SIZING_CAP_MARGIN * e->dis.ah_used;
@@ -536,10 +581,11 @@ seed_capacity_ah(const struct sizing_params *p, struct loop_state *ls,
 	 * capacity being free here; see evaluate_masses()). */
 	struct eval e;
 	evaluate(p, ls, mass_kg, 1.0, 0, NULL, &e);
-	double d[PHASE_MAX], wh = 0.0;
-	sizing_durations(p, ls->gamma_time, d);
-	for (int i = 0; i < PHASE_MAX; i++)
-		wh += e.ph[i].electrical_w * d[i] / S_PER_H;
+	struct duty_plan plan;
+	struct discharge_mission dm;
+	memset(&dm, 0, sizeof dm);
+	mission_of(p, ls->gamma_time, &e, &plan, &dm);
+	double wh = discharge_plan_energy_wh(&dm);
 	ls->cells = e.cells;
 	double v = (double)e.cells * p->chem->v_nom;
 	double c = SIZING_CAP_MARGIN * wh / v;
@@ -838,8 +884,11 @@ record_run(const struct sizing_params *p, struct eval *e,
            const struct loop_state *ls, struct res_run *out)
 {
 	eval_phases(p, e);
-	double d[PHASE_MAX];
-	sizing_durations(p, ls->gamma_time, d);
+	struct duty_plan plan;
+	sizing_plan(p, ls->gamma_time, e->v_climb_ms, e->v_fwd_ms, &plan);
+	const double *d = plan.phase_s;
+	discharge_duty_record(&plan, &e->dis, e->peak.electrical_w,
+	    p->duty != NULL ? p->duty->source : NULL, &out->duty);
 	out->mass = e->mass;
 	out->aux_power_w = e->model.aux_w;
 	out->reserve_soc = sizing_reserve_soc();
@@ -858,24 +907,25 @@ record_run(const struct sizing_params *p, struct eval *e,
 	 * lightens the aircraft along it, and its mean power (the discharge's)
 	 * is that of the mean mass or more (power is convex in mass), so
 	 * shaft and electrical power stay in order. */
-	struct role_shedding shed;
-	sizing_shedding(p, ls->gamma_time, &shed);
-	double dry = e->mass_kg - p->payload_kg, t0 = 0.0;
+	double dry = e->mass_kg - p->payload_kg;
 	for (int i = 0; i < PHASE_MAX; i++) {
 		struct res_phase *r = &out->phase[i];
 		struct mission_power mean_mp;
-		mission_power(&e->model, dry + role_payload_mean(&shed, t0, t0 + d[i]),
+		mission_power(&e->model, dry + duty_phase_mean_payload(&plan, i),
 		    i == PHASE_CLIMB ? e->v_climb_ms : 0.0,
 		    i == PHASE_FORWARD ? e->v_fwd_ms : 0.0, &mean_mp);
 		const struct mission_power *mp = &mean_mp;
-		t0 += d[i];
 		out->approved_time_s[i] = d[i];
 		out->flight_time_s += d[i];
 		r->duration_s = d[i];
 		r->speed_ms = i == PHASE_CLIMB ? e->v_climb_ms
 		    : i == PHASE_FORWARD ? e->v_fwd_ms : 0.0;
 		r->thrust_per_rotor_n = mp->thrust_per_rotor_n;
-		r->shaft_power_w = mp->shaft_w;
+		/* A profile's phase is segments of their own powers (laps,
+		 * turns): its shaft power is theirs, as flown. */
+		r->shaft_power_w = plan.kind != DUTY_PHASES
+		    && e->dis.phase_mean_shaft_w[i] > 0.0
+		    ? e->dis.phase_mean_shaft_w[i] : mp->shaft_w;
 		r->power_w = e->dis.phase_mean_power_w[i] > 0.0
 		    ? e->dis.phase_mean_power_w[i] : mp->electrical_w;
 		r->current_a = e->dis.phase_mean_current_a[i];

@@ -16,6 +16,7 @@
 
 #include "physics/atmo.h"
 #include "physics/batt.h"
+#include "physics/duty.h"
 #include "physics/mission.h"
 #include "physics/role.h"
 #include "core/model.h"
@@ -60,6 +61,8 @@ _Static_assert(SIZING_FINAL_STEPS + 13 <= RES_MAX_TRACE, "trace buffer too small
 #define SIZING_CURRENT_BUDGET_A 60.0   /* bus current budget at 1 kg, A (× sqrt(M)) */
 #define SIZING_LOW_FLIGHT_RPM   0.7    /* lowest in-flight rpm / hover rpm (descent) */
 #define SIZING_WINDING_RISE_K   40.0   /* winding above ambient at hover, K (assumed) */
+#define SIZING_BURST_ORDINARY   2.0    /* an ordinary pack's 10 s burst over its
+                                          continuous power (data/roles.json) */
 
 /* What the loop stopped on. */
 enum sizing_status {
@@ -79,13 +82,17 @@ enum sizing_status {
  * out->time_scale records it. */
 enum sizing_status sizing_run(const struct sizing_params *p, struct res_run *out);
 
-/* The phase durations of p after goal relaxation γ (d: PHASE_MAX), their
- * sum, and the payload's shedding over that mission. */
+/* The phase durations of p after goal relaxation γ (d: PHASE_MAX), and
+ * their sum. */
 void sizing_durations(const struct sizing_params *p, double gamma_time,
                       double *d);
 double sizing_total_duration(const struct sizing_params *p, double gamma_time);
-void sizing_shedding(const struct sizing_params *p, double gamma_time,
-                     struct role_shedding *s);
+
+/* The mission of p at goal relaxation γ laid out by its role's duty
+ * profile (physics/duty.h), flown at these climb and forward speeds: what
+ * the continuous design and the real-parts flight both fly. */
+void sizing_plan(const struct sizing_params *p, double gamma_time,
+                 double v_climb_ms, double v_fwd_ms, struct duty_plan *out);
 
 /* State of charge left by the 20 % capacity margin (1 - 1/1.2). */
 double sizing_reserve_soc(void);

@@ -289,7 +289,8 @@ eval_prepared(const struct mission_spec *prep, const struct model_data *md,
 	classify(r, rc, x, pt);
 }
 
-/* Mission time the spray spreads the payload over when the rate is auto. */
+/* Mission time a spray spreads the payload over when the rate is auto and
+ * the nominal design gives none. */
 static double
 mission_time_s(const struct mission_spec *rs)
 {
@@ -327,9 +328,16 @@ nominal_prepared(const struct mission_spec *prep, const struct model_data *md,
 	case SENS_DROP_MASS: return pr->delivery_drop_mass_kg;
 	case SENS_DROP_RATIO: return pr->delivery_drop_time_ratio;
 	case SENS_SPRAY_RATE: {
-		double t = mission_time_s(&rs);
 		if (pr->spray_rate_kg_per_s > 0.0)
 			return pr->spray_rate_kg_per_s;
+		/* "Auto" empties the tank over the passes the nominal design
+		 * flies (its duty profile), else over the mission. */
+		solve(prep, md, r);
+		if (n_solves)
+			(*n_solves)++;
+		if (r->custom.ran && r->custom.duty.spray_rate_kg_s > 0.0)
+			return r->custom.duty.spray_rate_kg_s;
+		double t = mission_time_s(&rs);
 		return t > 0.0 && rs.payload_kg > 0.0 ? rs.payload_kg / t : 0.005;
 	}
 	case SENS_N_PARAMS: break;
