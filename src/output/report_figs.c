@@ -57,7 +57,7 @@ phase_table(struct rep *rp, const struct res_run *run)
 		{ "Phase", 1.15, DOC_ALIGN_LEFT }, { "Time (s)", 0.85, DOC_ALIGN_RIGHT },
 		{ "v (m/s)", 0.75, DOC_ALIGN_RIGHT }, { "T/rotor (N)", 0.95, DOC_ALIGN_RIGHT },
 		{ "P shaft (W)", 0.95, DOC_ALIGN_RIGHT }, { "P el. (W)", 0.9, DOC_ALIGN_RIGHT },
-		{ "I (A)", 0.75, DOC_ALIGN_RIGHT }, { "E (Wh)", 0.8, DOC_ALIGN_RIGHT },
+		{ "Mean I (A)", 0.8, DOC_ALIGN_RIGHT }, { "E (Wh)", 0.8, DOC_ALIGN_RIGHT },
 		{ "rpm", 0.8, DOC_ALIGN_RIGHT }, { "Thr. (%)", 0.8, DOC_ALIGN_RIGHT },
 		{ "Pitch (°)", 0.8, DOC_ALIGN_RIGHT }, { "Tip M", 0.7, DOC_ALIGN_RIGHT },
 	};
@@ -173,18 +173,21 @@ report_sec_mission(struct rep *rp, const char *title)
 	struct strbuf sb = STRBUF_INIT;
 	char b1[48], b2[48];
 	report_heading(rp, title);
-	int shed = r->mission.payload_role.mass_shedding &&
-	           (r->mission.payload_role.type == ROLE_DELIVERY ||
-	            r->mission.payload_role.type == ROLE_AGRICULTURE);
+	int shed = rp->fig.sheds;
 	doc_paragraph(rp->d, report_sfmt(&sb, "The mission is flown as climb, forward flight and hover%s. "
 	              "Electrical power is at the battery terminals and includes %s" NBSP "W of auxiliary "
-	              "load; energy is what each phase draws from the pack of the %s (%s" NBSP "Wh nominal, "
-	              "%dS %s).",
+	              "load (avionics and role equipment); energy is what each phase draws from the pack of "
+	              "the %s (%s" NBSP "Wh nominal, %dS %s). Power and current are each phase's mean in "
+	              "the discharge simulation: the pack's voltage falls as it empties, so the same power "
+	              "draws more current late in the flight than the operating points quote at the pack's "
+	              "nominal voltage.",
 	              shed ? "; payload leaves the aircraft on the way (drop or spray), so the later "
-	                     "phases fly lighter than the takeoff mass" : " at the takeoff mass",
-	              report_num(b1, sizeof b1, rec->aux_power_w, 0),
+	                     "phases fly lighter than the takeoff mass (the hover row is the hover power "
+	                     "after shedding)" : " at the takeoff mass",
+	              report_num(b1, sizeof b1, rp->fig.aux_power_w, 0),
 	              rp->buildable ? "design of record" : "continuous design",
-	              report_num(b2, sizeof b2, rec->energy_wh, 1), rec->cell_count, rec->chemistry));
+	              report_num(b2, sizeof b2, rec->energy_wh, 1), rec->cell_count,
+	              report_chemistry(rec->chemistry)));
 	report_subheading(rp, report_record_name(rp), REP_PHASE_PT);
 	phase_table(rp, rec);
 	if (rec->n_sweep > 0 || r->custom.n_sweep > 0 || r->baseline.n_sweep > 0)
@@ -193,7 +196,7 @@ report_sec_mission(struct rep *rp, const char *title)
 		report_subheading(rp, report_continuous_heading(rp, &sb, "reference"), REP_PHASE_PT);
 		phase_table(rp, &r->custom);
 	}
-	report_subheading(rp, "Baseline (dead-weight reference)", REP_PHASE_PT);
+	report_subheading(rp, REP_BASELINE_HEADING, REP_PHASE_PT);
 	phase_table(rp, &r->baseline);
 	strbuf_free(&sb);
 }

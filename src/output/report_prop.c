@@ -171,7 +171,7 @@ optimum_table(struct rep *rp)
 		snprintf(b3, sizeof b3, "%dP", c->pack_count);
 	else
 		b3[0] = '\0';
-	v[8] = xstrdup(report_sfmt(&sb, "%dS%s %s, %s" NBSP "mAh, %s" NBSP "V nominal", c->cell_count, b3, c->chemistry,
+	v[8] = xstrdup(report_sfmt(&sb, "%dS%s %s, %s" NBSP "mAh, %s" NBSP "V nominal", c->cell_count, b3, report_chemistry(c->chemistry),
 	                           report_num(b1, sizeof b1, c->capacity_mah, 0),
 	                           report_num(b2, sizeof b2, c->nominal_voltage_v, 1)));
 	const char *kv[] = {
@@ -210,7 +210,7 @@ record_parts(struct rep *rp)
 	v[2] = xstrdup(report_sfmt(&sb, "%d × %s %s (%d in series × %d in parallel): %dS %s, %s" NBSP "mAh, "
 	                           "%s" NBSP "kg", r->battery.qty, r->battery.manufacturer, r->battery.part_number,
 	                           r->battery_series_packs, r->battery_parallel_packs, rec->cell_count,
-	                           rec->chemistry, report_num(b1, sizeof b1, rec->capacity_mah, 0),
+	                           report_chemistry(rec->chemistry), report_num(b1, sizeof b1, rec->capacity_mah, 0),
 	                           report_num(b4, sizeof b4, rec->mass.battery_kg, 2)));
 	v[3] = xstrdup(report_sfmt(&sb, "%d × %s %s", r->esc.qty, r->esc.manufacturer, r->esc.part_number));
 	const char *kv[] = { "Motor", v[0], "Propeller", v[1], "Battery", v[2], "ESC", v[3] };

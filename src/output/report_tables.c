@@ -46,8 +46,9 @@ report_sec_mass(struct rep *rp, const char *title)
 			v[k * n_it + i] = report_mass_get(&runs[k]->mass, i) * rp->mass_scale;
 
 	doc_paragraph(rp->d, report_sfmt(&sb, "Takeoff mass by item (Figure %d): the design of record beside "
-	              "the continuous optimum (what the physics asks for) and the paper's dead-weight "
-	              "baseline. Percentages are of each design's own takeoff mass.",
+	              "the continuous optimum (what the physics asks for) and the baseline (the same mission "
+	              "without the role's equipment, its payload carried as dead weight). Percentages are "
+	              "of each design's own takeoff mass.",
 	              doc_next_figure_number(rp->d)));
 	struct plot *p = plot_alloc(0, 300, 1, 1);
 	struct plot_panel *pp = plot_panel(p, 0, 0);
@@ -143,7 +144,7 @@ sourcing_table(struct rep *rp)
 		  report_num(b2, sizeof b2, c->opt.prop_pitch_in, 1), m->structural_overrides.num_blades,
 		  material)) },
 		{ "Battery pack", packs, c->mass.battery_kg, xstrdup(report_sfmt(&sb, "%dS %s, %s" NBSP "mAh "
-		  "(%s" NBSP "Wh) in total, %s" NBSP "C continuous at full throttle", c->cell_count, c->chemistry,
+		  "(%s" NBSP "Wh) in total, %s" NBSP "C continuous at full throttle", c->cell_count, report_chemistry(c->chemistry),
 		  report_num(b1, sizeof b1, c->capacity_mah, 0), report_num(b2, sizeof b2, c->energy_wh, 1),
 		  report_num(b3, sizeof b3, c->peak_c_rate, 1))) },
 		{ "ESC", n_rot, c->mass.esc_kg, xstrdup(report_sfmt(&sb, "≥" NBSP "%s" NBSP "A per channel, %dS",
@@ -368,7 +369,7 @@ report_sec_checks(struct rep *rp, const char *title)
 		                  REP_KEEP_PT);
 		checks_table(rp, &r->custom, 1);
 	}
-	report_subheading(rp, "Baseline (reference: the paper's dead-weight run)", REP_KEEP_PT);
+	report_subheading(rp, REP_BASELINE_HEADING, REP_KEEP_PT);
 	checks_table(rp, &r->baseline, 0);
 	strbuf_free(&sb);
 }
@@ -451,7 +452,7 @@ part_data(struct strbuf *sb, const struct catalog *cat, const struct res_part *p
 		const struct catalog_battery *bt = catalog_find_battery(cat, part->id);
 		if (bt != NULL)
 			strbuf_printf(sb, "\n%dS %s %s" NBSP "mAh, %s" NBSP "g, %s" NBSP "C", bt->cells_series,
-			              bt->chemistry, report_num(b1, sizeof b1, 1000.0 * bt->capacity_ah, 0),
+			              report_chemistry(bt->chemistry), report_num(b1, sizeof b1, 1000.0 * bt->capacity_ah, 0),
 			              report_num(b2, sizeof b2, 1000.0 * bt->mass_kg, 0),
 			              report_num(b3, sizeof b3, bt->continuous_c, 0));
 	} else {
@@ -531,6 +532,15 @@ report_sec_appendix(struct rep *rp, const char *title)
 		const struct spec_field_info *f = &spec_fields[i];
 		int given = s->given[f->id];
 		field_text(s, f, val, sizeof val);
+		/* The role's auxiliary power is given for its reference aircraft
+		 * and scales with the aircraft's mass: the value flown stands
+		 * beside it, the one every other page prints (res_figures()). */
+		if (f->id == SPECF_ROLE_AUX_POWER_W && fabs(rp->fig.aux_power_w - s->payload_role.aux_power_w) >= 0.5) {
+			char flown[48];
+			size_t at = strlen(val);
+			snprintf(val + at, sizeof val - at, " as set; %s" NBSP "W flown (scaled with this "
+			         "aircraft's mass)", report_num(flown, sizeof flown, rp->fig.aux_power_w, 0));
+		}
 		doc_table_cell(&t, DOC_CELL_MONO, "%s", f->path);
 		doc_table_cell(&t, given ? DOC_CELL_BOLD : DOC_CELL_NORMAL, "%s", val);
 		doc_table_cell(&t, given ? DOC_CELL_NORMAL : DOC_CELL_MUTED, "%s",

@@ -578,21 +578,22 @@ static void put_bom(struct jw *w, const struct solve_result *r);
  * BOM-closed runs), or NULL for a run that is not mapped to parts (the
  * baseline): its "selected" and "bom" are then null. */
 static void put_run_fields(struct jw *w, const struct res_run *run,
-                           const struct solve_result *parts);
+                           const struct solve_result *parts, const char *prop_key);
 
 static void
 put_run(struct jw *w, const char *key, const struct res_run *run,
         const struct solve_result *parts)
 {
 	jw_obj(w, key);
-	put_run_fields(w, run, parts);
+	put_run_fields(w, run, parts, "continuous_optimum");
 	jw_close(w);
 }
 
-/* The fields of one run, into the object open in w. */
+/* The fields of one run, into the object open in w; prop_key names its
+ * propeller-and-motor block. */
 static void
 put_run_fields(struct jw *w, const struct res_run *run,
-               const struct solve_result *parts)
+               const struct solve_result *parts, const char *prop_key)
 {
 	jw_bool(w, "ran", run->ran);
 	if (!run->ran)
@@ -625,6 +626,7 @@ put_run_fields(struct jw *w, const struct res_run *run,
 	jw_num(w, "approved_forward_time_s", run->approved_time_s[PHASE_FORWARD]);
 	jw_num(w, "flight_time_s", run->flight_time_s);
 	jw_num(w, "hover_endurance_s", run->hover_endurance_s);
+	jw_num(w, "hover_power_w", run->hover_power_w);
 	jw_num(w, "marketing_endurance_s", run->marketing_endurance_s);
 	jw_num(w, "optimal_speed_ms", run->optimal_speed_ms);
 	jw_num(w, "v_min_power_ms", run->v_min_power_ms);
@@ -650,7 +652,11 @@ put_run_fields(struct jw *w, const struct res_run *run,
 	jw_num(w, "peak_power_w", run->peak_power_w);
 	jw_num(w, "peak_current_a", run->peak_current_a);
 	jw_num(w, "peak_c_rate", run->peak_c_rate);
-	put_optimum(w, "continuous_optimum", &run->opt);
+	/* The run's own propeller and motor: for the baseline and the custom
+	 * run their continuous optimum (PRODUCT.md §4), for the design of
+	 * record its propulsion (real parts; the continuous optimum it was
+	 * aimed at is the top-level "continuous_optimum"). */
+	put_optimum(w, prop_key, &run->opt);
 
 	jw_num(w, "arm_length_m", run->arm_length_m);
 	jw_num(w, "arm_outer_diameter_mm", run->arm_outer_diameter_mm);
@@ -763,7 +769,7 @@ put_record(struct jw *w, const struct solve_result *r)
 	jw_obj(w, "design_of_record");
 	jw_lit(w, "basis", buildable ? "real_parts" : "continuous");
 	jw_bool(w, "buildable", buildable);
-	put_run_fields(w, o, buildable ? r : NULL);
+	put_run_fields(w, o, buildable ? r : NULL, "propulsion");
 	if (o->perf.valid)
 		put_perf(w, &o->perf);
 	/* What the bill of materials costs, as far as its prices are known. */
@@ -853,7 +859,9 @@ put_bom(struct jw *w, const struct solve_result *r)
 	jw_close(w);
 	jw_num(w, "total_mass_kg", r->parts_selected ? r->bom_mass_kg : 0.0);
 	jw_num(w, "total_price_usd", r->parts_selected ? r->bom_price_usd : 0.0);
-	jw_int(w, "prices_missing", bom_csv_missing_prices(r));
+	/* Lines to buy (the payload's aside) and of those the unpriced. */
+	jw_int(w, "lines_to_buy", r->parts_selected ? r->bom_parts_lines : 0);
+	jw_int(w, "unpriced_lines", bom_csv_missing_prices(r));
 	jw_close(w);
 }
 
@@ -955,6 +963,40 @@ put_ceiling(struct jw *w, const struct solve_result *r)
 	jw_close(w);
 }
 
+/* A number that may not apply (NAN): null then. */
+static void
+jw_num_or_null(struct jw *w, const char *key, double x)
+{
+	if (isnan(x))
+		jw_null(w, key);
+	else
+		jw_num(w, key, x);
+}
+
+/* The figures of the design of record the dossier's cover and summary,
+ * bom_totals.csv and index.csv print (res_figures()): one number each. */
+static void
+put_key_figures(struct jw *w, const struct solve_result *r)
+{
+	struct res_figures f;
+	res_figures(r, &f);
+	jw_obj(w, "key_figures");
+	jw_num(w, "takeoff_mass_kg", f.takeoff_mass_kg);
+	jw_bool(w, "sheds_payload", f.sheds);
+	jw_num(w, "hover_power_at_takeoff_mass_w", f.hover_power_w);
+	jw_num_or_null(w, "hover_power_after_shedding_w", f.hover_power_shed_w);
+	jw_num_or_null(w, "hover_battery_current_at_takeoff_mass_a", f.hover_current_a);
+	jw_num(w, "aux_power_w", f.aux_power_w);
+	jw_num(w, "hover_endurance_s", f.hover_endurance_s);
+	jw_num(w, "flight_time_s", f.flight_time_s);
+	jw_num(w, "landing_soc", f.landing_soc);
+	jw_num(w, "bom_mass_kg", f.bom_mass_kg);
+	jw_num(w, "bom_price_usd", f.bom_price_usd);
+	jw_int(w, "bom_lines", f.bom_lines);
+	jw_int(w, "bom_unpriced_lines", f.unpriced_lines);
+	jw_close(w);
+}
+
 /* ---- top level ------------------------------------------------------------- */
 
 static void
@@ -993,14 +1035,15 @@ result_json_render_checked(const struct solve_result *r,
 	JW_STR(&w, "catalogue_sha256", r->catalogue_sha256);
 	jw_str(&w, "status", r->feasible ? "feasible" : "infeasible",
 	       r->feasible ? 8 : 10);
-	bool buildable;
-	const struct res_run *rec = res_record(r, &buildable);
-	jw_bool(&w, "buildable", buildable);
-	jw_num(&w, "takeoff_mass_kg", rec->mass.total_kg);
+	struct res_figures fig;
+	res_figures(r, &fig);
+	jw_bool(&w, "buildable", fig.buildable);
+	jw_num(&w, "takeoff_mass_kg", fig.takeoff_mass_kg);
 	jw_obj(&w, "regulatory_class");
-	jw_lit(&w, "eu_open_category", res_eu_class(rec->mass.total_kg));
-	jw_bool(&w, "us_part_107_small_uas", rec->mass.total_kg < RES_US_107_KG);
+	jw_lit(&w, "eu_open_category", res_eu_class(fig.takeoff_mass_kg));
+	jw_bool(&w, "us_part_107_small_uas", fig.takeoff_mass_kg < RES_US_107_KG);
 	jw_close(&w);
+	put_key_figures(&w, r);
 	put_accuracy(&w, r);
 	put_ceiling(&w, r);
 	put_violations(&w, r);
