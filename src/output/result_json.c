@@ -644,6 +644,7 @@ put_run_fields(struct jw *w, const struct res_run *run,
 	jw_num(w, "downwash_ms", run->downwash_ms);
 	jw_num(w, "fom_installed", run->fom_installed);
 	jw_num(w, "interference", run->interference);
+	jw_num(w, "installation_kappa", run->kappa);
 	jw_num(w, "reynolds_tip", run->reynolds_tip);
 	jw_num(w, "rpm_hover", run->rpm_hover);
 	jw_num(w, "rpm_peak", run->rpm_peak);
@@ -757,6 +758,7 @@ put_perf(struct jw *w, const struct res_perf *pf)
 	jw_num(w, "prop_ct", pf->prop_ct);
 	jw_num(w, "prop_cp", pf->prop_cp);
 	jw_bool(w, "prop_coefficients_published", pf->prop_coeffs_measured);
+	jw_num(w, "prop_fom_isolated", pf->prop_fom);
 	jw_close(w);
 }
 
