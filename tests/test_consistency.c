@@ -39,8 +39,11 @@
 #include "util/strbuf.h"
 #include "util/xalloc.h"
 
+/* The first three are compared figure by figure; the language test reads
+ * the dossiers of the SAR, agricultural, FPV and infeasible examples. */
 static const char *const missions[] = {
 	"sar_imaging_quad", "agri_spray_octo", "delivery_drop_3p5kg",
+	"fpv_racing_quad", "infeasible_compact_lifter",
 };
 #define N_MISSIONS ((int)(sizeof missions / sizeof missions[0]))
 
@@ -500,8 +503,111 @@ shedding_missions_should_give_both_hover_powers(void **state)
 {
 	const struct fixture *fx = *state;
 	assert_true(cJSON_IsFalse(jget(jget(fx->out[0].json, "key_figures"), "sheds_payload")));
-	for (int m = 1; m < N_MISSIONS; m++)
+	for (int m = 1; m < 3; m++)
 		assert_true(cJSON_IsTrue(jget(jget(fx->out[m].json, "key_figures"), "sheds_payload")));
+}
+
+/* ---- a client's language ------------------------------------------------------ */
+
+/* Solver vocabulary a client's engineer should not meet before the
+ * clearly titled solver appendix ("Appendix: solver details"), and
+ * wording the dossier once printed. */
+static const char *const banned[] = {
+	"Lipschitz", "Goal γ", "γ", "fixed point", "fixed-point", "under-relax",
+	"closing", "closed on", "contraction", "iteration", "iterate", "paper",
+	"dead-weight run", "dual run", "none role", "a Octocopter", "a Hexacopter",
+	" 1 allowances", " 0 allowances", "mass loop",
+};
+
+/* The text before the first line equal to heading (all of it when none). */
+static size_t
+before(const char *text, const char *heading)
+{
+	size_t n = strlen(heading);
+	for (const char *p = text; *p != '\0';) {
+		if (strncmp(p, heading, n) == 0 && (p[n] == '\n' || p[n] == '\0'))
+			return (size_t)(p - text);
+		const char *eol = strchr(p, '\n');
+		if (eol == NULL)
+			break;
+		p = eol + 1;
+	}
+	return strlen(text);
+}
+
+/* The line of text that holds p, for a message. */
+static const char *
+line_of(const char *text, const char *p, char *buf, size_t n)
+{
+	const char *s = p;
+	while (s > text && s[-1] != '\n')
+		s--;
+	size_t len = strcspn(s, "\n");
+	snprintf(buf, n, "%.*s", (int)len, s);
+	return buf;
+}
+
+/* No exponent notation ("1.8e+03") and no percentage beyond ±999 %. */
+static void
+assert_plain_numbers(const char *name, const char *text)
+{
+	char line[512];
+	for (const char *p = text; *p != '\0'; p++) {
+		if (p > text && p[-1] >= '0' && p[-1] <= '9' && (p[0] == 'e' || p[0] == 'E')
+		    && (p[1] == '+' || p[1] == '-') && p[2] >= '0' && p[2] <= '9')
+			fail_msg("%s: exponent notation in \"%s\"", name, line_of(text, p, line, sizeof line));
+		if (p[0] == '%' && p > text) {
+			const char *q = p - 1;
+			while (q > text && (*q == ' ' || (unsigned char)*q == 0xa0))
+				q--;
+			const char *e = q + 1;
+			while (q > text && ((*q >= '0' && *q <= '9') || *q == '.'))
+				q--;
+			if (e - q > 1 && strtod(q + 1, NULL) > 999.0)
+				fail_msg("%s: percentage beyond 999 %% in \"%s\"", name,
+				         line_of(text, p, line, sizeof line));
+		}
+	}
+}
+
+static void
+dossiers_should_speak_a_clients_language(void **state)
+{
+	const struct fixture *fx = *state;
+	static const int shown[] = { 0, 1, 3, 4 }; /* SAR, agricultural, FPV, infeasible */
+	char line[512];
+	for (size_t k = 0; k < sizeof shown / sizeof shown[0]; k++) {
+		const struct outputs *o = &fx->out[shown[k]];
+		const char *name = missions[shown[k]];
+		size_t solver = before(o->text, "## Appendix: solver details");
+		assert_true(solver < strlen(o->text));  /* the appendix is there */
+		char *head = xmalloc(solver + 1);
+		memcpy(head, o->text, solver);
+		head[solver] = '\0';
+		for (size_t i = 0; i < sizeof banned / sizeof banned[0]; i++) {
+			const char *hit = strstr(head, banned[i]);
+			if (hit != NULL)
+				fail_msg("%s: \"%s\" outside the solver appendix: \"%s\"", name, banned[i],
+				         line_of(head, hit, line, sizeof line));
+		}
+		/* Catalogue parts by maker and part number: their catalogue ids
+		 * only in the appendix's list of the entries used. */
+		head[before(head, "# 12  Appendix")] = '\0';
+		const cJSON *sel = jget(o->json, "selected");
+		static const char *const kinds[] = { "motor", "prop", "battery", "esc" };
+		for (size_t i = 0; cJSON_IsObject(sel) && i < 4; i++) {
+			const cJSON *part = cJSON_GetObjectItemCaseSensitive(sel, kinds[i]);
+			const cJSON *id = cJSON_GetObjectItemCaseSensitive(part, "catalogue_id");
+			if (!cJSON_IsString(id))
+				continue;
+			const char *hit = strstr(head, id->valuestring);
+			if (hit != NULL)
+				fail_msg("%s: catalogue id \"%s\" before the appendix: \"%s\"", name,
+				         id->valuestring, line_of(head, hit, line, sizeof line));
+		}
+		free(head);
+		assert_plain_numbers(name, o->text);
+	}
 }
 
 int
@@ -512,6 +618,7 @@ main(void)
 		cmocka_unit_test(every_quantity_should_read_the_same_in_every_output_agri),
 		cmocka_unit_test(every_quantity_should_read_the_same_in_every_output_delivery_drop),
 		cmocka_unit_test(shedding_missions_should_give_both_hover_powers),
+		cmocka_unit_test(dossiers_should_speak_a_clients_language),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }

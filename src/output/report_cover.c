@@ -157,6 +157,47 @@ cover_status(struct rep *rp)
 	strbuf_free(&sb);
 }
 
+/* Every way the design shown flies less than the mission asks, on the
+ * cover (PRODUCT.md "never relaxed without the cover saying so"): a
+ * shorter flight, a climb or a forward speed the thrust cannot reach
+ * flown slower.  The ceiling of a mission beyond reach has its own
+ * callout (cover_status()). */
+static void
+cover_relaxed(struct rep *rp)
+{
+	const struct solve_result *r = rp->r;
+	const struct mission_spec *m = &r->mission;
+	const struct res_run *rec = rp->rec;
+	struct strbuf sb = STRBUF_INIT;
+	char b1[48], b2[48], b3[48];
+	int n = 0;
+	if (rec->time_scale > 0.0 && rec->time_scale < 0.9995 && !r->ceiling.shown) {
+		strbuf_printf(&sb, "%sA shorter flight: every phase is flown at %s" NBSP "%% of its "
+		              "requested time (%s of %s" NBSP "min), as the mission allows "
+		              "(locks.auto_reduce_flight_time).", n++ ? " " : "",
+		              report_num(b1, sizeof b1, 100.0 * rec->time_scale, 0),
+		              report_num(b2, sizeof b2, rec->flight_time_s / 60.0, 1),
+		              report_num(b3, sizeof b3, rec->flight_time_s / rec->time_scale / 60.0, 1));
+	}
+	if (rec->climb_limit_ms > 0.0 && rec->climb_limit_ms < m->v_climb_ms)
+		strbuf_printf(&sb, "%sA slower climb: %s" NBSP "m/s instead of the %s" NBSP "m/s asked, "
+		              "the fastest the thrust reaches.", n++ ? " " : "",
+		              report_num(b1, sizeof b1, rec->climb_limit_ms, 1),
+		              report_num(b2, sizeof b2, m->v_climb_ms, 1));
+	const struct res_phase *fw = &rec->phase[PHASE_FORWARD];
+	if (!m->v_forward_auto && fw->duration_s > 0.0 && fw->speed_ms < m->v_forward_ms - 0.05)
+		strbuf_printf(&sb, "%sSlower forward flight: %s" NBSP "m/s instead of the %s" NBSP "m/s "
+		              "asked, the fastest the thrust and the 35° pitch limit allow.", n++ ? " " : "",
+		              report_num(b1, sizeof b1, fw->speed_ms, 1),
+		              report_num(b2, sizeof b2, m->v_forward_ms, 1));
+	if (n > 0) {
+		strbuf_append_str(&sb, " Every figure in this dossier is for the mission as flown; the "
+		                  "checks section says what binds.");
+		doc_callout(rp->d, DOC_CALLOUT_WARN, "REQUIREMENTS RELAXED", strbuf_str(&sb));
+	}
+	strbuf_free(&sb);
+}
+
 /* One row "label | record | continuous" of the cover's key figures; the
  * continuous column only when the record is not itself continuous. */
 static void
@@ -341,6 +382,7 @@ report_sec_cover(struct rep *rp, int first)
 	          report_sfmt(&sb, "Multirotor design dossier: %s%s%s", report_or_absent(mname),
 	                      m->report.revision[0] != '\0' ? ", revision " : "", m->report.revision));
 	cover_status(rp);
+	cover_relaxed(rp);
 	cover_key_figures(rp);
 
 	report_subheading(rp, "Document", REP_KEEP_PT);
@@ -351,8 +393,10 @@ report_sec_cover(struct rep *rp, int first)
 		"Revision", m->report.revision,
 		"Date", report_date_text(rp),
 		"Prepared by", m->report.author,
-		"Mission", report_sfmt(&sb2, "%s (%s role, %d rotors, %s" NBSP "%s payload); the file %s is "
-		                       "attached to this PDF", report_or_absent(mname), report_role_name(r),
+		"Mission", report_sfmt(&sb2, "%s (%s%s, %d rotors, %s" NBSP "%s payload); the file %s is "
+		                       "attached to this PDF", report_or_absent(mname),
+		                       m->payload_role.type == ROLE_NONE ? "no role" : report_role_name(r),
+		                       m->payload_role.type == ROLE_NONE ? "" : " role",
 		                       m->num_rotors, report_mass(rp, b2, sizeof b2, m->payload_kg), rp->mass_unit,
 		                       report_or_absent(rp->in->mission_file_name)),
 		"Engine", report_sfmt(&sb, "aeroeval %s", report_or_absent(rp->in->engine_version)),
