@@ -263,8 +263,8 @@ cover_key_figures(struct rep *rp)
 	double mtow = report_mtow(rp);
 	report_subheading(rp, "Key figures", REP_KEEP_PT);
 	struct doc_column cols[3] = {
-		{ "", 2.1, DOC_ALIGN_LEFT }, { report_record_name(rp), 1.6, DOC_ALIGN_RIGHT },
-		{ report_continuous_name(rp), 1.6, DOC_ALIGN_RIGHT },
+		{ "", 1.9, DOC_ALIGN_LEFT }, { report_record_name(rp), 1.7, DOC_ALIGN_RIGHT },
+		{ report_continuous_name(rp), 1.7, DOC_ALIGN_RIGHT },
 	};
 	struct doc_table t;
 	doc_table_init(&t, cols, rp->buildable ? 3 : 2);
