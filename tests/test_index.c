@@ -17,7 +17,7 @@
 #define HEADER "name,status,role,rotors,coaxial,wheelbase_m,airframe_class," \
 	"battery_chemistry,altitude_m,ambient_temp_c,t_hover_s,t_forward_s,t_climb_s," \
 	"payload_kg,max_payload_kg,takeoff_mass_kg,mtow_interval_level,mtow_lo_kg," \
-	"mtow_hi_kg,flight_time_s,hover_endurance_s,cost_usd,prices_missing," \
+	"mtow_hi_kg,flight_time_s,hover_endurance_s,cost_usd,unpriced_lines," \
 	"cells,capacity_mah,motor,propeller,battery,tightest_check,tightest_margin\r\n"
 
 /* Parses text as the result.json of name; returns parse's result, the

@@ -241,6 +241,24 @@ numfmt_shortest_should_match_the_definition_on_the_exact_path(void **state)
 	}
 }
 
+/* Sentences for people: three significant digits, never an exponent
+ * (the rationale once printed "1.97e+03 W"). */
+static void
+numfmt_sig_should_never_print_an_exponent(void **state)
+{
+	(void)state;
+	char b[32];
+	assert_string_equal(numfmt_sig(b, sizeof b, 1974.3, 3), "1974");
+	assert_string_equal(numfmt_sig(b, sizeof b, 2072.0, 3), "2072");
+	assert_string_equal(numfmt_sig(b, sizeof b, 13.24, 3), "13.2");
+	assert_string_equal(numfmt_sig(b, sizeof b, 0.05876, 3), "0.0588");
+	assert_string_equal(numfmt_sig(b, sizeof b, 3107448.2, 3), "3107448");
+	assert_string_equal(numfmt_sig(b, sizeof b, -0.0001, 1), "-0.0001");
+	assert_string_equal(numfmt_sig(b, sizeof b, 0.0, 3), "0");
+	assert_string_equal(numfmt_sig(b, sizeof b, NAN, 3), "\xe2\x80\x94");
+	assert_null(strchr(numfmt_sig(b, sizeof b, 1.8e3, 2), 'e'));
+}
+
 int
 main(void)
 {
@@ -254,6 +272,7 @@ main(void)
 		cmocka_unit_test(numfmt_fixed_should_round_to_the_given_decimals),
 		cmocka_unit_test(numfmt_fixed_should_never_print_negative_zero),
 		cmocka_unit_test(numfmt_fixed_should_refuse_non_finite_and_short_buffers),
+		cmocka_unit_test(numfmt_sig_should_never_print_an_exponent),
 	};
 	return cmocka_run_group_tests_name("numfmt", tests, NULL, NULL);
 }

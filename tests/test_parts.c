@@ -378,6 +378,19 @@ frame_kit_should_fit_rotors_wheelbase_class_and_propeller(void **state)
 
 /* ---- the price line ----------------------------------------------------- */
 
+/* The parts search's counts of the lines to buy and of those priced
+ * (parts/bom.c), which every writer prints: kept in step with the lines. */
+static void
+recount(struct solve_result *r)
+{
+	r->bom_parts_lines = r->bom_priced_lines = 0;
+	for (int i = 0; i < r->n_bom; i++)
+		if (strcmp(r->bom[i].category, "payload") != 0) {
+			r->bom_parts_lines++;
+			r->bom_priced_lines += r->bom[i].unit_price_usd > 0.0;
+		}
+}
+
 static void
 bom_line(struct solve_result *r, const char *category, int qty, double usd)
 {
@@ -389,6 +402,7 @@ bom_line(struct solve_result *r, const char *category, int qty, double usd)
 	b->unit_price_usd = usd;
 	b->total_price_usd = usd * qty;
 	r->bom_price_usd += usd * qty;
+	recount(r);
 }
 
 static void
@@ -409,9 +423,11 @@ price_text_should_say_at_least_and_count_the_unpriced_lines(void **state)
 	r->bom[1].unit_price_usd = 39.99;
 	r->bom[3].unit_price_usd = 7.0;
 	r->bom_price_usd += 39.99 + 28.0;
+	recount(r);
 	assert_string_equal(res_price_text(r, text, sizeof text), "633.45 USD");
 	for (int i = 0; i < r->n_bom; i++)
 		r->bom[i].unit_price_usd = 0.0;
+	recount(r);
 	assert_string_equal(res_price_text(r, text, sizeof text),
 	    "unpriced (4 lines)");
 	free(r);

@@ -266,7 +266,7 @@ static unsigned char *
 render(struct fixture *fx, const char *date, size_t *n)
 {
 	struct report_input in = { fx->r, fx->tpl, "sar_imaging_quad", "sar_imaging_quad.json",
-		fx->mission, fx->n_mission, date, "9.8.7", fx->env.cat, NULL, NULL };
+		fx->mission, fx->n_mission, date, "9.8.7", fx->env.cat, NULL, NULL, NULL };
 	unsigned char *pdf = NULL;
 	char err[256];
 	assert_int_equal(report_render(&in, &pdf, n, err, sizeof err), 0);

@@ -332,6 +332,7 @@ rep_of(const struct report_input *in)
 	                  .mass_dec = 3 };
 	rp.rec = res_record(in->r, &rp.buildable);
 	rp.rec_ok = rp.buildable && rp.rec->feasible;
+	res_figures(in->r, &rp.fig);
 	return rp;
 }
 

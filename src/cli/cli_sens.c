@@ -86,7 +86,7 @@ run_suite(const struct cli_env *env, const char *path, const char *dir_opt,
 		fprintf(stderr, "aeroeval: error: %s\n", err);
 		bad = 2;
 	} else {
-		struct pipeline_opts po = { dir, tpl, SENS_LOCK_WAIT_S };
+		struct pipeline_opts po = { dir, tpl, SENS_LOCK_WAIT_S, NULL };
 		struct pipeline_extra x[] = { { PIPELINE_SENS_JSON, json, strlen(json) },
 			{ PIPELINE_SENS_PDF, pdf, n } };
 		if (pipeline_add(&po, name, x, 2, stderr) != PIPE_FEASIBLE)

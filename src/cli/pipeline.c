@@ -301,7 +301,7 @@ pipeline_build(const struct cli_env *env, const struct pipeline_opts *o,
 		}
 		struct report_input in = { r, o->tpl, name, base ? base + 1 : path,
 			bytes, n_bytes, date, AEROEVAL_VERSION, env->cat,
-			sens != NULL ? sensitivity_section : NULL, sens };
+			sens != NULL ? sensitivity_section : NULL, sens, o->dossier_text };
 		int rr = report_render(&in, &pdf, &n_pdf, msg, sizeof msg);
 		free(sens);
 		if (rr != 0) {

@@ -18,6 +18,7 @@
 #include "cli/cli.h"
 #include "core/result.h"
 
+struct strbuf;
 struct template;
 
 /* Outcome of one mission, as exit statuses (README.md, "Exit status"). */
@@ -45,6 +46,9 @@ struct pipeline_opts {
 	const char *out_dir;          /* DIR of DIR/<name>/; must exist */
 	const struct template *tpl;   /* dossier template (NULL: no dossier) */
 	double lock_wait_s;           /* how long to wait for another writer */
+	struct strbuf *dossier_text;  /* NULL, or receives the text of the dossier
+	                                 written (report_input.transcript): for
+	                                 the tests that read what it says */
 };
 
 /* Solve the mission at path into *r (callers own r, large: allocate it).

@@ -2,6 +2,7 @@
  * result.h). */
 #include "core/result.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -61,20 +62,68 @@ res_record(const struct solve_result *r, bool *buildable)
 	return real ? &r->closed : &r->custom;
 }
 
+/* Does the record's discharge trace show payload leaving the aircraft?
+ * (A gram's fall is a drop or a spray; the trace keeps the mass.) */
+static bool
+sheds(const struct res_run *run)
+{
+	int n = run->n_trace < 0 ? 0 : run->n_trace > RES_MAX_TRACE ? RES_MAX_TRACE : run->n_trace;
+	for (int i = 0; i < n; i++)
+		if (run->trace[i].mass_kg < run->mass.total_kg - 1e-3)
+			return true;
+	return false;
+}
+
+void
+res_figures(const struct solve_result *r, struct res_figures *f)
+{
+	bool buildable;
+	const struct res_run *rec = res_record(r, &buildable);
+	memset(f, 0, sizeof *f);
+	f->buildable = buildable;
+	/* The takeoff mass of record is what the bill of materials builds
+	 * plus the payload it carries (the engine holds the record's own
+	 * mass to it within a gram), else the continuous design's. */
+	f->takeoff_mass_kg = rec->mass.total_kg;
+	f->payload_kg = rec->mass.payload_kg;
+	if (buildable && r->n_bom > 0) {
+		double payload = 0.0;
+		int n_bom = r->n_bom > RES_MAX_BOM ? RES_MAX_BOM : r->n_bom;
+		for (int i = 0; i < n_bom; i++)
+			if (strcmp(r->bom[i].category, "payload") == 0)
+				payload += r->bom[i].total_mass_kg;
+		f->takeoff_mass_kg = r->bom_mass_kg + payload;
+		f->payload_kg = payload;
+	}
+	f->sheds = sheds(rec);
+	f->hover_power_w = rec->hover_power_w;
+	f->hover_power_shed_w = f->sheds ? rec->phase[PHASE_HOVER].power_w : NAN;
+	if (buildable && rec->perf.valid)
+		f->hover_current_a = rec->perf.op[OP_HOVER].battery_current_a;
+	else
+		f->hover_current_a = f->sheds ? NAN : rec->phase[PHASE_HOVER].current_a;
+	f->aux_power_w = rec->aux_power_w;
+	f->hover_endurance_s = rec->hover_endurance_s;
+	f->flight_time_s = rec->flight_time_s;
+	f->landing_soc = rec->end_soc;
+	f->reserve_soc = rec->reserve_soc;
+	if (r->parts_selected) {
+		f->bom_mass_kg = r->bom_mass_kg;
+		f->bom_price_usd = r->bom_price_usd;
+		f->bom_lines = r->bom_parts_lines;
+		f->unpriced_lines = r->bom_parts_lines - r->bom_priced_lines;
+	}
+}
+
 const char *
 res_price_text(const struct solve_result *r, char *buf, size_t n)
 {
 	buf[0] = '\0';
 	if (!r->parts_selected)
 		return buf;
-	int lines = 0, priced = 0;
-	int n_bom = r->n_bom < 0 ? 0 : r->n_bom > RES_MAX_BOM ? RES_MAX_BOM : r->n_bom;
-	for (int i = 0; i < n_bom; i++) {
-		if (strcmp(r->bom[i].category, "payload") == 0)
-			continue;
-		lines++;
-		priced += r->bom[i].unit_price_usd > 0.0;
-	}
+	/* The counts of the parts search (parts/bom.c), as every writer
+	 * prints them. */
+	int lines = r->bom_parts_lines, priced = r->bom_priced_lines;
 	int unpriced = lines - priced;
 	if (priced == 0)
 		snprintf(buf, n, "unpriced (%d lines)", lines);
@@ -98,4 +147,17 @@ res_eu_class(double mass_kg)
 	if (mass_kg < RES_EU_C3_KG)
 		return "C3/C4";
 	return "specific";
+}
+
+const char *
+res_chemistry_text(const char *name, char *buf, size_t n)
+{
+	const char *us = strchr(name, '_');
+	if (us == NULL || us[1] == '\0') {
+		snprintf(buf, n, "%s", name);
+		return buf;
+	}
+	const char *grade = strcmp(us + 1, "highvoltage") == 0 ? "high-voltage" : us + 1;
+	snprintf(buf, n, "%.*s (%s grade)", (int)(us - name), name, grade);
+	return buf;
 }

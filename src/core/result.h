@@ -235,6 +235,8 @@ struct res_perf {
 	double motor_no_load_a;   /* I0 used */
 	bool motor_r_estimated;   /* R or I0 came from motor.h's fit */
 	double prop_ct, prop_cp;  /* static coefficients used */
+	double prop_fom;          /* the propeller's own static figure of merit,
+	                             before κ and k_int (fom_installed after) */
 	bool prop_coeffs_measured;/* published, not prop.h's fit */
 	double landing_soc;       /* state of charge at touchdown */
 };
@@ -308,6 +310,9 @@ struct res_run {
 	double downwash_ms;
 	double fom_installed;
 	double interference;      /* k_int */
+	double kappa;             /* installation penalty κ the figure of merit
+	                             was divided by (1: not applied, the FoM
+	                             isolated or given by the mission) */
 	double reynolds_tip;
 	double rpm_hover;
 	double rpm_peak;
@@ -575,6 +580,42 @@ void res_rationale(struct solve_result *r, const char *fmt, ...)
  * or not: its checks say), else the continuous custom design, which
  * *buildable (may be NULL) then says is not buildable. */
 const struct res_run *res_record(const struct solve_result *r, bool *buildable);
+
+/* The figures of the design of record that the cover, the summary,
+ * result.json ("key_figures"), bom_totals.csv and index.csv all print:
+ * one number each, computed once here from the record (res_record()), so
+ * that no writer derives its own.  A figure that does not apply is NAN
+ * (hover_power_shed_w when nothing is shed; hover_current_a of a
+ * continuous design that sheds before it hovers). */
+struct res_figures {
+	bool buildable;           /* the record is the aircraft the BOM builds */
+	double takeoff_mass_kg;   /* the record's takeoff mass (BOM + payload) */
+	double payload_kg;        /* at takeoff */
+	bool sheds;               /* payload leaves on the way (drop, spray) */
+	double hover_power_w;     /* electrical, hovering at the takeoff mass */
+	double hover_power_shed_w;/* ... in the mission's hover phase, after
+	                             shedding (NAN when nothing is shed) */
+	double hover_current_a;   /* battery current hovering at the takeoff
+	                             mass (the operating point of the real
+	                             drive, the pack at its nominal voltage) */
+	double aux_power_w;       /* auxiliary load flown (avionics and role) */
+	double hover_endurance_s; /* hover at takeoff mass down to the reserve */
+	double flight_time_s;     /* the mission flown (after any relaxation) */
+	double landing_soc;       /* state of charge at touchdown, 0..1 */
+	double reserve_soc;       /* the reserve it must keep, 0..1 */
+	double bom_mass_kg;       /* parts, the payload aside (0 without parts) */
+	double bom_price_usd;     /* the priced lines' sum: a lower bound */
+	int bom_lines;            /* lines to buy (the payload line aside) */
+	int unpriced_lines;       /* of those, without a price */
+};
+
+/* Fills *f from r's design of record. */
+void res_figures(const struct solve_result *r, struct res_figures *f);
+
+/* A battery chemistry profile's name as a reader says it: "LiPo" as is,
+ * "LiPo_agricultural" as "LiPo (agricultural grade)", "LiPo_highvoltage"
+ * as "LiPo (high-voltage grade)"; into buf (size n), which is returned. */
+const char *res_chemistry_text(const char *name, char *buf, size_t n);
 
 /* EU open-category class limits by takeoff mass (Reg. (EU) 2019/945), kg,
  * and the US 14 CFR Part 107 small-UAS limit (55 lb). */

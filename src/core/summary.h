@@ -62,7 +62,7 @@ struct summary_row {
 	double hover_endurance_s;        /* hover at takeoff mass to the reserve */
 	bool has_cost;
 	double cost_usd;                 /* sum of the known BOM prices */
-	int prices_missing;              /* BOM lines without a price */
+	int unpriced_lines;              /* BOM lines to buy without a price */
 	int cells;                       /* series cells, 0 unknown */
 	double capacity_mah;             /* pack capacity, 0 unknown */
 	char motor[SUMMARY_TEXT_MAX];    /* "maker part", "" without parts */

@@ -13,6 +13,7 @@
 #include "parts/parts.h"
 #include "util/strbuf.h"
 #include "physics/structure.h"
+#include "util/numfmt.h"
 #include "util/units.h"
 #include "util/xalloc.h"
 
@@ -319,8 +320,11 @@ static void
 explain(const struct sizing_params *p, const struct res_run *o,
         const struct mission_spec *s, struct solve_result *r)
 {
-	res_rationale(r, "Sized as a %s on a %.0f mm wheelbase (%s class).",
-	    rotor_word(p->n_rotors, p->coaxial), p->wheelbase_m * 1000.0,
+	const char *rw = rotor_word(p->n_rotors, p->coaxial);
+	char chem[64], v1[32], v2[32];
+	res_chemistry_text(o->chemistry, chem, sizeof chem);
+	res_rationale(r, "Sized as %s %s on a %.0f mm wheelbase (%s class).",
+	    strchr("AEIOU", rw[0]) != NULL ? "an" : "a", rw, p->wheelbase_m * 1000.0,
 	    spec_enum_airframe[p->airframe_class]);
 	if (p->prop_locked)
 		res_rationale(r, "Propeller %.1f × %.1f in is locked by the mission.",
@@ -364,13 +368,13 @@ explain(const struct sizing_params *p, const struct res_run *o,
 			    "keeping the full-throttle current (%.0f A) within the "
 			    "%.0f A harness budget of a %.1f kg aircraft (more cells: "
 			    "a lighter harness, smaller and heavier cells).",
-			    o->cell_count, o->chemistry, o->peak_current_a, budget,
+			    o->cell_count, chem, o->peak_current_a, budget,
 			    o->mass.total_kg);
 		else
 			res_rationale(r, "%dS %s: the %s class allows at most %dS, so "
 			    "the full-throttle current (%.0f A) stays above the %.0f A "
 			    "harness budget; wiring and ESCs are sized for it.",
-			    o->cell_count, o->chemistry,
+			    o->cell_count, chem,
 			    spec_enum_airframe[p->airframe_class], p->cells_hi,
 			    o->peak_current_a, budget);
 	}
@@ -378,12 +382,13 @@ explain(const struct sizing_params *p, const struct res_run *o,
 		res_rationale(r, "Battery capacity %.0f mAh (%.0f Wh) is set by "
 		    "power, not energy: %s cells must deliver the %.0f W full-throttle "
 		    "burst and every sustained phase, which needs more cells than the "
-		    "mission's energy.", o->capacity_mah, o->energy_wh, o->chemistry,
+		    "mission's energy.", o->capacity_mah, o->energy_wh, chem,
 		    o->peak_power_w);
 	else if (!s->locks.is_battery_locked)
-		res_rationale(r, "Battery capacity %.0f mAh (%.0f Wh): 1.2 × the "
-		    "charge the discharge simulation drew over the mission, under-relaxed "
-		    "to a fixed point.", o->capacity_mah, o->energy_wh);
+		res_rationale(r, "Battery capacity %.0f mAh (%.0f Wh): the charge the "
+		    "mission draws in the discharge simulation and 20 %% more, so that "
+		    "the aircraft lands with its %.1f %% reserve.", o->capacity_mah,
+		    o->energy_wh, 100.0 * o->reserve_soc);
 	res_rationale(r, "Target motor KV %.0f rpm/V: full-throttle rotor speed "
 	    "%.0f rpm on a %.1f V bus.", o->opt.motor_kv, o->rpm_peak,
 	    (double)o->cell_count * p->chem->v_full);
@@ -404,25 +409,31 @@ explain(const struct sizing_params *p, const struct res_run *o,
 		res_rationale(r, "Forward speed %.1f m/s: the minimum-power speed of "
 		    "the 1–30 m/s sweep.", o->optimal_speed_ms);
 	if (o->time_scale < 1.0 && !r->ceiling.shown)
-		res_rationale(r, "Goal relaxation: the requested mission could not "
-		    "close, so every phase was scaled to %.0f %% of its requested time.",
+		res_rationale(r, "Shorter flight: the mission as asked does not size, "
+		    "so every phase is flown at %.0f %% of its requested time (the "
+		    "mission allows it: locks.auto_reduce_flight_time).",
 		    100.0 * o->time_scale);
+	/* The loop's gain dF/dM in an engineer's words: the mass growth
+	 * factor 1 / (1 - dF/dM) (the solver appendix gives the rest). */
 	if (o->converged && o->lipschitz < 1.0)
-		res_rationale(r, "The mass loop converged in %d iterations; the "
-		    "mass-growth Lipschitz constant is %.2f (< 1: a contraction).",
-		    o->iterations, o->lipschitz);
+		res_rationale(r, "Mass growth: each kilogram added to the aircraft "
+		    "calls for %.2f kg more battery, structure and motors, so a "
+		    "kilogram of payload costs %.1f kg of takeoff mass.",
+		    o->lipschitz, 1.0 / (1.0 - o->lipschitz));
 	else if (o->converged)
-		res_rationale(r, "The mass loop settled in %d iterations, but the "
-		    "mass-growth Lipschitz constant at that point is %.2f (>= 1): each "
-		    "added kilogram needs more than a kilogram of subsystems, so the "
-		    "design sits on the edge of the mass snowball.", o->iterations,
+		res_rationale(r, "Mass growth: each kilogram added to the aircraft "
+		    "calls for %.2f kg more battery, structure and motors, more than "
+		    "it adds itself: the design sits on the edge of runaway mass "
+		    "growth, and any added payload or equipment tips it over.",
 		    o->lipschitz);
 	/* What binds: the tightest passing check not sized to its limit. */
 	const struct res_check *t = res_tightest_check(o);
 	if (t != NULL)
-		res_rationale(r, "Tightest remaining constraint: %s (%.3g %s "
-		    "against a limit of %.3g, margin %.0f %%).", t->name, t->value,
-		    t->unit, t->limit, 100.0 * t->margin);
+		res_rationale(r, "Tightest remaining constraint: %s (%s%s%s against "
+		    "a limit of %s%s%s, margin %.0f %%).", t->name,
+		    numfmt_sig(v1, sizeof v1, t->value, 3), t->unit[0] ? " " : "", t->unit,
+		    numfmt_sig(v2, sizeof v2, t->limit, 3), t->unit[0] ? " " : "", t->unit,
+		    100.0 * t->margin);
 }
 
 /* Is every number a run stores finite?  The output layers refuse NaN. */
@@ -525,9 +536,11 @@ note_largest(struct res_run *t, bool ok, const struct solve_result *scratch)
 		const struct res_check *c = &t->checks[i];
 		if (c->pass || c->advisory)
 			continue;
-		snprintf(l->fails, sizeof l->fails, "%s at %s is %.3g%s%s, the limit "
-		    "%.3g%s%s", c->name, c->condition, c->value, c->unit[0] ? " " : "",
-		    c->unit, c->limit, c->unit[0] ? " " : "", c->unit);
+		char v1[32], v2[32];
+		snprintf(l->fails, sizeof l->fails, "%s at %s is %s%s%s, the limit "
+		    "%s%s%s", c->name, c->condition, numfmt_sig(v1, sizeof v1, c->value, 3),
+		    c->unit[0] ? " " : "", c->unit, numfmt_sig(v2, sizeof v2, c->limit, 3),
+		    c->unit[0] ? " " : "", c->unit);
 		return;
 	}
 	snprintf(l->fails, sizeof l->fails, "%s", scratch->n_violations > 0
@@ -704,10 +717,12 @@ ceiling(const struct sizing_params *p, struct solve_result *r)
 		const struct res_check *tight = res_tightest_check(best);
 		if (tight != NULL && tight->margin < CEILING_TIGHT) {
 			snprintf(c->binds_code, sizeof c->binds_code, "CHECK");
-			snprintf(c->binds, sizeof c->binds, "%s reaches its limit (%.3g%s%s "
-			    "against %.3g) on the longest flight that sizes; beyond it the "
-			    "mission fails.", tight->name, tight->value,
-			    tight->unit[0] ? " " : "", tight->unit, tight->limit);
+			char v1[32], v2[32];
+			snprintf(c->binds, sizeof c->binds, "%s reaches its limit (%s%s%s "
+			    "against %s) on the longest flight that sizes; beyond it the "
+			    "mission fails.", tight->name, numfmt_sig(v1, sizeof v1, tight->value, 3),
+			    tight->unit[0] ? " " : "", tight->unit,
+			    numfmt_sig(v2, sizeof v2, tight->limit, 3));
 		}
 		c->flight_time_s = best->flight_time_s;
 		c->hover_endurance_s = best->hover_endurance_s;
@@ -770,6 +785,14 @@ explain_ceiling(const struct sizing_params *p0, struct solve_result *r)
 	}
 }
 
+/* Does the mission shed payload on the way (a drop or a spray)? */
+static bool
+sheds(const struct mission_spec *m)
+{
+	return m->payload_role.mass_shedding && (m->payload_role.type == ROLE_DELIVERY
+	    || m->payload_role.type == ROLE_AGRICULTURE);
+}
+
 /* The role overhead and its rationale line. */
 static void
 role_overhead(struct solve_result *r)
@@ -780,11 +803,24 @@ role_overhead(struct solve_result *r)
 	    || !r->custom.converged || r->ceiling.valid)
 		return;
 	mass_diff(&r->custom.mass, &r->baseline.mass, &r->role_overhead);
-	res_rationale(r, "The %s role adds %.2f kg over the dead-weight "
-	    "baseline (%.2f kg → %.2f kg).",
-	    spec_enum_role[r->mission.payload_role.type],
-	    r->role_overhead.total_kg, r->baseline.mass.total_kg,
-	    r->custom.mass.total_kg);
+	if (r->mission.payload_role.type == ROLE_NONE)
+		return;
+	if (r->role_overhead.total_kg >= 0.0)
+		res_rationale(r, "The %s role adds %.2f kg over the baseline, the "
+		    "same mission without the role's equipment (%.2f kg → %.2f kg).",
+		    spec_enum_role[r->mission.payload_role.type],
+		    r->role_overhead.total_kg, r->baseline.mass.total_kg,
+		    r->custom.mass.total_kg);
+	else
+		res_rationale(r, "With the %s role the aircraft is %.2f kg lighter "
+		    "than the baseline (%.2f kg → %.2f kg): %s.",
+		    spec_enum_role[r->mission.payload_role.type],
+		    -r->role_overhead.total_kg, r->baseline.mass.total_kg,
+		    r->custom.mass.total_kg, sheds(&r->mission)
+		    ? "the baseline carries its payload as dead weight for the whole "
+		      "flight, the role's aircraft sheds it on the way"
+		    : "the baseline is sized to a fixed 60 % hover throttle, the "
+		      "role to its own thrust margin");
 }
 
 void

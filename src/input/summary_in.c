@@ -186,11 +186,17 @@ summary_in_parse(const char *file, const char *buf, size_t n, const char *name,
 	row->payload_kg = payload->valuedouble;
 	inputs(mission, row);
 	interval(root, row);
-	row->has_flight_time = get_num(dor, "flight_time_s", &row->flight_time_s);
-	/* Hover endurance: the real parts' drive when they fly, else the
-	 * continuous design's own estimate. */
+	/* The record's figures as the dossier prints them ("key_figures",
+	 * core/result.h res_figures()); a result.json written before that
+	 * block existed gives them from the record's own fields. */
+	const cJSON *kf = member(root, "key_figures");
+	row->has_flight_time = get_num(kf, "flight_time_s", &row->flight_time_s)
+	    || get_num(dor, "flight_time_s", &row->flight_time_s);
 	double t;
-	if (real && get_num(member(dor, "performance"), "hover_time_s", &t)) {
+	if (get_num(kf, "hover_endurance_s", &t) && t > 0.0) {
+		row->has_endurance = true;
+		row->hover_endurance_s = t;
+	} else if (real && get_num(member(dor, "performance"), "hover_time_s", &t)) {
 		row->has_endurance = true;
 		row->hover_endurance_s = t;
 	} else if (get_num(dor, "hover_endurance_s", &t) && t > 0.0) {
@@ -205,8 +211,9 @@ summary_in_parse(const char *file, const char *buf, size_t n, const char *name,
 		const cJSON *bom = member(root, "bom"), *selected = member(root, "selected");
 		double missing = 0.0;
 		row->has_cost = get_num(bom, "total_price_usd", &row->cost_usd);
-		if (get_num(bom, "prices_missing", &missing) && missing >= 0.0 && missing < 1e6)
-			row->prices_missing = (int)missing;
+		if ((get_num(kf, "bom_unpriced_lines", &missing)
+		     || get_num(bom, "prices_missing", &missing)) && missing >= 0.0 && missing < 1e6)
+			row->unpriced_lines = (int)missing;
 		part_text(selected, "motor", row->motor, sizeof row->motor);
 		part_text(selected, "prop", row->propeller, sizeof row->propeller);
 		part_text(selected, "battery", row->battery, sizeof row->battery);

@@ -25,10 +25,11 @@ n_lines(const struct solve_result *r, int *bad)
 int
 bom_csv_missing_prices(const struct solve_result *r)
 {
-	int bad = 0, n = n_lines(r, &bad), missing = 0;
-	for (int i = 0; i < n; i++)
-		missing += r->bom[i].unit_price_usd == 0.0;
-	return missing;
+	/* The one count every output prints (res_figures()): the lines to
+	 * buy without a price, the payload's line aside. */
+	struct res_figures f;
+	res_figures(r, &f);
+	return f.unpriced_lines;
 }
 
 /* ---- what is ordered ------------------------------------------------------- */

@@ -669,6 +669,31 @@ doc_global_cleanup(void)
 	plot_global_cleanup();
 }
 
+/* ---- transcript -------------------------------------------------------------- */
+
+void
+doc_set_transcript(struct doc *d, struct strbuf *sb)
+{
+	d->transcript = sb;
+}
+
+void
+doc_transcribe(struct doc *d, const char *prefix, const char *text)
+{
+	if (d->transcript == NULL || doc_failed(d))
+		return;
+	strbuf_append_str(d->transcript, prefix != NULL ? prefix : "");
+	for (const char *p = text != NULL ? text : ""; *p != '\0'; p++) {
+		if ((unsigned char)p[0] == 0xc2 && (unsigned char)p[1] == 0xa0) {
+			strbuf_append_str(d->transcript, " ");
+			p++;
+		} else {
+			strbuf_append(d->transcript, p, 1);
+		}
+	}
+	strbuf_append_str(d->transcript, "\n");
+}
+
 /* ---- text blocks ------------------------------------------------------------ */
 
 /* Flows wrapped text from x0 to x1, breaking pages between lines. */
@@ -693,6 +718,7 @@ doc_paragraph(struct doc *d, const char *text)
 {
 	if (doc_failed(d))
 		return -1;
+	doc_transcribe(d, NULL, text);
 	flow_text(d, d->font, d->tpl.font_size_pt, d->left, d->right, text != NULL ? text : "",
 	          d->tpl.text);
 	if (!d->at_top)
@@ -706,6 +732,7 @@ doc_code(struct doc *d, const char *text)
 	HPDF_Font f = doc_mono_font(d);
 	if (doc_failed(d))
 		return -1;
+	doc_transcribe(d, NULL, text);
 	flow_text(d, f, 0.85 * d->tpl.font_size_pt, d->left + 6.0, d->right,
 	          text != NULL ? text : "", d->tpl.text);
 	if (!d->at_top)
@@ -722,6 +749,7 @@ doc_bullets(struct doc *d, const char *const *items, int n)
 			doc_add_page(d);
 		put_text(d, d->font, size, d->left + 3.0, d->y - size, "\xe2\x80\xa2", 3,
 		         d->tpl.primary);
+		doc_transcribe(d, "\xe2\x80\xa2 ", items[i]);
 		flow_text(d, d->font, size, d->left + indent, d->right,
 		          items[i] != NULL ? items[i] : "", d->tpl.text);
 		d->y -= 0.2 * size;
@@ -740,6 +768,9 @@ doc_title(struct doc *d, const char *title, const char *subtitle)
 		return -1;
 	/* The cover gets its outline entry too; level-2 headings under it nest. */
 	bookmark(d, 1, title != NULL ? title : "", d->y);
+	doc_transcribe(d, NULL, title);
+	if (subtitle != NULL)
+		doc_transcribe(d, NULL, subtitle);
 	double size = 2.6 * d->tpl.font_size_pt;
 	double logo_w = 0.0;
 	if (d->tpl.logo[0] != '\0') {
@@ -861,6 +892,7 @@ doc_heading(struct doc *d, int level, const char *text)
 		return -1;
 	double base = d->tpl.font_size_pt;
 	text = text != NULL ? text : "";
+	doc_transcribe(d, level <= 1 ? "# " : level == 2 ? "## " : "### ", text);
 	if (level <= 1) {
 		if (!d->at_top)
 			doc_add_page(d);
@@ -896,6 +928,10 @@ doc_callout(struct doc *d, enum doc_callout_style style, const char *title, cons
 	                         : style == DOC_CALLOUT_WARN ? d->tpl.warn : d->tpl.primary;
 	double base = d->tpl.font_size_pt, tsize = 1.9 * base, pad = 8.0, bar = 4.0;
 	double x0 = d->left + bar + pad, x1 = d->right - pad;
+	if (title != NULL)
+		doc_transcribe(d, NULL, title);
+	if (text != NULL)
+		doc_transcribe(d, NULL, text);
 	struct lines tl = { 0 }, bl = { 0 };
 	if (title != NULL)
 		doc_wrap(d->bold, tsize, x1 - x0, title, &tl);
@@ -945,10 +981,12 @@ doc_figure(struct doc *d, const struct plot *p, const char *caption)
 	double x = d->left + 0.5 * (tw - w);
 	struct plot_render r = { .pdf = d->pdf, .page = d->page, .font = d->font,
 	                         .bold = d->bold, .tpl = &d->tpl, .x_pt = x,
-	                         .y_top_pt = d->y - 4.0, .width_pt = w };
+	                         .y_top_pt = d->y - 4.0, .width_pt = w,
+	                         .transcript = doc_failed(d) ? NULL : d->transcript };
 	if (!doc_failed(d) && plot_render(p, &r) != 0)
 		doc_fail(d, "figure %d: cairo could not build the paths", d->n_figures + 1);
 	d->n_figures++;
+	doc_transcribe(d, NULL, cap);
 	doc_advance(d, h + 10.0);
 	for (int i = 0; i < L.n && !doc_failed(d); i++) {
 		/* One line is centred under the figure, several are left aligned. */

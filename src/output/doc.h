@@ -70,6 +70,7 @@
 #include "core/template.h"
 
 struct doc;
+struct strbuf;
 
 /* Document metadata.  Every string is copied; NULL means absent. */
 struct doc_info {
@@ -195,6 +196,17 @@ int doc_new_page(struct doc *d);
 /* Height left on the current page and the text width, in points. */
 double doc_space_left(const struct doc *d);
 double doc_text_width(const struct doc *d);
+
+/* From now on every text the document draws is also appended to sb (the
+ * caller's, which must outlive d), one element to a line, in the order
+ * drawn: a heading as "# " (level 1), "## " or "### " and its text; a
+ * title, paragraph, bullet ("• ") or callout line as its whole text,
+ * unwrapped; a table row as its cells joined by tabs (the header row
+ * first, once); a figure as "Figure n: caption" after one "| label" line
+ * for each text inside the figure.  A no-break space is written as a
+ * space, as it is drawn.  For tests and tools that read what a dossier
+ * says without reading the PDF back; NULL stops it. */
+void doc_set_transcript(struct doc *d, struct strbuf *sb);
 
 /* Embeds data as the attached file `name` (a bare file name, no '/'). */
 int doc_attach(struct doc *d, const char *name, const void *data, size_t n);

@@ -10,6 +10,7 @@
 #include <hpdf.h>
 
 #include "output/doc.h"
+#include "util/strbuf.h"
 #include "util/sha256.h"
 
 #define LEADING 1.38          /* line height / font size for body text */
@@ -61,6 +62,7 @@ struct doc {
 	char date[11];              /* "YYYY-MM-DD", "" undated */
 	HPDF_Array af;              /* the catalogue's associated files, or NULL */
 	struct sha256_ctx id_ctx;   /* the attachments, then the XMP: the /ID */
+	struct strbuf *transcript;  /* the caller's, or NULL (doc_set_transcript()) */
 };
 
 /* One output line: a slice of the source text. */
@@ -82,6 +84,10 @@ void doc_pdfa_begin(struct doc *d);
 void doc_pdfa_associate(struct doc *d, HPDF_Dict spec, HPDF_Dict file, const char *name,
                         const void *data, size_t n);
 void doc_pdfa_finish(struct doc *d);
+
+/* Appends one element's text to the transcript, if one is kept: prefix,
+ * then text (a no-break space as a space), then a newline. */
+void doc_transcribe(struct doc *d, const char *prefix, const char *text);
 
 /* Remembers the first error (later ones are its consequences). */
 void doc_fail(struct doc *d, const char *fmt, ...)

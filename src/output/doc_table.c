@@ -359,6 +359,21 @@ doc_table(struct doc *d, const struct doc_table *t)
 	if (!d->at_top && !d->after_heading && d->y - all < d->bottom &&
 	    all <= SHORT_TABLE_SHARE * (d->top - d->bottom))
 		doc_add_page(d);
+	/* The transcript: the header row once, then every row, cells by tabs. */
+	if (d->transcript != NULL) {
+		struct strbuf row = STRBUF_INIT;
+		for (int r = t->no_header ? 0 : -1; r < n_rows; r++) {
+			strbuf_reset(&row);
+			for (int c = 0; c < t->n_cols; c++) {
+				if (c > 0)
+					strbuf_append_str(&row, "\t");
+				strbuf_append_str(&row, r < 0 ? t->cols[c].title
+				    : t->cells[r * t->n_cols + c]);
+			}
+			doc_transcribe(d, NULL, strbuf_str(&row));
+		}
+		strbuf_free(&row);
+	}
 	int need_header = !t->no_header;
 	for (int r = 0; r < n_rows && !doc_failed(d); r++) {
 		int total = t->total_row && r == n_rows - 1;

@@ -22,7 +22,7 @@ static const char *const csv_header[] = {
 	"altitude_m", "ambient_temp_c", "t_hover_s", "t_forward_s", "t_climb_s",
 	"payload_kg", "max_payload_kg",
 	"takeoff_mass_kg", "mtow_interval_level", "mtow_lo_kg", "mtow_hi_kg",
-	"flight_time_s", "hover_endurance_s", "cost_usd", "prices_missing", "cells",
+	"flight_time_s", "hover_endurance_s", "cost_usd", "unpriced_lines", "cells",
 	"capacity_mah", "motor", "propeller", "battery", "tightest_check", "tightest_margin",
 	NULL
 };
@@ -84,7 +84,7 @@ index_csv(const struct summary *s)
 		csv_out_num(&o, w->has_flight_time, w->flight_time_s, 0);
 		csv_out_num(&o, w->has_endurance, w->hover_endurance_s, 0);
 		csv_out_num(&o, w->has_cost, w->cost_usd, 2);
-		csv_out_num(&o, real, w->prices_missing, 0);
+		csv_out_num(&o, real, w->unpriced_lines, 0);
 		csv_out_num(&o, w->cells > 0, w->cells, 0);
 		csv_out_num(&o, w->capacity_mah > 0.0, w->capacity_mah, 0);
 		text(&o, w->motor);
@@ -154,7 +154,7 @@ row_json(const struct summary_row *w)
 	add_num(o, "flight_time_s", w->has_flight_time, w->flight_time_s);
 	add_num(o, "hover_endurance_s", w->has_endurance, w->hover_endurance_s);
 	add_num(o, "cost_usd", w->has_cost, w->cost_usd);
-	add_num(o, "prices_missing", real, w->prices_missing);
+	add_num(o, "unpriced_lines", real, w->unpriced_lines);
 	add_num(o, "cell_count", w->cells > 0, w->cells);
 	add_num(o, "battery_capacity_mah", w->capacity_mah > 0.0, w->capacity_mah);
 	add_text(o, "motor", w->motor);

@@ -11,7 +11,7 @@
  *   battery_chemistry,altitude_m,ambient_temp_c,t_hover_s,t_forward_s,
  *   t_climb_s,payload_kg,max_payload_kg,takeoff_mass_kg,
  *   mtow_interval_level,mtow_lo_kg,mtow_hi_kg,flight_time_s,
- *   hover_endurance_s,cost_usd,prices_missing,cells,capacity_mah,motor,
+ *   hover_endurance_s,cost_usd,unpriced_lines,cells,capacity_mah,motor,
  *   propeller,battery,tightest_check,tightest_margin
  * so a study plots any result against any input without joining the
  * mission files in.  The inputs are the fully defaulted mission's (what
@@ -32,7 +32,7 @@
  * "altitude_m", "ambient_temp_c", "t_hover_s", "t_forward_s", "t_climb_s",
  * "payload_kg", "max_payload_kg", "takeoff_mass_kg",
  * "mtow_interval": {"level", "lo_kg", "hi_kg"} or null,
- * "flight_time_s", "hover_endurance_s", "cost_usd", "prices_missing",
+ * "flight_time_s", "hover_endurance_s", "cost_usd", "unpriced_lines",
  * "cell_count", "battery_capacity_mah", "motor", "propeller", "battery",
  * "tightest_check": {"name", "margin"} or null}]}; unknown values are
  * null, numbers exact (numfmt_shortest), text as read.

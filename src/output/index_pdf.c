@@ -110,7 +110,7 @@ figure_cost(struct doc *d, const struct summary *s)
 	plot_legend(pp, PLOT_LEGEND_BELOW);
 	doc_figure(d, p, "Cost against hover endurance of the buildable designs.  The cost "
 	    "is the sum of the known catalogue prices: a lower bound where some are unknown "
-	    "(index.csv, prices_missing).");
+	    "(index.csv, unpriced_lines).");
 	plot_free(p);
 }
 
@@ -140,7 +140,7 @@ table_rows(struct doc *d, const struct summary *s)
 			doc_table_cell(&t, DOC_CELL_MUTED, "–");
 		if (w->has_cost)
 			doc_table_cell(&t, DOC_CELL_NORMAL, "%.2f%s", w->cost_usd,
-			    w->prices_missing > 0 ? "+" : "");
+			    w->unpriced_lines > 0 ? "+" : "");
 		else
 			doc_table_cell(&t, DOC_CELL_MUTED, "–");
 		if (w->tightest[0] != '\0')

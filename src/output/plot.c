@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "util/strbuf.h"
 #include "util/xalloc.h"
 
 /* Type sizes and strokes of an engineering figure (points). */
@@ -760,6 +761,11 @@ draw_text(struct rctx *c, HPDF_Font f, double size, double x, double y, const ch
 		                        (HPDF_REAL)py_(c, y));
 	HPDF_Page_ShowText(pg, s);
 	HPDF_Page_EndText(pg);
+	if (c->r->transcript != NULL) {
+		strbuf_append_str(c->r->transcript, "| ");
+		strbuf_append_str(c->r->transcript, s);
+		strbuf_append_str(c->r->transcript, "\n");
+	}
 }
 
 /* ---- panel layout ---------------------------------------------------------- */

@@ -226,6 +226,8 @@ int plot_label_boxes(const struct plot *p, const struct plot_label_box **out);
 
 /* ---- drawing (called by doc_figure) ------------------------------------ */
 
+struct strbuf;
+
 struct plot_render {
 	HPDF_Doc pdf;
 	HPDF_Page page;
@@ -234,6 +236,7 @@ struct plot_render {
 	const struct template *tpl;
 	double x_pt, y_top_pt;         /* figure's top-left corner on the page */
 	double width_pt;               /* resolved width (plot width or text width) */
+	struct strbuf *transcript;     /* NULL, or: every text drawn, "| text\n" */
 };
 
 /* Draws the figure; returns 0, or -1 if libharu or cairo failed. */

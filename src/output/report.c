@@ -110,6 +110,15 @@ report_delta(const struct rep *rp, char *buf, size_t n, double kg)
 }
 
 const char *
+report_chemistry(const char *name)
+{
+	static _Thread_local char ring[4][64];
+	static _Thread_local int next;
+	char *b = ring[next++ % 4];
+	return res_chemistry_text(name != NULL ? name : "", b, sizeof ring[0]);
+}
+
+const char *
 report_role_name(const struct solve_result *r)
 {
 	int t = r->mission.payload_role.type;
@@ -146,14 +155,7 @@ report_continuous_heading(const struct rep *rp, struct strbuf *sb, const char *w
 double
 report_mtow(const struct rep *rp)
 {
-	const struct solve_result *r = rp->r;
-	if (!rp->buildable || r->n_bom == 0)
-		return rp->rec->mass.total_kg;
-	double payload = 0.0;
-	for (int i = 0; i < r->n_bom && i < RES_MAX_BOM; i++)
-		if (strcmp(r->bom[i].category, "payload") == 0)
-			payload += r->bom[i].total_mass_kg;
-	return r->bom_mass_kg + payload;
+	return rp->fig.takeoff_mass_kg;
 }
 
 const char *
@@ -346,6 +348,7 @@ report_render(const struct report_input *in, unsigned char **pdf, size_t *n,
 	struct rep rp = { .in = in, .r = r, .tpl = in->tpl };
 	rp.rec = res_record(r, &rp.buildable);
 	rp.rec_ok = rp.buildable && rp.rec->feasible;
+	res_figures(r, &rp.fig);
 	int small = rp.rec->mass.total_kg < REP_GRAM_BELOW_KG &&
 	            r->custom.mass.total_kg < REP_GRAM_BELOW_KG &&
 	            r->baseline.mass.total_kg < REP_GRAM_BELOW_KG;
@@ -367,6 +370,7 @@ report_render(const struct report_input *in, unsigned char **pdf, size_t *n,
 		.catalogue_sha256 = r->catalogue_sha256,
 	};
 	rp.d = doc_alloc(in->tpl, &info);
+	doc_set_transcript(rp.d, in->transcript);
 
 	/* A mission beyond reach with no shorter flight that sizes has no
 	 * aircraft to describe: the pages of a design are left out rather

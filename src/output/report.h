@@ -29,6 +29,7 @@
 
 struct catalog;
 struct doc;
+struct strbuf;
 
 /* Draws an optional section into the dossier (the study layer's trade
  * study): returns 0, or -1 when it could not. */
@@ -49,6 +50,8 @@ struct report_input {
 	const struct catalog *cat;             /* may be NULL: for the crosshair figure (all motors) and the appendix */
 	report_section_fn *sensitivity;        /* may be NULL: draws the optional Sensitivity section */
 	const void *sensitivity_arg;           /* ... from this */
+	struct strbuf *transcript;             /* may be NULL: receives the dossier's
+	                                          text as drawn (doc_set_transcript()) */
 };
 
 /* Renders the dossier into a new buffer (*pdf, *n).  Returns 0, or -1 with

@@ -21,14 +21,22 @@ minutes(double s)
 	return s / 60.0;
 }
 
-/* The record's hover endurance: on real parts the performance block has
- * it (the run's own field is the continuous loop's). */
+/* A run's hover endurance: the record's is the one of its figures
+ * (res_figures()); a run that did not size (a runaway) has none. */
 static double
 hover_endurance_s(const struct rep *rp, const struct res_run *run)
 {
-	if (run == rp->rec && rp->buildable && run->perf.valid)
-		return run->perf.hover_time_s;
-	return run->hover_endurance_s;
+	if (run == rp->rec)
+		return rp->fig.hover_endurance_s;
+	return run->converged && run->hover_endurance_s > 0.0 ? run->hover_endurance_s : NAN;
+}
+
+/* A figure of a reference run that only means something when its mass
+ * loop settled: NAN (printed "—") for a runaway's last iterate. */
+static double
+settled(const struct res_run *run, double x)
+{
+	return run->ran && run->converged ? x : NAN;
 }
 
 /* "6S2P LiPo, 8000 mAh" */
@@ -40,7 +48,7 @@ battery_text(struct strbuf *sb, const struct res_run *run)
 	strbuf_printf(sb, "%dS", run->cell_count);
 	if (run->pack_count > 1)
 		strbuf_printf(sb, "%dP", run->pack_count);
-	strbuf_printf(sb, " %s, %s" NBSP "mAh", run->chemistry, report_num(b, sizeof b, run->capacity_mah, 0));
+	strbuf_printf(sb, " %s, %s" NBSP "mAh", report_chemistry(run->chemistry), report_num(b, sizeof b, run->capacity_mah, 0));
 	return strbuf_str(sb);
 }
 
@@ -149,6 +157,47 @@ cover_status(struct rep *rp)
 	strbuf_free(&sb);
 }
 
+/* Every way the design shown flies less than the mission asks, on the
+ * cover (PRODUCT.md "never relaxed without the cover saying so"): a
+ * shorter flight, a climb or a forward speed the thrust cannot reach
+ * flown slower.  The ceiling of a mission beyond reach has its own
+ * callout (cover_status()). */
+static void
+cover_relaxed(struct rep *rp)
+{
+	const struct solve_result *r = rp->r;
+	const struct mission_spec *m = &r->mission;
+	const struct res_run *rec = rp->rec;
+	struct strbuf sb = STRBUF_INIT;
+	char b1[48], b2[48], b3[48];
+	int n = 0;
+	if (rec->time_scale > 0.0 && rec->time_scale < 0.9995 && !r->ceiling.shown) {
+		strbuf_printf(&sb, "%sA shorter flight: every phase is flown at %s" NBSP "%% of its "
+		              "requested time (%s of %s" NBSP "min), as the mission allows "
+		              "(locks.auto_reduce_flight_time).", n++ ? " " : "",
+		              report_num(b1, sizeof b1, 100.0 * rec->time_scale, 0),
+		              report_num(b2, sizeof b2, rec->flight_time_s / 60.0, 1),
+		              report_num(b3, sizeof b3, rec->flight_time_s / rec->time_scale / 60.0, 1));
+	}
+	if (rec->climb_limit_ms > 0.0 && rec->climb_limit_ms < m->v_climb_ms)
+		strbuf_printf(&sb, "%sA slower climb: %s" NBSP "m/s instead of the %s" NBSP "m/s asked, "
+		              "the fastest the thrust reaches.", n++ ? " " : "",
+		              report_num(b1, sizeof b1, rec->climb_limit_ms, 1),
+		              report_num(b2, sizeof b2, m->v_climb_ms, 1));
+	const struct res_phase *fw = &rec->phase[PHASE_FORWARD];
+	if (!m->v_forward_auto && fw->duration_s > 0.0 && fw->speed_ms < m->v_forward_ms - 0.05)
+		strbuf_printf(&sb, "%sSlower forward flight: %s" NBSP "m/s instead of the %s" NBSP "m/s "
+		              "asked, the fastest the thrust and the 35° pitch limit allow.", n++ ? " " : "",
+		              report_num(b1, sizeof b1, fw->speed_ms, 1),
+		              report_num(b2, sizeof b2, m->v_forward_ms, 1));
+	if (n > 0) {
+		strbuf_append_str(&sb, " Every figure in this dossier is for the mission as flown; the "
+		                  "checks section says what binds.");
+		doc_callout(rp->d, DOC_CALLOUT_WARN, "REQUIREMENTS RELAXED", strbuf_str(&sb));
+	}
+	strbuf_free(&sb);
+}
+
 /* One row "label | record | continuous" of the cover's key figures; the
  * continuous column only when the record is not itself continuous. */
 static void
@@ -214,8 +263,8 @@ cover_key_figures(struct rep *rp)
 	double mtow = report_mtow(rp);
 	report_subheading(rp, "Key figures", REP_KEEP_PT);
 	struct doc_column cols[3] = {
-		{ "", 2.1, DOC_ALIGN_LEFT }, { report_record_name(rp), 1.6, DOC_ALIGN_RIGHT },
-		{ report_continuous_name(rp), 1.6, DOC_ALIGN_RIGHT },
+		{ "", 1.9, DOC_ALIGN_LEFT }, { report_record_name(rp), 1.7, DOC_ALIGN_RIGHT },
+		{ report_continuous_name(rp), 1.7, DOC_ALIGN_RIGHT },
 	};
 	struct doc_table t;
 	doc_table_init(&t, cols, rp->buildable ? 3 : 2);
@@ -243,25 +292,30 @@ cover_key_figures(struct rep *rp)
 	                    report_num(b2, sizeof b2, rec->opt.prop_pitch_in, 1)),
 	        report_sfmt(&s2, "%s" NBSP "×" NBSP "%s", report_num(b3, sizeof b3, c->opt.prop_diameter_in, 1),
 	                    report_num(b4, sizeof b4, c->opt.prop_pitch_in, 1)));
-	key_row(rp, &t, "Mission flight time (min)", report_num(b1, sizeof b1, minutes(rec->flight_time_s), 1),
+	const struct res_figures *f = &rp->fig;
+	key_row(rp, &t, "Mission flight time (min)", report_num(b1, sizeof b1, minutes(f->flight_time_s), 1),
 	        report_num(b2, sizeof b2, minutes(c->flight_time_s), 1));
+	/* The figures with an interval print it after the value of record,
+	 * which is res_figures()'s (the interval is built around it). */
 	const struct res_design_intervals *di = &r->intervals;
-	if (di->power_valid) {
-		key_row(rp, &t, "Hover power (W)",
-		        report_sfmt(&s1, "%s (%s–%s)", report_num(b1, sizeof b1, di->hover_power_w, 0),
-		                    report_num(b2, sizeof b2, di->hover_power_lo_w, 0),
-		                    report_num(b3, sizeof b3, di->hover_power_hi_w, 0)),
-		        report_num(b4, sizeof b4, c->hover_power_w, 0));
-		key_row(rp, &t, "Hover endurance to reserve (min)",
-		        report_sfmt(&s1, "%s (%s–%s)", report_num(b1, sizeof b1, minutes(di->endurance_s), 1),
-		                    report_num(b2, sizeof b2, minutes(di->endurance_lo_s), 1),
-		                    report_num(b3, sizeof b3, minutes(di->endurance_hi_s), 1)),
-		        report_num(b4, sizeof b4, minutes(c->hover_endurance_s), 1));
-	} else {
-		key_row(rp, &t, "Hover endurance to reserve (min)",
-		        report_num(b1, sizeof b1, minutes(hover_endurance_s(rp, rec)), 1),
-		        report_num(b2, sizeof b2, minutes(c->hover_endurance_s), 1));
-	}
+	key_row(rp, &t, "Hover power at takeoff mass (W)",
+	        di->power_valid
+	        ? report_sfmt(&s1, "%s (%s–%s)", report_num(b1, sizeof b1, f->hover_power_w, 0),
+	                      report_num(b2, sizeof b2, di->hover_power_lo_w, 0),
+	                      report_num(b3, sizeof b3, di->hover_power_hi_w, 0))
+	        : report_num(b1, sizeof b1, f->hover_power_w, 0),
+	        report_num(b4, sizeof b4, c->hover_power_w, 0));
+	if (f->sheds)
+		key_row(rp, &t, "Hover power after shedding (W)",
+		        report_num(b1, sizeof b1, f->hover_power_shed_w, 0),
+		        report_num(b2, sizeof b2, c->phase[PHASE_HOVER].power_w, 0));
+	key_row(rp, &t, "Hover endurance to reserve (min)",
+	        di->power_valid
+	        ? report_sfmt(&s1, "%s (%s–%s)", report_num(b1, sizeof b1, minutes(f->hover_endurance_s), 1),
+	                      report_num(b2, sizeof b2, minutes(di->endurance_lo_s), 1),
+	                      report_num(b3, sizeof b3, minutes(di->endurance_hi_s), 1))
+	        : report_num(b1, sizeof b1, minutes(f->hover_endurance_s), 1),
+	        report_num(b4, sizeof b4, minutes(c->hover_endurance_s), 1));
 	key_row(rp, &t, "Thrust-to-weight ratio", report_num(b1, sizeof b1, rec->thrust_to_weight, 2),
 	        report_num(b2, sizeof b2, c->thrust_to_weight, 2));
 	key_row(rp, &t, "Battery peak temperature (°C)", report_num(b1, sizeof b1, rec->max_battery_temp_c, 1),
@@ -328,6 +382,7 @@ report_sec_cover(struct rep *rp, int first)
 	          report_sfmt(&sb, "Multirotor design dossier: %s%s%s", report_or_absent(mname),
 	                      m->report.revision[0] != '\0' ? ", revision " : "", m->report.revision));
 	cover_status(rp);
+	cover_relaxed(rp);
 	cover_key_figures(rp);
 
 	report_subheading(rp, "Document", REP_KEEP_PT);
@@ -338,8 +393,10 @@ report_sec_cover(struct rep *rp, int first)
 		"Revision", m->report.revision,
 		"Date", report_date_text(rp),
 		"Prepared by", m->report.author,
-		"Mission", report_sfmt(&sb2, "%s (%s role, %d rotors, %s" NBSP "%s payload); the file %s is "
-		                       "attached to this PDF", report_or_absent(mname), report_role_name(r),
+		"Mission", report_sfmt(&sb2, "%s (%s%s, %d rotors, %s" NBSP "%s payload); the file %s is "
+		                       "attached to this PDF", report_or_absent(mname),
+		                       m->payload_role.type == ROLE_NONE ? "no role" : report_role_name(r),
+		                       m->payload_role.type == ROLE_NONE ? "" : " role",
 		                       m->num_rotors, report_mass(rp, b2, sizeof b2, m->payload_kg), rp->mass_unit,
 		                       report_or_absent(rp->in->mission_file_name)),
 		"Engine", report_sfmt(&sb, "aeroeval %s", report_or_absent(rp->in->engine_version)),
@@ -505,10 +562,11 @@ assumptions(struct rep *rp)
 	const struct res_accuracy *a = &r->accuracy;
 	struct strbuf sb = STRBUF_INIT;
 	char b1[48], b2[48], b3[48], b4[48], b5[48];
-	doc_paragraph(rp->d, "The continuous design comes from the coupled mass, battery, aerodynamic and "
-	              "structural model of the aeroeval paper: ISA atmosphere at the mission altitude, steady "
-	              "flight phases, the pack discharged in a time simulation with its heating. The design of "
-	              "record is then closed on the catalogue parts' masses and flown on their published "
+	doc_paragraph(rp->d, "The continuous design comes from a coupled model of mass, battery, rotor "
+	              "aerodynamics and structure (its method is cited in the appendix): ISA atmosphere at "
+	              "the mission altitude, steady flight phases, the pack discharged in a time simulation "
+	              "with its heating. The design of record is then sized again on the catalogue parts' "
+	              "masses and flown on their published "
 	              "motor constants and propeller coefficients, or on estimates where the catalogue has "
 	              "none (the propulsion section says which). Masses of the parts the model sizes (arms, "
 	              "frame, harness, body) are estimates. Prices are store snapshots, not quotations.");
@@ -571,10 +629,10 @@ report_sec_summary(struct rep *rp, const char *title)
 	report_heading(rp, title);
 	if (rp->buildable)
 		doc_paragraph(rp->d, report_sfmt(&sb, "The design of record is the aircraft the bill of materials "
-		              "builds: closed at %s" NBSP "kg on the real parts' masses and flown on their own "
+		              "builds: %s" NBSP "kg at takeoff, sized on the real parts' masses and flown on their own "
 		              "constants. Beside it stand what the physics asks for, the continuous optimum "
-		              "(%s" NBSP "kg), and the paper's dead-weight baseline (%s" NBSP "kg, no role). It is "
-		              "%s.", report_num(b1, sizeof b1, report_mtow(rp), 3),
+		              "(%s" NBSP "kg), and the baseline (%s" NBSP "kg): the same mission without the "
+		              "role's equipment, its payload carried as dead weight. It is %s.", report_num(b1, sizeof b1, report_mtow(rp), 3),
 		              report_num(b2, sizeof b2, c->mass.total_kg, 3),
 		              report_num(b3, sizeof b3, b->mass.total_kg, 3),
 		              rp->rec_ok ? "feasible: every check passes"
@@ -582,8 +640,8 @@ report_sec_summary(struct rep *rp, const char *title)
 	else
 		doc_paragraph(rp->d, report_sfmt(&sb, "No catalogue parts close this design: the numbers are those "
 		              "of the continuous design (%s" NBSP "kg), what the physics asks for, which is NOT "
-		              "buildable as specified. The paper's dead-weight baseline (%s" NBSP "kg) is shown "
-		              "for reference.", report_num(b1, sizeof b1, c->mass.total_kg, 3),
+		              "buildable as specified. The baseline (%s" NBSP "kg: the same mission without the "
+		              "role's equipment, its payload carried as dead weight) is shown for reference.", report_num(b1, sizeof b1, c->mass.total_kg, 3),
 		              report_num(b2, sizeof b2, b->mass.total_kg, 3)));
 
 	struct doc_column cols[4] = {
@@ -603,15 +661,28 @@ report_sec_summary(struct rep *rp, const char *title)
 	        b->thrust_to_weight, 2);
 	cmp_row(rp, &t, "Hover throttle (%)", 100.0 * rec->hover_throttle, 100.0 * c->hover_throttle,
 	        100.0 * b->hover_throttle, 1);
-	cmp_row(rp, &t, "Mission flight time (min)", minutes(rec->flight_time_s), minutes(c->flight_time_s),
+	const struct res_figures *f = &rp->fig;
+	cmp_row(rp, &t, "Mission flight time (min)", minutes(f->flight_time_s), minutes(c->flight_time_s),
 	        minutes(b->flight_time_s), 1);
 	cmp_row(rp, &t, "Hover endurance to reserve (min)", minutes(hover_endurance_s(rp, rec)),
-	        minutes(c->hover_endurance_s), minutes(b->hover_endurance_s), 1);
+	        minutes(hover_endurance_s(rp, c)), minutes(hover_endurance_s(rp, b)), 1);
 	if (b->marketing_endurance_s > 0 || c->marketing_endurance_s > 0)
 		cmp_row(rp, &t, "Best-case (marketing) endurance (min)", NAN,
 		        minutes(c->marketing_endurance_s), minutes(b->marketing_endurance_s), 1);
-	cmp_row(rp, &t, "Hover power (W)", rec->phase[PHASE_HOVER].power_w, c->phase[PHASE_HOVER].power_w,
-	        b->phase[PHASE_HOVER].power_w, 0);
+	/* Hover power at the takeoff mass for all three; where payload leaves
+	 * on the way, the mission's hover phase (after it) too.  The baseline
+	 * carries its payload as dead weight: nothing leaves. */
+	cmp_row(rp, &t, "Hover power at takeoff mass (W)", f->hover_power_w, settled(c, c->hover_power_w),
+	        settled(b, b->hover_power_w), 0);
+	if (f->sheds)
+		cmp_row(rp, &t, "Hover power after shedding (W)", f->hover_power_shed_w,
+		        settled(c, c->phase[PHASE_HOVER].power_w), NAN, 0);
+	cmp_row(rp, &t, "Hover battery current at takeoff mass (A)", f->hover_current_a,
+	        f->sheds ? NAN : settled(c, c->phase[PHASE_HOVER].current_a),
+	        settled(b, b->phase[PHASE_HOVER].current_a), 1);
+	cmp_row(rp, &t, "Auxiliary power (W)", f->aux_power_w, c->aux_power_w, b->aux_power_w, 0);
+	cmp_row(rp, &t, "State of charge at landing (%)", 100.0 * f->landing_soc,
+	        settled(c, 100.0 * c->end_soc), settled(b, 100.0 * b->end_soc), 1);
 	cmp_row(rp, &t, "Motor KV (rpm/V)", rec->opt.motor_kv, c->opt.motor_kv, b->opt.motor_kv, 0);
 	cmp_row(rp, &t, "Propeller diameter (in)", rec->opt.prop_diameter_in, c->opt.prop_diameter_in,
 	        b->opt.prop_diameter_in, 1);
@@ -640,8 +711,19 @@ report_sec_summary(struct rep *rp, const char *title)
 
 	/* Heading, sentence and the table of up to 12 rows: about 240 pt. */
 	report_subheading(rp, "Role overhead (continuous designs)", 240.0);
-	doc_paragraph(rp->d, report_sfmt(&sb, "As in the paper's dual run: what the %s role adds to the "
-	              "continuous optimum over the dead-weight baseline, item by item.", report_role_name(r)));
+	if (r->mission.payload_role.type == ROLE_NONE)
+		doc_paragraph(rp->d, r->ceiling.shown
+		              ? "The mission has no role, so there is no role equipment to add: the design "
+		                "shown differs from the baseline only in the baseline's sizing rules (a fixed "
+		                "60 % hover throttle, its own forward flight) and in flying the shorter flight "
+		                "the cover states."
+		              : "The mission has no role, so there is no role equipment to add: the "
+		                "continuous optimum differs from the baseline only in the baseline's sizing "
+		                "rules (a fixed 60 % hover throttle, its own forward flight).");
+	else
+		doc_paragraph(rp->d, report_sfmt(&sb, "What the %s role adds to the continuous optimum over "
+		              "the baseline (the same mission without the role's equipment), item by item.",
+		              report_role_name(r)));
 	const struct doc_column ocols[] = {
 		{ "Mass item", 2.6, DOC_ALIGN_LEFT }, { REP_NAME_BASELINE, 1.1, DOC_ALIGN_RIGHT },
 		{ report_continuous_name(rp), 1.3, DOC_ALIGN_RIGHT }, { "Overhead", 1.0, DOC_ALIGN_RIGHT },

@@ -58,7 +58,7 @@ phase_table(struct rep *rp, const struct res_run *run)
 		{ "Phase", 1.15, DOC_ALIGN_LEFT }, { "Time (s)", 0.85, DOC_ALIGN_RIGHT },
 		{ "v (m/s)", 0.75, DOC_ALIGN_RIGHT }, { "T/rotor (N)", 0.95, DOC_ALIGN_RIGHT },
 		{ "P shaft (W)", 0.95, DOC_ALIGN_RIGHT }, { "P el. (W)", 0.9, DOC_ALIGN_RIGHT },
-		{ "I (A)", 0.75, DOC_ALIGN_RIGHT }, { "E (Wh)", 0.8, DOC_ALIGN_RIGHT },
+		{ "Mean I (A)", 0.8, DOC_ALIGN_RIGHT }, { "E (Wh)", 0.8, DOC_ALIGN_RIGHT },
 		{ "rpm", 0.8, DOC_ALIGN_RIGHT }, { "Thr. (%)", 0.8, DOC_ALIGN_RIGHT },
 		{ "Pitch (°)", 0.8, DOC_ALIGN_RIGHT }, { "Tip M", 0.7, DOC_ALIGN_RIGHT },
 	};
@@ -257,22 +257,24 @@ report_sec_mission(struct rep *rp, const char *title)
 	char b1[48], b2[48];
 	report_heading(rp, title);
 	duty_paragraph(rp);
-	int shed = r->mission.payload_role.mass_shedding &&
-	           (r->mission.payload_role.type == ROLE_DELIVERY ||
-	            r->mission.payload_role.type == ROLE_AGRICULTURE);
+	int shed = rp->fig.sheds;
 	bool profile = rec->duty.kind != DUTY_PHASES;
 	doc_paragraph(rp->d, report_sfmt(&sb, "%s%s. "
 	              "Electrical power is at the battery terminals and includes %s" NBSP "W of auxiliary "
-	              "load; energy is what each phase draws from the pack of the %s (%s" NBSP "Wh nominal, "
-	              "%dS %s).",
+	              "load (avionics and role equipment); energy is what each phase draws from the pack of "
+	              "the %s (%s" NBSP "Wh nominal, %dS %s). Power and current are each phase's mean in "
+	              "the discharge simulation: the pack's voltage falls as it empties, so the same power "
+	              "draws more current late in the flight than the operating points quote at the pack's "
+	              "nominal voltage.",
 	              profile ? "The tables total the segments by the phase whose time they fly"
 	                      : "The mission is flown as climb, forward flight and hover",
 	              shed ? "; payload leaves the aircraft on the way (drop or spray), so the later "
-	                     "phases fly lighter than the takeoff mass" : profile ? ""
-	                     : " at the takeoff mass",
-	              report_num(b1, sizeof b1, rec->aux_power_w, 0),
+	                     "phases fly lighter than the takeoff mass (the hover row is the hover power "
+	                     "after shedding)" : profile ? "" : " at the takeoff mass",
+	              report_num(b1, sizeof b1, rp->fig.aux_power_w, 0),
 	              rp->buildable ? "design of record" : "continuous design",
-	              report_num(b2, sizeof b2, rec->energy_wh, 1), rec->cell_count, rec->chemistry));
+	              report_num(b2, sizeof b2, rec->energy_wh, 1), rec->cell_count,
+	              report_chemistry(rec->chemistry)));
 	report_subheading(rp, report_record_name(rp), REP_PHASE_PT);
 	phase_table(rp, rec);
 	if (rec->n_sweep > 0 || r->custom.n_sweep > 0 || r->baseline.n_sweep > 0)
@@ -281,7 +283,7 @@ report_sec_mission(struct rep *rp, const char *title)
 		report_subheading(rp, report_continuous_heading(rp, &sb, "reference"), REP_PHASE_PT);
 		phase_table(rp, &r->custom);
 	}
-	report_subheading(rp, "Baseline (dead-weight reference)", REP_PHASE_PT);
+	report_subheading(rp, REP_BASELINE_HEADING, REP_PHASE_PT);
 	phase_table(rp, &r->baseline);
 	strbuf_free(&sb);
 }
@@ -610,7 +612,10 @@ history_series(struct plot_panel *pp, const struct res_run *run, const char *lab
 	free(it);
 }
 
-/* One design's loop statistics; a run the gate stopped shows "not run". */
+/* One design's sizing in plain terms: passes, settled, mass growth, what
+ * a kilogram of payload costs, the share of the mission flown, how the
+ * flight ended; a run the gate stopped shows "not run".  The solver's own
+ * figures for it stand in the appendix (report_solver_details()). */
 static void
 conv_row(struct doc_table *t, const char *name, const struct res_run *run)
 {
@@ -618,20 +623,24 @@ conv_row(struct doc_table *t, const char *name, const struct res_run *run)
 	if (!run->ran) {
 		doc_table_cell(t, DOC_CELL_MUTED, "—");
 		doc_table_cell(t, DOC_CELL_FAIL, "not run");
-		doc_table_cell(t, DOC_CELL_MUTED, "—");
-		doc_table_cell(t, DOC_CELL_MUTED, "—");
+		for (int k = 0; k < 3; k++)
+			doc_table_cell(t, DOC_CELL_MUTED, "—");
 	} else {
 		doc_table_cell(t, DOC_CELL_NORMAL, "%d", run->iterations);
 		doc_table_cell(t, run->converged ? DOC_CELL_PASS : DOC_CELL_FAIL, "%s", run->converged ? "yes" : "no");
-		report_cell_num(t, run->lipschitz < 1.0 ? DOC_CELL_NORMAL : DOC_CELL_FAIL, run->lipschitz, 3);
-		report_cell_num(t, run->time_scale < 1.0 ? DOC_CELL_WARN : DOC_CELL_NORMAL, run->time_scale, 2);
+		/* A run that did not settle has no growth at a design point. */
+		bool g = run->converged && run->lipschitz > 0.0;
+		report_cell_num(t, !g || run->lipschitz < 1.0 ? DOC_CELL_NORMAL : DOC_CELL_FAIL,
+		                g ? run->lipschitz : NAN, 2);
+		report_cell_num(t, DOC_CELL_NORMAL, g && run->lipschitz < 1.0 ? 1.0 / (1.0 - run->lipschitz) : NAN, 1);
+		report_cell_num(t, run->time_scale < 1.0 ? DOC_CELL_WARN : DOC_CELL_NORMAL, 100.0 * run->time_scale, 0);
 	}
 	doc_table_cell(t, DOC_CELL_NORMAL, "%s", run->termination[0] != '\0' ? run->termination : "—");
 }
 
-/* Section: mass history of the continuous runs, tolerance, Lipschitz
- * estimates, iterations, goal relaxation and termination; how the record
- * closed. */
+/* Section: how the takeoff mass settled, in an engineer's terms (sizing
+ * passes, mass growth, the share of the mission flown); the solver's own
+ * figures are in the appendix. */
 void
 report_sec_convergence(struct rep *rp, const char *title)
 {
@@ -639,39 +648,42 @@ report_sec_convergence(struct rep *rp, const char *title)
 	const struct res_run *rec = rp->rec;
 	struct strbuf sb = STRBUF_INIT;
 	report_heading(rp, title);
-	doc_paragraph(rp->d, report_sfmt(&sb, "The continuous takeoff mass is found by fixed-point iteration: "
-	              "each pass sizes battery, propulsion and structure for the current mass and sums them "
-	              "into the next. The loop stops when the mass changes by less than %.0f g between "
-	              "iterations. The Lipschitz estimate dF/dM at the fixed point must be below 1 for the "
-	              "loop to contract; the closer to 1, the more every added gram costs.",
+	doc_paragraph(rp->d, report_sfmt(&sb, "The takeoff mass is found by sizing the aircraft again and "
+	              "again: each pass sizes battery, propulsion and structure for the mass of the pass "
+	              "before, until the mass changes by less than %.0f" NBSP "g. Mass growth is the "
+	              "kilograms of battery, structure and motors that one more kilogram aboard calls for: "
+	              "below 1 the sizing settles, and a kilogram of payload then costs 1 / (1 − growth) "
+	              "kilograms of takeoff mass; at 1 or above the mass runs away. The appendix gives the "
+	              "solver's own figures.",
 	              1000.0 * r->custom.tolerance_kg));
 	struct plot *p = plot_alloc(0, 240, 1, 1);
 	struct plot_panel *pp = plot_panel(p, 0, 0);
-	plot_axis_title(pp, PLOT_X, "Iteration");
+	plot_axis_title(pp, PLOT_X, "Sizing pass");
 	plot_axis_title(pp, PLOT_Y, "Takeoff mass (kg)");
-	/* Markers show the individual iterations while they stay apart. */
+	/* Markers show the individual passes while they stay apart. */
 	int n_max = dmin_i(RES_MAX_HISTORY, r->baseline.n_history > r->custom.n_history
 	                                    ? r->baseline.n_history : r->custom.n_history);
 	int mk = n_max <= 80;
 	history_series(pp, &r->baseline, REP_NAME_BASELINE, REP_COL_BASELINE, mk ? PLOT_MARKER_CIRCLE : PLOT_MARKER_NONE);
 	history_series(pp, &r->custom, report_continuous_name(rp), REP_COL_CUSTOM, mk ? PLOT_MARKER_SQUARE : PLOT_MARKER_NONE);
 	if (rp->buildable && rec->mass.total_kg > 0) {
-		plot_hline(pp, rec->mass.total_kg, "design of record (closed on real parts)", REP_COL_CLOSED,
+		plot_hline(pp, rec->mass.total_kg, "design of record (on its real parts)", REP_COL_CLOSED,
 		           PLOT_DASH_DASHED);
 	}
 	doc_figure(rp->d, p, rp->buildable
-	           ? "Takeoff mass per iteration of the mass loop, baseline and continuous optimum; the "
-	             "dashed line is the takeoff mass the design of record closes at on its real parts."
-	           : "Takeoff mass per iteration of the mass loop, baseline and continuous design.");
+	           ? "Takeoff mass per sizing pass, baseline and continuous optimum; the dashed line is "
+	             "the takeoff mass of the design of record on its real parts."
+	           : "Takeoff mass per sizing pass, baseline and continuous design.");
 	plot_free(p);
 
 	static const struct doc_column cols[] = {
-		{ "Design", 1.5, DOC_ALIGN_LEFT }, { "Iterations", 0.9, DOC_ALIGN_RIGHT },
-		{ "Converged", 1.0, DOC_ALIGN_CENTER }, { "Lipschitz", 0.9, DOC_ALIGN_RIGHT },
-		{ "Goal γ", 0.7, DOC_ALIGN_RIGHT }, { "Termination", 2.6, DOC_ALIGN_LEFT },
+		{ "Design", 1.5, DOC_ALIGN_LEFT }, { "Sizing passes", 0.9, DOC_ALIGN_RIGHT },
+		{ "Settled", 0.8, DOC_ALIGN_CENTER }, { "Mass growth (kg/kg)", 1.0, DOC_ALIGN_RIGHT },
+		{ "Payload cost (kg/kg)", 1.0, DOC_ALIGN_RIGHT }, { "Mission flown (%)", 0.9, DOC_ALIGN_RIGHT },
+		{ "End of flight", 2.2, DOC_ALIGN_LEFT },
 	};
 	struct doc_table t;
-	doc_table_init(&t, cols, 6);
+	doc_table_init(&t, cols, 7);
 	conv_row(&t, REP_NAME_BASELINE, &r->baseline);
 	conv_row(&t, report_continuous_name(rp), &r->custom);
 	if (rp->buildable) {
@@ -679,18 +691,19 @@ report_sec_convergence(struct rep *rp, const char *title)
 		doc_table_cell(&t, DOC_CELL_MUTED, "—");
 		doc_table_cell(&t, rec->converged ? DOC_CELL_PASS : DOC_CELL_FAIL, "%s", rec->converged ? "yes" : "no");
 		doc_table_cell(&t, DOC_CELL_MUTED, "—");
-		report_cell_num(&t, rec->time_scale < 1.0 ? DOC_CELL_WARN : DOC_CELL_NORMAL, rec->time_scale, 2);
+		doc_table_cell(&t, DOC_CELL_MUTED, "—");
+		report_cell_num(&t, rec->time_scale < 1.0 ? DOC_CELL_WARN : DOC_CELL_NORMAL, 100.0 * rec->time_scale, 0);
 		doc_table_cell(&t, DOC_CELL_NORMAL, "%s", rec->termination[0] != '\0' ? rec->termination : "—");
 	}
 	doc_table(rp->d, &t);
 	doc_table_clear(&t);
-	doc_paragraph(rp->d, "Goal γ is the factor the mission times were scaled by to close the design "
-	              "(1 = as requested; below 1 only when the mission allows automatic reduction).");
+	doc_paragraph(rp->d, "Mission flown: the share of each phase's requested time the design flies "
+	              "(100 % unless the mission allows a shorter flight or asks more than the geometry "
+	              "can reach; the cover says so when it is below 100 %).");
 	if (rp->buildable)
-		doc_paragraph(rp->d, "The design of record is not a pass of this loop: its takeoff mass is closed "
-		              "again on the real parts' masses (a fixed point of its own), so no iteration count "
-		              "or Lipschitz estimate is recorded for it.");
-	/* A sudden fall in the history is the loop restarting from its seed
+		doc_paragraph(rp->d, "The design of record is sized again on the real parts' masses, so it has "
+		              "no pass count or mass growth of its own here.");
+	/* A sudden fall in the history is the sizing restarting from its seed
 	 * after a discrete change (the cell count); say so, or it looks odd. */
 	int restarts = 0;
 	const struct res_run *runs[2] = { &r->baseline, &r->custom };
@@ -699,9 +712,9 @@ report_sec_convergence(struct rep *rp, const char *title)
 			if (runs[k]->history_kg[i] < 0.9 * runs[k]->history_kg[i - 1])
 				restarts++;
 	if (restarts > 0)
-		doc_paragraph(rp->d, "The sudden drops in the history are restarts: when the solver changes a "
-		              "discrete choice such as the series cell count, the loop starts again from its "
-		              "seed mass with the new choice.");
+		doc_paragraph(rp->d, "The sudden drops in the history are restarts: when the sizing changes a "
+		              "discrete choice such as the series cell count, it starts again from its seed "
+		              "mass with the new choice.");
 	strbuf_free(&sb);
 }
 

@@ -50,6 +50,9 @@
 #define REP_NAME_RECORD     "Design of record"
 #define REP_NAME_CONTINUOUS "Continuous optimum"
 #define REP_NAME_BASELINE   "Baseline"
+/* The baseline as its sub-headings name it: the same mission sized
+ * without the role's equipment, its payload carried as dead weight. */
+#define REP_BASELINE_HEADING "Baseline (the same mission without the role's equipment)"
 /* The one sentence that explains a J-score, wherever one is shown. */
 #define REP_J_NOTE "J is the estimated takeoff-mass penalty of a parts combination over " \
 	"the continuous design, in percent (negative: lighter than the continuous design); " \
@@ -64,6 +67,8 @@ struct rep {
 	const struct res_run *rec;        /* the design of record, res_record() */
 	bool buildable;                   /* rec is the aircraft the BOM builds */
 	bool rec_ok;                      /* buildable and every check of rec passes */
+	struct res_figures fig;           /* the record's figures, one number each
+	                                     (res_figures()): every page prints these */
 	int n_section;                    /* numbered sections written so far */
 	double mass_scale;                /* kg -> displayed mass unit */
 	const char *mass_unit;            /* "g" for small aircraft, else "kg" */
@@ -141,6 +146,10 @@ void report_numbered(struct rep *rp, const char *const *items, int n, int first_
 void report_violations(struct rep *rp);
 /* Why no catalogue parts were selected, in one plain sentence. */
 const char *report_no_parts_reason(const struct rep *rp);
+/* A chemistry profile's name as a reader says it (res_chemistry_text()),
+ * from a ring of four per-thread buffers: valid for the next three calls,
+ * so two may stand in one sentence. */
+const char *report_chemistry(const char *name);
 /* The mission's role name ("imaging"). */
 const char *report_role_name(const struct solve_result *r);
 

@@ -171,7 +171,7 @@ optimum_table(struct rep *rp)
 		snprintf(b3, sizeof b3, "%dP", c->pack_count);
 	else
 		b3[0] = '\0';
-	v[8] = xstrdup(report_sfmt(&sb, "%dS%s %s, %s" NBSP "mAh, %s" NBSP "V nominal", c->cell_count, b3, c->chemistry,
+	v[8] = xstrdup(report_sfmt(&sb, "%dS%s %s, %s" NBSP "mAh, %s" NBSP "V nominal", c->cell_count, b3, report_chemistry(c->chemistry),
 	                           report_num(b1, sizeof b1, c->capacity_mah, 0),
 	                           report_num(b2, sizeof b2, c->nominal_voltage_v, 1)));
 	const char *kv[] = {
@@ -210,7 +210,7 @@ record_parts(struct rep *rp)
 	v[2] = xstrdup(report_sfmt(&sb, "%d × %s %s (%d in series × %d in parallel): %dS %s, %s" NBSP "mAh, "
 	                           "%s" NBSP "kg", r->battery.qty, r->battery.manufacturer, r->battery.part_number,
 	                           r->battery_series_packs, r->battery_parallel_packs, rec->cell_count,
-	                           rec->chemistry, report_num(b1, sizeof b1, rec->capacity_mah, 0),
+	                           report_chemistry(rec->chemistry), report_num(b1, sizeof b1, rec->capacity_mah, 0),
 	                           report_num(b4, sizeof b4, rec->mass.battery_kg, 2)));
 	v[3] = xstrdup(report_sfmt(&sb, "%d × %s %s", r->esc.qty, r->esc.manufacturer, r->esc.part_number));
 	const char *kv[] = { "Motor", v[0], "Propeller", v[1], "Battery", v[2], "ESC", v[3] };
@@ -407,6 +407,49 @@ gate_table(struct rep *rp)
 
 /* Section: the parts of record, the optimum they aim at, the crosshair,
  * the operating points and performance on the real parts, the gates. */
+/* The installation loss the operating points are flown with: the
+ * propeller's own figure of merit divided by the calibrated installation
+ * factor κ and the arm interference k_int (paper §IV-F), as a share of
+ * power; said where it applies, with its values. */
+static void
+install_loss(struct rep *rp)
+{
+	const struct res_run *rec = rp->rec;
+	const struct res_perf *pf = &rec->perf;
+	struct strbuf sb = STRBUF_INIT;
+	char b1[48], b2[48], b3[48], b4[48], b5[48];
+	double extra = report_div(pf->prop_fom, rec->fom_installed) - 1.0;
+	if (!(pf->prop_fom > 0.0) || !(rec->fom_installed > 0.0) || fabs(extra) < 0.005) {
+		doc_paragraph(rp->d, "No installation loss is applied: the rotor flies on the propeller's "
+		              "own figure of merit.");
+		strbuf_free(&sb);
+		return;
+	}
+	if (rec->kappa > 1.0)
+		report_sfmt(&sb, "Installation loss: the propeller's own figure of merit, %s, falls to %s "
+		            "installed: divided by the calibrated installation factor κ" NBSP "=" NBSP "%s "
+		            "(rotor–rotor and rotor–body interaction, fitted on real aircraft) and by the "
+		            "interference of the arm under the rotor, k_int" NBSP "=" NBSP "%s. Hover, climb "
+		            "and cruise therefore take %s" NBSP "%% more shaft power than the propeller's "
+		            "coefficients alone give.",
+		            report_num(b1, sizeof b1, pf->prop_fom, 3),
+		            report_num(b2, sizeof b2, rec->fom_installed, 3),
+		            report_num(b3, sizeof b3, rec->kappa, 3),
+		            report_num(b4, sizeof b4, rec->interference, 3),
+		            report_num(b5, sizeof b5, 100.0 * extra, 0));
+	else
+		report_sfmt(&sb, "Installation loss: the propeller's own figure of merit, %s, falls to %s "
+		            "installed (the mission's figure of merit or its isolated mode, and the "
+		            "interference of the arm under the rotor, k_int" NBSP "=" NBSP "%s): %s" NBSP
+		            "%% more shaft power than the propeller's coefficients alone give.",
+		            report_num(b1, sizeof b1, pf->prop_fom, 3),
+		            report_num(b2, sizeof b2, rec->fom_installed, 3),
+		            report_num(b4, sizeof b4, rec->interference, 3),
+		            report_num(b5, sizeof b5, 100.0 * extra, 0));
+	doc_paragraph(rp->d, strbuf_str(&sb));
+	strbuf_free(&sb);
+}
+
 void
 report_sec_propulsion(struct rep *rp, const char *title)
 {
@@ -434,10 +477,12 @@ report_sec_propulsion(struct rep *rp, const char *title)
 	int ops = rp->buildable && rec->perf.valid;
 	report_subheading(rp, "Operating points on the real parts", ops ? 330.0 : REP_KEEP_PT);
 	if (ops) {
-		doc_paragraph(rp->d, "Hover, climb and cruise at the mission's takeoff mass, full throttle on the "
-		              "pack's terminal voltage under load: the motor's own KV, resistance and no-load "
-		              "current on the propeller's own coefficients. Thrust per electrical watt is the "
+		doc_paragraph(rp->d, "Hover, climb and cruise at the mission's takeoff mass, the pack at its "
+		              "nominal voltage under load; full throttle on the pack's terminal voltage under "
+		              "load: the motor's own KV, resistance and no-load current on the propeller's own "
+		              "coefficients, with the installation loss below. Thrust per electrical watt is the "
 		              "motor's thrust over its electrical input.");
+		install_loss(rp);
 		op_table(rp);
 		report_subheading(rp, "Beyond the mission", REP_KEEP_PT);
 		performance(rp);

@@ -46,8 +46,9 @@ report_sec_mass(struct rep *rp, const char *title)
 			v[k * n_it + i] = report_mass_get(&runs[k]->mass, i) * rp->mass_scale;
 
 	doc_paragraph(rp->d, report_sfmt(&sb, "Takeoff mass by item (Figure %d): the design of record beside "
-	              "the continuous optimum (what the physics asks for) and the paper's dead-weight "
-	              "baseline. Percentages are of each design's own takeoff mass.",
+	              "the continuous optimum (what the physics asks for) and the baseline (the same mission "
+	              "without the role's equipment, its payload carried as dead weight). Percentages are "
+	              "of each design's own takeoff mass.",
 	              doc_next_figure_number(rp->d)));
 	struct plot *p = plot_alloc(0, 300, 1, 1);
 	struct plot_panel *pp = plot_panel(p, 0, 0);
@@ -143,7 +144,7 @@ sourcing_table(struct rep *rp)
 		  report_num(b2, sizeof b2, c->opt.prop_pitch_in, 1), m->structural_overrides.num_blades,
 		  material)) },
 		{ "Battery pack", packs, c->mass.battery_kg, xstrdup(report_sfmt(&sb, "%dS %s, %s" NBSP "mAh "
-		  "(%s" NBSP "Wh) in total, %s" NBSP "C continuous at full throttle", c->cell_count, c->chemistry,
+		  "(%s" NBSP "Wh) in total, %s" NBSP "C continuous at full throttle", c->cell_count, report_chemistry(c->chemistry),
 		  report_num(b1, sizeof b1, c->capacity_mah, 0), report_num(b2, sizeof b2, c->energy_wh, 1),
 		  report_num(b3, sizeof b3, c->peak_c_rate, 1))) },
 		{ "ESC", n_rot, c->mass.esc_kg, xstrdup(report_sfmt(&sb, "≥" NBSP "%s" NBSP "A per channel, %dS",
@@ -319,10 +320,16 @@ checks_table(struct rep *rp, const struct res_run *run, int failing_first)
 			enum doc_cell ms = !c->pass ? DOC_CELL_FAIL
 			                 : c->sized ? DOC_CELL_MUTED
 			                 : c->margin < REP_TIGHT_MARGIN ? DOC_CELL_WARN : DOC_CELL_NORMAL;
-			if (c->sized && c->pass)
-				doc_table_cell(&t, ms, "sized to it");
+			/* "Sized to it" only where the design sits at the limit (a
+			 * reserve sized for energy is not at it when power sized the
+			 * pack); a margin against a zero limit is no fraction of it. */
+			if (c->sized && c->pass && c->margin < REP_TIGHT_MARGIN)
+				doc_table_cell(&t, DOC_CELL_MUTED, "sized to it");
+			else if (c->limit == 0.0)
+				doc_table_cell(&t, ms == DOC_CELL_MUTED ? DOC_CELL_NORMAL : ms, "—");
 			else
-				doc_table_cell(&t, ms, "%s", report_margin(b1, sizeof b1, c->margin));
+				doc_table_cell(&t, ms == DOC_CELL_MUTED ? DOC_CELL_NORMAL : ms, "%s",
+				               report_margin(b1, sizeof b1, c->margin));
 			doc_table_cell(&t, c->pass ? DOC_CELL_PASS : DOC_CELL_FAIL, "%s", c->pass ? "PASS" : "FAIL");
 		}
 	}
@@ -368,7 +375,7 @@ report_sec_checks(struct rep *rp, const char *title)
 		                  REP_KEEP_PT);
 		checks_table(rp, &r->custom, 1);
 	}
-	report_subheading(rp, "Baseline (reference: the paper's dead-weight run)", REP_KEEP_PT);
+	report_subheading(rp, REP_BASELINE_HEADING, REP_KEEP_PT);
 	checks_table(rp, &r->baseline, 0);
 	strbuf_free(&sb);
 }
@@ -451,7 +458,7 @@ part_data(struct strbuf *sb, const struct catalog *cat, const struct res_part *p
 		const struct catalog_battery *bt = catalog_find_battery(cat, part->id);
 		if (bt != NULL)
 			strbuf_printf(sb, "\n%dS %s %s" NBSP "mAh, %s" NBSP "g, %s" NBSP "C", bt->cells_series,
-			              bt->chemistry, report_num(b1, sizeof b1, 1000.0 * bt->capacity_ah, 0),
+			              report_chemistry(bt->chemistry), report_num(b1, sizeof b1, 1000.0 * bt->capacity_ah, 0),
 			              report_num(b2, sizeof b2, 1000.0 * bt->mass_kg, 0),
 			              report_num(b3, sizeof b3, bt->continuous_c, 0));
 	} else {
@@ -507,6 +514,57 @@ catalogue_used(struct rep *rp)
 	strbuf_free(&src);
 }
 
+/* The solver's own vocabulary, kept here: the method and its figures for
+ * whoever checks the computation (the pages before say the same in an
+ * engineer's terms: sizing passes, mass growth, mission flown). */
+static void
+solver_row(struct doc_table *t, const char *name, const struct res_run *run)
+{
+	doc_table_cell(t, DOC_CELL_NORMAL, "%s", name);
+	if (!run->ran) {
+		for (int k = 0; k < 4; k++)
+			doc_table_cell(t, DOC_CELL_MUTED, "—");
+	} else {
+		doc_table_cell(t, DOC_CELL_NORMAL, "%d", run->iterations);
+		doc_table_cell(t, DOC_CELL_NORMAL, "%s", run->converged ? "yes" : "no");
+		report_cell_num(t, DOC_CELL_NORMAL, run->converged ? run->lipschitz : NAN, 3);
+		report_cell_num(t, DOC_CELL_NORMAL, run->time_scale, 2);
+	}
+	doc_table_cell(t, DOC_CELL_NORMAL, "%s", run->termination[0] != '\0' ? run->termination : "—");
+}
+
+static void
+solver_details(struct rep *rp)
+{
+	const struct solve_result *r = rp->r;
+	report_subheading(rp, "Appendix: solver details", REP_KEEP_PT);
+	doc_paragraph(rp->d, "The sizing implements the physics-based model of the aeroeval paper "
+	              "(Multi-Domain Physics-Based MDO of Multirotor UAVs): ISA atmosphere, a three-phase "
+	              "mission, Glauert rotor aerodynamics with a Reynolds-scaled figure of merit, CFRP arm "
+	              "sizing, a Tremblay–Dessaint battery with transient heating, and a Banach fixed-point "
+	              "iteration on the takeoff mass with under-relaxation, a ratchet and a divergence guard. "
+	              "The baseline is the paper's dead-weight run (no role, hover throttle 60 %), beside "
+	              "the custom run of the mission's role (the paper's dual run). Goal relaxation scales "
+	              "every phase by γ when the mission allows a shorter flight. The parts search then "
+	              "closes each candidate combination of catalogue parts on its own masses (a fixed "
+	              "point of its own) and keeps the lowest J.");
+	static const struct doc_column cols[] = {
+		{ "Run", 1.6, DOC_ALIGN_LEFT }, { "Iterations", 0.9, DOC_ALIGN_RIGHT },
+		{ "Converged", 0.9, DOC_ALIGN_CENTER }, { "Lipschitz dF/dM", 1.1, DOC_ALIGN_RIGHT },
+		{ "Goal γ", 0.7, DOC_ALIGN_RIGHT }, { "Termination", 2.4, DOC_ALIGN_LEFT },
+	};
+	struct doc_table t;
+	doc_table_init(&t, cols, 6);
+	solver_row(&t, "Baseline (dead-weight run)", &r->baseline);
+	solver_row(&t, report_continuous_name(rp), &r->custom);
+	doc_table(rp->d, &t);
+	doc_table_clear(&t);
+	doc_paragraph(rp->d, "Lipschitz dF/dM: the loop's gain at its fixed point, the mass growth of "
+	              "the convergence section; below 1 the iteration is a contraction. Goal γ: the factor "
+	              "the mission times were scaled by (1 = as requested). A run that did not converge has "
+	              "no fixed point, so no estimate.");
+}
+
 /* Section: every field of the mission contract as this build used it
  * (spec_fields[] order), marking where each value came from. */
 void
@@ -531,6 +589,15 @@ report_sec_appendix(struct rep *rp, const char *title)
 		const struct spec_field_info *f = &spec_fields[i];
 		int given = s->given[f->id];
 		field_text(s, f, val, sizeof val);
+		/* The role's auxiliary power is given for its reference aircraft
+		 * and scales with the aircraft's mass: the value flown stands
+		 * beside it, the one every other page prints (res_figures()). */
+		if (f->id == SPECF_ROLE_AUX_POWER_W && fabs(rp->fig.aux_power_w - s->payload_role.aux_power_w) >= 0.5) {
+			char flown[48];
+			size_t at = strlen(val);
+			snprintf(val + at, sizeof val - at, " as set; %s" NBSP "W flown (scaled with this "
+			         "aircraft's mass)", report_num(flown, sizeof flown, rp->fig.aux_power_w, 0));
+		}
 		doc_table_cell(&t, DOC_CELL_MONO, "%s", f->path);
 		doc_table_cell(&t, given ? DOC_CELL_BOLD : DOC_CELL_NORMAL, "%s", val);
 		doc_table_cell(&t, given ? DOC_CELL_NORMAL : DOC_CELL_MUTED, "%s",
@@ -539,4 +606,5 @@ report_sec_appendix(struct rep *rp, const char *title)
 	doc_table(rp->d, &t);
 	doc_table_clear(&t);
 	catalogue_used(rp);
+	solver_details(rp);
 }

@@ -353,21 +353,22 @@ static void put_bom(struct jsonw *w, const struct solve_result *r);
  * BOM-closed runs), or NULL for a run that is not mapped to parts (the
  * baseline): its "selected" and "bom" are then null. */
 static void put_run_fields(struct jsonw *w, const struct res_run *run,
-                           const struct solve_result *parts);
+                           const struct solve_result *parts, const char *prop_key);
 
 static void
 put_run(struct jsonw *w, const char *key, const struct res_run *run,
         const struct solve_result *parts)
 {
 	jsonw_object(w, key);
-	put_run_fields(w, run, parts);
+	put_run_fields(w, run, parts, "continuous_optimum");
 	jsonw_end(w);
 }
 
-/* The fields of one run, into the object open in w. */
+/* The fields of one run, into the object open in w; prop_key names its
+ * propeller-and-motor block. */
 static void
 put_run_fields(struct jsonw *w, const struct res_run *run,
-               const struct solve_result *parts)
+               const struct solve_result *parts, const char *prop_key)
 {
 	jsonw_bool(w, "ran", run->ran);
 	if (!run->ran)
@@ -401,6 +402,7 @@ put_run_fields(struct jsonw *w, const struct res_run *run,
 	jsonw_number(w, "approved_forward_time_s", run->approved_time_s[PHASE_FORWARD]);
 	jsonw_number(w, "flight_time_s", run->flight_time_s);
 	jsonw_number(w, "hover_endurance_s", run->hover_endurance_s);
+	jsonw_number(w, "hover_power_w", run->hover_power_w);
 	jsonw_number(w, "marketing_endurance_s", run->marketing_endurance_s);
 	jsonw_number(w, "optimal_speed_ms", run->optimal_speed_ms);
 	jsonw_number(w, "v_min_power_ms", run->v_min_power_ms);
@@ -419,6 +421,7 @@ put_run_fields(struct jsonw *w, const struct res_run *run,
 	jsonw_number(w, "downwash_ms", run->downwash_ms);
 	jsonw_number(w, "fom_installed", run->fom_installed);
 	jsonw_number(w, "interference", run->interference);
+	jsonw_number(w, "installation_kappa", run->kappa);
 	jsonw_number(w, "reynolds_tip", run->reynolds_tip);
 	jsonw_number(w, "rpm_hover", run->rpm_hover);
 	jsonw_number(w, "rpm_peak", run->rpm_peak);
@@ -427,7 +430,11 @@ put_run_fields(struct jsonw *w, const struct res_run *run,
 	jsonw_number(w, "peak_power_w", run->peak_power_w);
 	jsonw_number(w, "peak_current_a", run->peak_current_a);
 	jsonw_number(w, "peak_c_rate", run->peak_c_rate);
-	put_optimum(w, "continuous_optimum", &run->opt);
+	/* The run's own propeller and motor: for the baseline and the custom
+	 * run their continuous optimum (PRODUCT.md §4), for the design of
+	 * record its propulsion (real parts; the continuous optimum it was
+	 * aimed at is the top-level "continuous_optimum"). */
+	put_optimum(w, prop_key, &run->opt);
 
 	jsonw_number(w, "arm_length_m", run->arm_length_m);
 	jsonw_number(w, "arm_outer_diameter_mm", run->arm_outer_diameter_mm);
@@ -531,6 +538,7 @@ put_perf(struct jsonw *w, const struct res_perf *pf)
 	jsonw_number(w, "prop_ct", pf->prop_ct);
 	jsonw_number(w, "prop_cp", pf->prop_cp);
 	jsonw_bool(w, "prop_coefficients_published", pf->prop_coeffs_measured);
+	jsonw_number(w, "prop_fom_isolated", pf->prop_fom);
 	jsonw_end(w);
 }
 
@@ -543,7 +551,7 @@ put_record(struct jsonw *w, const struct solve_result *r)
 	jsonw_object(w, "design_of_record");
 	jsonw_string(w, "basis", buildable ? "real_parts" : "continuous");
 	jsonw_bool(w, "buildable", buildable);
-	put_run_fields(w, o, buildable ? r : NULL);
+	put_run_fields(w, o, buildable ? r : NULL, "propulsion");
 	if (o->perf.valid)
 		put_perf(w, &o->perf);
 	/* What the bill of materials costs, as far as its prices are known. */
@@ -633,7 +641,9 @@ put_bom(struct jsonw *w, const struct solve_result *r)
 	jsonw_end(w);
 	jsonw_number(w, "total_mass_kg", r->parts_selected ? r->bom_mass_kg : 0.0);
 	jsonw_number(w, "total_price_usd", r->parts_selected ? r->bom_price_usd : 0.0);
-	jsonw_int(w, "prices_missing", bom_csv_missing_prices(r));
+	/* Lines to buy (the payload's aside) and of those the unpriced. */
+	jsonw_int(w, "lines_to_buy", r->parts_selected ? r->bom_parts_lines : 0);
+	jsonw_int(w, "unpriced_lines", bom_csv_missing_prices(r));
 	jsonw_end(w);
 }
 
@@ -735,6 +745,40 @@ put_ceiling(struct jsonw *w, const struct solve_result *r)
 	jsonw_end(w);
 }
 
+/* A number that may not apply (NAN): null then. */
+static void
+jw_num_or_null(struct jsonw *w, const char *key, double x)
+{
+	if (isnan(x))
+		jsonw_null(w, key);
+	else
+		jsonw_number(w, key, x);
+}
+
+/* The figures of the design of record the dossier's cover and summary,
+ * bom_totals.csv and index.csv print (res_figures()): one number each. */
+static void
+put_key_figures(struct jsonw *w, const struct solve_result *r)
+{
+	struct res_figures f;
+	res_figures(r, &f);
+	jsonw_object(w, "key_figures");
+	jsonw_number(w, "takeoff_mass_kg", f.takeoff_mass_kg);
+	jsonw_bool(w, "sheds_payload", f.sheds);
+	jsonw_number(w, "hover_power_at_takeoff_mass_w", f.hover_power_w);
+	jw_num_or_null(w, "hover_power_after_shedding_w", f.hover_power_shed_w);
+	jw_num_or_null(w, "hover_battery_current_at_takeoff_mass_a", f.hover_current_a);
+	jsonw_number(w, "aux_power_w", f.aux_power_w);
+	jsonw_number(w, "hover_endurance_s", f.hover_endurance_s);
+	jsonw_number(w, "flight_time_s", f.flight_time_s);
+	jsonw_number(w, "landing_soc", f.landing_soc);
+	jsonw_number(w, "bom_mass_kg", f.bom_mass_kg);
+	jsonw_number(w, "bom_price_usd", f.bom_price_usd);
+	jsonw_int(w, "bom_lines", f.bom_lines);
+	jsonw_int(w, "bom_unpriced_lines", f.unpriced_lines);
+	jsonw_end(w);
+}
+
 /* ---- top level ------------------------------------------------------------- */
 
 static void
@@ -772,14 +816,15 @@ result_json_render_checked(const struct solve_result *r,
 	JW_STR(&w, "input_sha256", r->input_sha256);
 	JW_STR(&w, "catalogue_sha256", r->catalogue_sha256);
 	jsonw_string(&w, "status", r->feasible ? "feasible" : "infeasible");
-	bool buildable;
-	const struct res_run *rec = res_record(r, &buildable);
-	jsonw_bool(&w, "buildable", buildable);
-	jsonw_number(&w, "takeoff_mass_kg", rec->mass.total_kg);
+	struct res_figures fig;
+	res_figures(r, &fig);
+	jsonw_bool(&w, "buildable", fig.buildable);
+	jsonw_number(&w, "takeoff_mass_kg", fig.takeoff_mass_kg);
 	jsonw_object(&w, "regulatory_class");
-	jsonw_string(&w, "eu_open_category", res_eu_class(rec->mass.total_kg));
-	jsonw_bool(&w, "us_part_107_small_uas", rec->mass.total_kg < RES_US_107_KG);
+	jsonw_string(&w, "eu_open_category", res_eu_class(fig.takeoff_mass_kg));
+	jsonw_bool(&w, "us_part_107_small_uas", fig.takeoff_mass_kg < RES_US_107_KG);
 	jsonw_end(&w);
+	put_key_figures(&w, r);
 	put_accuracy(&w, r);
 	put_ceiling(&w, r);
 	put_violations(&w, r);

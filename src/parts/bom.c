@@ -529,6 +529,9 @@ parts_fill(const struct parts_ctx *x, const struct parts_closed *c,
 	fill_power_path(x, c, r);
 }
 
+/* "Maker part number" of a catalogue entry, as the reader orders it. */
+#define PART_NAME(e) (e)->manufacturer, (e)->part_number
+
 void
 parts_explain(const struct parts_ctx *x, const struct parts_closed *c,
               int n_closed, int n_better_failed, struct solve_result *r)
@@ -537,40 +540,44 @@ parts_explain(const struct parts_ctx *x, const struct parts_closed *c,
 	const struct res_run *o = &r->closed;
 	const struct res_op *hov = &o->perf.op[OP_HOVER];
 	if (c->o.prop != NULL)
-		res_rationale(r, "Motor %s (%.0f KV) on %s propellers (%.1f x %.1f in) "
+		res_rationale(r, "Motor %s %s (%.0f KV) on %s %s propellers (%.1f x %.1f in) "
 		    "at %dS: J = %+.1f %% of takeoff mass over the continuous design, "
-		    "the best of %d closings on real parts; hover at %.0f %% throttle "
-		    "and %.0f %% motor efficiency.", m->id, m->kv_rpm_per_v,
-		    c->o.prop->id, c->o.prop->diameter_in, c->o.prop->pitch_in,
+		    "the best of %d combinations of catalogue parts sized and flown; "
+		    "hover at %.0f %% throttle and %.0f %% motor efficiency.",
+		    PART_NAME(m), m->kv_rpm_per_v,
+		    PART_NAME(c->o.prop), c->o.prop->diameter_in, c->o.prop->pitch_in,
 		    c->o.cells, c->o.j, n_closed, 100.0 * hov->throttle,
 		    100.0 * hov->motor_efficiency);
 	else
-		res_rationale(r, "Integrated system %s (%.0f KV, %.0f in propeller, "
-		    "ESC inside) at %dS: J = %+.1f %%, the best of %d closings; "
-		    "hover at %.0f %% throttle.", m->id, m->kv_rpm_per_v,
+		res_rationale(r, "Integrated system %s %s (%.0f KV, %.0f in propeller, "
+		    "ESC inside) at %dS: J = %+.1f %%, the best of %d combinations "
+		    "sized and flown; hover at %.0f %% throttle.", PART_NAME(m),
+		    m->kv_rpm_per_v,
 		    m->integrated_prop_in, c->o.cells, c->o.j, n_closed,
 		    100.0 * hov->throttle);
 	if (c->o.cells != x->aim.cells)
 		res_rationale(r, "Bus %dS instead of the continuous %dS: the real "
-		    "parts close lighter there.", c->o.cells, x->aim.cells);
+		    "parts make a lighter aircraft there.", c->o.cells, x->aim.cells);
+	char chem_rec[64], chem_cont[64];
 	if (strcmp(c->pack.chem->name, x->p->chem->name) != 0)
 		res_rationale(r, "The battery is %s (the continuous design assumed "
 		    "%s): the lightest pack that flies the mission; the design of "
-		    "record flies its own chemistry profile.", c->pack.chem->name,
-		    x->p->chem->name);
-	res_rationale(r, "Battery: %d x %s (%dS%dP) = %dS %.0f mAh, %.2f kg.",
-	    c->pack.series * c->pack.parallel, c->pack.b->id, c->pack.series,
+		    "record flies its own chemistry profile.",
+		    res_chemistry_text(c->pack.chem->name, chem_rec, sizeof chem_rec),
+		    res_chemistry_text(x->p->chem->name, chem_cont, sizeof chem_cont));
+	res_rationale(r, "Battery: %d x %s %s (%dS%dP) = %dS %.0f mAh, %.2f kg.",
+	    c->pack.series * c->pack.parallel, PART_NAME(c->pack.b), c->pack.series,
 	    c->pack.parallel, c->o.cells, c->pack.capacity_ah * 1000.0,
 	    c->pack.mass_kg);
 	if (c->esc != NULL)
-		res_rationale(r, "ESC: %d x %s, %.0f A continuous for the %.0f A "
-		    "each motor draws at full throttle.", c->n_esc, c->esc->id,
+		res_rationale(r, "ESC: %d x %s %s, %.0f A continuous for the %.0f A "
+		    "each motor draws at full throttle.", c->n_esc, PART_NAME(c->esc),
 		    c->esc->continuous_current_a, o->perf.op[OP_FULL].motor_current_a);
 	const struct parts_kit *kit = &c->kit;
 	if (kit->frame != NULL)
-		res_rationale(r, "Frame kit %s (%s %s, %.0f g): %d rotors on a "
+		res_rationale(r, "Frame kit %s %s (%.0f g): %d rotors on a "
 		    "%.0f mm wheelbase, the lightest catalogue kit that fits.",
-		    kit->frame->id, kit->frame->manufacturer,
+		    kit->frame->manufacturer,
 		    kit->frame->part_number, kit->frame->mass_kg * 1000.0,
 		    kit->frame->rotor_count, kit->frame->wheelbase_m * 1000.0);
 	else
@@ -583,24 +590,28 @@ parts_explain(const struct parts_ctx *x, const struct parts_closed *c,
 		parts_g += kit->part[i]->mass_kg * 1000.0;
 	for (int i = 0; i < kit->n_allowance; i++)
 		allow_g += kit->allowance_kg[i] * 1000.0;
-	res_rationale(r, "Avionics: %d catalogue parts (%.0f g) and %d "
-	    "allowances of the airframe class for what the catalogue does not "
-	    "sell (%.0f g).", kit->n_part, parts_g, kit->n_allowance, allow_g);
+	if (kit->n_allowance > 0)
+		res_rationale(r, "Avionics: %d catalogue part%s (%.0f g) and %d "
+		    "allowance%s of the airframe class for what the catalogue does not "
+		    "sell (%.0f g).", kit->n_part, kit->n_part == 1 ? "" : "s", parts_g,
+		    kit->n_allowance, kit->n_allowance == 1 ? "" : "s", allow_g);
+	else
+		res_rationale(r, "Avionics: %d catalogue part%s (%.0f g).", kit->n_part,
+		    kit->n_part == 1 ? "" : "s", parts_g);
 	if (kit->connector != NULL)
 		res_rationale(r, "Battery connectors: %d x %s %s, one per pack for "
 		    "the %.0f A each pack carries at full throttle (%.0f g).",
-		    kit->n_connectors, kit->connector->manufacturer,
-		    kit->connector->part_number,
+		    kit->n_connectors, PART_NAME(kit->connector),
 		    o->peak_current_a / (double)c->pack.parallel,
 		    kit->connector_kg * 1000.0);
 	if (o->thrust_to_weight * o->mass.total_kg
 	    < x->aim.tw_required * (o->mass.total_kg + x->aim.extra_payload_kg))
-		res_rationale(r, "No closing on real parts reaches the required "
+		res_rationale(r, "No combination of catalogue parts reaches the required "
 		    "T/W of %.2f; the design of record falls short (its thrust check "
 		    "gives the verdict).", x->aim.tw_required / PARTS_TW_TOL);
 	if (n_better_failed > 0)
-		res_rationale(r, "%d better-scoring combination%s did not close the "
-		    "mission on real parts.", n_better_failed,
+		res_rationale(r, "%d better-scoring combination%s of catalogue parts "
+		    "did not fly the mission.", n_better_failed,
 		    n_better_failed == 1 ? "" : "s");
 	res_rationale(r, "Design of record (the aircraft the bill of materials "
 	    "builds): MTOW %.3f kg against %.3f kg continuous (%+.1f %%).",

@@ -468,11 +468,13 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 			"Lock parts by id (locks.motor_part, ...) to study one combination",
 			"Relax the mission (payload, times, thrust margin)", NULL };
 		feasibility_violation(r, "closed", "parts", "PARTS_DO_NOT_CLOSE", fx,
-		    "None of the %d closings on catalogue parts passes every check; "
-		    "the closest (%s%s%s, %d x %s) fails %d.", n_closed,
-		    rec.o.motor->id, rec.o.prop ? " + " : "",
-		    rec.o.prop ? rec.o.prop->id : "",
-		    rec.pack.series * rec.pack.parallel, rec.pack.b->id, rec.failed);
+		    "None of the %d combinations of catalogue parts sized and flown "
+		    "passes every check; the closest (%s %s%s%s%s%s, %d x %s %s) fails "
+		    "%d.", n_closed, rec.o.motor->manufacturer, rec.o.motor->part_number,
+		    rec.o.prop ? " + " : "", rec.o.prop ? rec.o.prop->manufacturer : "",
+		    rec.o.prop ? " " : "", rec.o.prop ? rec.o.prop->part_number : "",
+		    rec.pack.series * rec.pack.parallel, rec.pack.b->manufacturer,
+		    rec.pack.b->part_number, rec.failed);
 	}
 	parts_fill(&x, &rec, r);
 	parts_explain(&x, &rec, n_closed, 0, r);

@@ -819,6 +819,8 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 	pf->prop_ct = c->prop.ct;
 	pf->prop_cp = c->prop.cp;
 	pf->prop_coeffs_measured = c->prop.measured;
+	pf->prop_fom = prop_fom(&c->prop);
+	run->kappa = p->fom_override > 0.0 || p->fom_isolated_mode ? 1.0 : p->kappa;
 	pf->max_speed_ms = run->v_max_ms;
 	pf->max_speed_limit = run->v_max_limit;
 	pf->landing_soc = run->end_soc;

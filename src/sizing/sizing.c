@@ -952,6 +952,7 @@ record_run(const struct sizing_params *p, struct eval *e,
 	out->downwash_ms = aero_downwash_ms(e->mass_kg, p->air.rho_kg_m3,
 	    n_arms(p), area);
 	out->fom_installed = e->fom_inst;
+	out->kappa = p->fom_override > 0.0 || p->fom_isolated_mode ? 1.0 : p->kappa;
 	out->interference = e->k_int;
 	out->reynolds_tip = e->ph[PHASE_HOVER].rotor.reynolds_tip;
 	out->rpm_hover = e->rps_hover * 60.0;

@@ -356,3 +356,22 @@ numfmt_fixed(char *buf, size_t n, double x, int decimals)
 	}
 	return k;
 }
+
+const char *
+numfmt_sig(char *buf, size_t n, double x, int sig)
+{
+	if (sig < 1)
+		sig = 1;
+	if (sig > 6)
+		sig = 6;
+	if (!isfinite(x)) {
+		snprintf(buf, n, "\xe2\x80\x94");
+		return buf;
+	}
+	int dec = x == 0.0 ? 0 : sig - 1 - (int)floor(log10(fabs(x)));
+	if (dec < 0)
+		dec = 0;
+	if (numfmt_fixed(buf, n, x, dec) == 0 && n > 0)
+		snprintf(buf, n, "\xe2\x80\x94");
+	return buf;
+}

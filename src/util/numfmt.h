@@ -30,4 +30,10 @@ int numfmt_shortest(char buf[NUMFMT_SHORTEST_LEN], double x);
  * does not fit in n bytes: then buf holds "" (if n > 0). */
 int numfmt_fixed(char *buf, size_t n, double x, int decimals);
 
+/* Writes x with `sig` significant digits (1..6) in plain notation, never
+ * an exponent ("1974", "13.2", "0.0588"; a large value keeps all its
+ * integer digits), for sentences meant for people.  "—" (U+2014) when x
+ * is not finite.  Returns buf. */
+const char *numfmt_sig(char *buf, size_t n, double x, int sig);
+
 #endif
