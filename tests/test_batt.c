@@ -309,7 +309,7 @@ batt_pack_law_should_be_the_fit_of_the_catalogue_packs(void **state)
 {
 	(void)state;
 	struct diag *dg = diag_alloc(stderr);
-	struct catalog *cat = catalog_io_load("data/catalog", NULL, dg);
+	struct catalog *cat = catalog_io_load("data/catalog", NULL, dg, NULL);
 	struct model_data md;
 	assert_int_equal(model_io_load("data", &md, dg), 0);
 	diag_flush(dg);

@@ -101,7 +101,7 @@ checks_fix_should_expand_its_numbers(void **state)
 /* The codes every design of record is held to, whatever its parts. */
 static const char *const record_codes[] = {
 	"RESERVE", "THRUST", "BATTERY_CURRENT", "BATTERY_BURST",
-	"POWER_MODULE_CURRENT_FULL", "CONNECTOR_CURRENT_FULL",
+	"CONNECTOR_CURRENT_FULL", "HARNESS_CURRENT_FULL",
 	"VOLTAGE_FULL_THROTTLE", "ARM_STRENGTH", "ARM_TILT", "ARM_TORSION",
 	"ARM_MODE_CONTROL", "ARM_RESONANCE_REV", "ARM_RESONANCE", "TIP_MACH",
 };
@@ -124,6 +124,11 @@ check_example(struct cli_env *env, const char *path)
 		assert_true(c->limit > 0.0);
 		assert_non_null(c->condition);
 	}
+	/* A rated power module carries the full-throttle current too (a
+	 * class that buys a distribution allowance has no rating to hold). */
+	if (r->power_path.power_module.present
+	    && r->power_path.power_module.continuous_a > 0.0)
+		assert_non_null(checks_find(&r->closed, "POWER_MODULE_CURRENT_FULL"));
 	/* The continuous reference is held to the same structure checks. */
 	assert_non_null(checks_find(&r->custom, "ARM_TILT"));
 	assert_non_null(checks_find(&r->custom, "ARM_RESONANCE_REV"));

@@ -183,23 +183,31 @@ structure_arm_should_be_stiff_enough_for_one_degree_of_tilt(void **state)
 {
 	(void)state;
 	/* 41 N of full thrust at the tip of a 0.5 m arm (design load 20 N):
-	 * I >= F L² / (2 E θ) = 41 · 0.25 / (2 · 70e9 · 0.01745329) = 4.19487e-9 m⁴
-	 * d = (64 I / (π (1 - 0.9⁴)))^¼ = (2.48492e-7)^¼ = 0.0223269 m
-	 * (strength alone: cbrt(32 · 10 / (π · 0.3439 · 192e6)) = 0.01155 m) */
+	 * I >= F L² / (2 E θ) = 41 · 0.25 / (2 · 70e9 · 0.01745329) = 4.19487e-9 m⁴.
+	 * Stiffness sizes it, so the wall thins to D/40 (α 0.95):
+	 * d = (64 I / (π (1 - 0.95⁴)))^¼ = 0.0260528 m, wall 0.651 mm
+	 * (at α 0.9 it would be 0.0223269 m and 1.12 mm, 39 % heavier). */
 	struct structure_arm_loads in = { 20.0, 41.0, 2.0, 0.3, 0.5, 0.9, 0.0 };
 	struct structure_arm a;
 	structure_size_arm(&in, &a);
 	assert_int_equal(a.sized_by, ARM_BY_TILT);
-	assert_rel(a.d_out_m, 0.0223269344, 1e-8);
+	assert_rel(a.d_out_m, 0.0260528249, 1e-8);
+	assert_rel(a.wall_m, 0.000651320622, 1e-7);
 	assert_rel(a.i_x_m4, 4.19486957e-9, 1e-8);
 	assert_rel(a.tilt_full_deg, 1.0, 1e-9);
 	/* δ = F L³ / 3EI = (2/3) θ L = (2/3) · 0.01745329 · 0.5 = 5.8178 mm */
 	assert_rel(a.deflection_full_m, 0.00581776417, 1e-8);
-	/* τ = Q r / 2I = 2 · 0.0111635 / (2 · 4.19487e-9) = 2.66122 MPa */
-	assert_rel(a.torsion_pa, 2.66121914e6, 1e-7);
+	/* τ = Q r / 2I = 2 · 0.0130264 / (2 · 4.19487e-9) = 3.10532 MPa */
+	assert_rel(a.torsion_pa, 3.10532002e6, 1e-7);
 	/* The stress at the design load is far below σ_all: a real margin. */
 	assert_true(a.safety_factor > 1.5);
 	assert_rel(a.safety_factor, 288e6 / a.stress_pa, 1e-12);
+	/* The thick-walled tube of the same stiffness is heavier. */
+	struct structure_arm_loads thick = in;
+	thick.alpha_w = 0.97;  /* a mission's thinner wall is kept */
+	struct structure_arm b;
+	structure_size_arm(&thick, &b);
+	assert_true(b.mass_kg < a.mass_kg);
 }
 
 static void
@@ -231,6 +239,8 @@ structure_tau_allow_and_gyro_filter_should_follow_their_sources(void **state)
 	assert_rel(structure_gyro_filter_hz(24.0 * 0.0254), 20.1656071, 1e-8);
 	assert_rel(structure_gyro_filter_hz(30.0 * 0.0254), 16.7263319, 1e-8);
 	assert_rel(structure_gyro_filter_hz(0.0), 0.0, 0.0);
+	/* The rate loop: half the gyro filter, 21.0 Hz at 10 in. */
+	assert_rel(structure_rate_bandwidth_hz(10.0 * 0.0254), 20.9989861, 1e-8);
 }
 
 static void

@@ -165,8 +165,8 @@ const struct check_def check_table[CK_COUNT] = {
 	    "Past it the tube's plies shear under the motor's reaction torque.",
 	    { "A larger arm tube", "A tube with ±45° plies", NULL } },
 	[CK_ARM_MODE_CONTROL] = { "ARM_MODE_CONTROL", "structure",
-	    "Arm first bending mode above the gyro filter", "Hz", false, COND_DESIGN,
-	    "A mode the flight controller's gyro filter passes couples with the "
+	    "Arm first bending mode above the rate-loop bandwidth", "Hz", false, COND_DESIGN,
+	    "A mode within the rate loop's bandwidth couples with the "
 	    "attitude loop and can oscillate.",
 	    { "A stiffer arm (larger tube) above {limit}", "A shorter arm", NULL } },
 	[CK_ARM_MODE_REV] = { "ARM_RESONANCE_REV", "structure",

@@ -62,6 +62,17 @@ res_record(const struct solve_result *r, bool *buildable)
 	return real ? &r->closed : &r->custom;
 }
 
+double
+res_lightest_mass_kg(const struct res_run *run)
+{
+	double m = run->mass.total_kg;
+	int n = run->n_trace < 0 ? 0 : run->n_trace > RES_MAX_TRACE ? RES_MAX_TRACE : run->n_trace;
+	for (int i = 0; i < n; i++)
+		if (run->trace[i].mass_kg > 0.0 && run->trace[i].mass_kg < m)
+			m = run->trace[i].mass_kg;
+	return m;
+}
+
 /* Does the record's discharge trace show payload leaving the aircraft?
  * (A gram's fall is a drop or a spray; the trace keeps the mass.) */
 static bool
@@ -97,7 +108,7 @@ res_figures(const struct solve_result *r, struct res_figures *f)
 	}
 	f->sheds = sheds(rec);
 	f->hover_power_w = rec->hover_power_w;
-	f->hover_power_shed_w = f->sheds ? rec->phase[PHASE_HOVER].power_w : NAN;
+	f->hover_power_shed_w = f->sheds ? rec->hover_power_shed_w : NAN;
 	if (buildable && rec->perf.valid)
 		f->hover_current_a = rec->perf.op[OP_HOVER].battery_current_a;
 	else

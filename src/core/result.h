@@ -289,6 +289,8 @@ struct res_run {
 	double flight_time_s;     /* total approved mission time */
 	double hover_endurance_s; /* hover-only endurance to the reserve */
 	double hover_power_w;     /* electrical, hovering at the takeoff mass */
+	double hover_power_shed_w; /* ... at the lightest mass flown (after a
+	                             drop or the spray; = hover_power_w else) */
 	double marketing_endurance_s; /* best case (0 unless requested) */
 	double optimal_speed_ms;  /* forward speed used (auto: minimum power) */
 	double v_min_power_ms;    /* minimum-power speed of the sweep */
@@ -340,7 +342,8 @@ struct res_run {
 	double arm_deflection_full_mm; /* arm tip deflection at full thrust */
 	double arm_torsion_mpa;    /* shear stress from the full-throttle torque */
 	double arm_torsion_allow_mpa;
-	double gyro_filter_hz;     /* the flight controller's gyro filter for the propeller */
+	double rate_bandwidth_hz;  /* the rate loop's bandwidth for the propeller
+	                              (structure.h) */
 	double rev_band_low_hz;    /* once-per-revolution band of the steady flight: */
 	double rev_band_high_hz;   /* hover at the lightest mass flown to the
 	                              fastest sustained phase */
@@ -565,6 +568,10 @@ struct solve_result {
  * construction (arm stress, propeller diameter, mission energy), or NULL:
  * what binds the design.  The rationale and the dossier cover both name it. */
 const struct res_check *res_tightest_check(const struct res_run *run);
+
+/* The lightest mass a run flies (its trace: a drop or a spray sheds
+ * payload on the way); its takeoff mass when it sheds none. */
+double res_lightest_mass_kg(const struct res_run *run);
 
 /* Zero all of a run but its trace samples, which are most of its size
  * and of which only the first n_trace are ever read. */

@@ -392,19 +392,21 @@ explain(const struct sizing_params *p, const struct res_run *o,
 	res_rationale(r, "Target motor KV %.0f rpm/V: full-throttle rotor speed "
 	    "%.0f rpm on a %.1f V bus.", o->opt.motor_kv, o->rpm_peak,
 	    (double)o->cell_count * p->chem->v_full);
-	if (o->min_fraction_binds)
-		res_rationale(r, "Arms Ø%.1f mm sized for bending; the frame mass is "
-		    "set by the minimum structural fraction for this wheelbase.",
-		    o->arm_outer_diameter_mm);
-	else
-		res_rationale(r, "Arms Ø%.1f mm × %.2f mm CFRP sized by root bending "
-		    "at %.0f MPa allowable.", o->arm_outer_diameter_mm,
-		    o->arm_wall_thickness_mm, o->arm_stress_allow_mpa);
+	res_rationale(r, "Arms Ø%.1f mm × %.2f mm CFRP, sized by %s: motor tilt "
+	    "%.2f° at full thrust (at most %.0f°), factor of safety %.1f on the "
+	    "fatigue strength%s.", o->arm_outer_diameter_mm,
+	    o->arm_wall_thickness_mm, o->arm_sized_by != NULL ? o->arm_sized_by
+	    : "strength", o->arm_tilt_full_deg, STRUCT_TILT_MAX_DEG,
+	    o->arm_safety_factor, o->min_fraction_binds ? "; the frame's mass "
+	    "is set by the minimum structural share for this wheelbase" : "");
+	bool stiff = o->arm_natural_frequency_hz >= o->blade_pass_frequency_hz;
 	res_rationale(r, "Arm first bending mode %.0f Hz: %s the in-flight "
-	    "blade-pass band %.0f–%.0f Hz.", o->arm_natural_frequency_hz,
-	    o->arm_natural_frequency_hz >= o->blade_pass_frequency_hz
-	        ? "stiff, above" : "soft, below", o->blade_pass_low_hz,
-	    o->blade_pass_frequency_hz);
+	    "blade-pass band %.0f–%.0f Hz, %s the rotor's steady %.0f–%.0f Hz.",
+	    o->arm_natural_frequency_hz, stiff ? "stiff, above" : "soft, below",
+	    o->blade_pass_low_hz, o->blade_pass_frequency_hz,
+	    o->arm_natural_frequency_hz < o->rev_band_low_hz ? "below"
+	    : o->arm_natural_frequency_hz > o->rev_band_high_hz ? "above" : "within",
+	    o->rev_band_low_hz, o->rev_band_high_hz);
 	if (p->v_auto)
 		res_rationale(r, "Forward speed %.1f m/s: the minimum-power speed of "
 		    "the 1–30 m/s sweep.", o->optimal_speed_ms);

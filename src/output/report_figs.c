@@ -269,8 +269,7 @@ report_sec_mission(struct rep *rp, const char *title)
 	              profile ? "The tables total the segments by the phase whose time they fly"
 	                      : "The mission is flown as climb, forward flight and hover",
 	              shed ? "; payload leaves the aircraft on the way (drop or spray), so the later "
-	                     "phases fly lighter than the takeoff mass (the hover row is the hover power "
-	                     "after shedding)" : profile ? "" : " at the takeoff mass",
+	                     "phases fly lighter than the takeoff mass" : profile ? "" : " at the takeoff mass",
 	              report_num(b1, sizeof b1, rp->fig.aux_power_w, 0),
 	              rp->buildable ? "design of record" : "continuous design",
 	              report_num(b2, sizeof b2, rec->energy_wh, 1), rec->cell_count,

@@ -403,6 +403,7 @@ put_run_fields(struct jsonw *w, const struct res_run *run,
 	jsonw_number(w, "flight_time_s", run->flight_time_s);
 	jsonw_number(w, "hover_endurance_s", run->hover_endurance_s);
 	jsonw_number(w, "hover_power_w", run->hover_power_w);
+	jsonw_number(w, "hover_power_after_shedding_w", run->hover_power_shed_w);
 	jsonw_number(w, "marketing_endurance_s", run->marketing_endurance_s);
 	jsonw_number(w, "optimal_speed_ms", run->optimal_speed_ms);
 	jsonw_number(w, "v_min_power_ms", run->v_min_power_ms);

@@ -109,8 +109,31 @@ tip_slope_rad(const struct structure_arm *a, double force_n)
 	return ei > 0.0 ? force_n * a->length_m * a->length_m / (2.0 * ei) : 0.0;
 }
 
+static void structure_size_for(const struct structure_arm_loads *in,
+                               struct structure_arm *out);
+
 void
 structure_size_arm(const struct structure_arm_loads *in,
+                   struct structure_arm *out)
+{
+	memset(out, 0, sizeof *out);
+	/* A tube its stiffness sizes is best wide and thin (I ~ d³ t for the
+	 * mass ~ d t): where the tilt or the mode governs, the wall is thinned
+	 * to STRUCT_STIFF_ALPHA_W of the diameter, if the strength holds. */
+	struct structure_arm_loads thin = *in;
+	if (thin.alpha_w < STRUCT_STIFF_ALPHA_W)
+		thin.alpha_w = STRUCT_STIFF_ALPHA_W;
+	structure_size_for(in, out);
+	struct structure_arm t;
+	structure_size_for(&thin, &t);
+	if (out->sized_by != ARM_BY_STRENGTH && t.sized_by != ARM_BY_STRENGTH
+	    && t.stress_pa <= structure_sigma_allow_pa() && t.mass_kg < out->mass_kg)
+		*out = t;
+}
+
+/* structure_size_arm() at the wall ratio in->alpha_w. */
+static void
+structure_size_for(const struct structure_arm_loads *in,
                    struct structure_arm *out)
 {
 	memset(out, 0, sizeof *out);
@@ -171,6 +194,12 @@ structure_size_arm(const struct structure_arm_loads *in,
 	/* Torsion of a tube: τ = Q r / J, J = 2 I. */
 	out->torsion_pa = out->i_x_m4 > 0.0
 	    ? in->full_torque_nm * 0.5 * out->d_out_m / (2.0 * out->i_x_m4) : 0.0;
+}
+
+double
+structure_rate_bandwidth_hz(double prop_diameter_m)
+{
+	return 0.5 * structure_gyro_filter_hz(prop_diameter_m);
 }
 
 bool

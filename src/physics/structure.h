@@ -36,6 +36,9 @@
                                         thrust: practice keeps it <= 1° */
 #define STRUCT_TAU_ULT_PA     68e6   /* in-plane shear strength of carbon/
                                         epoxy (T300/5208, Tsai & Hahn) */
+#define STRUCT_STIFF_ALPHA_W  0.95   /* wall D/40 where stiffness sizes the
+                                        tube (local buckling far above
+                                        σ_all at that wall) */
 #define STRUCT_REV_MARGIN     1.15   /* a mode within ±15 % of a steady
                                         excitation resonates */
 
@@ -97,9 +100,14 @@ double structure_tau_allow_pa(void);
 
 /* The gyro low-pass filter a flight controller is set up with for this
  * propeller (ArduPilot Mission Planner's initial-parameters fit,
- * 289.22 D_in^-0.838 Hz): the attitude loop acts below it, so an arm mode
- * above it stays out of the loop. */
+ * 289.22 D_in^-0.838 Hz). */
 double structure_gyro_filter_hz(double prop_diameter_m);
+
+/* The rate loop's bandwidth for this propeller: the filter Mission
+ * Planner's initial parameters put on the rate controller's target and
+ * derivative, half the gyro filter.  An arm mode above it is not one the
+ * attitude loop drives. */
+double structure_rate_bandwidth_hz(double prop_diameter_m);
 
 /* A mode's clearance from an excitation band [lo, hi] widened by margin:
  * the near edge it must stay beyond, and whether it does.  *above says

@@ -38,7 +38,7 @@ airframe_masses(const struct sizing_params *p, const struct airframe_loads *in,
 
 	/* Arms: strength at max(load factor × CG thrust, full thrust),
 	 * stiffness for the motor's tilt at full thrust and a first mode
-	 * above the gyro filter; the resonance with the rotor is checked
+	 * above the rate loop's bandwidth; the resonance with the rotor is checked
 	 * afterwards (the checks table).  The CG polygon is that of the arms
 	 * (a coaxial pair shares one). */
 	double t_cg;
@@ -50,24 +50,38 @@ airframe_masses(const struct sizing_params *p, const struct airframe_loads *in,
 	double force = fmax(p->load_factor * t_cg, in->peak_thrust_n) * per_arm;
 	struct structure_arm_loads al = { force, in->peak_thrust_n * per_arm,
 		in->peak_torque_nm * per_arm, in->tip_mass_kg * per_arm, arm_len,
-		p->alpha_w, structure_gyro_filter_hz(in->prop_diameter_m) };
+		p->alpha_w, structure_rate_bandwidth_hz(in->prop_diameter_m) };
 	structure_size_arm(&al, &out->arm);
-	double tubes = (double)arms * out->arm.mass_kg;
+	/* The paper's proxy for the size of the whole structure (joints,
+	 * centre plates, body, gear: C_body and γ) is the strength-sized
+	 * tube; the wall and diameter stiffness adds are tube alone and add
+	 * on top, not multiplied through the body. */
+	struct structure_arm strength;
+	struct structure_arm_loads sl = al;
+	sl.full_force_n = 0.0;
+	sl.mode_floor_hz = 0.0;
+	structure_size_arm(&sl, &strength);
+	double tubes = (double)arms * strength.mass_kg;
+	double stiffness_kg = (double)arms * (out->arm.mass_kg - strength.mass_kg);
 
-	/* The minimum structural fraction floors the whole structure.  (The
-	 * paper floors the spar and then adds γ on top, which puts an
-	 * agricultural frame at >= 40 % of takeoff mass and makes every
-	 * spraying mission diverge; see docs/model.md.) */
+	/* The minimum structural fraction floors the structure the strength
+	 * sizes.  (The paper floors the spar and then adds γ on top, which
+	 * puts an agricultural frame at >= 40 % of takeoff mass and makes
+	 * every spraying mission diverge; see docs/model.md.) */
 	double sized = p->c_body * tubes * (1.0 + p->gamma);
 	double floor_kg = in->mass_kg * structure_min_fraction(p->wheelbase_m);
 	out->min_fraction_binds = floor_kg > sized;
-	double frame_total = p->lambda * fmax(sized, floor_kg);
-	if (p->fixed_frame_kg > 0.0)
-		frame_total = p->fixed_frame_kg;
+	double base = p->lambda * fmax(sized, floor_kg);
+	double extra = p->lambda * stiffness_kg;
+	if (p->fixed_frame_kg > 0.0) {
+		base = p->fixed_frame_kg;
+		extra = 0.0;
+	}
+	double frame_total = base + extra;
 	out->frame_total_kg = frame_total;
 	/* Split the structure: tubes, centre plates/joints, body and gear. */
-	double unit = frame_total / ((1.0 + p->gamma) * p->c_body);
-	out->arm_kg = unit;
+	double unit = base / ((1.0 + p->gamma) * p->c_body);
+	out->arm_kg = unit + extra;
 	out->frame_kg = unit * (p->c_body - 1.0);
 	out->other_kg = unit * p->c_body * p->gamma;
 
@@ -98,5 +112,5 @@ airframe_record_arm(const struct structure_arm *arm, double prop_diameter_m,
 	run->arm_deflection_full_mm = arm->deflection_full_m * 1000.0;
 	run->arm_torsion_mpa = arm->torsion_pa / 1e6;
 	run->arm_torsion_allow_mpa = structure_tau_allow_pa() / 1e6;
-	run->gyro_filter_hz = structure_gyro_filter_hz(prop_diameter_m);
+	run->rate_bandwidth_hz = structure_rate_bandwidth_hz(prop_diameter_m);
 }

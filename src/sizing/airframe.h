@@ -25,7 +25,7 @@ struct airframe_loads {
 	double peak_current_a;       /* battery current at full throttle */
 	double battery_kg;           /* the pack, for the body around it */
 	double peak_torque_nm;       /* one motor's reaction torque at full throttle */
-	double prop_diameter_m;      /* for the gyro filter the arm's mode clears */
+	double prop_diameter_m;      /* for the rate-loop bandwidth the arm's mode clears */
 };
 
 /* What it gives.  The mass items go to struct res_mass as arm_kg,

@@ -242,7 +242,7 @@ feasibility_common_checks(const struct sizing_params *p, struct res_run *o,
 	checks_set(v, CK_TIP_MACH, o->tip_mach_peak, AERO_TIP_MACH_MAX);
 
 	/* The arm: strength at its design load, stiffness and torsion at
-	 * full thrust, its first mode against the gyro filter and the steady
+	 * full thrust, its first mode against the rate loop and the steady
 	 * excitations. */
 	if (o->arm_length_m > 0.0) {
 		checks_set(v, CK_ARM_SAFETY, o->arm_safety_factor, STRUCT_FOS);
@@ -254,9 +254,9 @@ feasibility_common_checks(const struct sizing_params *p, struct res_run *o,
 		snprintf(v->basis[CK_ARM_TILT], sizeof v->basis[CK_ARM_TILT],
 		    "tip deflection %.1f mm", o->arm_deflection_full_mm);
 		checks_set(v, CK_ARM_TORSION, o->arm_torsion_mpa, o->arm_torsion_allow_mpa);
-		if (o->gyro_filter_hz > 0.0) {
+		if (o->rate_bandwidth_hz > 0.0) {
 			checks_set(v, CK_ARM_MODE_CONTROL, o->arm_natural_frequency_hz,
-			    o->gyro_filter_hz);
+			    o->rate_bandwidth_hz);
 			v->sized[CK_ARM_MODE_CONTROL] = strcmp(o->arm_sized_by,
 			    structure_sized_by_text[ARM_BY_MODE]) == 0;
 		}
@@ -312,7 +312,7 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	    && !(p->prop_frac > 0.0 && p->prop_frac < 1.0);
 	/* Where the arm's mode falls against the rotor's excitations turns on
 	 * the rotor speed to a few per cent, and no tube moves it both ways
-	 * (the tilt and the gyro filter floor its stiffness): on the
+	 * (the tilt and the rate loop floor its stiffness): on the
 	 * continuous reference they are reported, and the design of record,
 	 * whose rotor is real, is held to them.  A requirement that grows
 	 * cannot then let a lighter reference through (test_monotone). */

@@ -592,6 +592,9 @@ figures(struct perf_ctx *x, struct res_run *run, struct res_perf *pf)
 	/* The run's own figures: one number each, on every page and file. */
 	run->hover_endurance_s = pf->hover_time_s;
 	run->hover_power_w = pf->op[OP_HOVER].electrical_w;
+	struct mission_power shed;
+	mission_power(&x->model, res_lightest_mass_kg(run), 0.0, 0.0, &shed);
+	run->hover_power_shed_w = shed.electrical_w;
 	pf->full_throttle_time_s = discharge_power_endurance_s(&x->pack,
 	    full->electrical_w, p->ambient_c, reserve, ENDURANCE_STEPS);
 	/* The mission's mix repeated to the reserve: its time scaled by the

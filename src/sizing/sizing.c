@@ -794,6 +794,17 @@ iterate(const struct sizing_params *p, double gamma_time, struct res_run *out,
 						last_jump = k;
 						continue;
 					}
+					/* The coarse steps landed it on the reserve,
+					 * the final ones short of it: size the
+					 * capacity at the final resolution. */
+					if (flown && !lazy && ring.steps != FINAL_STEPS
+					    && fin->dis.end_soc < sizing_reserve_soc()
+					    - SIZING_RESERVE_TOL) {
+						ring.steps = FINAL_STEPS;
+						*fin_done = false;
+						last_jump = k;
+						continue;
+					}
 				}
 			}
 			st = flown ? SIZING_CONVERGED : SIZING_DISCHARGE_FAIL;
@@ -1132,6 +1143,8 @@ record_fixed_point(const struct sizing_params *p, enum sizing_status st,
 	struct mission_power hover;
 	mission_power(&fin->model, m_star, 0.0, 0.0, &hover);
 	out->hover_power_w = hover.electrical_w;
+	mission_power(&fin->model, res_lightest_mass_kg(out), 0.0, 0.0, &hover);
+	out->hover_power_shed_w = hover.electrical_w;
 	if (p->marketing)
 		out->marketing_endurance_s = marketing_endurance_s(p, fin, m_star);
 	if (st == SIZING_MAX_ITERATIONS)
