@@ -123,7 +123,7 @@ for f in examples/*.json; do
 	# Downwash is checked where the role limits it, and only there.
 	if grep -q '"name": *"Downwash' "$d/result.json"; then
 		check "dossier_${n}_checks_downwash_where_limited" \
-			grep -Eq "Downwash \((role|crop and drift) limit\)" "$d/all.txt"
+			grep -Eq "Downwash \(crop damage and spray" "$d/all.txt"
 	else
 		check "dossier_${n}_shows_no_downwash_check_without_a_limit" \
 			sh -c "! grep -Eq 'Downwash \(|Downwash,' '$d/all.txt'"

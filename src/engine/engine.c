@@ -431,8 +431,8 @@ explain(const struct sizing_params *p, const struct res_run *o,
 	/* What binds: the tightest passing check not sized to its limit. */
 	const struct res_check *t = res_tightest_check(o);
 	if (t != NULL)
-		res_rationale(r, "Tightest remaining constraint: %s (%s%s%s against "
-		    "a limit of %s%s%s, margin %.0f %%).", t->name,
+		res_rationale(r, "Tightest remaining constraint: %s at %s (%s%s%s "
+		    "against a limit of %s%s%s, margin %.0f %%).", t->name, t->condition,
 		    numfmt_sig(v1, sizeof v1, t->value, 3), t->unit[0] ? " " : "", t->unit,
 		    numfmt_sig(v2, sizeof v2, t->limit, 3), t->unit[0] ? " " : "", t->unit,
 		    100.0 * t->margin);

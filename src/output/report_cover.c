@@ -147,8 +147,8 @@ cover_status(struct rep *rp)
 		strbuf_printf(&sb, "The aircraft the bill of materials builds passes all %d of its checks.",
 		              rec->n_checks);
 		if (c != NULL)
-			strbuf_printf(&sb, " The tightest is \"%s\" with a margin of %s" NBSP "%%.", c->name,
-			              report_num(b1, sizeof b1, 100.0 * c->margin, 1));
+			strbuf_printf(&sb, " The tightest is \"%s\" (%s) with a margin of %s" NBSP "%%.",
+			              c->name, c->condition, report_num(b1, sizeof b1, 100.0 * c->margin, 1));
 		if (!r->feasible)
 			strbuf_append_str(&sb, " The continuous reference design fails a check (see the checks "
 			                  "section); the aircraft as built does not.");

@@ -608,7 +608,7 @@ parts_explain(const struct parts_ctx *x, const struct parts_closed *c,
 	    < x->aim.tw_required * (o->mass.total_kg + x->aim.extra_payload_kg))
 		res_rationale(r, "No combination of catalogue parts reaches the required "
 		    "T/W of %.2f; the design of record falls short (its thrust check "
-		    "gives the verdict).", x->aim.tw_required / PARTS_TW_TOL);
+		    "gives the verdict).", x->aim.tw_required);
 	if (n_better_failed > 0)
 		res_rationale(r, "%d better-scoring combination%s of catalogue parts "
 		    "did not fly the mission.", n_better_failed,

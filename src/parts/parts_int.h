@@ -42,7 +42,9 @@
 #define PARTS_RANGE_TOL_IN  0.5   /* slack on a maker's recommended propeller range */
 #define PARTS_LOADED_BUS    0.95  /* loaded pack voltage / nominal, for ranking */
 #define PARTS_CURRENT_MARGIN 1.1  /* ESC rating over the motor's full-throttle current */
-#define PARTS_TW_TOL        0.98  /* real T/W may fall 2 % short of the continuous one */
+#define PARTS_TW_TOL        0.98  /* the ranking's screens keep options whose
+                                     estimated T/W is up to 2 % short: their
+                                     closing may reach it */
 #define PARTS_TW_SPARE      1.05  /* ranking: thrust to spare for the mass estimate */
 #define PARTS_MAX_SAG       0.15  /* battery pick: pack sag at full throttle, of
                                      V_oc (high-discharge packs at their rated
@@ -89,7 +91,8 @@ struct parts_aim {
 	double tw_required;        /* T/W the design of record must reach with
 	                              the largest payload aboard: the role's
 	                              or the mission's requirement, never
-	                              relaxed (less PARTS_TW_TOL) */
+	                              relaxed (the ranking's screens let
+	                              options PARTS_TW_TOL short through) */
 	double extra_payload_kg;   /* the largest payload over the mission's */
 	double downwash_cap_ms;    /* the role's downwash limit; 0 none */
 	double prop_diameter_in;   /* D* */

@@ -306,6 +306,17 @@ feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 	double p_max = p->burst_factor * p->chem->p_spec_w_kg * o->mass.battery_kg
 	    / (o->packaging_factor > 0.0 ? o->packaging_factor : 1.0);
 	checks_set(&v, CK_BATTERY_POWER, o->peak_power_w, p_max);
+	/* The role's T/W with the largest payload aboard, sized to it. */
+	double theta = 1.0 - p->thrust_margin;
+	double m_max = o->mass.total_kg + p->extra_payload_kg;
+	if (theta > 0.0 && m_max > 0.0 && o->thrust_to_weight > 0.0) {
+		checks_set(&v, CK_THRUST, o->thrust_to_weight * o->mass.total_kg / m_max,
+		    1.0 / (theta * theta));
+		v.sized[CK_THRUST] = true;
+		/* Sized at the loop's last iterate, within its 1 g. */
+		v.pass_within_tol[CK_THRUST] = v.value[CK_THRUST]
+		    >= v.limit[CK_THRUST] * (1.0 - 1e-3);
+	}
 	v.sized[CK_BATTERY_POWER] = o->battery_power_binds;
 	v.sized[CK_RESERVE] = !p->capacity_locked;
 	v.sized[CK_PROP_OVERLAP] = !p->prop_locked
