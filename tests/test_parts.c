@@ -586,11 +586,11 @@ agricultural_sprayers_should_close_feasibly_on_real_parts(void **state)
 		closed++;
 		assert_true(r->closed.feasible && r->feasible);
 		/* The agriculture role's T/W 1.8 with the largest payload
-		 * aboard, less the search's 2 % tolerance. */
+		 * aboard: a requirement, held exactly. */
 		double m = r->closed.mass.total_kg;
 		double extra = fmax(0.0, r->mission.max_payload_kg - r->mission.payload_kg);
 		assert_true(r->closed.thrust_to_weight * m / (m + extra)
-		    >= 0.98 * 1.8 * (1.0 - 1e-9));
+		    >= 1.8 * (1.0 - 1e-9));
 		assert_true(r->closed.end_soc >= r->closed.reserve_soc);
 		assert_true(r->closed.downwash_ms <= r->mission.payload_role.ag_max_downwash_ms);
 		assert_true(r->closed.mass.total_kg > 20.0 && r->closed.mass.total_kg < 100.0);
@@ -626,42 +626,51 @@ fixture_closes(const struct cli_env *env, const char *path)
 	return r;
 }
 
-/* A mission whose real parts close far lighter than its continuous design
- * (whose laws fit the catalogue's median part): screened at the continuous
- * mass, no option passes; the ranking that trusts an option's lighter
- * estimate finds the closing (tests/fixtures/missions). */
+/* A mission whose real parts close lighter than its continuous design
+ * (whose laws fit the catalogue's median part): ranked and closed at the
+ * continuous mass and at the mass its closest closing grew to, no option
+ * passes; the ranking that trusts an option's lighter estimate finds the
+ * closing.  This 16 kg delivery hexacopter closes only through that round
+ * (with the round removed from parts.c it is infeasible; measured when the
+ * fixture was chosen, tests/fixtures/missions). */
 static void
-search_should_find_a_closing_much_lighter_than_the_continuous_design(void **state)
+search_should_trust_an_options_lighter_estimate_when_nothing_else_closes(void **state)
 {
 	(void)state;
 	struct cli_env env;
 	assert_int_equal(cli_env_load(&env, NULL, 1, stderr), 0);
 	struct solve_result *r = fixture_closes(&env,
 	    "tests/fixtures/missions/lighter_on_parts.json");
-	assert_true(r->closed.mass.total_kg < 0.8 * r->custom.mass.total_kg);
+	assert_true(r->closed.mass.total_kg < r->custom.mass.total_kg);
 	free(r);
 	cli_env_free(&env);
 }
 
 /* A closing with charge to spare that fails only on its pack's checks
- * (here thrust, which a heavier pack lowers) also tries the lighter pack
- * its charge asks for: this 57 kg lifter closes only on it
- * (tests/fixtures/missions). */
+ * (current, burst, sag, thrust) also tries the lighter pack its charge
+ * asks for.  This imaging quad closes on one bank of two 6S 6500 mAh packs
+ * that way; without that try the search settles on two banks of 4S
+ * 5500 mAh packs, 0.38 kg heavier (measured when the fixture was chosen,
+ * tests/fixtures/missions). */
 static void
 search_should_try_the_lighter_pack_a_closing_with_spare_charge_asks_for(void **state)
 {
 	(void)state;
 	struct cli_env env;
 	assert_int_equal(cli_env_load(&env, NULL, 1, stderr), 0);
-	free(fixture_closes(&env,
-	    "tests/fixtures/missions/lighter_pack_by_charge.json"));
+	struct solve_result *r = fixture_closes(&env,
+	    "tests/fixtures/missions/lighter_pack_by_charge.json");
+	assert_int_equal(r->battery_parallel_packs, 1);
+	assert_true(r->closed.mass.total_kg < r->custom.mass.total_kg);
+	free(r);
 	cli_env_free(&env);
 }
 
 /* More than PARTS_BANK_PARALLEL packs in parallel only when nothing closes
- * on fewer: the delivery quad would close 7 % lighter on ten 3 Ah packs,
- * and keeps its six; a mission that closes only on a wider bank gets one,
- * of at most PARTS_MAX_PACKS packs. */
+ * on fewer: the delivery quad keeps a bank of at most four; a mission that
+ * closes only on a wider bank (this 21 kg inspection octocopter, whose
+ * packs' connectors carry the full-throttle current only when shared six
+ * ways) gets one, of at most PARTS_MAX_PACKS packs. */
 static void
 search_should_wire_a_wider_bank_of_packs_only_as_a_last_resort(void **state)
 {
@@ -734,7 +743,7 @@ main(void)
 		cmocka_unit_test(price_text_should_say_at_least_and_count_the_unpriced_lines),
 		cmocka_unit_test(bom_should_order_the_frame_kit_and_avionics_with_prices_and_dates),
 		cmocka_unit_test(agricultural_sprayers_should_close_feasibly_on_real_parts),
-		cmocka_unit_test(search_should_find_a_closing_much_lighter_than_the_continuous_design),
+		cmocka_unit_test(search_should_trust_an_options_lighter_estimate_when_nothing_else_closes),
 		cmocka_unit_test(search_should_try_the_lighter_pack_a_closing_with_spare_charge_asks_for),
 		cmocka_unit_test(search_should_wire_a_wider_bank_of_packs_only_as_a_last_resort),
 		cmocka_unit_test(integrated_system_should_stay_within_its_esc_at_full_throttle),
