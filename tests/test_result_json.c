@@ -101,6 +101,8 @@ static const struct {
 	RD("winding_temp_c", winding_temp_c),
 	RD("motor_winding_resistance_ohm", motor_winding_resistance_ohm),
 	RD("motor_copper_loss_w", motor_copper_loss_w),
+	RD("hover_power_w", hover_power_w),
+	RD("hover_power_after_shedding_w", hover_power_shed_w),
 #undef RD
 };
 #define N_RUN_DOUBLES (sizeof run_doubles / sizeof run_doubles[0])
