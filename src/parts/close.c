@@ -173,7 +173,7 @@ parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
 		/* The ESC class against the motor and the bus (compat.c). */
 		if (!locked && compat_esc(e, o->motor, o->cells, hover_a,
 		    o->full_current_a, PARTS_CURRENT_MARGIN, PERF_FULL_THROTTLE_S,
-		    why, sizeof why) != NULL)
+		    NULL, 0) != NULL)
 			continue;
 		int boards;
 		if (e->channels <= 1) {
@@ -187,7 +187,7 @@ parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
 			boards = p->n_rotors / e->channels;
 		}
 		/* An all-in-one board's flight controller flies the aircraft. */
-		if (!locked && compat_board_fc(e, boards, takes_fc, why, sizeof why) != NULL)
+		if (!locked && compat_board_fc(e, boards, takes_fc, NULL, 0) != NULL)
 			continue;
 		double kg = (double)boards * e->mass_kg;
 		if (kg < best_kg) {

@@ -5,7 +5,10 @@
  * 5-inch motors on 6S).  Each rule is one small function over catalogue
  * entries and currents: NULL when the parts work together, else the
  * reason, written into why (size n) and returned, in words a builder
- * reads ("the camera is walksnail, the transmitter analog").
+ * reads ("the camera is walksnail, the transmitter analog").  why NULL
+ * asks only the answer: the search's loops ask thousands of times and
+ * print none, so the reason is not formatted (a non-NULL constant is
+ * returned instead).
  *
  * Ratings and bursts.  A rated part (battery connector, power module, ESC
  * channel) carries the mission's sustained current within its continuous
@@ -20,10 +23,24 @@
  * Parts layer; no I/O.
  */
 #include <ctype.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "parts/parts_int.h"
+
+/* The reason a rule fails, formatted into why when the caller wants it. */
+static const char *
+reason(char *why, size_t n, const char *fmt, ...)
+{
+	if (why == NULL)
+		return "incompatible";
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(why, n, fmt, ap);
+	va_end(ap);
+	return why;
+}
 
 double
 compat_rating_for(const struct compat_rating *r, double need_s)
@@ -37,22 +54,16 @@ const char *
 compat_rated(const struct compat_rating *r, double sustained_a, double full_a,
              double need_s, char *why, size_t n)
 {
-	if (!(r->continuous_a > 0.0)) {
-		snprintf(why, n, "no current rating published");
-		return why;
-	}
-	if (sustained_a > r->continuous_a) {
-		snprintf(why, n, "%.1f A sustained, above its %.0f A continuous rating",
-		    sustained_a, r->continuous_a);
-		return why;
-	}
+	if (!(r->continuous_a > 0.0))
+		return reason(why, n, "no current rating published");
+	if (sustained_a > r->continuous_a)
+		return reason(why, n, "%.1f A sustained, above its %.0f A "
+		    "continuous rating", sustained_a, r->continuous_a);
 	double full_rating = compat_rating_for(r, need_s);
-	if (full_a > full_rating) {
-		snprintf(why, n, "%.1f A at full throttle, above its %.0f A %s", full_a,
-		    full_rating, full_rating > r->continuous_a ? "burst rating"
+	if (full_a > full_rating)
+		return reason(why, n, "%.1f A at full throttle, above its %.0f A %s",
+		    full_a, full_rating, full_rating > r->continuous_a ? "burst rating"
 		    : "continuous rating (no burst rating that holds for the burst)");
-		return why;
-	}
 	return NULL;
 }
 
@@ -67,28 +78,21 @@ const char *
 compat_video(const struct catalog_avionics *camera, const char *vtx_system,
              bool vtx_has_camera, char *why, size_t n)
 {
-	if (vtx_system == NULL || vtx_system[0] == '\0') {
-		snprintf(why, n, "the video transmitter names no video system");
-		return why;
-	}
-	if (camera == NULL && !vtx_has_camera) {
-		snprintf(why, n, "the %s transmitter carries no camera", vtx_system);
-		return why;
-	}
+	if (vtx_system == NULL || vtx_system[0] == '\0')
+		return reason(why, n, "the video transmitter names no video system");
+	if (camera == NULL && !vtx_has_camera)
+		return reason(why, n, "the %s transmitter carries no camera",
+		    vtx_system);
 	if (camera == NULL)
 		return NULL;
-	if (vtx_has_camera) {
-		snprintf(why, n, "the transmitter carries its own camera; %s is a second",
-		    camera->id);
-		return why;
-	}
+	if (vtx_has_camera)
+		return reason(why, n, "the transmitter carries its own camera; %s is "
+		    "a second", camera->id);
 	if (camera->video_system[0] == '\0'
-	    || strcmp(camera->video_system, vtx_system) != 0) {
-		snprintf(why, n, "the camera is %s, the transmitter %s",
+	    || strcmp(camera->video_system, vtx_system) != 0)
+		return reason(why, n, "the camera is %s, the transmitter %s",
 		    camera->video_system[0] ? camera->video_system : "of no named system",
 		    vtx_system);
-		return why;
-	}
 	return NULL;
 }
 
@@ -150,17 +154,14 @@ compat_connector(const char *pack_connector, const struct catalog_avionics *a,
 {
 	bool named = pack_connector != NULL && pack_connector[0] != '\0'
 	    && strcmp(pack_connector, "smart") != 0;
-	if (named && !compat_mates(pack_connector, a)) {
-		snprintf(why, n, "%s does not mate with the pack's %s plug",
+	if (named && !compat_mates(pack_connector, a))
+		return reason(why, n, "%s does not mate with the pack's %s plug",
 		    a->part_number, pack_connector);
-		return why;
-	}
 	struct compat_rating r = { a->max_current_a, a->burst_current_a, a->burst_s };
 	char rated[128];
-	if (compat_rated(&r, sustained_a, full_a, need_s, rated, sizeof rated) != NULL) {
-		snprintf(why, n, "%s: %s", a->part_number, rated);
-		return why;
-	}
+	if (compat_rated(&r, sustained_a, full_a, need_s, why ? rated : NULL,
+	    sizeof rated) != NULL)
+		return reason(why, n, "%s: %s", a->part_number, rated);
 	return NULL;
 }
 
@@ -179,26 +180,20 @@ compat_esc(const struct catalog_esc *e, const struct catalog_motor *m, int cells
            char *why, size_t n)
 {
 	int hi = e->cells_max > 0 ? e->cells_max : PARTS_UNRATED_ESC_CELLS;
-	if (cells > hi || (e->cells_min > 0 && cells < e->cells_min)) {
-		snprintf(why, n, "%s takes %d-%dS, the bus is %dS", e->part_number,
+	if (cells > hi || (e->cells_min > 0 && cells < e->cells_min))
+		return reason(why, n, "%s takes %d-%dS, the bus is %dS", e->part_number,
 		    e->cells_min > 0 ? e->cells_min : 1, hi, cells);
-		return why;
-	}
 	if (m != NULL && ((m->cells_max > 0 && cells > m->cells_max)
-	    || (m->cells_min > 0 && cells < m->cells_min))) {
-		snprintf(why, n, "the motor takes %d-%dS, the bus is %dS",
+	    || (m->cells_min > 0 && cells < m->cells_min)))
+		return reason(why, n, "the motor takes %d-%dS, the bus is %dS",
 		    m->cells_min, m->cells_max, cells);
-		return why;
-	}
 	struct compat_rating r = { e->continuous_current_a, e->burst_current_a,
 		e->burst_s };
 	char rated[128];
-	if (compat_rated(&r, sustained_a, margin * full_a, need_s, rated,
-	    sizeof rated) != NULL) {
-		snprintf(why, n, "%s per channel, with the %.0f %% margin: %s",
+	if (compat_rated(&r, sustained_a, margin * full_a, need_s,
+	    why ? rated : NULL, sizeof rated) != NULL)
+		return reason(why, n, "%s per channel, with the %.0f %% margin: %s",
 		    e->part_number, 100.0 * (margin - 1.0), rated);
-		return why;
-	}
 	return NULL;
 }
 
@@ -213,15 +208,12 @@ compat_board_fc(const struct catalog_esc *e, int n_boards, bool class_takes_it,
 	if (!catalog_list_names(e->carries, "flight_controller"))
 		return NULL;
 	if (!class_takes_it) {
-		snprintf(why, n, "%s carries a flight controller; the airframe class "
-		    "needs a redundant one, bought apart", e->part_number);
-		return why;
+		return reason(why, n, "%s carries a flight controller; the airframe "
+		    "class needs a redundant one, bought apart", e->part_number);
 	}
-	if (n_boards > 1) {
-		snprintf(why, n, "%d x %s would carry %d flight controllers",
+	if (n_boards > 1)
+		return reason(why, n, "%d x %s would carry %d flight controllers",
 		    n_boards, e->part_number, n_boards);
-		return why;
-	}
 	return NULL;
 }
 

@@ -195,11 +195,10 @@ meets(const struct catalog_avionics *a, const char *kind, const char *need,
 		return says(a, "own GNSS");
 	if (strcmp(need, "current") == 0) {
 		/* The power module carries the whole battery current. */
-		char why[160];
 		struct compat_rating r = rating_of(a);
 		int hi = a->cells_max > 0 ? a->cells_max : PARTS_UNRATED_PM_CELLS;
 		return cells <= hi && compat_rated(&r, load->sustained_a, load->full_a,
-		    PERF_FULL_THROTTLE_S, why, sizeof why) == NULL;
+		    PERF_FULL_THROTTLE_S, NULL, 0) == NULL;
 	}
 	return false;
 }
@@ -339,11 +338,10 @@ fitting_connector(const struct parts_ctx *x, double sustained_a, double full_a)
 {
 	const struct catalog_avionics *best = NULL;
 	const struct parts_kit_kind *kk = of_kind(x, "connector");
-	char why[160];
 	for (int i = 0; kk != NULL && i < kk->n; i++)
 		if (!compat_connector_half(kk->items[i])
 		    && compat_connector("", kk->items[i], sustained_a, full_a,
-		    PERF_FULL_THROTTLE_S, why, sizeof why) == NULL
+		    PERF_FULL_THROTTLE_S, NULL, 0) == NULL
 		    && lighter(kk->items[i], best))
 			best = kk->items[i];
 	return best;

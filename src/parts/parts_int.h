@@ -321,7 +321,9 @@ struct compat_rating {
  * burst rating does). */
 double compat_rating_for(const struct compat_rating *r, double need_s);
 /* sustained_a within the continuous rating, full_a within the rating for
- * a full-throttle burst of need_s. */
+ * a full-throttle burst of need_s.  Every compat_* rule returns NULL when
+ * the parts work together, else the reason in why (why NULL: only the
+ * answer, nothing formatted). */
 const char *compat_rated(const struct compat_rating *r, double sustained_a,
                          double full_a, double need_s, char *why, size_t n);
 /* camera with a transmitter of system vtx_system (vtx_has_camera: an air

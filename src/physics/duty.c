@@ -2,6 +2,7 @@
 #include "physics/duty.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 #include "util/strbuf.h"
@@ -51,7 +52,7 @@ add_seg(struct duty_plan *pl, int g, enum duty_law law, double dur_s,
 static void
 plan_init(struct duty_plan *pl, enum duty_kind kind)
 {
-	memset(pl, 0, sizeof *pl);
+	memset(pl, 0, offsetof(struct duty_plan, seg));
 	pl->kind = kind;
 	pl->drop_time_s = -1.0;
 }

@@ -76,7 +76,6 @@ struct duty_segment {
 struct duty_plan {
 	enum duty_kind kind;       /* the profile flown */
 	int n_seg;
-	struct duty_segment seg[DUTY_MAX_SEG];
 	int n_group;
 	struct duty_group group[DUTY_MAX_GROUP];
 	double total_s;            /* the flight */
@@ -95,6 +94,10 @@ struct duty_plan {
 	double spray_rate_kg_s;    /* spray: tank shed rate */
 	double drop_time_s;        /* delivery: the release; < 0: none */
 	double drop_mass_kg;       /* delivery: released */
+	/* Last: only seg[0 .. n_seg) is ever written or read, so a new plan
+	 * clears what comes before it, not its 150 slots (the solve builds
+	 * a plan per flight it flies). */
+	struct duty_segment seg[DUTY_MAX_SEG];
 };
 
 /* What a plan is built from: the role's profile and the mission. */
