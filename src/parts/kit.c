@@ -96,8 +96,7 @@ struct kit_item {
 	bool role;
 };
 
-#define KIT_MAX_ITEMS 7
-static const struct kit_item kit_items[AF_CLASS_MAX][KIT_MAX_ITEMS] = {
+static const struct kit_item kit_items[AF_CLASS_MAX][PARTS_KIT_ITEMS] = {
 	[AF_MICRO_AIO] = {
 		{ "flight_controller", NULL, "Flight controller", 0.012, false },
 		{ "receiver", NULL, "Control receiver", 0.004, false },
@@ -213,6 +212,54 @@ frame_offered(const struct catalog_frame *f)
 	return f->usable && screen_doubt_frame(f, why, sizeof why) == NULL;
 }
 
+static const struct catalog_avionics *lightest(const struct parts_ctx *x,
+    const char *kind, const char *need, int cells, const struct parts_load *load);
+
+/* Is item it chosen on a current rating (the power module), so that the
+ * closing's currents decide it, not its bus alone? */
+static bool
+by_current(const struct kit_item *it)
+{
+	return it->need != NULL && strcmp(it->need, "current") == 0;
+}
+
+/* The Remote ID module's need: a standalone one on the micro class (its
+ * FPV flight controllers feed no module), any otherwise. */
+static const char *
+remote_id_need(const struct parts_ctx *x)
+{
+	return kit_class(x) == AF_MICRO_AIO ? "standalone" : NULL;
+}
+
+/* x->kit_by_bus: every item chosen by its bus alone, on every bus. */
+static void
+pick_by_bus(struct parts_ctx *x)
+{
+	const struct kit_item *items = kit_items[kit_class(x)];
+	for (int cells = 1; cells <= PARTS_MAX_CELLS; cells++) {
+		for (int i = 0; i < PARTS_KIT_ITEMS && items[i].what != NULL; i++)
+			if (items[i].kind != NULL && !by_current(&items[i]))
+				x->kit_by_bus[i][cells] = lightest(x, items[i].kind,
+				    items[i].need, cells, NULL);
+		x->kit_by_bus[PARTS_KIT_ITEMS][cells] = lightest(x, "remote_id",
+		    remote_id_need(x), cells, NULL);
+	}
+}
+
+/* The lightest part for item `slot` of the kit (PARTS_KIT_ITEMS: Remote
+ * ID) on `cells` carrying load: the pick of parts_kit_init() where the
+ * bus alone decides it. */
+static const struct catalog_avionics *
+item_part(const struct parts_ctx *x, int slot, const char *kind,
+          const char *need, int cells, const struct parts_load *load)
+{
+	bool on_bus = slot == PARTS_KIT_ITEMS
+	    || !by_current(&kit_items[kit_class(x)][slot]);
+	if (on_bus && cells >= 1 && cells <= PARTS_MAX_CELLS)
+		return x->kit_by_bus[slot][cells];
+	return lightest(x, kind, need, cells, load);
+}
+
 void
 parts_kit_init(struct parts_ctx *x)
 {
@@ -246,6 +293,7 @@ parts_kit_init(struct parts_ctx *x)
 	for (size_t i = 0; i < nf; i++)
 		if (frame_offered(catalog_frame(x->cat, i)))
 			x->kit_frames[x->n_kit_frames++] = catalog_frame(x->cat, i);
+	pick_by_bus(x);
 }
 
 void
@@ -474,9 +522,10 @@ add_allowance(struct parts_kit *kit, const char *what, const char *basis,
 
 /* One class item: on the ESC board, a part, or its allowance. */
 static void
-pick_item(const struct parts_ctx *x, const struct kit_item *it, int cells,
+pick_item(const struct parts_ctx *x, int slot, int cells,
           const struct catalog_esc *esc, struct parts_kit *kit)
 {
+	const struct kit_item *it = &kit_items[kit_class(x)][slot];
 	/* An all-in-one board's flight controller, receiver or video
 	 * transmitter is in the ESC's mass and order line: not bought
 	 * twice.  A redundant flight controller is not an AIO's. */
@@ -486,7 +535,7 @@ pick_item(const struct parts_ctx *x, const struct kit_item *it, int cells,
 		return;
 	}
 	const struct catalog_avionics *a = it->kind != NULL
-	    ? lightest(x, it->kind, it->need, cells, &kit->load) : NULL;
+	    ? item_part(x, slot, it->kind, it->need, cells, &kit->load) : NULL;
 	if (it->kind != NULL && strcmp(it->kind, "power_module") == 0) {
 		kit->power_module_item = true;
 		kit->power_module = a;
@@ -537,9 +586,8 @@ pick_remote_id(const struct parts_ctx *x, int cells, struct parts_kit *kit)
 	for (int i = 0; i < kit->n_part; i++)
 		if (compat_does(kit->part[i], "remote_id"))
 			return;
-	const char *need = kit_class(x) == AF_MICRO_AIO ? "standalone" : NULL;
-	const struct catalog_avionics *a = lightest(x, "remote_id", need, cells,
-	    &kit->load);
+	const struct catalog_avionics *a = item_part(x, PARTS_KIT_ITEMS,
+	    "remote_id", remote_id_need(x), cells, &kit->load);
 	if (a != NULL)
 		add_part(kit, a);
 	else
@@ -555,14 +603,14 @@ parts_kit_pick(const struct parts_ctx *x, const struct parts_option *o,
 	kit->load = *load;
 	const struct kit_item *items = kit_items[kit_class(x)];
 	const struct kit_item *vtx = NULL, *cam = NULL;
-	for (int i = 0; i < KIT_MAX_ITEMS && items[i].what != NULL; i++) {
+	for (int i = 0; i < PARTS_KIT_ITEMS && items[i].what != NULL; i++) {
 		const struct kit_item *it = &items[i];
 		if (it->kind != NULL && strcmp(it->kind, "video_tx") == 0)
 			vtx = it;
 		else if (it->kind != NULL && strcmp(it->kind, "camera_fpv") == 0)
 			cam = it;
 		else
-			pick_item(x, it, o->cells, esc, kit);
+			pick_item(x, i, o->cells, esc, kit);
 	}
 	if (vtx != NULL && cam != NULL)
 		pick_video(x, vtx, cam, esc, kit);
@@ -611,7 +659,7 @@ bool
 parts_kit_takes_board_fc(const struct parts_ctx *x)
 {
 	const struct kit_item *items = kit_items[kit_class(x)];
-	for (int i = 0; i < KIT_MAX_ITEMS && items[i].what != NULL; i++)
+	for (int i = 0; i < PARTS_KIT_ITEMS && items[i].what != NULL; i++)
 		if (items[i].kind != NULL && strcmp(items[i].kind, "flight_controller") == 0)
 			return items[i].need == NULL || strcmp(items[i].need, "any") == 0;
 	return true;

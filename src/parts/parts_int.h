@@ -16,6 +16,7 @@
 
 #define PARTS_MAX_CELLS     18    /* the highest bus searched: the agricultural
                                      class's 18S (75.6 V LiPo) */
+#define PARTS_KIT_ITEMS     7     /* items of a class's avionics kit (kit.c) */
 #define PARTS_MAX_SERIES    4     /* catalogue packs in series ... */
 #define PARTS_BANK_PARALLEL 4     /* ... and in parallel, ... */
 #define PARTS_MAX_PARALLEL  6     /* ... six when no closing passes with four
@@ -167,6 +168,13 @@ struct parts_ctx {
 	                                      not: a plug's rating bounds its
 	                                      pack even where the catalogue has
 	                                      no mass for its mate */
+	/* The lightest part of each item of the class's kit whose choice
+	 * hangs on the bus alone (every need but a current rating), and in
+	 * the last slot the Remote ID module: by item and bus, the same for
+	 * every closing, so parts_kit_init() picks them once (NULL: none
+	 * fits; kit.c). */
+	const struct catalog_avionics *kit_by_bus[PARTS_KIT_ITEMS + 1]
+	                                         [PARTS_MAX_CELLS + 1];
 	const struct catalog_frame **kit_frames; /* the frame kits offered */
 	int n_kit_frames;
 	int n_census[PARTS_REASON_MAX];
