@@ -2,6 +2,7 @@
 #include "core/checks.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -212,7 +213,11 @@ check_cond_text(enum check_cond cond)
 void
 checks_init(struct check_values *v)
 {
-	memset(v, 0, sizeof *v);
+	/* The texts are most of its 13 KiB and a string needs only its NUL
+	 * (one check_values is filled for every run and closing flown). */
+	memset(v, 0, offsetof(struct check_values, basis));
+	for (int i = 0; i < CK_COUNT; i++)
+		v->basis[i][0] = v->note[i][0] = '\0';
 }
 
 void
@@ -307,7 +312,7 @@ checks_apply(const struct check_values *v, const char *run, struct res_run *o,
 		c->name = d->name;
 		c->unit = d->unit;
 		c->condition = check_cond_text(d->cond);
-		snprintf(c->basis, sizeof c->basis, "%s", v->basis[id]);
+		str_copy(c->basis, sizeof c->basis, v->basis[id]);
 		c->value = v->value[id];
 		c->limit = v->limit[id];
 		c->upper = v->side[id] != 0 ? v->side[id] > 0 : d->upper;

@@ -79,6 +79,7 @@ struct check_values {
 	bool pass_within_tol[CK_COUNT]; /* passes though a hair beyond (the
 	                                reserve, integrated to its tolerance) */
 	bool advisory[CK_COUNT];     /* a failure is reported, not a rejection */
+	/* Last, and strings only (checks_init() clears their first bytes): */
 	char basis[CK_COUNT][RES_BASIS]; /* what sets the limit, "2 × XT60, 60 A" */
 	char note[CK_COUNT][RES_TEXT];   /* a clause added to a failure */
 };

@@ -29,9 +29,8 @@
 
 #include "parts/parts_int.h"
 
-/* The reason a rule fails, formatted into why when the caller wants it. */
-static const char *
-reason(char *why, size_t n, const char *fmt, ...)
+const char *
+compat_reason(char *why, size_t n, const char *fmt, ...)
 {
 	if (why == NULL)
 		return "incompatible";
@@ -55,13 +54,13 @@ compat_rated(const struct compat_rating *r, double sustained_a, double full_a,
              double need_s, char *why, size_t n)
 {
 	if (!(r->continuous_a > 0.0))
-		return reason(why, n, "no current rating published");
+		return compat_reason(why, n, "no current rating published");
 	if (sustained_a > r->continuous_a)
-		return reason(why, n, "%.1f A sustained, above its %.0f A "
+		return compat_reason(why, n, "%.1f A sustained, above its %.0f A "
 		    "continuous rating", sustained_a, r->continuous_a);
 	double full_rating = compat_rating_for(r, need_s);
 	if (full_a > full_rating)
-		return reason(why, n, "%.1f A at full throttle, above its %.0f A %s",
+		return compat_reason(why, n, "%.1f A at full throttle, above its %.0f A %s",
 		    full_a, full_rating, full_rating > r->continuous_a ? "burst rating"
 		    : "continuous rating (no burst rating that holds for the burst)");
 	return NULL;
@@ -79,18 +78,18 @@ compat_video(const struct catalog_avionics *camera, const char *vtx_system,
              bool vtx_has_camera, char *why, size_t n)
 {
 	if (vtx_system == NULL || vtx_system[0] == '\0')
-		return reason(why, n, "the video transmitter names no video system");
+		return compat_reason(why, n, "the video transmitter names no video system");
 	if (camera == NULL && !vtx_has_camera)
-		return reason(why, n, "the %s transmitter carries no camera",
+		return compat_reason(why, n, "the %s transmitter carries no camera",
 		    vtx_system);
 	if (camera == NULL)
 		return NULL;
 	if (vtx_has_camera)
-		return reason(why, n, "the transmitter carries its own camera; %s is "
+		return compat_reason(why, n, "the transmitter carries its own camera; %s is "
 		    "a second", camera->id);
 	if (camera->video_system[0] == '\0'
 	    || strcmp(camera->video_system, vtx_system) != 0)
-		return reason(why, n, "the camera is %s, the transmitter %s",
+		return compat_reason(why, n, "the camera is %s, the transmitter %s",
 		    camera->video_system[0] ? camera->video_system : "of no named system",
 		    vtx_system);
 	return NULL;
@@ -155,13 +154,13 @@ compat_connector(const char *pack_connector, const struct catalog_avionics *a,
 	bool named = pack_connector != NULL && pack_connector[0] != '\0'
 	    && strcmp(pack_connector, "smart") != 0;
 	if (named && !compat_mates(pack_connector, a))
-		return reason(why, n, "%s does not mate with the pack's %s plug",
+		return compat_reason(why, n, "%s does not mate with the pack's %s plug",
 		    a->part_number, pack_connector);
 	struct compat_rating r = { a->max_current_a, a->burst_current_a, a->burst_s };
 	char rated[128];
 	if (compat_rated(&r, sustained_a, full_a, need_s, why ? rated : NULL,
 	    sizeof rated) != NULL)
-		return reason(why, n, "%s: %s", a->part_number, rated);
+		return compat_reason(why, n, "%s: %s", a->part_number, rated);
 	return NULL;
 }
 
@@ -181,18 +180,18 @@ compat_esc(const struct catalog_esc *e, const struct catalog_motor *m, int cells
 {
 	int hi = e->cells_max > 0 ? e->cells_max : PARTS_UNRATED_ESC_CELLS;
 	if (cells > hi || (e->cells_min > 0 && cells < e->cells_min))
-		return reason(why, n, "%s takes %d-%dS, the bus is %dS", e->part_number,
+		return compat_reason(why, n, "%s takes %d-%dS, the bus is %dS", e->part_number,
 		    e->cells_min > 0 ? e->cells_min : 1, hi, cells);
 	if (m != NULL && ((m->cells_max > 0 && cells > m->cells_max)
 	    || (m->cells_min > 0 && cells < m->cells_min)))
-		return reason(why, n, "the motor takes %d-%dS, the bus is %dS",
+		return compat_reason(why, n, "the motor takes %d-%dS, the bus is %dS",
 		    m->cells_min, m->cells_max, cells);
 	struct compat_rating r = { e->continuous_current_a, e->burst_current_a,
 		e->burst_s };
 	char rated[128];
 	if (compat_rated(&r, sustained_a, margin * full_a, need_s,
 	    why ? rated : NULL, sizeof rated) != NULL)
-		return reason(why, n, "%s per channel, with the %.0f %% margin: %s",
+		return compat_reason(why, n, "%s per channel, with the %.0f %% margin: %s",
 		    e->part_number, 100.0 * (margin - 1.0), rated);
 	return NULL;
 }
@@ -208,11 +207,11 @@ compat_board_fc(const struct catalog_esc *e, int n_boards, bool class_takes_it,
 	if (!catalog_list_names(e->carries, "flight_controller"))
 		return NULL;
 	if (!class_takes_it) {
-		return reason(why, n, "%s carries a flight controller; the airframe "
+		return compat_reason(why, n, "%s carries a flight controller; the airframe "
 		    "class needs a redundant one, bought apart", e->part_number);
 	}
 	if (n_boards > 1)
-		return reason(why, n, "%d x %s would carry %d flight controllers",
+		return compat_reason(why, n, "%d x %s would carry %d flight controllers",
 		    n_boards, e->part_number, n_boards);
 	return NULL;
 }

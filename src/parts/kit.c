@@ -214,6 +214,10 @@ frame_offered(const struct catalog_frame *f)
 
 static const struct catalog_avionics *lightest(const struct parts_ctx *x,
     const char *kind, const char *need, int cells, const struct parts_load *load);
+static const struct catalog_avionics *own_plug(const struct parts_ctx *x,
+    const char *pack_connector);
+static void video_pair(const struct parts_ctx *x,
+    const struct catalog_avionics **vtx, const struct catalog_avionics **cam);
 
 /* Is item it chosen on a current rating (the power module), so that the
  * closing's currents decide it, not its bus alone? */
@@ -294,6 +298,12 @@ parts_kit_init(struct parts_ctx *x)
 		if (frame_offered(catalog_frame(x->cat, i)))
 			x->kit_frames[x->n_kit_frames++] = catalog_frame(x->cat, i);
 	pick_by_bus(x);
+	video_pair(x, &x->video_tx, &x->video_cam);
+	/* Each pack's own plug, found once (a pack is tried on many
+	 * closings, and its plug's row by its name). */
+	for (int i = 0; i < x->n_packs; i++)
+		x->packs[i].plug = own_plug(x, x->packs[i].b != NULL
+		    ? x->packs[i].b->connector : NULL);
 }
 
 void
@@ -401,25 +411,22 @@ parts_kit_plug(const struct parts_ctx *x, const struct parts_pack *pk,
 {
 	const char *plug = pk->b != NULL ? pk->b->connector : NULL;
 	double s = sustained_a / (double)pk->parallel, f = full_a / (double)pk->parallel;
-	const struct catalog_avionics *own = own_plug(x, plug);
+	const struct catalog_avionics *own = pk->plug;
 	/* A plug it names must be one the catalogue rates (a JST or an
 	 * unrated XT150 cannot be shown to carry anything), and that rating
 	 * bounds its pack, whether its mate is bought or not. */
-	if (names_plug(plug) && (own == NULL || !(own->max_current_a > 0.0))) {
-		snprintf(why, n, "the catalogue has no current rating for its %s plug",
-		    plug);
-		return why;
-	}
-	if (own != NULL
-	    && compat_connector(plug, own, s, f, PERF_FULL_THROTTLE_S, why, n) != NULL)
-		return why;
+	if (names_plug(plug) && (own == NULL || !(own->max_current_a > 0.0)))
+		return compat_reason(why, n, "the catalogue has no current rating "
+		    "for its %s plug", plug);
+	const char *bad;
+	if (own != NULL && (bad = compat_connector(plug, own, s, f,
+	    PERF_FULL_THROTTLE_S, why, n)) != NULL)
+		return bad;
 	if (own != NULL && own->usable)
 		return NULL;
-	if (fitting_connector(x, s, f) == NULL) {
-		snprintf(why, n, "no catalogue connector carries %.0f A a pack at full "
-		    "throttle", f);
-		return why;
-	}
+	if (fitting_connector(x, s, f) == NULL)
+		return compat_reason(why, n, "no catalogue connector carries %.0f A a "
+		    "pack at full throttle", f);
 	return NULL;
 }
 
@@ -430,11 +437,10 @@ static void
 pick_connector(const struct parts_ctx *x, const struct parts_pack *pk,
                struct parts_kit *kit)
 {
-	const char *plug = pk->b != NULL ? pk->b->connector : NULL;
 	int n_packs = pk->series * pk->parallel;
 	double s = kit->load.sustained_a / (double)pk->parallel;
 	double f = kit->load.full_a / (double)pk->parallel;
-	const struct catalog_avionics *own = own_plug(x, plug);
+	const struct catalog_avionics *own = pk->plug;
 	if (own != NULL && own->usable && own->max_current_a > 0.0) {
 		kit->connector = own;
 		kit->connector_mates = true;
@@ -455,9 +461,8 @@ camera_for(const struct parts_ctx *x, const char *system)
 {
 	const struct catalog_avionics *best = NULL;
 	const struct parts_kit_kind *cams = of_kind(x, "camera_fpv");
-	char why[128];
 	for (int i = 0; cams != NULL && i < cams->n; i++)
-		if (compat_video(cams->items[i], system, false, why, sizeof why) == NULL
+		if (compat_video(cams->items[i], system, false, NULL, 0) == NULL
 		    && lighter(cams->items[i], best))
 			best = cams->items[i];
 	return best;
@@ -561,7 +566,8 @@ pick_video(const struct parts_ctx *x, const struct kit_item *vtx_item,
 		kit->n_on_esc++;
 		cam = camera_for(x, esc->video_system);
 	} else {
-		video_pair(x, &vtx, &cam);
+		vtx = x->video_tx;
+		cam = x->video_cam;
 		if (vtx != NULL)
 			add_part(kit, vtx);
 		else

@@ -156,13 +156,12 @@ pick_pack(const struct parts_ctx *x, const struct parts_option *o,
 		const struct parts_pack *q = &pk[i];
 		double r_pack = (double)o->cells * batt_rated_cell_ohm(q->chem,
 		    q->capacity_ah, q->b->continuous_c);
-		char why[160];
 		if (q->energy_wh >= need_wh && q->max_burst_a >= i_full
 		    && q->max_continuous_a >= i_hover
 		    && r_pack * i_full <= max_sag * v && q->mass_kg > above_kg
 		    && q->parallel <= x->max_parallel
 		    && (best < 0 || q->mass_kg < pk[best].mass_kg)
-		    && parts_kit_plug(x, q, i_hover, i_full, why, sizeof why) == NULL)
+		    && parts_kit_plug(x, q, i_hover, i_full, NULL, 0) == NULL)
 			best = i;
 	}
 	return best;

@@ -136,6 +136,9 @@ struct parts_pack {
 	double mass_kg, capacity_ah, energy_wh;
 	double max_continuous_a, max_burst_a;
 	const struct batt_chem *chem;
+	const struct catalog_avionics *plug; /* the catalogue's row of its own
+	                                        plug family, or NULL (kit.c,
+	                                        set by parts_kit_init()) */
 };
 
 /* The catalogue's usable avionics parts of one kind, in catalogue order
@@ -175,6 +178,9 @@ struct parts_ctx {
 	 * fits; kit.c). */
 	const struct catalog_avionics *kit_by_bus[PARTS_KIT_ITEMS + 1]
 	                                         [PARTS_MAX_CELLS + 1];
+	/* The lightest transmitter and camera that work together, when the
+	 * ESC board carries none (the same for every closing; kit.c). */
+	const struct catalog_avionics *video_tx, *video_cam;
 	const struct catalog_frame **kit_frames; /* the frame kits offered */
 	int n_kit_frames;
 	int n_census[PARTS_REASON_MAX];
@@ -325,6 +331,11 @@ void parts_record_checks(const struct parts_ctx *x, const struct parts_closed *c
 struct compat_rating {
 	double continuous_a, burst_a, burst_s;
 };
+/* The reason a rule fails: fmt formatted into why (size n) and why
+ * returned, or, why NULL (the caller wants only the answer), a constant
+ * non-NULL text and nothing formatted. */
+const char *compat_reason(char *why, size_t n, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
 /* The rating that holds for a burst of need_s (compat.c says when the
  * burst rating does). */
 double compat_rating_for(const struct compat_rating *r, double need_s);
@@ -396,7 +407,7 @@ bool parts_kit_same(const struct parts_kit *a, const struct parts_kit *b);
  * sustained_a and full_a: through its own plug when the catalogue sells
  * its mate, else through a catalogue connector that carries it, the
  * plug's own rating carrying it wherever the catalogue has one?  NULL
- * when it can, else why. */
+ * when it can, else why (why NULL: only the answer). */
 const char *parts_kit_plug(const struct parts_ctx *x, const struct parts_pack *pk,
                            double sustained_a, double full_a, char *why,
                            size_t n);
