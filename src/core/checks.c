@@ -2,6 +2,7 @@
 #include "core/checks.h"
 
 #include <math.h>
+#include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
@@ -218,6 +219,17 @@ checks_init(struct check_values *v)
 	memset(v, 0, offsetof(struct check_values, basis));
 	for (int i = 0; i < CK_COUNT; i++)
 		v->basis[i][0] = v->note[i][0] = '\0';
+}
+
+void
+checks_basis(struct check_values *v, enum check_id id, const char *fmt, ...)
+{
+	if (v->terse)
+		return;
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(v->basis[id], sizeof v->basis[id], fmt, ap);
+	va_end(ap);
 }
 
 void

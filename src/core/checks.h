@@ -79,6 +79,8 @@ struct check_values {
 	bool pass_within_tol[CK_COUNT]; /* passes though a hair beyond (the
 	                                reserve, integrated to its tolerance) */
 	bool advisory[CK_COUNT];     /* a failure is reported, not a rejection */
+	bool terse;                  /* values only: no basis text is
+	                                written (a trial closing's) */
 	/* Last, and strings only (checks_init() clears their first bytes): */
 	char basis[CK_COUNT][RES_BASIS]; /* what sets the limit, "2 × XT60, 60 A" */
 	char note[CK_COUNT][RES_TEXT];   /* a clause added to a failure */
@@ -86,6 +88,10 @@ struct check_values {
 
 /* Start with every check off. */
 void checks_init(struct check_values *v);
+
+/* Write what sets check id's limit ("2 × XT60, 60 A"), unless v->terse. */
+void checks_basis(struct check_values *v, enum check_id id, const char *fmt,
+                  ...) __attribute__((format(printf, 3, 4)));
 
 /* Turn a check on with its value and limit. */
 void checks_set(struct check_values *v, enum check_id id, double value,

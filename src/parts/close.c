@@ -404,12 +404,12 @@ parts_close(const struct parts_ctx *x, const struct parts_option *o,
 
 /* ---- the design of record's checks ---------------------------------------- */
 
-/* "maker part" of a catalogue part, for a check's basis. */
+/* "maker part, rating" of a catalogue part, as check id's basis. */
 static void
-part_basis(char *b, size_t n, const char *maker, const char *part,
-           double rating_a, const char *per)
+part_basis(struct check_values *v, enum check_id id, const char *maker,
+           const char *part, double rating_a, const char *per)
 {
-	snprintf(b, n, "%.16s %.44s, %.0f A%s", maker, part, rating_a, per);
+	checks_basis(v, id, "%.16s %.44s, %.0f A%s", maker, part, rating_a, per);
 }
 
 void
@@ -423,14 +423,15 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 	const struct res_op *full = &pf->op[OP_FULL];
 	struct check_values v;
 	checks_init(&v);
+	v.terse = r->terse;
 	feasibility_common_checks(p, o, &v);
 
 	/* The T/W requirement holds with the largest payload aboard. */
 	double m_max = o->mass.total_kg + p->extra_payload_kg;
 	checks_set(&v, CK_THRUST, o->thrust_to_weight * o->mass.total_kg / m_max,
 	    x->aim.tw_required);
-	snprintf(v.basis[CK_THRUST], sizeof v.basis[CK_THRUST],
-	    "the role's requirement, %.2f kg aboard", p->payload_kg + p->extra_payload_kg);
+	checks_basis(&v, CK_THRUST, "the role's requirement, %.2f kg aboard",
+	    p->payload_kg + p->extra_payload_kg);
 	checks_set(&v, CK_THROTTLE, 100.0 * pf->throttle_needed, 100.0);
 
 	/* The power path, pack to motor, at the mission's sustained peak and
@@ -440,10 +441,10 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 	const struct parts_pack *pk = &cl->pack;
 	checks_set(&v, CK_BATTERY_CONTINUOUS, sustained_a, pk->max_continuous_a);
 	checks_set(&v, CK_BATTERY_BURST, full_a, pk->max_burst_a);
-	snprintf(v.basis[CK_BATTERY_CONTINUOUS], RES_BASIS, "%d × %.0f C continuous",
+	checks_basis(&v, CK_BATTERY_CONTINUOUS, "%d × %.0f C continuous",
 	    pk->parallel, pk->b->continuous_c);
-	snprintf(v.basis[CK_BATTERY_BURST], RES_BASIS, "%d × %.0f C burst",
-	    pk->parallel, pk->b->burst_c > 0.0 ? pk->b->burst_c : pk->b->continuous_c);
+	checks_basis(&v, CK_BATTERY_BURST, "%d × %.0f C burst", pk->parallel,
+	    pk->b->burst_c > 0.0 ? pk->b->burst_c : pk->b->continuous_c);
 	/* Each element against the rating that holds for it: the
 	 * continuous one through the mission, for the burst the one its
 	 * maker publishes for at least that long (compat.c). */
@@ -459,9 +460,9 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 		checks_set(&v, CK_CONNECTOR_MISSION, sustained_a / (double)pk->parallel,
 		    k->max_current_a);
 		checks_set(&v, CK_CONNECTOR_FULL, full_a / (double)pk->parallel, burst);
-		part_basis(v.basis[CK_CONNECTOR_MISSION], RES_BASIS, k->manufacturer,
+		part_basis(&v, CK_CONNECTOR_MISSION, k->manufacturer,
 		    k->part_number, k->max_current_a, " per pack");
-		part_basis(v.basis[CK_CONNECTOR_FULL], RES_BASIS, k->manufacturer,
+		part_basis(&v, CK_CONNECTOR_FULL, k->manufacturer,
 		    k->part_number, burst, burst > k->max_current_a
 		    ? " burst, per pack" : " per pack");
 	}
@@ -472,14 +473,14 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 		double burst = compat_rating_for(&pr, PERF_FULL_THROTTLE_S);
 		checks_set(&v, CK_POWER_MODULE_MISSION, sustained_a, a->max_current_a);
 		checks_set(&v, CK_POWER_MODULE_FULL, full_a, burst);
-		part_basis(v.basis[CK_POWER_MODULE_MISSION], RES_BASIS, a->manufacturer,
+		part_basis(&v, CK_POWER_MODULE_MISSION, a->manufacturer,
 		    a->part_number, a->max_current_a, "");
-		part_basis(v.basis[CK_POWER_MODULE_FULL], RES_BASIS, a->manufacturer,
+		part_basis(&v, CK_POWER_MODULE_FULL, a->manufacturer,
 		    a->part_number, burst, burst > a->max_current_a ? " burst" : "");
 	}
 	if (kit->harness_main.awg != NULL) {
 		checks_set(&v, CK_HARNESS_FULL, full_a, kit->harness_main.ampacity_a);
-		snprintf(v.basis[CK_HARNESS_FULL], RES_BASIS, "main lead %d × %s AWG copper",
+		checks_basis(&v, CK_HARNESS_FULL, "main lead %d × %s AWG copper",
 		    kit->harness_main.parallel, kit->harness_main.awg);
 	}
 	if (cl->esc != NULL) {
@@ -487,7 +488,7 @@ parts_record_checks(const struct parts_ctx *x, const struct parts_closed *cl,
 			cl->esc->burst_current_a, cl->esc->burst_s };
 		double esc_a = compat_rating_for(&er, PERF_FULL_THROTTLE_S);
 		checks_set(&v, CK_ESC_CURRENT, full->motor_current_a, esc_a);
-		part_basis(v.basis[CK_ESC_CURRENT], RES_BASIS, cl->esc->manufacturer,
+		part_basis(&v, CK_ESC_CURRENT, cl->esc->manufacturer,
 		    cl->esc->part_number, esc_a, esc_a > cl->esc->continuous_current_a
 		    ? " burst" : " continuous");
 	}

@@ -195,8 +195,8 @@ band_check(struct check_values *v, enum check_id id, double f_hz, double lo,
 	structure_band_clear(f_hz, lo, hi, margin, &edge, &above);
 	checks_set(v, id, f_hz, edge);
 	v->side[id] = above ? -1 : +1;
-	snprintf(v->basis[id], sizeof v->basis[id], "%s %.0f–%.0f Hz %s %.0f %%",
-	    what, lo, hi, "±", 100.0 * (margin - 1.0));
+	checks_basis(v, id, "%s %.0f–%.0f Hz %s %.0f %%", what, lo, hi, "±",
+	    100.0 * (margin - 1.0));
 }
 
 void
@@ -251,8 +251,8 @@ feasibility_common_checks(const struct sizing_params *p, struct res_run *o,
 		checks_set(v, CK_ARM_TILT, o->arm_tilt_full_deg, STRUCT_TILT_MAX_DEG);
 		v->sized[CK_ARM_TILT] = strcmp(o->arm_sized_by,
 		    structure_sized_by_text[ARM_BY_TILT]) == 0;
-		snprintf(v->basis[CK_ARM_TILT], sizeof v->basis[CK_ARM_TILT],
-		    "tip deflection %.1f mm", o->arm_deflection_full_mm);
+		checks_basis(v, CK_ARM_TILT, "tip deflection %.1f mm",
+		    o->arm_deflection_full_mm);
 		checks_set(v, CK_ARM_TORSION, o->arm_torsion_mpa, o->arm_torsion_allow_mpa);
 		if (o->rate_bandwidth_hz > 0.0) {
 			checks_set(v, CK_ARM_MODE_CONTROL, o->arm_natural_frequency_hz,
