@@ -239,7 +239,8 @@ remote_id_need(const struct parts_ctx *x)
 static void
 pick_by_bus(struct parts_ctx *x)
 {
-	const struct kit_item *items = kit_items[kit_class(x)];
+	x->kit_by_bus_class = kit_class(x);
+	const struct kit_item *items = kit_items[x->kit_by_bus_class];
 	for (int cells = 1; cells <= PARTS_MAX_CELLS; cells++) {
 		for (int i = 0; i < PARTS_KIT_ITEMS && items[i].what != NULL; i++)
 			if (items[i].kind != NULL && !by_current(&items[i]))
@@ -259,7 +260,8 @@ item_part(const struct parts_ctx *x, int slot, const char *kind,
 {
 	bool on_bus = slot == PARTS_KIT_ITEMS
 	    || !by_current(&kit_items[kit_class(x)][slot]);
-	if (on_bus && cells >= 1 && cells <= PARTS_MAX_CELLS)
+	if (on_bus && cells >= 1 && cells <= PARTS_MAX_CELLS
+	    && x->kit_by_bus_class == kit_class(x))
 		return x->kit_by_bus[slot][cells];
 	return lightest(x, kind, need, cells, load);
 }
@@ -301,9 +303,11 @@ parts_kit_init(struct parts_ctx *x)
 	video_pair(x, &x->video_tx, &x->video_cam);
 	/* Each pack's own plug, found once (a pack is tried on many
 	 * closings, and its plug's row by its name). */
-	for (int i = 0; i < x->n_packs; i++)
-		x->packs[i].plug = own_plug(x, x->packs[i].b != NULL
-		    ? x->packs[i].b->connector : NULL);
+	for (int i = 0; i < x->n_packs; i++) {
+		struct parts_pack *pk = &x->packs[i];
+		pk->plug_name = pk->b != NULL ? pk->b->connector : NULL;
+		pk->plug = own_plug(x, pk->plug_name);
+	}
 }
 
 void
@@ -388,6 +392,17 @@ own_plug(const struct parts_ctx *x, const char *pack_connector)
 	return usable != NULL ? usable : any;
 }
 
+/* The pack's own plug row: the one parts_kit_init() found for it, or
+ * looked up now for a pack it did not see. */
+static const struct catalog_avionics *
+pack_plug(const struct parts_ctx *x, const struct parts_pack *pk)
+{
+	const char *name = pk->b != NULL ? pk->b->connector : NULL;
+	if (pk->plug_name != NULL && pk->plug_name == name)
+		return pk->plug;
+	return own_plug(x, name);
+}
+
 /* The lightest usable mated pair that carries each pack's share (for a
  * pack whose plug the catalogue cannot supply the mate of: both halves
  * are fitted), or NULL. */
@@ -411,7 +426,7 @@ parts_kit_plug(const struct parts_ctx *x, const struct parts_pack *pk,
 {
 	const char *plug = pk->b != NULL ? pk->b->connector : NULL;
 	double s = sustained_a / (double)pk->parallel, f = full_a / (double)pk->parallel;
-	const struct catalog_avionics *own = pk->plug;
+	const struct catalog_avionics *own = pack_plug(x, pk);
 	/* A plug it names must be one the catalogue rates (a JST or an
 	 * unrated XT150 cannot be shown to carry anything), and that rating
 	 * bounds its pack, whether its mate is bought or not. */
@@ -440,7 +455,7 @@ pick_connector(const struct parts_ctx *x, const struct parts_pack *pk,
 	int n_packs = pk->series * pk->parallel;
 	double s = kit->load.sustained_a / (double)pk->parallel;
 	double f = kit->load.full_a / (double)pk->parallel;
-	const struct catalog_avionics *own = pk->plug;
+	const struct catalog_avionics *own = pack_plug(x, pk);
 	if (own != NULL && own->usable && own->max_current_a > 0.0) {
 		kit->connector = own;
 		kit->connector_mates = true;

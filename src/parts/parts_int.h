@@ -137,8 +137,10 @@ struct parts_pack {
 	double max_continuous_a, max_burst_a;
 	const struct batt_chem *chem;
 	const struct catalog_avionics *plug; /* the catalogue's row of its own
-	                                        plug family, or NULL (kit.c,
-	                                        set by parts_kit_init()) */
+	                                        plug family, or NULL, ... */
+	const char *plug_name;               /* ... found for this connector
+	                                        text by parts_kit_init() (NULL:
+	                                        not looked up; kit.c) */
 };
 
 /* The catalogue's usable avionics parts of one kind, in catalogue order
@@ -178,6 +180,7 @@ struct parts_ctx {
 	 * fits; kit.c). */
 	const struct catalog_avionics *kit_by_bus[PARTS_KIT_ITEMS + 1]
 	                                         [PARTS_MAX_CELLS + 1];
+	int kit_by_bus_class;              /* the airframe class they are for */
 	/* The lightest transmitter and camera that work together, when the
 	 * ESC board carries none (the same for every closing; kit.c). */
 	const struct catalog_avionics *video_tx, *video_cam;
