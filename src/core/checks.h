@@ -1,7 +1,7 @@
 /* checks.h — the one table of checks every design is held to.
  *
  * The continuous design (sizing/feasibility.c) and the design of record on
- * catalogue parts (parts/close.c) are judged by the same checks: each is a
+ * catalogue parts (parts/closure.c) are judged by the same checks: each is a
  * row of check_table[] with its stable code, its name, its unit, the side
  * of the limit that passes, the condition it is evaluated at (hover, the
  * mission's peak, a full-throttle burst, ...), why it matters and what

@@ -1,4 +1,4 @@
-/* close.c — an option closed on real parts: its ESC set and battery, the
+/* closure.c — an option closed on real parts: its ESC set and battery, the
  * takeoff mass found again with the real masses, the mission flown on the
  * real drive and every check of the design of record (see parts.h). */
 #include <math.h>
