@@ -59,11 +59,14 @@ LINK         = $(CC) $(AE_CFLAGS) $(CFLAGS) $(LDFLAGS)
 
 # ---- the library ------------------------------------------------------------
 # Every src/LAYER/*.c except cli/main.c goes into libaeroeval.a, which the
-# program and every test link.  The folders are the layers, lowest first:
-# util, core, physics, sizing, parts, engine, then study, input and output
-# side by side, and cli on top (docs/architecture.md); `make check-layers`
-# (part of `make test`) keeps every include pointing down.
-LAYERS   := util core physics sizing parts engine study input output cli
+# program and every test link.  The folders are the layers, lowest first
+# (docs/architecture.md): util; the plain values the layers above share
+# (diag, spec, catalog, template, result); the engine (physics, sizing,
+# parts, engine); the files read (input) and written (output); the
+# studies over all of them (study); and cli on top.  `make check-layers`
+# (part of `make test`) keeps every include pointing down this list.
+LAYERS   := util diag spec catalog template result physics sizing parts engine \
+            input output study cli
 LIB_SRCS := $(filter-out src/cli/main.c,$(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)))
 LIB_OBJS := $(LIB_SRCS:src/%.c=$(BUILD)/obj/%.o)
 LIB      := $(BUILD)/libaeroeval.a

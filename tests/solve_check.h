@@ -22,10 +22,10 @@
 
 #include "output/bom_csv.h"
 #include "cli/cli.h"
-#include "core/diag.h"
+#include "diag/diag.h"
 #include "engine/engine.h"
 #include "input/mission_io.h"
-#include "core/result.h"
+#include "result/result.h"
 #include "output/result_json.h"
 
 static const char *

@@ -14,7 +14,7 @@
 
 #include "cli/cli.h"
 #include "cli/pipeline.h"
-#include "core/catalog.h"
+#include "catalog/catalog.h"
 #include "output/ardupilot.h"
 #include "output/bom_csv.h"
 #include "util/xalloc.h"

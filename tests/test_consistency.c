@@ -33,7 +33,7 @@
 #include "cli/cli.h"
 #include "cli/cli_summary.h"
 #include "cli/pipeline.h"
-#include "core/template.h"
+#include "template/template.h"
 #include "output/doc.h"
 #include "util/csv.h"
 #include "util/strbuf.h"

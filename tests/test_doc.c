@@ -12,7 +12,7 @@
 #include "output/doc_int.h"
 #include "output/plot.h"
 #include "cli/cli.h"
-#include "core/template.h"
+#include "template/template.h"
 
 #define DEMO_PAGES 9   /* pages of the demo document, checked by eye */
 

@@ -8,8 +8,8 @@
 
 #include <cjson/cJSON.h>
 
-#include "core/diag.h"
-#include "core/summary.h"
+#include "diag/diag.h"
+#include "result/summary.h"
 #include "input/summary_in.h"
 #include "output/index.h"
 #include "util/file.h"

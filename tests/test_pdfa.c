@@ -23,7 +23,7 @@
 
 #include "cli/cli.h"
 #include "cli/pipeline.h"
-#include "core/template.h"
+#include "template/template.h"
 #include "output/doc.h"
 #include "output/report.h"
 #include "util/xalloc.h"

@@ -6,7 +6,7 @@
 
 #include "output/doc.h"
 #include "output/plot.h"
-#include "core/template.h"
+#include "template/template.h"
 
 static void
 check_ticks_cover(const struct plot_ticks *t, double lo, double hi)

@@ -9,7 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/template.h"
+#include "template/template.h"
 #include "input/template_io.h"
 #include "output/assets.h"
 

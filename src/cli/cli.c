@@ -9,9 +9,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/catalog.h"
-#include "core/diag.h"
-#include "core/template.h"
+#include "catalog/catalog.h"
+#include "diag/diag.h"
+#include "template/template.h"
 #include "output/assets.h"
 #include "output/fsout.h"
 #include "input/catalog_io.h"

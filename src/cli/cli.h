@@ -7,7 +7,7 @@
 
 #include <stdio.h>
 
-#include "core/model.h"
+#include "spec/model.h"
 
 struct catalog;
 

@@ -29,7 +29,7 @@
 #include "cli/shard.h"
 #include "util/sha256.h"
 #include "util/strbuf.h"
-#include "core/template.h"
+#include "template/template.h"
 #include "util/xalloc.h"
 
 #define BUILD_USAGE "usage: aeroeval build [-o DIR] [-j N] [-q] [--force] " \

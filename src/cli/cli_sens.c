@@ -10,13 +10,13 @@
 
 #include "cli/cli.h"
 #include "cli/pipeline.h"
-#include "core/diag.h"
+#include "diag/diag.h"
 #include "output/doc.h"
 #include "output/fsout.h"
 #include "input/mission_io.h"
 #include "study/sens.h"
 #include "study/sens_report.h"
-#include "core/template.h"
+#include "template/template.h"
 #include "util/file.h"
 #include "util/xalloc.h"
 

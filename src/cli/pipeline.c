@@ -6,7 +6,7 @@
 
 #include "output/ardupilot.h"
 #include "output/bom_csv.h"
-#include "core/diag.h"
+#include "diag/diag.h"
 #include "engine/engine.h"
 #include "output/fsfolder.h"
 #include "output/fsout.h"
@@ -15,7 +15,7 @@
 #include "output/report.h"
 #include "study/sens.h"
 #include "study/sens_report.h"
-#include "core/template.h"
+#include "template/template.h"
 #include "output/result_json.h"
 #include "util/sha256.h"
 #include "util/file.h"

@@ -16,7 +16,7 @@
 #include <stdio.h>
 
 #include "cli/cli.h"
-#include "core/result.h"
+#include "result/result.h"
 
 struct strbuf;
 struct template;

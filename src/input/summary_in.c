@@ -187,7 +187,7 @@ summary_in_parse(const char *file, const char *buf, size_t n, const char *name,
 	inputs(mission, row);
 	interval(root, row);
 	/* The record's figures as the dossier prints them ("key_figures",
-	 * core/result.h res_figures()); a result.json written before that
+	 * result/result.h res_figures()); a result.json written before that
 	 * block existed gives them from the record's own fields. */
 	const cJSON *kf = member(root, "key_figures");
 	row->has_flight_time = get_num(kf, "flight_time_s", &row->flight_time_s)

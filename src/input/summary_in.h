@@ -1,6 +1,6 @@
 /* summary_in.h — one row of the design-space table from a result.json.
  *
- * Reads what the table shows (core/summary.h) out of a result.json that
+ * Reads what the table shows (result/summary.h) out of a result.json that
  * aeroeval wrote: the verdict, the takeoff mass of record and, when the
  * file carries one, its prediction interval, the payload, flight times,
  * cost, pack, parts and the tightest check of the design of record.
@@ -16,8 +16,8 @@
 
 #include <stddef.h>
 
-#include "core/diag.h"
-#include "core/summary.h"
+#include "diag/diag.h"
+#include "result/summary.h"
 
 /* Parses buf[0..n) (need not be NUL-terminated), named file in messages,
  * as the result.json of the mission called name (the folder name) into

@@ -1,5 +1,5 @@
 /* template_io.h — read and validate a dossier template (templates/NAME.json)
- * into a struct template (core/template.h).
+ * into a struct template (template/template.h).
  *
  * Template JSON (every key optional; what is absent keeps the A4 default):
  *   {
@@ -33,8 +33,8 @@
 
 #include <stddef.h>
 
-#include "core/diag.h"
-#include "core/template.h"
+#include "diag/diag.h"
+#include "template/template.h"
 
 /* The largest font and logo file read (bytes). */
 #define TEMPLATE_IO_FONT_MAX ((size_t)32 << 20)

@@ -63,9 +63,9 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-#include "core/catalog.h"
-#include "core/model.h"
-#include "core/result.h"
+#include "catalog/catalog.h"
+#include "spec/model.h"
+#include "result/result.h"
 
 /* ArduPilot's FRAME_CLASS values used here (ArduCopter Parameters.cpp). */
 enum ardupilot_frame_class {

@@ -16,7 +16,7 @@
 
 #include <stddef.h>
 
-#include "core/template.h"
+#include "template/template.h"
 
 /* The largest logo accepted, in pixels per side (a logo is drawn 42 pt
  * high; this only stops a decompression bomb). */

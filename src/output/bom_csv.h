@@ -47,8 +47,8 @@
 
 #include <stddef.h>
 
-#include "core/catalog.h"
-#include "core/result.h"
+#include "catalog/catalog.h"
+#include "result/result.h"
 
 /* What a buyer does with one line. */
 enum bom_orderable { BOM_ORDER_YES, BOM_ORDER_CONFIRM, BOM_ORDER_NO };

@@ -67,7 +67,7 @@
 #include <stddef.h>
 
 #include "output/plot.h"
-#include "core/template.h"
+#include "template/template.h"
 
 struct doc;
 struct strbuf;

@@ -1,6 +1,6 @@
 /* index.h — the design-space table as index.csv and index.json.
  *
- * One row per compiled mission (core/summary.h), in the order the caller
+ * One row per compiled mission (result/summary.h), in the order the caller
  * gives them (summary_sort(): by name).  The same rows give the same bytes:
  * no date, no path, no machine name, so a sharded build and a single one
  * produce identical files.
@@ -42,7 +42,7 @@
 #ifndef AEROEVAL_INDEX_H
 #define AEROEVAL_INDEX_H
 
-#include "core/summary.h"
+#include "result/summary.h"
 
 /* The files the design-space table puts beside the mission folders of an
  * output folder (index.csv, index.json, overview.pdf), NULL-ended.  They

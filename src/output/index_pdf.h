@@ -18,8 +18,8 @@
 
 #include <stddef.h>
 
-#include "core/summary.h"
-#include "core/template.h"
+#include "result/summary.h"
+#include "template/template.h"
 
 #define INDEX_PDF_MAX_LABELS 16
 

@@ -42,7 +42,7 @@
 
 #include <hpdf.h>
 
-#include "core/template.h"
+#include "template/template.h"
 
 struct plot;
 struct plot_panel;

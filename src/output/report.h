@@ -24,8 +24,8 @@
 
 #include <stddef.h>
 
-#include "core/result.h"
-#include "core/template.h"
+#include "result/result.h"
+#include "template/template.h"
 
 struct catalog;
 struct doc;

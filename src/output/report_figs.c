@@ -12,8 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/checks.h"
-#include "core/model.h"
+#include "result/checks.h"
+#include "spec/model.h"
 #include "output/doc.h"
 #include "output/plot.h"
 #include "output/report_int.h"

@@ -9,8 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/checks.h"
-#include "core/catalog.h"
+#include "result/checks.h"
+#include "catalog/catalog.h"
 #include "output/doc.h"
 #include "output/plot.h"
 #include "output/report_int.h"

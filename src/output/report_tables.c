@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/catalog.h"
+#include "catalog/catalog.h"
 #include "output/doc.h"
 #include "output/plot.h"
 #include "output/bom_csv.h"

@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/model.h"
+#include "spec/model.h"
 #include "output/bom_csv.h"
 #include "util/jsonw.h"
 

@@ -28,7 +28,7 @@
 #ifndef AEROEVAL_RESULT_JSON_H
 #define AEROEVAL_RESULT_JSON_H
 
-#include "core/result.h"
+#include "result/result.h"
 
 #define RESULT_JSON_PATH_MAX 160
 

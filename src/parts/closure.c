@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/checks.h"
+#include "result/checks.h"
 #include "parts/parts_int.h"
 #include "parts/screen.h"
 #include "physics/aero.h"

@@ -5,9 +5,9 @@
 
 #include <stdbool.h>
 
-#include "core/catalog.h"
-#include "core/model.h"
-#include "core/result.h"
+#include "catalog/catalog.h"
+#include "spec/model.h"
+#include "result/result.h"
 #include "parts/parts.h"
 #include "physics/motor.h"
 #include "physics/prop.h"

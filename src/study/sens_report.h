@@ -20,7 +20,7 @@
 
 #include "output/doc.h"
 #include "study/sens.h"
-#include "core/template.h"
+#include "template/template.h"
 
 /* One row of the sensitivity table, as text. */
 struct sens_row {

@@ -75,9 +75,9 @@
 #include <stddef.h>
 
 #include "input/cohort.h"
-#include "core/model.h"
-#include "core/result.h"
-#include "core/spec.h"
+#include "spec/model.h"
+#include "result/result.h"
+#include "spec/spec.h"
 #include "util/stats.h"
 
 #define VALIDATE_PITCH_RATIO     0.45  /* pitch/diameter when only D is known */

@@ -8,7 +8,7 @@
 
 #include "output/doc.h"
 #include "output/plot.h"
-#include "core/template.h"
+#include "template/template.h"
 #include "util/xalloc.h"
 
 const char *const valreport_rule_text[] = {

@@ -12,7 +12,7 @@
 #include <stddef.h>
 
 #include "input/cohort.h"
-#include "core/model.h"
+#include "spec/model.h"
 #include "study/validate.h"
 
 /* The rule of validate.h in words, NULL-terminated: one bullet each (the

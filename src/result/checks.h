@@ -15,7 +15,7 @@
 
 #include <stdbool.h>
 
-#include "core/result.h"
+#include "result/result.h"
 
 /* Where a check is evaluated. */
 enum check_cond {

@@ -1,6 +1,6 @@
 /* template.c — the default dossier template and the section helpers (see
  * template.h); templates/NAME.json files are read by input/template_io.c. */
-#include "core/template.h"
+#include "template/template.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,5 +1,5 @@
 /* summary.c — the design-space table's rows (see summary.h). */
-#include "core/summary.h"
+#include "result/summary.h"
 
 #include <stdlib.h>
 #include <string.h>

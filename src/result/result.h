@@ -11,13 +11,13 @@
 
 #include <stdbool.h>
 
-#include "core/spec.h"
+#include "spec/spec.h"
 
 #define RES_MAX_HISTORY    256  /* mass-loop iterations kept */
 #define RES_MAX_TRACE      80   /* discharge samples kept (FINAL_STEPS + 13) */
 #define RES_MAX_SWEEP      64   /* power-vs-speed points (1..30 m/s by 0.5) */
 #define RES_MAX_ENDURANCE  32   /* endurance-explorer points */
-#define RES_MAX_CHECKS     40   /* every row of core/checks.h */
+#define RES_MAX_CHECKS     40   /* every row of result/checks.h */
 #define RES_MAX_VIOLATIONS 24
 #define RES_MAX_FIXES      3
 #define RES_MAX_RATIONALE  48
@@ -93,7 +93,7 @@ struct res_duty_group {
 };
 
 struct res_duty {
-	int kind;                 /* enum duty_kind (core/model.h) */
+	int kind;                 /* enum duty_kind (spec/model.h) */
 	char source[RES_DUTY_SOURCE]; /* where the profile's numbers come from */
 	int n_groups;
 	struct res_duty_group group[RES_MAX_DUTY_GROUPS];
@@ -136,7 +136,7 @@ struct res_sample {
  * and optim.c): static, so results copy freely, and a trial closing writes
  * no text. */
 struct res_check {
-	const char *code;    /* "THERMAL_RUNAWAY" (core/checks.h) */
+	const char *code;    /* "THERMAL_RUNAWAY" (result/checks.h) */
 	const char *name;    /* "Battery peak temperature" */
 	const char *unit;    /* "°C" */
 	const char *condition; /* "full-throttle burst, 10 s" */

@@ -1,5 +1,5 @@
 /* diag.c — compiler-style diagnostics: message table, buffer, exit status. */
-#include "core/diag.h"
+#include "diag/diag.h"
 
 #include <stdarg.h>
 #include <stdbool.h>

@@ -8,7 +8,7 @@
 
 #include <stdbool.h>
 
-#include "core/spec.h"
+#include "spec/spec.h"
 
 /* One chemistry profile (data/chemistries.json). */
 struct batt_chem {

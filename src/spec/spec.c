@@ -1,5 +1,5 @@
 /* spec.c — the mission field table and its defaults (see spec.h). */
-#include "core/spec.h"
+#include "spec/spec.h"
 
 #include <stdio.h>
 #include <string.h>

@@ -1,5 +1,5 @@
 /* checks.c — the checks table and its evaluation (see checks.h). */
-#include "core/checks.h"
+#include "result/checks.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,5 +1,5 @@
 /* model.c — lookups over the reference tables (see model.h). */
-#include "core/model.h"
+#include "spec/model.h"
 
 #include <string.h>
 

@@ -1,6 +1,6 @@
 /* result.c — the few constants and helpers of the result contract (see
  * result.h). */
-#include "core/result.h"
+#include "result/result.h"
 
 #include <math.h>
 #include <stdarg.h>

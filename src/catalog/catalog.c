@@ -1,6 +1,6 @@
 /* catalog.c — the loaded parts catalogue: storage, id index, accessors
  * (see catalog.h).  The files are read by input/catalog_io.c. */
-#include "core/catalog.h"
+#include "catalog/catalog.h"
 
 #include <stdint.h>
 #include <stdio.h>
