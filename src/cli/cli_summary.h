@@ -1,6 +1,6 @@
 /* cli_summary.h — `aeroeval summary DIR`, and the index `build` keeps.
  *
- * Both rebuild the design-space table (result/summary.h) from every
+ * Both rebuild the design-space table (result/table_row.h) from every
  * DIR/<name>/result.json and write DIR/index.csv and DIR/index.json
  * (output/index.h), each atomically and only when its bytes change, then
  * the stamp DIR/.aeroeval-index-stamp that vouches for both and for the

@@ -45,7 +45,7 @@ text(struct csv_out *o, const char *s)
 
 /* The mission's inputs of a row (all empty when it has none). */
 static void
-inputs_csv(struct csv_out *o, const struct summary_row *w)
+inputs_csv(struct csv_out *o, const struct table_row *w)
 {
 	bool in = w->has_inputs;
 	text(o, in ? w->role : "");
@@ -64,7 +64,7 @@ inputs_csv(struct csv_out *o, const struct summary_row *w)
 }
 
 char *
-index_csv(const struct summary *s)
+index_csv(const struct table_rows *s)
 {
 	struct strbuf sb = STRBUF_INIT;
 	struct csv_out o = { &sb, 0 };
@@ -72,10 +72,10 @@ index_csv(const struct summary *s)
 		csv_out_field(&o, csv_header[i]);
 	csv_out_end(&o);
 	for (size_t i = 0; i < s->n; i++) {
-		const struct summary_row *w = &s->rows[i];
-		bool real = w->status != SUMMARY_NOT_BUILDABLE;
+		const struct table_row *w = &s->rows[i];
+		bool real = w->status != TABLE_ROW_NOT_BUILDABLE;
 		text(&o, w->name);
-		csv_out_field(&o, summary_status_name(w->status));
+		csv_out_field(&o, table_row_status_name(w->status));
 		inputs_csv(&o, w);
 		csv_out_num(&o, true, w->takeoff_mass_kg, 3);
 		csv_out_num(&o, w->has_interval && w->interval_level > 0.0, w->interval_level, 2);
@@ -119,12 +119,12 @@ add_text(cJSON *o, const char *key, const char *s)
 }
 
 static cJSON *
-row_json(const struct summary_row *w)
+row_json(const struct table_row *w)
 {
-	bool real = w->status != SUMMARY_NOT_BUILDABLE;
+	bool real = w->status != TABLE_ROW_NOT_BUILDABLE;
 	cJSON *o = cJSON_CreateObject();
 	cJSON_AddStringToObject(o, "name", w->name);
-	cJSON_AddStringToObject(o, "status", summary_status_name(w->status));
+	cJSON_AddStringToObject(o, "status", table_row_status_name(w->status));
 	bool in = w->has_inputs;
 	add_text(o, "role", in ? w->role : "");
 	add_num(o, "rotors", in, w->rotors);
@@ -171,16 +171,16 @@ row_json(const struct summary_row *w)
 }
 
 char *
-index_json(const struct summary *s, const char *aeroeval_version)
+index_json(const struct table_rows *s, const char *aeroeval_version)
 {
-	size_t count[SUMMARY_STATUS_MAX];
-	summary_count(s, count);
+	size_t count[TABLE_ROW_STATUS_MAX];
+	table_row_count(s, count);
 	cJSON *root = cJSON_CreateObject();
 	cJSON_AddStringToObject(root, "aeroeval_version", aeroeval_version);
 	cJSON *c = cJSON_AddObjectToObject(root, "counts");
-	add_num(c, "feasible", true, (double)count[SUMMARY_FEASIBLE]);
-	add_num(c, "infeasible", true, (double)count[SUMMARY_INFEASIBLE]);
-	add_num(c, "not_buildable", true, (double)count[SUMMARY_NOT_BUILDABLE]);
+	add_num(c, "feasible", true, (double)count[TABLE_ROW_FEASIBLE]);
+	add_num(c, "infeasible", true, (double)count[TABLE_ROW_INFEASIBLE]);
+	add_num(c, "not_buildable", true, (double)count[TABLE_ROW_NOT_BUILDABLE]);
 	cJSON *arr = cJSON_AddArrayToObject(root, "missions");
 	for (size_t i = 0; i < s->n; i++)
 		cJSON_AddItemToArray(arr, row_json(&s->rows[i]));

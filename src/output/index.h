@@ -1,7 +1,7 @@
 /* index.h — the design-space table as index.csv and index.json.
  *
- * One row per compiled mission (result/summary.h), in the order the caller
- * gives them (summary_sort(): by name).  The same rows give the same bytes:
+ * One row per compiled mission (result/table_row.h), in the order the caller
+ * gives them (table_row_sort(): by name).  The same rows give the same bytes:
  * no date, no path, no machine name, so a sharded build and a single one
  * produce identical files.
  *
@@ -42,7 +42,7 @@
 #ifndef AEROEVAL_INDEX_H
 #define AEROEVAL_INDEX_H
 
-#include "result/summary.h"
+#include "result/table_row.h"
 
 /* The files the design-space table puts beside the mission folders of an
  * output folder (index.csv, index.json, overview.pdf), NULL-ended.  They
@@ -51,9 +51,9 @@
 extern const char *const index_file_names[];
 
 /* index.csv of the rows.  Ownership: free(). */
-char *index_csv(const struct summary *s);
+char *index_csv(const struct table_rows *s);
 
 /* index.json of the rows, naming the writer's version.  Ownership: free(). */
-char *index_json(const struct summary *s, const char *aeroeval_version);
+char *index_json(const struct table_rows *s, const char *aeroeval_version);
 
 #endif

@@ -9,21 +9,21 @@
 #include "output/plot.h"
 #include "util/xalloc.h"
 
-/* How each verdict is drawn, in enum summary_status order. */
+/* How each verdict is drawn, in enum table_row_status order. */
 static const struct {
 	enum plot_marker marker;
 	int colour;
-} looks[SUMMARY_STATUS_MAX] = {
+} looks[TABLE_ROW_STATUS_MAX] = {
 	{ PLOT_MARKER_CIRCLE, PLOT_COLOUR_PASS },
 	{ PLOT_MARKER_CROSS, PLOT_COLOUR_FAIL },
 	{ PLOT_MARKER_TRIANGLE, PLOT_COLOUR_MUTED },
 };
 
 /* The x, y pair of a row in a figure; false when the row has none. */
-typedef bool (*point_fn)(const struct summary_row *w, double *x, double *y);
+typedef bool (*point_fn)(const struct table_row *w, double *x, double *y);
 
 static bool
-mtow_point(const struct summary_row *w, double *x, double *y)
+mtow_point(const struct table_row *w, double *x, double *y)
 {
 	*x = w->payload_kg;
 	*y = w->takeoff_mass_kg;
@@ -31,26 +31,26 @@ mtow_point(const struct summary_row *w, double *x, double *y)
 }
 
 static bool
-cost_point(const struct summary_row *w, double *x, double *y)
+cost_point(const struct table_row *w, double *x, double *y)
 {
 	*x = w->hover_endurance_s / 60.0;
 	*y = w->cost_usd;
-	return w->status != SUMMARY_NOT_BUILDABLE && w->has_cost && w->has_endurance;
+	return w->status != TABLE_ROW_NOT_BUILDABLE && w->has_cost && w->has_endurance;
 }
 
 /* One scatter series per verdict, and the names when few. */
 static void
-scatter_by_status(struct plot_panel *pp, const struct summary *s, point_fn fn)
+scatter_by_status(struct plot_panel *pp, const struct table_rows *s, point_fn fn)
 {
 	double *x = xmalloc((s->n + 1) * sizeof *x), *y = xmalloc((s->n + 1) * sizeof *y);
 	size_t shown = 0;
-	for (int st = 0; st < SUMMARY_STATUS_MAX; st++) {
+	for (int st = 0; st < TABLE_ROW_STATUS_MAX; st++) {
 		size_t n = 0;
 		for (size_t i = 0; i < s->n; i++)
-			if (s->rows[i].status == (enum summary_status)st && fn(&s->rows[i], &x[n], &y[n]))
+			if (s->rows[i].status == (enum table_row_status)st && fn(&s->rows[i], &x[n], &y[n]))
 				n++;
 		if (n > 0)
-			plot_scatter(pp, x, y, n, summary_status_name(st), looks[st].marker,
+			plot_scatter(pp, x, y, n, table_row_status_name(st), looks[st].marker,
 			    looks[st].colour);
 		shown += n;
 	}
@@ -62,7 +62,7 @@ scatter_by_status(struct plot_panel *pp, const struct summary *s, point_fn fn)
 }
 
 static void
-figure_mtow(struct doc *d, const struct summary *s)
+figure_mtow(struct doc *d, const struct table_rows *s)
 {
 	struct plot *p = plot_alloc(0, 300, 1, 1);
 	struct plot_panel *pp = plot_panel(p, 0, 0);
@@ -76,7 +76,7 @@ figure_mtow(struct doc *d, const struct summary *s)
 	plot_axis_log(pp, PLOT_X, log_x);
 	plot_axis_log(pp, PLOT_Y, 1);
 	for (size_t i = 0; i < s->n; i++) {
-		const struct summary_row *w = &s->rows[i];
+		const struct table_row *w = &s->rows[i];
 		if (!w->has_interval)
 			continue;
 		double x[2] = { w->payload_kg, w->payload_kg };
@@ -91,7 +91,7 @@ figure_mtow(struct doc *d, const struct summary *s)
 }
 
 static void
-figure_cost(struct doc *d, const struct summary *s)
+figure_cost(struct doc *d, const struct table_rows *s)
 {
 	size_t n = 0;
 	double x, y;
@@ -115,7 +115,7 @@ figure_cost(struct doc *d, const struct summary *s)
 }
 
 static void
-table_rows(struct doc *d, const struct summary *s)
+table_rows(struct doc *d, const struct table_rows *s)
 {
 	static const struct doc_column cols[] = {
 		{ "Mission", 2.4, DOC_ALIGN_LEFT }, { "Verdict", 1.3, DOC_ALIGN_LEFT },
@@ -123,15 +123,15 @@ table_rows(struct doc *d, const struct summary *s)
 		{ "Hover (min)", 0.9, DOC_ALIGN_RIGHT }, { "Cost (USD)", 1.2, DOC_ALIGN_RIGHT },
 		{ "Tightest check", 2.4, DOC_ALIGN_LEFT },
 	};
-	static const enum doc_cell verdict_cell[SUMMARY_STATUS_MAX] = {
+	static const enum doc_cell verdict_cell[TABLE_ROW_STATUS_MAX] = {
 		DOC_CELL_PASS, DOC_CELL_FAIL, DOC_CELL_WARN
 	};
 	struct doc_table t;
 	doc_table_init(&t, cols, 7);
 	for (size_t i = 0; i < s->n; i++) {
-		const struct summary_row *w = &s->rows[i];
+		const struct table_row *w = &s->rows[i];
 		doc_table_cell(&t, DOC_CELL_NORMAL, "%s", w->name);
-		doc_table_cell(&t, verdict_cell[w->status], "%s", summary_status_name(w->status));
+		doc_table_cell(&t, verdict_cell[w->status], "%s", table_row_status_name(w->status));
 		doc_table_cell(&t, DOC_CELL_NORMAL, "%.3f", w->takeoff_mass_kg);
 		doc_table_cell(&t, DOC_CELL_NORMAL, "%.3f", w->payload_kg);
 		if (w->has_endurance)
@@ -154,17 +154,17 @@ table_rows(struct doc *d, const struct summary *s)
 }
 
 int
-index_pdf_render(const struct summary *s, const struct template *tpl,
+index_pdf_render(const struct table_rows *s, const struct template *tpl,
                  unsigned char **pdf, size_t *n, char *err, size_t errlen)
 {
 	*pdf = NULL;
 	*n = 0;
-	size_t c[SUMMARY_STATUS_MAX];
-	summary_count(s, c);
+	size_t c[TABLE_ROW_STATUS_MAX];
+	table_row_count(s, c);
 	char sub[160];
 	snprintf(sub, sizeof sub, "%zu compiled missions: %zu feasible, %zu infeasible, "
-	    "%zu not buildable", s->n, c[SUMMARY_FEASIBLE], c[SUMMARY_INFEASIBLE],
-	    c[SUMMARY_NOT_BUILDABLE]);
+	    "%zu not buildable", s->n, c[TABLE_ROW_FEASIBLE], c[TABLE_ROW_INFEASIBLE],
+	    c[TABLE_ROW_NOT_BUILDABLE]);
 	struct doc_info info = { .title = "Design space", .mission = "overview",
 	                         .subject = "aeroeval study overview" };
 	struct doc *d = doc_alloc(tpl, &info);

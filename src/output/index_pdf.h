@@ -18,14 +18,14 @@
 
 #include <stddef.h>
 
-#include "result/summary.h"
+#include "result/table_row.h"
 #include "template/template.h"
 
 #define INDEX_PDF_MAX_LABELS 16
 
 /* Renders the overview into *pdf (*n bytes; free() it).  Returns 0, or -1
  * with err set (*pdf NULL). */
-int index_pdf_render(const struct summary *s, const struct template *tpl,
+int index_pdf_render(const struct table_rows *s, const struct template *tpl,
                      unsigned char **pdf, size_t *n, char *err, size_t errlen);
 
 #endif

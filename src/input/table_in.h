@@ -1,6 +1,6 @@
-/* summary_in.h — one row of the design-space table from a result.json.
+/* table_in.h — one row of the design-space table from a result.json.
  *
- * Reads what the table shows (result/summary.h) out of a result.json that
+ * Reads what the table shows (result/table_row.h) out of a result.json that
  * aeroeval wrote: the verdict, the takeoff mass of record and, when the
  * file carries one, its prediction interval, the payload, flight times,
  * cost, pack, parts and the tightest check of the design of record.
@@ -11,19 +11,19 @@
  *
  * Who may include it: the command layer.
  */
-#ifndef AEROEVAL_SUMMARY_IN_H
-#define AEROEVAL_SUMMARY_IN_H
+#ifndef AEROEVAL_TABLE_IN_H
+#define AEROEVAL_TABLE_IN_H
 
 #include <stddef.h>
 
 #include "diag/diag.h"
-#include "result/summary.h"
+#include "result/table_row.h"
 
 /* Parses buf[0..n) (need not be NUL-terminated), named file in messages,
  * as the result.json of the mission called name (the folder name) into
  * *row.  Returns 0, or -1 after reporting through dg (row unspecified). */
-int summary_in_parse(const char *file, const char *buf, size_t n,
-                     const char *name, struct summary_row *row,
+int table_in_parse(const char *file, const char *buf, size_t n,
+                     const char *name, struct table_row *row,
                      struct diag *dg);
 
 #endif

@@ -1,8 +1,8 @@
-/* summary.h — the design-space table: one row per compiled mission.
+/* table_row.h — the design-space table: one row per compiled mission.
  *
  * `aeroeval summary DIR` and `build` (which keeps DIR/index.csv and
  * DIR/index.json current) read every DIR/<name>/result.json into a row
- * (input/summary_in.h) and render the rows (output/index.h).  The table is
+ * (input/table_in.h) and render the rows (output/index.h).  The table is
  * rebuilt from the per-mission files each time, never updated in place, so
  * a partial or sharded build gives a correct partial table.
  *
@@ -11,39 +11,39 @@
  * its cell stays empty.
  * Who may include it: everyone (plain values, no I/O).
  */
-#ifndef AEROEVAL_SUMMARY_H
-#define AEROEVAL_SUMMARY_H
+#ifndef AEROEVAL_TABLE_ROW_H
+#define AEROEVAL_TABLE_ROW_H
 
 #include <stdbool.h>
 #include <stddef.h>
 
-#define SUMMARY_NAME_MAX 256   /* bytes of a mission name, NUL included */
-#define SUMMARY_TEXT_MAX 200   /* bytes of a part or check name, NUL included */
-#define SUMMARY_WORD_MAX 64    /* bytes of a role, class or chemistry name */
+#define TABLE_ROW_NAME_MAX 256 /* bytes of a mission name, NUL included */
+#define TABLE_ROW_TEXT_MAX 200 /* bytes of a part or check name, NUL included */
+#define TABLE_ROW_WORD_MAX 64  /* bytes of a role, class or chemistry name */
 
 /* The verdict of a row, worst last. */
-enum summary_status {
-	SUMMARY_FEASIBLE,       /* every check of the design of record passes */
-	SUMMARY_INFEASIBLE,     /* built on real parts, some check fails */
-	SUMMARY_NOT_BUILDABLE,  /* no real parts close: the continuous design */
-	SUMMARY_STATUS_MAX
+enum table_row_status {
+	TABLE_ROW_FEASIBLE,       /* every check of the design of record passes */
+	TABLE_ROW_INFEASIBLE,     /* built on real parts, some check fails */
+	TABLE_ROW_NOT_BUILDABLE,  /* no real parts close: the continuous design */
+	TABLE_ROW_STATUS_MAX
 };
 
 /* One compiled mission. */
-struct summary_row {
-	char name[SUMMARY_NAME_MAX];     /* output folder name */
-	enum summary_status status;
+struct table_row {
+	char name[TABLE_ROW_NAME_MAX];   /* output folder name */
+	enum table_row_status status;
 
 	/* The mission as asked, from result.json's fully defaulted "mission";
 	 * has_inputs is false when the file lacks any of them (then every
 	 * input cell is empty). */
 	bool has_inputs;
-	char role[SUMMARY_WORD_MAX];     /* payload_role.type: "imaging", ... */
+	char role[TABLE_ROW_WORD_MAX];   /* payload_role.type: "imaging", ... */
 	int rotors;                      /* num_rotors */
 	bool coaxial;                    /* coaxial_layout */
 	double wheelbase_m;              /* max_diameter_m */
-	char airframe_class[SUMMARY_WORD_MAX];
-	char chemistry[SUMMARY_WORD_MAX]; /* battery_chemistry */
+	char airframe_class[TABLE_ROW_WORD_MAX];
+	char chemistry[TABLE_ROW_WORD_MAX]; /* battery_chemistry */
 	double altitude_m;
 	double ambient_temp_c;
 	double t_hover_s, t_forward_s, t_climb_s; /* the mission times asked */
@@ -65,32 +65,32 @@ struct summary_row {
 	int unpriced_lines;              /* BOM lines to buy without a price */
 	int cells;                       /* series cells, 0 unknown */
 	double capacity_mah;             /* pack capacity, 0 unknown */
-	char motor[SUMMARY_TEXT_MAX];    /* "maker part", "" without parts */
-	char propeller[SUMMARY_TEXT_MAX];
-	char battery[SUMMARY_TEXT_MAX];
-	char tightest[SUMMARY_TEXT_MAX]; /* binding check, "" when none */
+	char motor[TABLE_ROW_TEXT_MAX];  /* "maker part", "" without parts */
+	char propeller[TABLE_ROW_TEXT_MAX];
+	char battery[TABLE_ROW_TEXT_MAX];
+	char tightest[TABLE_ROW_TEXT_MAX]; /* binding check, "" when none */
 	double tightest_margin;          /* its margin (negative: it fails) */
 };
 
-/* A growable list of rows.  Plain value: = { 0 }, summary_free(). */
-struct summary {
-	struct summary_row *rows;
+/* A growable list of rows.  Plain value: = { 0 }, table_row_free(). */
+struct table_rows {
+	struct table_row *rows;
 	size_t n, cap;
 };
 
 /* Appends a copy of row. */
-void summary_add(struct summary *s, const struct summary_row *row);
+void table_row_add(struct table_rows *s, const struct table_row *row);
 
 /* Orders the rows by name (bytewise), the table's one order. */
-void summary_sort(struct summary *s);
+void table_row_sort(struct table_rows *s);
 
 /* Releases the rows; s is empty and reusable after.  NULL is a no-op. */
-void summary_free(struct summary *s);
+void table_row_free(struct table_rows *s);
 
 /* "feasible", "infeasible", "not buildable". */
-const char *summary_status_name(enum summary_status st);
+const char *table_row_status_name(enum table_row_status st);
 
 /* Rows of each status, for the one-line report. */
-void summary_count(const struct summary *s, size_t count[SUMMARY_STATUS_MAX]);
+void table_row_count(const struct table_rows *s, size_t count[TABLE_ROW_STATUS_MAX]);
 
 #endif

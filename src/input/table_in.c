@@ -1,5 +1,5 @@
-/* summary_in.c — a design-space row from result.json (see summary_in.h). */
-#include "input/summary_in.h"
+/* table_in.c — a design-space row from result.json (see table_in.h). */
+#include "input/table_in.h"
 
 #include <math.h>
 #include <string.h>
@@ -71,7 +71,7 @@ part_text(const cJSON *selected, const char *key, char *out, size_t n)
  * stress, propeller diameter, mission energy) are skipped, as in
  * res_tightest_check(), since their zero margin says nothing. */
 static void
-tightest(const cJSON *checks, struct summary_row *row)
+tightest(const cJSON *checks, struct table_row *row)
 {
 	const cJSON *best = NULL;
 	double best_margin = 0.0;
@@ -102,7 +102,7 @@ tightest(const cJSON *checks, struct summary_row *row)
  * (the names of struct res_interval); an object without both bounds, or
  * null, counts as absent. */
 static void
-interval(const cJSON *root, struct summary_row *row)
+interval(const cJSON *root, struct table_row *row)
 {
 	const cJSON *iv = member(root, "mtow_interval");
 	double lo, hi, level = 0.0;
@@ -118,7 +118,7 @@ interval(const cJSON *root, struct summary_row *row)
 /* The mission's inputs the table shows beside the results, from the fully
  * defaulted "mission" every result.json carries; all or none. */
 static void
-inputs(const cJSON *mission, struct summary_row *row)
+inputs(const cJSON *mission, struct table_row *row)
 {
 	const char *role = get_str(member(mission, "payload_role"), "type");
 	const char *cls = get_str(mission, "airframe_class");
@@ -146,8 +146,8 @@ inputs(const cJSON *mission, struct summary_row *row)
 }
 
 int
-summary_in_parse(const char *file, const char *buf, size_t n, const char *name,
-                 struct summary_row *row, struct diag *dg)
+table_in_parse(const char *file, const char *buf, size_t n, const char *name,
+                 struct table_row *row, struct diag *dg)
 {
 	struct json_in *ji = json_in_parse(file, buf, n, dg);
 	if (ji == NULL)
@@ -179,9 +179,9 @@ summary_in_parse(const char *file, const char *buf, size_t n, const char *name,
 	}
 
 	bool real = cJSON_IsTrue(buildable);
-	row->status = !real ? SUMMARY_NOT_BUILDABLE
-	    : strcmp(status->valuestring, "feasible") == 0 ? SUMMARY_FEASIBLE
-	    : SUMMARY_INFEASIBLE;
+	row->status = !real ? TABLE_ROW_NOT_BUILDABLE
+	    : strcmp(status->valuestring, "feasible") == 0 ? TABLE_ROW_FEASIBLE
+	    : TABLE_ROW_INFEASIBLE;
 	row->takeoff_mass_kg = mtow->valuedouble;
 	row->payload_kg = payload->valuedouble;
 	inputs(mission, row);
