@@ -62,11 +62,12 @@ LINK         = $(CC) $(AE_CFLAGS) $(CFLAGS) $(LDFLAGS)
 # program and every test link.  The folders are the layers, lowest first
 # (docs/architecture.md): util; the plain values the layers above share
 # (diag, spec, catalog, template, result); the engine (physics, sizing,
-# parts, engine); the files read (input) and written (output); the
-# studies over all of them (study); and cli on top.  `make check-layers`
-# (part of `make test`) keeps every include pointing down this list.
+# parts, engine); the files read (input); the files written: their text
+# (formats), atomic files and folders (fs), the PDF documents (pdf); the
+# studies (study); and cli on top.  `make check-layers` (part of `make
+# test`) keeps every include pointing down this list.
 LAYERS   := util diag spec catalog template result physics sizing parts engine \
-            input output study cli
+            input formats fs pdf study cli
 LIB_SRCS := $(filter-out src/cli/main.c,$(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)))
 LIB_OBJS := $(LIB_SRCS:src/%.c=$(BUILD)/obj/%.o)
 LIB      := $(BUILD)/libaeroeval.a

@@ -27,9 +27,11 @@ BEGIN {
 	ok["parts"] = "util spec catalog result physics sizing"
 	ok["engine"] = "util spec catalog result physics sizing parts"
 	ok["input"] = "util diag spec catalog template result"
-	ok["output"] = "util spec catalog template result"
-	ok["study"] = "util spec catalog template result physics sizing parts engine input output"
-	ok["cli"] = "util diag spec catalog template result physics sizing parts engine input output study"
+	ok["formats"] = "util spec catalog result"
+	ok["fs"] = "util formats"
+	ok["pdf"] = "util spec catalog template result formats"
+	ok["study"] = "util spec catalog template result physics sizing parts engine input pdf"
+	ok["cli"] = "util diag spec catalog template result physics sizing parts engine input formats fs pdf study"
 	n_layers = split(layers, order, " ")
 	for (i = 1; i <= n_layers; i++) {
 		pos[order[i]] = i

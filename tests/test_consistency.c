@@ -34,7 +34,7 @@
 #include "cli/cli_summary.h"
 #include "cli/pipeline.h"
 #include "template/template.h"
-#include "output/doc.h"
+#include "pdf/doc.h"
 #include "util/csv.h"
 #include "util/strbuf.h"
 #include "util/xalloc.h"

@@ -8,9 +8,9 @@
 
 #include <cairo.h>
 
-#include "output/doc.h"
-#include "output/doc_int.h"
-#include "output/plot.h"
+#include "pdf/doc.h"
+#include "pdf/doc_int.h"
+#include "pdf/plot.h"
 #include "cli/cli.h"
 #include "template/template.h"
 

@@ -1,5 +1,5 @@
 /* test_index.c — the design-space table: rows read from result.json
- * (input/table_in), rendered as index.csv and index.json (output/index).
+ * (input/table_in), rendered as index.csv and index.json (formats/index).
  *
  * The result.json files are the golden copies of the examples, so the rows
  * follow what the compiler writes now.
@@ -11,7 +11,7 @@
 #include "diag/diag.h"
 #include "result/table_row.h"
 #include "input/table_in.h"
-#include "output/index.h"
+#include "formats/index.h"
 #include "util/file.h"
 
 #define HEADER "name,status,role,rotors,coaxial,wheelbase_m,airframe_class," \

@@ -24,8 +24,8 @@
 #include "cli/cli.h"
 #include "cli/pipeline.h"
 #include "template/template.h"
-#include "output/doc.h"
-#include "output/report.h"
+#include "pdf/doc.h"
+#include "pdf/report.h"
 #include "util/xalloc.h"
 
 /* ---- reading the PDF ------------------------------------------------------- */

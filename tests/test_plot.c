@@ -4,8 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "output/doc.h"
-#include "output/plot.h"
+#include "pdf/doc.h"
+#include "pdf/plot.h"
 #include "template/template.h"
 
 static void

@@ -8,7 +8,7 @@
 
 #include "cli/cli.h"
 #include "diag/diag.h"
-#include "output/doc.h"
+#include "pdf/doc.h"
 #include "engine/engine.h"
 #include "input/mission_io.h"
 #include "study/sens.h"

@@ -11,7 +11,7 @@
 
 #include "template/template.h"
 #include "input/template_io.h"
-#include "output/assets.h"
+#include "pdf/assets.h"
 
 #include <cairo.h>
 

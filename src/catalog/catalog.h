@@ -16,8 +16,8 @@
  * where it may be unknown.  An entry with any unknown field that the
  * optimizer needs has `usable` false and must be skipped.
  *
- * For the input layer (which fills it), the parts, engine, output and
- * command layers; physics modules never include this.
+ * For the input layer (which fills it), the parts, engine, formats, PDF
+ * and command layers; physics modules never include this.
  */
 #ifndef AEROEVAL_CATALOG_H
 #define AEROEVAL_CATALOG_H

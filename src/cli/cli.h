@@ -61,7 +61,7 @@ int cli_close_stdout(int status);
 struct template;
 
 /* The dossier template: the built-in one when path is NULL, else the file,
- * its fonts and logo checked now (output/assets.h), before any mission is
+ * its fonts and logo checked now (pdf/assets.h), before any mission is
  * solved.  Errors go to err; NULL when there was any.  Free with
  * template_free(). */
 struct template *cli_template_load(const char *path, FILE *err);

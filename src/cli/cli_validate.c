@@ -14,9 +14,9 @@
 #include "cli/batch.h"
 #include "cli/cli.h"
 #include "input/cohort.h"
-#include "output/doc.h"
-#include "output/fsfolder.h"
-#include "output/fsout.h"
+#include "pdf/doc.h"
+#include "fs/fsfolder.h"
+#include "fs/fsout.h"
 #include "input/mission_io.h"
 #include "input/model_io.h"
 #include "study/validate.h"
@@ -384,7 +384,7 @@ prune_to_given(cJSON *root, const struct mission_spec *s)
 #define MISSIONS_LOCK_WAIT_S 30.0
 
 /* --missions DIR: the rows' missions as DIR/NN-NAME.json, DIR being a folder
- * of their own replaced as a whole through the output layer (fsfolder.h),
+ * of their own replaced as a whole through the file-system layer (fsfolder.h),
  * as `build` replaces a mission's folder: not "" or the root, no link at
  * DIR, nothing in it but missions an earlier run wrote ("*.json"), one new
  * set swapped in.  Returns 0, or -1 after one message. */

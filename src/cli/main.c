@@ -11,7 +11,7 @@
 #include "cli/cli_solve.h"
 #include "cli/cli_summary.h"
 #include "cli/cli_validate.h"
-#include "output/doc.h"
+#include "pdf/doc.h"
 #include "util/xalloc.h"
 
 /* The commands this program runs; cli_help.c documents them. */

@@ -23,7 +23,7 @@
  * device or directory is refused at once), and their bytes handed to the
  * caller's check, so a corrupt PNG or a file that is not a font is an
  * error naming it before any mission is solved.  The checks that need
- * cairo and libharu live in the output layer (output/assets.h); the
+ * cairo and libharu live in the PDF layer (pdf/assets.h); the
  * command layer passes them in.
  *
  * Who may include it: the command layer (and tests).

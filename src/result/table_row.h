@@ -2,7 +2,7 @@
  *
  * `aeroeval summary DIR` and `build` (which keeps DIR/index.csv and
  * DIR/index.json current) read every DIR/<name>/result.json into a row
- * (input/table_in.h) and render the rows (output/index.h).  The table is
+ * (input/table_in.h) and render the rows (formats/index.h).  The table is
  * rebuilt from the per-mission files each time, never updated in place, so
  * a partial or sharded build gives a correct partial table.
  *

@@ -3,8 +3,9 @@
  * Cover with the headline numbers, the predicted-vs-actual log-log scatter
  * (identity line, ±10 % and ±25 % bands), the error-by-class bar figure, the
  * per-row table (rows not in the statistics listed with why), and the
- * mission rule in words.  Output layer: uses doc.h/plot.h; the date is
- * given by the caller (never the clock), so the file is reproducible.
+ * mission rule in words.  A renderer over pdf/doc.h and pdf/plot.h; the
+ * date is given by the caller (never the clock), so the file is
+ * reproducible.
  */
 #ifndef AEROEVAL_VALREPORT_H
 #define AEROEVAL_VALREPORT_H

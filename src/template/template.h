@@ -23,7 +23,7 @@
  * order, an id missing from it is disabled, a repeated id is an error.
  * Every template takes the sRGB profile shipped in templates/icc/ (else
  * the system's icc-profiles-free copy) as its documents' PDF/A output
- * intent (output/doc.h).
+ * intent (pdf/doc.h).
  *
  * Who may include it: the input layer (template_io), the output layer (doc,
  * plot, report, assets) and the CLI.
