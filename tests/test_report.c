@@ -17,7 +17,7 @@
 #include "engine/engine.h"
 #include "input/mission_io.h"
 #include "pdf/report.h"
-#include "pdf/report_int.h"
+#include "pdf/report_util.h"
 #include "util/sha256.h"
 #include "util/strbuf.h"
 #include "template/template.h"

@@ -24,35 +24,9 @@
 
 #include <stddef.h>
 
+#include "pdf/report_input.h"
 #include "result/result.h"
 #include "template/template.h"
-
-struct catalog;
-struct doc;
-struct strbuf;
-
-/* Draws an optional section into the dossier (the study layer's trade
- * study): returns 0, or -1 when it could not. */
-typedef int report_section_fn(struct doc *d, const struct template *t,
-                              const void *arg);
-
-/* Everything one dossier needs.  Only r and tpl are required; a NULL
- * string prints as absent, a NULL mission_bytes attaches nothing. */
-struct report_input {
-	const struct solve_result *r;          /* the solve */
-	const struct template *tpl;            /* layout, sections, colours */
-	const char *mission_name;              /* output folder name, e.g. "sar_imaging_quad" */
-	const char *mission_file_name;         /* bare name for the attachment, e.g. "sar_imaging_quad.json" */
-	const unsigned char *mission_bytes;    /* the mission file, embedded as attachment */
-	size_t mission_len;
-	const char *date;                      /* "YYYY-MM-DD", already resolved by the caller */
-	const char *engine_version;            /* AEROEVAL_VERSION */
-	const struct catalog *cat;             /* may be NULL: for the crosshair figure (all motors) and the appendix */
-	report_section_fn *sensitivity;        /* may be NULL: draws the optional Sensitivity section */
-	const void *sensitivity_arg;           /* ... from this */
-	struct strbuf *transcript;             /* may be NULL: receives the dossier's
-	                                          text as drawn (doc_set_transcript()) */
-};
 
 /* Renders the dossier into a new buffer (*pdf, *n).  Returns 0, or -1 with
  * a one-line message in err (nothing returned: *pdf NULL, *n 0).

@@ -3,13 +3,15 @@
  * design rationale.  All of them describe the design of record; the
  * continuous optimum and the baseline stand beside it as references.
  */
+#include "pdf/report_cover.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "pdf/doc.h"
-#include "pdf/report_int.h"
+#include "pdf/report_util.h"
 #include "util/strbuf.h"
 #include "util/xalloc.h"
 

@@ -7,6 +7,8 @@
  * palette 1, design of record palette 2; limits in the fail colour, design
  * points and optima in the accent colour.
  */
+#include "pdf/report_figs.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,7 +18,7 @@
 #include "spec/model.h"
 #include "pdf/doc.h"
 #include "pdf/plot.h"
-#include "pdf/report_int.h"
+#include "pdf/report_util.h"
 #include "util/strbuf.h"
 #include "util/xalloc.h"
 

@@ -4,6 +4,8 @@
  * the aircraft can do beyond its mission, the model constants used and the
  * feasibility gates.
  */
+#include "pdf/report_prop.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -13,7 +15,7 @@
 #include "catalog/catalog.h"
 #include "pdf/doc.h"
 #include "pdf/plot.h"
-#include "pdf/report_int.h"
+#include "pdf/report_util.h"
 #include "util/strbuf.h"
 #include "util/units.h"
 #include "util/xalloc.h"

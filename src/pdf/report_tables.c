@@ -7,6 +7,8 @@
  * the prices.  The catalogue's provenance notes (how a number was found,
  * how sure its curator is) stay in the catalogue.
  */
+#include "pdf/report_tables.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,7 +18,7 @@
 #include "pdf/doc.h"
 #include "pdf/plot.h"
 #include "formats/bom_csv.h"
-#include "pdf/report_int.h"
+#include "pdf/report_util.h"
 #include "util/strbuf.h"
 #include "util/xalloc.h"
 

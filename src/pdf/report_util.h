@@ -1,9 +1,12 @@
-/* report_int.h — what the files of the report module share: the state of
- * one render and the helpers every section uses.  Internal to the report
- * module: include it from report*.c only.
+/* report_util.h — what the dossier's sections share: the state of one
+ * render (struct rep) and the helpers every section uses.  Internal to the
+ * dossier: include it from report*.c only.
  *
- * The files split along what the reader meets:
- *   report.c         the driver, the shared helpers;
+ * The files split along what the reader meets; report.c includes the
+ * sections, the sections include only this (and the document's own
+ * headers), so no section reaches back into the driver:
+ *   report.c         the driver: the sections in the template's order;
+ *   report_util.c    these helpers;
  *   report_cover.c   cover, document control and contents, executive
  *                    summary, design rationale;
  *   report_tables.c  mass budget, bill of materials, checks, appendix;
@@ -11,20 +14,24 @@
  *                    structure and resonance, convergence, endurance;
  *   report_prop.c    propulsion selection: the parts, the operating points
  *                    and what the aircraft can do beyond its mission.
+ * The helpers keep the dossier's prefix, report_, as the sections do: the
+ * module is the dossier, and this file is the part of it they all call.
  *
  * Every section describes the design of record (res_record(): the aircraft
  * the bill of materials builds); the continuous optimum ("what the physics
  * asks for") and the baseline (the paper's dead-weight reference) are shown
  * beside it as references.
  */
-#ifndef AEROEVAL_REPORT_INT_H
-#define AEROEVAL_REPORT_INT_H
+#ifndef AEROEVAL_REPORT_UTIL_H
+#define AEROEVAL_REPORT_UTIL_H
 
 #include <stdbool.h>
 #include <stddef.h>
 
 #include "pdf/doc.h"
-#include "pdf/report.h"
+#include "pdf/report_input.h"
+#include "result/result.h"
+#include "template/template.h"
 #include "util/strbuf.h"
 
 /* Series colours by role, the same in every figure (report.h). */
@@ -152,26 +159,6 @@ const char *report_no_parts_reason(const struct rep *rp);
 const char *report_chemistry(const char *name);
 /* The mission's role name ("imaging"). */
 const char *report_role_name(const struct solve_result *r);
-
-/* The sections, by file. */
-/* The dossier's document number, from the input fingerprint
- * ("AE-4FBB-C60E"), in buf. */
-const char *report_doc_number(const struct solve_result *r, char *buf, size_t n);
-
-void report_sec_cover(struct rep *rp, int first);
-void report_sec_control(struct rep *rp);
-void report_sec_summary(struct rep *rp, const char *title);
-void report_sec_rationale(struct rep *rp, const char *title);
-void report_sec_mass(struct rep *rp, const char *title);
-void report_sec_bom(struct rep *rp, const char *title);
-void report_sec_checks(struct rep *rp, const char *title);
-void report_sec_appendix(struct rep *rp, const char *title);
-void report_sec_mission(struct rep *rp, const char *title);
-void report_sec_thermal(struct rep *rp, const char *title);
-void report_sec_structure(struct rep *rp, const char *title);
-void report_sec_propulsion(struct rep *rp, const char *title);
-void report_sec_convergence(struct rep *rp, const char *title);
-void report_sec_endurance(struct rep *rp, const char *title);
 
 /* The mass items of struct res_mass, in the order of result.json. */
 struct report_mass_item {
