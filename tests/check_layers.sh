@@ -1,10 +1,11 @@
 #!/bin/sh
 # The folders of src/ are layers, lowest first in the Makefile's LAYERS;
 # every include must point down (or stay in its own folder), physics must
-# not see any I/O library, and no two files may include each other,
-# directly or round a longer circle.
+# not see any I/O library, and no two files may include each other, or
+# call each other, directly or round a longer circle.
 # Prints "ok NAME" / "not ok NAME" lines; run by tests/run_all.sh.
-# One awk pass reads every include of every source file.
+# One awk pass reads every include of every source file, a second every
+# definition and use of a function or variable.
 cd "$(dirname "$0")/.." || exit 1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -104,4 +105,98 @@ if tsort "$tmp/pairs" >/dev/null 2>"$tmp/tsort"; then
 else
 	sed 's/^/check-layers: /' "$tmp/tsort"
 	echo "not ok no_include_cycles"
+fi
+
+# No circles of calls between files either: a file uses another when it
+# names a function or variable that the other defines (not static).  The
+# include graph cannot show this where a header declares what another file
+# defines (a shared x_int.h), so the report's driver and its sections once
+# called each other through report_int.h while every include pointed one
+# way.  Read from the source text (comments, strings, members and struct
+# tags left out), so it needs no build; a call made inside a header's
+# macro is not seen.  Two passes over the same files: the first finds the
+# definitions, the second the uses.
+set -- src/*/*.c
+awk -v first_file="$1" -v q="'" '
+BEGIN { pass = 1 }
+function clean(s,    out, c, i, n) {
+	out = ""
+	n = length(s)
+	for (i = 1; i <= n; i++) {
+		c = substr(s, i, 1)
+		if (incomment) {
+			if (c == "*" && substr(s, i + 1, 1) == "/") { incomment = 0; i++ }
+			continue
+		}
+		if (quote != "") {
+			if (c == "\\") { i++; continue }
+			if (c == quote) quote = ""
+			continue
+		}
+		if (c == "/" && substr(s, i + 1, 1) == "*") { incomment = 1; i++; continue }
+		if (c == "/" && substr(s, i + 1, 1) == "/") break
+		if (c == "\"" || c == q) { quote = c; out = out " "; continue }
+		out = out c
+	}
+	return out
+}
+FNR == 1 {
+	if (FILENAME == first_file && seen_first) pass = 2
+	if (FILENAME == first_file) seen_first = 1
+	file = FILENAME
+	sub(/^src\//, "", file)
+	sub(/\.c$/, "", file)
+	depth = 0; incomment = 0; quote = ""; prev = ""; cont = 0
+}
+{
+	line = clean($0)
+	if (cont || line ~ /^[ \t]*#/) {        # preprocessor, with continuations
+		cont = line ~ /\\[ \t]*$/
+		next
+	}
+	if (pass == 1 && depth == 0 && line !~ /^extern[ \t]/ && line !~ /(^|[ \t])typedef[ \t]/) {
+		name = ""
+		if (match(line, /^[A-Za-z_][A-Za-z0-9_]*\(/))
+			name = substr(line, 1, RLENGTH - 1)    # the name under its type
+		else if (match(line, /^[A-Za-z_][A-Za-z0-9_ \t*]*[ \t*][A-Za-z_][A-Za-z0-9_]*\(/) && \
+		         line !~ /;[ \t]*$/) {
+			name = substr(line, 1, RLENGTH - 1)    # type and name on one line
+			sub(/.*[ \t*]/, "", name)
+		} else if (line !~ /^(struct|union|enum)[ \t]+[A-Za-z_0-9]+[ \t]*[;{]/ && \
+		         match(line, /[A-Za-z_][A-Za-z0-9_]*[ \t]*(\[[^]]*\][ \t]*)*(=|;)/) && \
+		         line ~ /^[A-Za-z_]/ && substr(line, 1, RSTART - 1) ~ /[A-Za-z_0-9*][ \t*]*$/) {
+			name = substr(line, RSTART, RLENGTH)   # a variable
+			sub(/[ \t\[=;].*/, "", name)
+		}
+		if (name != "" && name !~ /^_/) {
+			if (line ~ /^static[ \t]/ || prev ~ /^static[ \t]/)
+				local[file, name] = 1
+			else
+				def[name] = file
+		}
+	}
+	if (pass == 2) {
+		t = line        # a member or a struct tag of that name is no use
+		gsub(/(\.|->)[ \t]*[A-Za-z_][A-Za-z0-9_]*/, " ", t)
+		gsub(/(struct|union|enum)[ \t]+[A-Za-z_][A-Za-z0-9_]*/, " ", t)
+		n = split(t, tok, /[^A-Za-z0-9_]+/)
+		for (i = 1; i <= n; i++)
+			if ((tok[i] in def) && def[tok[i]] != file && !((file, tok[i]) in local))
+				edge[file " " def[tok[i]]] = 1
+	}
+	t = line
+	depth += gsub(/\{/, "", t)
+	t = line
+	depth -= gsub(/\}/, "", t)
+	if (line ~ /[^ \t]/) prev = line
+}
+END {
+	for (e in edge) print e
+}
+' "$@" "$@" >"$tmp/calls"
+if tsort "$tmp/calls" >/dev/null 2>"$tmp/tsort"; then
+	echo "ok no_call_cycles"
+else
+	sed 's/^/check-layers: /' "$tmp/tsort"
+	echo "not ok no_call_cycles"
 fi

@@ -26,17 +26,6 @@
 
 /* ---- errors ---------------------------------------------------------------- */
 
-void
-doc_fail(struct doc *d, const char *fmt, ...)
-{
-	if (d->err[0] != '\0')
-		return;   /* keep the first, it is the cause */
-	va_list ap;
-	va_start(ap, fmt);
-	vsnprintf(d->err, sizeof d->err, fmt, ap);
-	va_end(ap);
-}
-
 /* libharu calls this on every raised error; the document is poisoned from
  * then on (docs/libraries.md, libharu), so the first error is the one to
  * report. */
@@ -63,12 +52,6 @@ static void
 hpdf_free(void *p)
 {
 	free(p);
-}
-
-int
-doc_failed(const struct doc *d)
-{
-	return d->err[0] != '\0';
 }
 
 const char *

@@ -5,7 +5,9 @@
 #ifndef AEROEVAL_DOC_INT_H
 #define AEROEVAL_DOC_INT_H
 
+#include <stdarg.h>
 #include <stddef.h>
+#include <stdio.h>
 
 #include <hpdf.h>
 
@@ -89,11 +91,28 @@ void doc_pdfa_finish(struct doc *d);
  * then text (a no-break space as a space), then a newline. */
 void doc_transcribe(struct doc *d, const char *prefix, const char *text);
 
-/* Remembers the first error (later ones are its consequences). */
-void doc_fail(struct doc *d, const char *fmt, ...)
+/* Remembers the first error (later ones are its consequences).  Here, not
+ * in doc.c, because doc_pdfa.c records its failures too and doc.c calls
+ * doc_pdfa.c: the two files must not call each other. */
+static inline void doc_fail(struct doc *d, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));
+static inline void
+doc_fail(struct doc *d, const char *fmt, ...)
+{
+	if (d->err[0] != '\0')
+		return;   /* keep the first, it is the cause */
+	va_list ap;
+	va_start(ap, fmt);
+	vsnprintf(d->err, sizeof d->err, fmt, ap);
+	va_end(ap);
+}
+
 /* An error has been recorded: every element does nothing from then on. */
-int doc_failed(const struct doc *d);
+static inline int
+doc_failed(const struct doc *d)
+{
+	return d->err[0] != '\0';
+}
 
 /* Width of len bytes of s in font f at size, points. */
 double doc_width(HPDF_Font f, double size, const char *s, size_t len);
