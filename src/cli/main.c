@@ -5,6 +5,7 @@
 
 #include "cli/cli.h"
 #include "cli/cli_build.h"
+#include "cli/cli_calibrate.h"
 #include "cli/cli_front.h"
 #include "cli/cli_help.h"
 #include "cli/cli_sens.h"

@@ -1,7 +1,8 @@
 /* validate.h — accuracy against real aircraft: cohort row -> mission, one
  * solve per row, and the statistics of predicted vs actual takeoff mass.
  *
- * For the `validate` and `calibrate` commands (cli_validate.c, calibrate.c).
+ * For the `validate` and `calibrate` commands (cli_validate.c,
+ * cli_calibrate.c, and the fit in study/calibrate.c).
  * Engine layer plus stats: no JSON, PDF or printing here.
  *
  * THE MISSION RULE (validate_mission_from_row), applied identically to every
