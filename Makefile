@@ -296,8 +296,9 @@ install: all
 	  >$(DESTDIR)$(PREFIX)/share/man/man1/aeroeval.1
 	chmod 644 $(DESTDIR)$(PREFIX)/share/man/man1/aeroeval.1
 
-# The folders of src/ are layers: includes point down, physics sees no I/O,
-# no module cycles (tests/check_layers.sh; `make test` runs it too).
+# The folders of src/ are layers, in the order of LAYERS: includes point
+# down, physics sees no I/O, no circle of includes or of calls
+# (tests/check_layers.sh; `make test` runs it too).
 check-layers:
 	sh tests/check_layers.sh
 

@@ -4,8 +4,8 @@
 # For each tests/bad/NAME.json: `check` must exit 2 and print exactly
 # tests/bad/NAME.stderr on stderr (nothing on stdout).  Then: a good mission
 # passes silently, every file is checked even after a failure, a missing file
-# is reported, `schema` lists every field of src/spec/spec.h, and `schema --json`
-# equals the committed data/mission.schema.json.
+# is reported, `schema` lists every field of src/spec/spec.h, and
+# `schema --json` equals the committed data/mission.schema.json.
 #
 # usage: AEROEVAL=build/aeroeval sh tests/cli_check.sh   (from the repo root)
 # Prints "ok NAME" / "not ok NAME" per check.

@@ -1,9 +1,9 @@
 /* result_json.h — result.json, the machine-readable record of one solve
  * (README.md).
  *
- * Who may include it: the command drivers.  It reads a
- * const struct solve_result and returns text; it writes no file (the caller
- * does, atomically).
+ * Who may include it: the command drivers.  It reads a const struct
+ * solve_result and returns text; it writes no file (the caller does,
+ * atomically).
  *
  * The text is deterministic: fixed key order, 2-space indentation, LF line
  * ends, one final newline, numbers printed as the shortest of %.15g/%.16g/

@@ -132,9 +132,9 @@ struct res_sample {
 };
 
 /* One constraint of the checks table.  The text fields of checks and
- * violations point to string literals (the check tables of feasibility.c
- * and optim.c): static, so results copy freely, and a trial closing writes
- * no text. */
+ * violations point to string literals (the one table of checks,
+ * result/checks.c): static, so results copy freely, and a trial closing
+ * writes no text. */
 struct res_check {
 	const char *code;    /* "THERMAL_RUNAWAY" (result/checks.h) */
 	const char *name;    /* "Battery peak temperature" */

@@ -25,8 +25,8 @@
  * the system's icc-profiles-free copy) as its documents' PDF/A output
  * intent (pdf/doc.h).
  *
- * Who may include it: the input layer (template_io), the output layer (doc,
- * plot, report, assets) and the CLI.
+ * Who may include it: the input layer (template_io), the PDF layer (doc,
+ * plot, report, assets, index_pdf), the study reports and the CLI.
  */
 #ifndef AEROEVAL_TEMPLATE_H
 #define AEROEVAL_TEMPLATE_H
