@@ -59,11 +59,15 @@ LINK         = $(CC) $(AE_CFLAGS) $(CFLAGS) $(LDFLAGS)
 
 # ---- the library ------------------------------------------------------------
 # Every src/LAYER/*.c except cli/main.c goes into libaeroeval.a, which the
-# program and every test link.  The folders are the layers, lowest first:
-# util, core, physics, sizing, parts, engine, then study, input and output
-# side by side, and cli on top (docs/architecture.md); `make check-layers`
-# (part of `make test`) keeps every include pointing down.
-LAYERS   := util core physics sizing parts engine study input output cli
+# program and every test link.  The folders are the layers, lowest first
+# (docs/architecture.md): util; the plain values the layers above share
+# (diag, spec, catalog, template, result); the engine (physics, sizing,
+# parts, engine); the files read (input); the files written: their text
+# (formats), atomic files and folders (fs), the PDF documents (pdf); the
+# studies (study); and cli on top.  `make check-layers` (part of `make
+# test`) keeps every include pointing down this list.
+LAYERS   := util diag spec catalog template result physics sizing parts engine \
+            input formats fs pdf study cli
 LIB_SRCS := $(filter-out src/cli/main.c,$(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)))
 LIB_OBJS := $(LIB_SRCS:src/%.c=$(BUILD)/obj/%.o)
 LIB      := $(BUILD)/libaeroeval.a
@@ -292,8 +296,9 @@ install: all
 	  >$(DESTDIR)$(PREFIX)/share/man/man1/aeroeval.1
 	chmod 644 $(DESTDIR)$(PREFIX)/share/man/man1/aeroeval.1
 
-# The folders of src/ are layers: includes point down, physics sees no I/O,
-# no module cycles (tests/check_layers.sh; `make test` runs it too).
+# The folders of src/ are layers, in the order of LAYERS: includes point
+# down, physics sees no I/O, no circle of includes or of calls
+# (tests/check_layers.sh; `make test` runs it too).
 check-layers:
 	sh tests/check_layers.sh
 

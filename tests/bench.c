@@ -54,7 +54,7 @@
 #include <cjson/cJSON.h>
 
 #include "cli/cli.h"
-#include "core/result.h"
+#include "result/result.h"
 #include "engine/engine.h"
 #include "input/cohort.h"
 #include "study/validate.h"

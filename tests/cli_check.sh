@@ -4,8 +4,8 @@
 # For each tests/bad/NAME.json: `check` must exit 2 and print exactly
 # tests/bad/NAME.stderr on stderr (nothing on stdout).  Then: a good mission
 # passes silently, every file is checked even after a failure, a missing file
-# is reported, `schema` lists every field of src/spec.h, and `schema --json`
-# equals the committed data/mission.schema.json.
+# is reported, `schema` lists every field of src/spec/spec.h, and
+# `schema --json` equals the committed data/mission.schema.json.
 #
 # usage: AEROEVAL=build/aeroeval sh tests/cli_check.sh   (from the repo root)
 # Prints "ok NAME" / "not ok NAME" per check.
@@ -115,13 +115,13 @@ fi
 run check --frobnicate good.json
 if [ "$rc" -eq 2 ]; then ok check_unknown_option; else notok check_unknown_option "exit $rc"; fi
 
-# `schema` names every field of the table in src/core/spec.h.
+# `schema` names every field of the table in src/spec/spec.h.
 run schema
 missing=""
-for path in $(sed -n 's/^X([A-Z_0-9]*, "\([^"]*\)".*/\1/p' "$root/src/core/spec.h"); do
+for path in $(sed -n 's/^X([A-Z_0-9]*, "\([^"]*\)".*/\1/p' "$root/src/spec/spec.h"); do
 	grep -q "^  $path  (" out.txt || missing="$missing $path"
 done
-n=$(sed -n 's/^X([A-Z_0-9]*, "\([^"]*\)".*/\1/p' "$root/src/core/spec.h" | wc -l)
+n=$(sed -n 's/^X([A-Z_0-9]*, "\([^"]*\)".*/\1/p' "$root/src/spec/spec.h" | wc -l)
 if [ "$rc" -eq 0 ] && [ -z "$missing" ] && [ "$n" -gt 50 ]; then
 	ok schema_lists_every_field
 else

@@ -2,7 +2,7 @@
 # cli_promises.sh — every command keeps the file-system promises `build`
 # keeps (issue 36): the study table is a function of the mission folders,
 # a failed write to stdout fails, the two-rename swap never loses the old
-# set, every writer goes through the one output layer, the program's own
+# set, every writer goes through the one file-system layer, the program's own
 # names are not mission names, and the smaller input rules.  Each check
 # failed on the main branch before issue 36.
 #
@@ -213,7 +213,7 @@ run build -o fb fbm/m5.json
 check fallback_swap_killed_between_renames_is_recovered_by_the_next_build "exit $rc"
 unset SOURCE_DATE_EPOCH
 
-# ---- 4. every writer goes through the one output layer -----------------------
+# ---- 4. every writer goes through the one file-system layer ------------------
 # sensitivity writes into the mission's folder as `build` does, and `build`
 # still calls the folder its own, up to date or forced.
 rm -rf out

@@ -20,13 +20,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "output/bom_csv.h"
+#include "formats/bom_csv.h"
 #include "cli/cli.h"
-#include "core/diag.h"
+#include "diag/diag.h"
 #include "engine/engine.h"
 #include "input/mission_io.h"
-#include "core/result.h"
-#include "output/result_json.h"
+#include "result/result.h"
+#include "formats/result_json.h"
 
 static const char *
 solve_check(int engine_rc, const struct solve_result *r, char *detail, size_t n)

@@ -14,9 +14,9 @@
 
 #include "cli/cli.h"
 #include "cli/pipeline.h"
-#include "core/catalog.h"
-#include "output/ardupilot.h"
-#include "output/bom_csv.h"
+#include "catalog/catalog.h"
+#include "formats/ardupilot.h"
+#include "formats/bom_csv.h"
 #include "util/xalloc.h"
 
 /* ---- the schema's required fields, as test data ----------------------------

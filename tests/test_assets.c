@@ -8,7 +8,7 @@
 
 #include <cairo.h>
 
-#include "output/assets.h"
+#include "pdf/assets.h"
 #include "util/file.h"
 #include "util/strbuf.h"
 

@@ -10,9 +10,9 @@
 #include "test_util.h"
 #include "test_fixtures.h"
 #include "physics/batt.h"
-#include "core/catalog.h"
-#include "core/diag.h"
-#include "core/model.h"
+#include "catalog/catalog.h"
+#include "diag/diag.h"
+#include "spec/model.h"
 #include "input/catalog_io.h"
 #include "input/model_io.h"
 

@@ -8,7 +8,7 @@
 #include "test_util.h"
 #include "cli/cli.h"
 #include "cli/pipeline.h"
-#include "output/bom_csv.h"
+#include "formats/bom_csv.h"
 #include "util/csv.h"
 #include "util/xalloc.h"
 

@@ -7,7 +7,7 @@
 
 #include "util/lsq.h"
 #include "input/cohort.h"
-#include "core/diag.h"
+#include "diag/diag.h"
 #include "input/model_io.h"
 #include "study/validate.h"
 #include "engine/engine.h"

@@ -2,7 +2,7 @@
  * (coverage, ids, SI values), catalogue format 2 on fixtures, every kind of
  * diagnostic with file:line:col, hostile files and a 10^5-motor catalogue. */
 #include "test_util.h"
-#include "core/catalog.h"
+#include "catalog/catalog.h"
 #include "input/catalog_io.h"
 #include "util/file.h"
 #include "util/hash.h"

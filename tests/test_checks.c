@@ -1,4 +1,4 @@
-/* test_checks.c — the one table of checks (core/checks.h): every row is
+/* test_checks.c — the one table of checks (result/checks.h): every row is
  * complete and its code unique, a failed check becomes exactly one
  * violation in the table's words, and the examples' designs of record are
  * held to the checks a chief engineer reads first (arm tilt and stiffness,
@@ -7,8 +7,8 @@
  */
 #include "test_util.h"
 #include "cli/cli.h"
-#include "core/checks.h"
-#include "core/diag.h"
+#include "result/checks.h"
+#include "diag/diag.h"
 #include "engine/engine.h"
 #include "input/mission_io.h"
 #include "util/xalloc.h"

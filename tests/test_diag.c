@@ -1,6 +1,6 @@
 /* test_diag.c — diagnostics: line format, counting, buffering, exit status. */
 #include "test_util.h"
-#include "core/diag.h"
+#include "diag/diag.h"
 
 #include <string.h>
 

@@ -8,11 +8,11 @@
 
 #include <cairo.h>
 
-#include "output/doc.h"
-#include "output/doc_int.h"
-#include "output/plot.h"
+#include "pdf/doc.h"
+#include "pdf/doc_int.h"
+#include "pdf/plot.h"
 #include "cli/cli.h"
-#include "core/template.h"
+#include "template/template.h"
 
 #define DEMO_PAGES 9   /* pages of the demo document, checked by eye */
 

@@ -13,7 +13,7 @@
 #include "test_missions.h"
 #include "test_fixtures.h"
 #include "cli/cli.h"
-#include "core/diag.h"
+#include "diag/diag.h"
 #include "engine/engine.h"
 #include "input/mission_io.h"
 #include "physics/discharge.h"

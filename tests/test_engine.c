@@ -8,7 +8,7 @@
 #include "test_util.h"
 #include "test_missions.h"
 #include "cli/cli.h"
-#include "core/diag.h"
+#include "diag/diag.h"
 #include "engine/engine.h"
 #include "input/mission_io.h"
 #include "physics/mission.h"

@@ -3,9 +3,9 @@
  * (fsfolder: the issue 25 guarantees). */
 #include "util/file.h"
 #include "test_util.h"
-#include "output/fsfolder.h"
-#include "output/fsout.h"
-#include "output/fsout_int.h"
+#include "fs/fsfolder.h"
+#include "fs/fsout.h"
+#include "fs/fsout_int.h"
 
 #include <dirent.h>
 #include <errno.h>

@@ -1,5 +1,5 @@
 /* test_index.c — the design-space table: rows read from result.json
- * (input/summary_in), rendered as index.csv and index.json (output/index).
+ * (input/table_in), rendered as index.csv and index.json (formats/index).
  *
  * The result.json files are the golden copies of the examples, so the rows
  * follow what the compiler writes now.
@@ -8,10 +8,10 @@
 
 #include <cjson/cJSON.h>
 
-#include "core/diag.h"
-#include "core/summary.h"
-#include "input/summary_in.h"
-#include "output/index.h"
+#include "diag/diag.h"
+#include "result/table_row.h"
+#include "input/table_in.h"
+#include "formats/index.h"
 #include "util/file.h"
 
 #define HEADER "name,status,role,rotors,coaxial,wheelbase_m,airframe_class," \
@@ -23,11 +23,11 @@
 /* Parses text as the result.json of name; returns parse's result, the
  * diagnostics in msg. */
 static int
-parse_text(const char *text, const char *name, struct summary_row *row, char *msg,
+parse_text(const char *text, const char *name, struct table_row *row, char *msg,
            size_t n)
 {
 	struct diag *dg = diag_alloc(NULL);
-	int rc = summary_in_parse("t/result.json", text, strlen(text), name, row, dg);
+	int rc = table_in_parse("t/result.json", text, strlen(text), name, row, dg);
 	snprintf(msg, n, "%s", diag_text(dg));
 	diag_free(dg);
 	return rc;
@@ -50,12 +50,12 @@ row_should_carry_the_design_of_record(void **state)
 {
 	(void)state;
 	char *text = golden("sar_imaging_quad"), msg[512];
-	struct summary_row w;
+	struct table_row w;
 	assert_int_equal(parse_text(text, "sar_imaging_quad", &w, msg, sizeof msg), 0);
 	cJSON *root = cJSON_Parse(text);
 	const cJSON *dor = cJSON_GetObjectItemCaseSensitive(root, "design_of_record");
 	assert_string_equal(w.name, "sar_imaging_quad");
-	assert_int_equal(w.status, SUMMARY_FEASIBLE);
+	assert_int_equal(w.status, TABLE_ROW_FEASIBLE);
 	assert_rel(w.takeoff_mass_kg,
 	           cJSON_GetObjectItemCaseSensitive(root, "takeoff_mass_kg")->valuedouble, 0);
 	assert_int_equal(w.cells, cJSON_GetObjectItemCaseSensitive(dor, "cell_count")->valueint);
@@ -76,7 +76,7 @@ row_should_carry_the_design_of_record(void **state)
 
 	text = golden("infeasible_compact_lifter");
 	assert_int_equal(parse_text(text, "infeasible_compact_lifter", &w, msg, sizeof msg), 0);
-	assert_int_equal(w.status, SUMMARY_NOT_BUILDABLE);
+	assert_int_equal(w.status, TABLE_ROW_NOT_BUILDABLE);
 	assert_string_equal(w.motor, "");
 	assert_false(w.has_cost);
 	free(text);
@@ -100,11 +100,11 @@ row_should_carry_the_mission_inputs(void **state)
 	};
 	for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
 		char *text = golden(cases[i].example), msg[512];
-		struct summary_row w;
+		struct table_row w;
 		assert_int_equal(parse_text(text, cases[i].example, &w, msg, sizeof msg), 0);
 		assert_true(w.has_inputs);
-		struct summary s = { 0 };
-		summary_add(&s, &w);
+		struct table_rows s = { 0 };
+		table_row_add(&s, &w);
 		char *csv = index_csv(&s);
 		if (strstr(csv, cases[i].csv) == NULL)
 			fail_msg("%s: want \"%s\" in\n%s", cases[i].example, cases[i].csv, csv);
@@ -118,7 +118,7 @@ row_should_carry_the_mission_inputs(void **state)
 		cJSON_Delete(root);
 		free(json);
 		free(csv);
-		summary_free(&s);
+		table_row_free(&s);
 		free(text);
 	}
 }
@@ -135,18 +135,18 @@ row_should_read_a_prediction_interval_when_there_is_one(void **state)
 	cJSON_AddNumberToObject(iv, "lo_kg", 2.385);
 	cJSON_AddNumberToObject(iv, "hi_kg", 3.615);
 	char *with = cJSON_PrintUnformatted(root);
-	struct summary_row w;
+	struct table_row w;
 	assert_int_equal(parse_text(with, "lidar", &w, msg, sizeof msg), 0);
 	assert_true(w.has_interval);
 	assert_rel(w.interval_level, 0.9, 0);
 	assert_rel(w.mtow_lo_kg, 2.385, 0);
 	assert_rel(w.mtow_hi_kg, 3.615, 0);
-	struct summary s = { 0 };
-	summary_add(&s, &w);
+	struct table_rows s = { 0 };
+	table_row_add(&s, &w);
 	char *csv = index_csv(&s);
 	assert_non_null(strstr(csv, ",0.90,2.385,3.615,"));
 	free(csv);
-	summary_free(&s);
+	table_row_free(&s);
 	cJSON_free(with);
 	cJSON_Delete(root);
 	free(text);
@@ -169,32 +169,32 @@ result_without_what_a_row_needs_should_be_an_error_naming_it(void **state)
 		{ "{\"status\": ", "malformed JSON" },
 	};
 	for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
-		struct summary_row w;
+		struct table_row w;
 		char msg[1024];
 		assert_int_equal(parse_text(bad[i].text, "x", &w, msg, sizeof msg), -1);
 		if (strstr(msg, bad[i].want) == NULL || strncmp(msg, "t/result.json", 13) != 0)
 			fail_msg("case %zu: \"%s\" lacks \"%s\"", i, msg, bad[i].want);
 	}
 	/* The smallest file a row can come from: every other cell empty. */
-	struct summary_row w;
+	struct table_row w;
 	char msg[512];
 	assert_int_equal(parse_text("{\"status\": \"infeasible\", \"buildable\": true, "
 	    "\"takeoff_mass_kg\": 2.385, \"design_of_record\": {}, "
 	    "\"mission\": {\"payload_kg\": 0.5}}", "m", &w, msg, sizeof msg), 0);
-	assert_int_equal(w.status, SUMMARY_INFEASIBLE);
-	struct summary s = { 0 };
-	summary_add(&s, &w);
+	assert_int_equal(w.status, TABLE_ROW_INFEASIBLE);
+	struct table_rows s = { 0 };
+	table_row_add(&s, &w);
 	char *csv = index_csv(&s);
 	assert_string_equal(csv, HEADER "m,infeasible,,,,,,,,,,,,0.500,,2.385,,,,,,,0,,,,,,,\r\n");
 	free(csv);
-	summary_free(&s);
+	table_row_free(&s);
 }
 
 /* A row with the given name and texts, everything else plain. */
-static struct summary_row
-row(const char *name, const char *motor, enum summary_status st)
+static struct table_row
+row(const char *name, const char *motor, enum table_row_status st)
 {
-	struct summary_row w;
+	struct table_row w;
 	memset(&w, 0, sizeof w);
 	snprintf(w.name, sizeof w.name, "%s", name);
 	snprintf(w.motor, sizeof w.motor, "%s", motor);
@@ -208,13 +208,13 @@ static void
 csv_cells_should_never_start_like_a_formula(void **state)
 {
 	(void)state;
-	struct summary s = { 0 };
-	struct summary_row w = row("-dash", "=HYPERLINK(\"x\")", SUMMARY_FEASIBLE);
-	summary_add(&s, &w);
-	w = row("plus", "+1 motor, \"quoted\"", SUMMARY_FEASIBLE);
+	struct table_rows s = { 0 };
+	struct table_row w = row("-dash", "=HYPERLINK(\"x\")", TABLE_ROW_FEASIBLE);
+	table_row_add(&s, &w);
+	w = row("plus", "+1 motor, \"quoted\"", TABLE_ROW_FEASIBLE);
 	snprintf(w.battery, sizeof w.battery, "@SUM(A1)");
-	summary_add(&s, &w);
-	summary_sort(&s);
+	table_row_add(&s, &w);
+	table_row_sort(&s);
 	char *csv = index_csv(&s);
 	assert_non_null(strstr(csv, "\r\n'-dash,feasible,"));
 	assert_non_null(strstr(csv, ",\"'=HYPERLINK(\"\"x\"\")\","));
@@ -228,24 +228,24 @@ csv_cells_should_never_start_like_a_formula(void **state)
 	cJSON_Delete(root);
 	free(json);
 	free(csv);
-	summary_free(&s);
+	table_row_free(&s);
 }
 
 static void
 table_should_be_the_same_bytes_whatever_order_the_rows_came_in(void **state)
 {
 	(void)state;
-	struct summary a = { 0 }, b = { 0 };
+	struct table_rows a = { 0 }, b = { 0 };
 	static const char *const names[] = { "zulu", "alpha", "mike", "Bravo", "alpha2" };
 	for (int i = 0; i < 5; i++) {
-		struct summary_row w = row(names[i], "", (enum summary_status)(i % 3));
+		struct table_row w = row(names[i], "", (enum table_row_status)(i % 3));
 		w.takeoff_mass_kg = 1.0 + 0.1 * i;
-		summary_add(&a, &w);
+		table_row_add(&a, &w);
 	}
 	for (int i = 4; i >= 0; i--)
-		summary_add(&b, &a.rows[i]);
-	summary_sort(&a);
-	summary_sort(&b);
+		table_row_add(&b, &a.rows[i]);
+	table_row_sort(&a);
+	table_row_sort(&b);
 	char *ca = index_csv(&a), *cb = index_csv(&b);
 	char *ja = index_json(&a, "9.8.7"), *jb = index_json(&b, "9.8.7");
 	assert_string_equal(ca, cb);
@@ -264,9 +264,9 @@ table_should_be_the_same_bytes_whatever_order_the_rows_came_in(void **state)
 	free(cb);
 	free(ja);
 	free(jb);
-	summary_free(&a);
-	summary_free(&b);
-	summary_free(NULL);
+	table_row_free(&a);
+	table_row_free(&b);
+	table_row_free(NULL);
 }
 
 int

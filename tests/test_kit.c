@@ -10,8 +10,8 @@
 #include "test_util.h"
 
 #include "cli/cli.h"
-#include "core/catalog.h"
-#include "core/diag.h"
+#include "catalog/catalog.h"
+#include "diag/diag.h"
 #include "engine/engine.h"
 #include "input/mission_io.h"
 #include "parts/parts_int.h"

@@ -3,7 +3,7 @@
 #ifndef AEROEVAL_TEST_MISSIONS_H
 #define AEROEVAL_TEST_MISSIONS_H
 
-#include "core/spec.h"
+#include "spec/spec.h"
 
 /* Set a mission field and mark it given, as the parser would. */
 #define SET(s, id, member, value) \

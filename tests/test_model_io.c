@@ -10,7 +10,7 @@
 #include "test_util.h"
 
 #include <math.h>
-#include "core/diag.h"
+#include "diag/diag.h"
 #include "input/model_io.h"
 #include "util/xalloc.h"
 

@@ -11,8 +11,8 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
-#include "core/catalog.h"
-#include "core/diag.h"
+#include "catalog/catalog.h"
+#include "diag/diag.h"
 #include "engine/engine.h"
 #include "input/mission_io.h"
 #include "parts/parts_int.h"

@@ -23,9 +23,9 @@
 
 #include "cli/cli.h"
 #include "cli/pipeline.h"
-#include "core/template.h"
-#include "output/doc.h"
-#include "output/report.h"
+#include "template/template.h"
+#include "pdf/doc.h"
+#include "pdf/report.h"
 #include "util/xalloc.h"
 
 /* ---- reading the PDF ------------------------------------------------------- */

@@ -4,9 +4,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "output/doc.h"
-#include "output/plot.h"
-#include "core/template.h"
+#include "pdf/doc.h"
+#include "pdf/plot.h"
+#include "template/template.h"
 
 static void
 check_ticks_cover(const struct plot_ticks *t, double lo, double hi)

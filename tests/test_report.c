@@ -10,17 +10,17 @@
 #include <sys/stat.h>
 #include <time.h>
 
-#include "core/catalog.h"
+#include "catalog/catalog.h"
 #include "cli/cli.h"
-#include "core/diag.h"
-#include "output/doc.h"
+#include "diag/diag.h"
+#include "pdf/doc.h"
 #include "engine/engine.h"
 #include "input/mission_io.h"
-#include "output/report.h"
-#include "output/report_int.h"
+#include "pdf/report.h"
+#include "pdf/report_util.h"
 #include "util/sha256.h"
 #include "util/strbuf.h"
-#include "core/template.h"
+#include "template/template.h"
 #include "util/xalloc.h"
 
 /* A full dossier: cover, 11 sections of one to three pages, the appendix. */

@@ -7,7 +7,7 @@
  * intended format change (then review the diff).
  */
 #include "test_util.h"
-#include "output/result_json.h"
+#include "formats/result_json.h"
 #include "util/xalloc.h"
 
 #include <cjson/cJSON.h>

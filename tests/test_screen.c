@@ -5,8 +5,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "core/catalog.h"
-#include "core/diag.h"
+#include "catalog/catalog.h"
+#include "diag/diag.h"
 #include "input/catalog_io.h"
 #include "parts/screen.h"
 #include "physics/motor.h"

@@ -7,13 +7,13 @@
 #include <cjson/cJSON.h>
 
 #include "cli/cli.h"
-#include "core/diag.h"
-#include "output/doc.h"
+#include "diag/diag.h"
+#include "pdf/doc.h"
 #include "engine/engine.h"
 #include "input/mission_io.h"
 #include "study/sens.h"
 #include "study/sens_report.h"
-#include "core/template.h"
+#include "template/template.h"
 #include "util/units.h"
 #include "util/xalloc.h"
 

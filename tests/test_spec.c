@@ -1,6 +1,6 @@
 /* test_spec.c — the mission field table and its defaults. */
 #include "test_util.h"
-#include "core/spec.h"
+#include "spec/spec.h"
 
 #include <string.h>
 

@@ -6,7 +6,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "core/template.h"
+#include "template/template.h"
 
 static void
 default_template_should_be_a4_with_every_section_but_sensitivity(void **state)

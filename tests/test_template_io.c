@@ -9,9 +9,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/template.h"
+#include "template/template.h"
 #include "input/template_io.h"
-#include "output/assets.h"
+#include "pdf/assets.h"
 
 #include <cairo.h>
 

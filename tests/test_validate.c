@@ -10,7 +10,7 @@
 #include <cjson/cJSON.h>
 
 #include "input/mission_io.h"
-#include "core/diag.h"
+#include "diag/diag.h"
 #include "input/model_io.h"
 #include "util/xalloc.h"
 

@@ -9,12 +9,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/catalog.h"
-#include "core/diag.h"
-#include "core/template.h"
-#include "output/assets.h"
-#include "output/fsout.h"
+#include "catalog/catalog.h"
+#include "diag/diag.h"
+#include "template/template.h"
+#include "pdf/assets.h"
+#include "fs/fsout.h"
 #include "input/catalog_io.h"
+#include "input/cohort.h"
 #include "input/json_in.h"
 #include "input/model_io.h"
 #include "input/template_io.h"
@@ -160,4 +161,31 @@ cli_template_load(const char *path, FILE *err)
 	diag_flush(dg);
 	diag_free(dg);
 	return t;
+}
+
+int
+cli_cohort_load(const char *path, struct cli_env *env, struct cohort *c)
+{
+	int rc = cli_env_load(env, NULL, 0, stderr);
+	if (rc != 0)
+		return rc;
+	cohort_load(path, c);
+	for (size_t i = 0; i < c->n_errors; i++)
+		fprintf(stderr, "%s\n", c->errors[i]);
+	if (c->n_rows == 0) {
+		fprintf(stderr, "%s: error: no usable row\n", path);
+		return 2;
+	}
+	return 0;
+}
+
+int
+cli_cohort_rejected(const char *path, const struct cohort *c)
+{
+	if (c->n_errors == 0)
+		return 0;
+	fprintf(stderr, "%s: error: %zu problem%s in the cohort (above); the figures cover "
+	    "only the %zu rows read\n", path, c->n_errors, c->n_errors == 1 ? "" : "s",
+	    c->n_rows);
+	return 2;
 }

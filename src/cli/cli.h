@@ -1,5 +1,6 @@
 /* cli.h — what every command shares: finding data/, loading the reference
- * tables and the parts catalogue once, and the mission front end.
+ * tables and the parts catalogue once, the template, the cohort of
+ * validate and calibrate, and the mission front end.
  * CLI layer: may use everything below it.
  */
 #ifndef AEROEVAL_CLI_H
@@ -7,7 +8,7 @@
 
 #include <stdio.h>
 
-#include "core/model.h"
+#include "spec/model.h"
 
 struct catalog;
 
@@ -61,9 +62,24 @@ int cli_close_stdout(int status);
 struct template;
 
 /* The dossier template: the built-in one when path is NULL, else the file,
- * its fonts and logo checked now (output/assets.h), before any mission is
+ * its fonts and logo checked now (pdf/assets.h), before any mission is
  * solved.  Errors go to err; NULL when there was any.  Free with
  * template_free(). */
 struct template *cli_template_load(const char *path, FILE *err);
+
+struct cohort;
+
+/* For `validate` and `calibrate`: loads the reference tables into env and
+ * the cohort at path into c, printing every cohort problem on stderr.
+ * Returns 0, or the exit status to give up with (2 when no row is usable). */
+int cli_cohort_load(const char *path, struct cli_env *env, struct cohort *c);
+
+/* A cohort with rejected rows (their error lines printed by
+ * cli_cohort_load()) still gets its report, over the rows that were read,
+ * but the run ends with exit status 2 like any other input error: a script
+ * must not take statistics over a part of its cohort for the whole.
+ * Prints why on stderr and returns 2, or returns 0 when no row was
+ * rejected. */
+int cli_cohort_rejected(const char *path, const struct cohort *c);
 
 #endif

@@ -23,13 +23,13 @@
 #include "cli/cli.h"
 #include "cli/cli_help.h"
 #include "cli/cli_summary.h"
-#include "output/fsout.h"
-#include "output/index.h"
+#include "fs/fsout.h"
+#include "formats/index.h"
 #include "cli/pipeline.h"
 #include "cli/shard.h"
 #include "util/sha256.h"
 #include "util/strbuf.h"
-#include "core/template.h"
+#include "template/template.h"
 #include "util/xalloc.h"
 
 #define BUILD_USAGE "usage: aeroeval build [-o DIR] [-j N] [-q] [--force] " \

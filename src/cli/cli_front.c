@@ -8,7 +8,7 @@
 #include <cjson/cJSON.h>
 
 #include "cli/cli.h"
-#include "core/diag.h"
+#include "diag/diag.h"
 #include "input/mission_io.h"
 #include "input/schema.h"
 #include "util/jsonw.h"

@@ -10,13 +10,13 @@
 
 #include "cli/cli.h"
 #include "cli/pipeline.h"
-#include "core/diag.h"
-#include "output/doc.h"
-#include "output/fsout.h"
+#include "diag/diag.h"
+#include "pdf/doc.h"
+#include "fs/fsout.h"
 #include "input/mission_io.h"
 #include "study/sens.h"
 #include "study/sens_report.h"
-#include "core/template.h"
+#include "template/template.h"
 #include "util/file.h"
 #include "util/xalloc.h"
 
@@ -41,7 +41,7 @@ load_mission(const char *path, const struct cli_env *env, struct mission_spec *s
 
 /* The study of the mission at path: the table on stdout, then
  * sensitivity.json and sensitivity.pdf into DIR/<name>/ beside the
- * mission's build outputs, through the same output layer as `build`
+ * mission's build outputs, through the same file-system layer as `build`
  * (pipeline_add()): the same refusals, one set swapped in whole, and a
  * folder `build` still calls its own. */
 static int

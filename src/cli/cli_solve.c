@@ -6,7 +6,7 @@
 
 #include "cli/cli.h"
 #include "cli/pipeline.h"
-#include "output/result_json.h"
+#include "formats/result_json.h"
 #include "util/xalloc.h"
 
 static void

@@ -24,13 +24,13 @@
 #include "cli/cli.h"
 #include "cli/cli_help.h"
 #include "cli/pipeline.h"
-#include "core/diag.h"
-#include "core/summary.h"
-#include "core/template.h"
-#include "input/summary_in.h"
-#include "output/fsout.h"
-#include "output/index.h"
-#include "output/index_pdf.h"
+#include "diag/diag.h"
+#include "result/table_row.h"
+#include "template/template.h"
+#include "input/table_in.h"
+#include "fs/fsout.h"
+#include "formats/index.h"
+#include "pdf/index_pdf.h"
 #include "util/file.h"
 #include "util/sha256.h"
 #include "util/strbuf.h"
@@ -165,7 +165,7 @@ reason(const char *msg, const char *path)
 /* The row of folder name, if it holds a result.json; added to s.  A
  * result.json that cannot be read is reported to dg. */
 static void
-scan_one(int dir_fd, const char *dir, const char *name, struct summary *s,
+scan_one(int dir_fd, const char *dir, const char *name, struct table_rows *s,
          struct diag *dg)
 {
 	struct stat st;
@@ -188,9 +188,9 @@ scan_one(int dir_fd, const char *dir, const char *name, struct summary *s,
 		struct diag_loc loc = { strbuf_str(&path), 0, 0 };
 		diag_report(dg, DIAG_IO, &loc, NULL, ": %s", reason(msg, strbuf_str(&path)));
 	} else {
-		struct summary_row row;
-		if (summary_in_parse(strbuf_str(&path), (const char *)buf, n, name, &row, dg) == 0)
-			summary_add(s, &row);
+		struct table_row row;
+		if (table_in_parse(strbuf_str(&path), (const char *)buf, n, name, &row, dg) == 0)
+			table_row_add(s, &row);
 		free(buf);
 	}
 	strbuf_free(&path);
@@ -200,7 +200,7 @@ scan_one(int dir_fd, const char *dir, const char *name, struct summary *s,
 /* Every compiled mission of DIR (hidden entries skipped: temporaries and
  * locks), sorted by name. */
 static void
-scan(int dir_fd, const char *dir, struct summary *s, struct diag *dg)
+scan(int dir_fd, const char *dir, struct table_rows *s, struct diag *dg)
 {
 	DIR *d = file_dir_stream(dir_fd);
 	if (d == NULL) {
@@ -213,7 +213,7 @@ scan(int dir_fd, const char *dir, struct summary *s, struct diag *dg)
 		if (e->d_name[0] != '.')
 			scan_one(dir_fd, dir, e->d_name, s, dg);
 	closedir(d);
-	summary_sort(s);
+	table_row_sort(s);
 }
 
 /* ---- the stamp ------------------------------------------------------------ */
@@ -403,7 +403,7 @@ done:
 struct table {
 	int dir_fd;          /* DIR */
 	int lock;            /* the index lock, -1 when not taken */
-	struct summary s;    /* every row read */
+	struct table_rows s; /* every row read */
 	int rc;              /* 2 once a result.json could not be read */
 	char rows[SHA256_HEX_LEN]; /* rows_digest() taken before the rows were
 	                      * read (a row changed meanwhile makes the stamp
@@ -432,7 +432,7 @@ put_tables(struct table *t, const char *dir, FILE *err)
 /* overview.pdf of the rows with template tpl.  Returns the exit status: 0,
  * 2 (a file-system problem) or 3 (the PDF could not be rendered). */
 static int
-put_overview(int dir_fd, const char *dir, const struct summary *s,
+put_overview(int dir_fd, const char *dir, const struct table_rows *s,
              const struct template *tpl, FILE *err)
 {
 	unsigned char *pdf = NULL;
@@ -492,7 +492,7 @@ table_close(struct table *t)
 {
 	lock_release(t->dir_fd, t->lock);
 	close(t->dir_fd);
-	summary_free(&t->s);
+	table_row_free(&t->s);
 }
 
 int
@@ -557,13 +557,13 @@ cli_summary_stale(const char *dir)
 /* ---- the command ------------------------------------------------------------ */
 
 static void
-report_counts(const char *dir, const struct summary *s, int pdf)
+report_counts(const char *dir, const struct table_rows *s, int pdf)
 {
-	size_t c[SUMMARY_STATUS_MAX];
-	summary_count(s, c);
+	size_t c[TABLE_ROW_STATUS_MAX];
+	table_row_count(s, c);
 	fprintf(stderr, "summary: %zu missions (%zu feasible, %zu infeasible, %zu not buildable)"
-	    " -> %s: index.csv, index.json%s\n", s->n, c[SUMMARY_FEASIBLE],
-	    c[SUMMARY_INFEASIBLE], c[SUMMARY_NOT_BUILDABLE], dir, pdf ? ", overview.pdf" : "");
+	    " -> %s: index.csv, index.json%s\n", s->n, c[TABLE_ROW_FEASIBLE],
+	    c[TABLE_ROW_INFEASIBLE], c[TABLE_ROW_NOT_BUILDABLE], dir, pdf ? ", overview.pdf" : "");
 }
 
 int

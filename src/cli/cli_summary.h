@@ -1,11 +1,11 @@
 /* cli_summary.h — `aeroeval summary DIR`, and the index `build` keeps.
  *
- * Both rebuild the design-space table (core/summary.h) from every
+ * Both rebuild the design-space table (result/table_row.h) from every
  * DIR/<name>/result.json and write DIR/index.csv and DIR/index.json
- * (output/index.h), each atomically and only when its bytes change, then
+ * (formats/index.h), each atomically and only when its bytes change, then
  * the stamp DIR/.aeroeval-index-stamp that vouches for both and for the
  * rows they were made from (cli_summary_stale()).  The
- * command also draws DIR/overview.pdf (output/index_pdf.h), which `build`
+ * command also draws DIR/overview.pdf (pdf/index_pdf.h), which `build`
  * then keeps current too.  Builds of
  * several machines into one shared DIR take turns through a lock,
  * DIR/.aeroeval-index.lock, so the last one to finish writes a table that

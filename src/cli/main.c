@@ -5,13 +5,14 @@
 
 #include "cli/cli.h"
 #include "cli/cli_build.h"
+#include "cli/cli_calibrate.h"
 #include "cli/cli_front.h"
 #include "cli/cli_help.h"
 #include "cli/cli_sens.h"
 #include "cli/cli_solve.h"
 #include "cli/cli_summary.h"
 #include "cli/cli_validate.h"
-#include "output/doc.h"
+#include "pdf/doc.h"
 #include "util/xalloc.h"
 
 /* The commands this program runs; cli_help.c documents them. */

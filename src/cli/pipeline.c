@@ -4,19 +4,19 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "output/ardupilot.h"
-#include "output/bom_csv.h"
-#include "core/diag.h"
+#include "formats/ardupilot.h"
+#include "formats/bom_csv.h"
+#include "diag/diag.h"
 #include "engine/engine.h"
-#include "output/fsfolder.h"
-#include "output/fsout.h"
-#include "output/index.h"
+#include "fs/fsfolder.h"
+#include "fs/fsout.h"
+#include "formats/index.h"
 #include "input/mission_io.h"
-#include "output/report.h"
+#include "pdf/report.h"
 #include "study/sens.h"
 #include "study/sens_report.h"
-#include "core/template.h"
-#include "output/result_json.h"
+#include "template/template.h"
+#include "formats/result_json.h"
 #include "util/sha256.h"
 #include "util/file.h"
 #include "util/strbuf.h"
@@ -94,7 +94,7 @@ pipeline_solve(const struct cli_env *env, const char *path,
  * the stamp that vouches for them, then the sensitivity study's files
  * (pipeline_add()).  Not every set has every output: no dossier without a
  * template, no ArduPilot hand-off for a design that is not buildable
- * (output/ardupilot.h). */
+ * (formats/ardupilot.h). */
 enum pipeline_output { OUT_BOM, OUT_TOTALS, OUT_RESULT, OUT_DOSSIER, OUT_COMPONENTS,
 	OUT_PARAMS, OUT_QGC_PARAMS, N_OUTPUTS };
 static const char *const pipeline_files[] = { "bom.csv", "bom_totals.csv", "result.json",

@@ -16,7 +16,7 @@
 #include <stdio.h>
 
 #include "cli/cli.h"
-#include "core/result.h"
+#include "result/result.h"
 
 struct strbuf;
 struct template;
@@ -61,7 +61,7 @@ enum pipeline_status pipeline_solve(const struct cli_env *env, const char *path,
 
 /* Compile path into out_dir/<name>/{result.json,bom.csv,bom_totals.csv,
  * dossier.pdf}, for a buildable design also vehicle_components.json,
- * ardupilot.param and qgroundcontrol.params (output/ardupilot.h), and,
+ * ardupilot.param and qgroundcontrol.params (formats/ardupilot.h), and,
  * when fp is not NULL or "", a stamp vouching for them with fingerprint fp
  * (the caller's digest of every input).  The name is checked before the
  * solve; a file-system problem is one line naming the path, PIPE_UNWRITTEN. */

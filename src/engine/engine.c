@@ -438,7 +438,7 @@ explain(const struct sizing_params *p, const struct res_run *o,
 		    100.0 * t->margin);
 }
 
-/* Is every number a run stores finite?  The output layers refuse NaN. */
+/* Is every number a run stores finite?  The formats and the PDF refuse NaN. */
 static bool
 run_finite(const struct res_run *o)
 {

@@ -13,10 +13,10 @@
 #ifndef AEROEVAL_ENGINE_H
 #define AEROEVAL_ENGINE_H
 
-#include "core/model.h"
-#include "core/result.h"
+#include "spec/model.h"
+#include "result/result.h"
 #include "sizing/sizing.h"
-#include "core/spec.h"
+#include "spec/spec.h"
 
 struct catalog;
 

@@ -18,7 +18,7 @@
 
 #include <stddef.h>
 
-#include "core/result.h"
+#include "result/result.h"
 #include "sizing/sizing.h"
 
 #define INV_ENERGY_RELTOL 0.005   /* energy and charge balances */

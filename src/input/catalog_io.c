@@ -17,7 +17,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "core/spec.h"
+#include "spec/spec.h"
 #include "input/json_in.h"
 #include "util/hash.h"
 #include "util/sha256.h"

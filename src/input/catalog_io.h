@@ -1,5 +1,5 @@
 /* catalog_io.h — read and validate a parts-catalogue directory (format
- * version 2, data/catalog/README.md) into a struct catalog (core/catalog.h).
+ * version 2, data/catalog/README.md) into a struct catalog (catalog/catalog.h).
  *
  *     DIR/motors.json      {"motors":     [ {...}, ... ]}   required
  *     DIR/propellers.json  {"propellers": [ ... ]}          required
@@ -25,8 +25,8 @@
 
 #include <stdbool.h>
 
-#include "core/catalog.h"
-#include "core/diag.h"
+#include "catalog/catalog.h"
+#include "diag/diag.h"
 
 /* The file of each category in a catalogue directory, in load order. */
 extern const char *const catalog_io_files[CATALOG_N_CATEGORIES];

@@ -20,7 +20,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-#include "core/spec.h"
+#include "spec/spec.h"
 
 enum cohort_confidence {
 	COHORT_CONF_HIGH,    /* "high" */

@@ -36,7 +36,7 @@
 
 #include <cjson/cJSON.h>
 
-#include "core/diag.h"
+#include "diag/diag.h"
 
 /* The size cap of each kind of file (bytes).  A catalogue file may be
  * large: a company list of 10^5 parts with their sources. */

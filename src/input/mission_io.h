@@ -21,8 +21,8 @@
 
 #include <cjson/cJSON.h>
 
-#include "core/diag.h"
-#include "core/spec.h"
+#include "diag/diag.h"
+#include "spec/spec.h"
 #include "input/json_in.h"
 
 /* Parse the mission text buf[0..len) (need not be NUL-terminated) named file

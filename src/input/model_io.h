@@ -9,8 +9,8 @@
 #ifndef AEROEVAL_MODEL_IO_H
 #define AEROEVAL_MODEL_IO_H
 
-#include "core/diag.h"
-#include "core/model.h"
+#include "diag/diag.h"
+#include "spec/model.h"
 
 /* Load chemistries.json, roles.json, airframes.json, calibration.json and
  * requirements.json from dir into *out.  Returns the number of errors

@@ -14,7 +14,7 @@
 
 #include <cjson/cJSON.h>
 
-#include "core/spec.h"
+#include "spec/spec.h"
 
 
 

@@ -1,5 +1,5 @@
 /* template_io.h — read and validate a dossier template (templates/NAME.json)
- * into a struct template (core/template.h).
+ * into a struct template (template/template.h).
  *
  * Template JSON (every key optional; what is absent keeps the A4 default):
  *   {
@@ -23,7 +23,7 @@
  * device or directory is refused at once), and their bytes handed to the
  * caller's check, so a corrupt PNG or a file that is not a font is an
  * error naming it before any mission is solved.  The checks that need
- * cairo and libharu live in the output layer (output/assets.h); the
+ * cairo and libharu live in the PDF layer (pdf/assets.h); the
  * command layer passes them in.
  *
  * Who may include it: the command layer (and tests).
@@ -33,8 +33,8 @@
 
 #include <stddef.h>
 
-#include "core/diag.h"
-#include "core/template.h"
+#include "diag/diag.h"
+#include "template/template.h"
 
 /* The largest font and logo file read (bytes). */
 #define TEMPLATE_IO_FONT_MAX ((size_t)32 << 20)

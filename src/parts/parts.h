@@ -36,10 +36,10 @@
 #ifndef AEROEVAL_PARTS_H
 #define AEROEVAL_PARTS_H
 
-#include "core/catalog.h"
-#include "core/model.h"
-#include "core/result.h"
-#include "core/spec.h"
+#include "catalog/catalog.h"
+#include "spec/model.h"
+#include "result/result.h"
+#include "spec/spec.h"
 #include "sizing/sizing.h"
 
 /* Select parts for the converged custom run of r and build the design of

@@ -5,9 +5,9 @@
 
 #include <stdbool.h>
 
-#include "core/catalog.h"
-#include "core/model.h"
-#include "core/result.h"
+#include "catalog/catalog.h"
+#include "spec/model.h"
+#include "result/result.h"
 #include "parts/parts.h"
 #include "physics/motor.h"
 #include "physics/prop.h"
@@ -309,7 +309,7 @@ void parts_aim_regrow(struct parts_aim *aim, double grown);
 int parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
                struct res_candidate *cand, int *n_cand);
 
-/* close.c */
+/* closure.c */
 void parts_packs_init(struct parts_ctx *x);
 void parts_packs_free(struct parts_ctx *x);
 bool parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,

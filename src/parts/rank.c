@@ -17,7 +17,7 @@
  *             continuous design's own law, the catalogue's median 1.10 g
  *             per amp (sizing.h) times the role's c_esc (racing boards
  *             carry far more amps per gram), of its rating, 10 % over the
- *             motor's full-throttle current (close.c's pick): so J
+ *             motor's full-throttle current (closure.c's pick): so J
  *             compares like with like.  An integrated system's mass holds
  *             all three.
  *   Δbattery  the continuous battery scaled by the option's hover power
@@ -343,7 +343,7 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 	    full.copper_loss_w + full.no_load_loss_w));
 	/* The ratings are pruned where a real pack is kindest to them: the
 	 * record flies full throttle on its pack's own sag (up to
-	 * PARTS_MAX_SAG, close.c), which lowers the current; an option
+	 * PARTS_MAX_SAG, closure.c), which lowers the current; an option
 	 * pruned at the ranking's bus would be lost though the record would
 	 * pass it.  An integrated system capped at its published thrust draws
 	 * that point's current on any bus. */

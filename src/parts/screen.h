@@ -15,7 +15,7 @@
 #ifndef AEROEVAL_SCREEN_H
 #define AEROEVAL_SCREEN_H
 
-#include "core/catalog.h"
+#include "catalog/catalog.h"
 
 #define SCREEN_TREND_FACTOR   4.0    /* mass within 1/4..4x its category's trend */
 #define SCREEN_VI_SLACK       1.25   /* max power within 1.25 × current × 4.35 V × cells */

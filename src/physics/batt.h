@@ -10,7 +10,7 @@
 
 #include <stdbool.h>
 
-#include "core/model.h"
+#include "spec/model.h"
 
 #define BATT_SOC_MIN          0.02    /* SOC clamp against the K/SOC pole, - */
 #define BATT_C_RATE_B_SLOPE   0.18    /* B_eff = B (1 + 0.18 ln C), - */

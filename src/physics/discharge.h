@@ -18,7 +18,7 @@
 #include "physics/batt.h"
 #include "physics/duty.h"
 #include "physics/mission.h"
-#include "core/result.h"
+#include "result/result.h"
 #include "physics/role.h"
 
 enum discharge_end {

@@ -27,8 +27,8 @@
 
 #include <stdbool.h>
 
-#include "core/model.h"
-#include "core/result.h"
+#include "spec/model.h"
+#include "result/result.h"
 #include "physics/role.h"
 
 #define DUTY_MAX_LAPS   24   /* laps flown one by one */

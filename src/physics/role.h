@@ -6,7 +6,7 @@
 #ifndef AEROEVAL_ROLE_H
 #define AEROEVAL_ROLE_H
 
-#include "core/model.h"
+#include "spec/model.h"
 
 struct role_shedding {
 	enum shed_kind kind;     /* none, drop, spray */

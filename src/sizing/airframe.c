@@ -4,7 +4,7 @@
 
 #include <math.h>
 
-#include "core/result.h"
+#include "result/result.h"
 
 #define S_SCALE_LO_KG     0.3   /* S_scale = 0.25 below this M_ref */
 #define S_SCALE_HI_KG     1.8   /* S_scale = 1 above this M_ref */

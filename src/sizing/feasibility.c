@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "core/checks.h"
+#include "result/checks.h"
 #include "physics/aero.h"
 #include "physics/mission.h"
 #include "util/strbuf.h"

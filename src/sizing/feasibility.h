@@ -4,7 +4,7 @@
  * configurations before the mass loop (coaxial arm count, a locked propeller
  * that overlaps its neighbour, a CG outside the rotor polygon, no mission,
  * a locked battery that cannot hold even the mission's lower-bound energy).
- * After the loop, the design is held to the checks of core/checks.h: one
+ * After the loop, the design is held to the checks of result/checks.h: one
  * row each of the checks table (value, limit, margin, PASS/FAIL), and each
  * failure a violation with a plain message and suggested fixes.
  */
@@ -13,7 +13,7 @@
 
 #include <stdbool.h>
 
-#include "core/result.h"
+#include "result/result.h"
 #include "sizing/sizing.h"
 
 /* Pre-loop gate for one run.  Appends violations (run name `run`, a
@@ -30,7 +30,7 @@ void feasibility_checks(const struct sizing_params *p, enum sizing_status st,
 
 /* The checks both designs are held to that their run's figures decide
  * (the mission, heat, voltage, rotor, arm and CG), into v; the caller adds
- * its own (core/checks.h) and applies them.  Sets o's once-per-revolution
+ * its own (result/checks.h) and applies them.  Sets o's once-per-revolution
  * band. */
 struct check_values;
 void feasibility_common_checks(const struct sizing_params *p, struct res_run *o,

@@ -9,8 +9,8 @@
 
 #include <stdbool.h>
 
-#include "core/model.h"
-#include "core/result.h"
+#include "spec/model.h"
+#include "result/result.h"
 #include "physics/atmo.h"
 
 /* Real parts fixed by the optimizer (BOM-closed run); 0 = scaling law. */

@@ -19,7 +19,7 @@
 
 #include <stdbool.h>
 
-#include "core/result.h"
+#include "result/result.h"
 #include "physics/motor.h"
 #include "physics/prop.h"
 #include "physics/structure.h"

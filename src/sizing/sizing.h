@@ -19,8 +19,8 @@
 #include "physics/duty.h"
 #include "physics/mission.h"
 #include "physics/role.h"
-#include "core/model.h"
-#include "core/result.h"
+#include "spec/model.h"
+#include "result/result.h"
 #include "sizing/params.h"
 
 #define SIZING_TOL_KG        0.001  /* convergence |M(k+1) - M(k)|, kg */

@@ -43,7 +43,7 @@
 #include <stddef.h>
 
 #include "input/cohort.h"
-#include "core/model.h"
+#include "spec/model.h"
 
 enum calibrate_param {
 	/* the power chain: fit 1 */

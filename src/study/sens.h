@@ -30,8 +30,8 @@
 
 #include <stdbool.h>
 
-#include "core/model.h"
-#include "core/spec.h"
+#include "spec/model.h"
+#include "spec/spec.h"
 
 #define SENS_MAX_POINTS 31     /* points of one sweep (the suite uses 11-15) */
 #define SENS_MAX_CHECKS 24     /* checks kept per point (= RES_MAX_CHECKS) */

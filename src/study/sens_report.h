@@ -1,6 +1,6 @@
 /* sens_report.h — the sensitivity suite as text, JSON and PDF.
  *
- * Output layer: reads a finished struct sens_result (sens.h), writes no file
+ * A renderer: reads a finished struct sens_result (sens.h), writes no file
  * (the caller writes the bytes atomically with fsout).  Everything printed is
  * finite: a derivative that could not be taken prints "n/a" in the tables
  * and is left out of the JSON.
@@ -10,7 +10,7 @@
  * (sens_run) and calling sens_report_section() where the section belongs:
  * a heading, one paragraph, the 14-row table and the tornado figure.
  *
- * Who may include it: the output layer and the command drivers.
+ * Who may include it: the command drivers.
  */
 #ifndef AEROEVAL_SENS_REPORT_H
 #define AEROEVAL_SENS_REPORT_H
@@ -18,9 +18,9 @@
 #include <stddef.h>
 #include <stdio.h>
 
-#include "output/doc.h"
+#include "pdf/doc.h"
 #include "study/sens.h"
-#include "core/template.h"
+#include "template/template.h"
 
 /* One row of the sensitivity table, as text. */
 struct sens_row {

@@ -1,7 +1,8 @@
 /* validate.h — accuracy against real aircraft: cohort row -> mission, one
  * solve per row, and the statistics of predicted vs actual takeoff mass.
  *
- * For the `validate` and `calibrate` commands (cli_validate.c, calibrate.c).
+ * For the `validate` and `calibrate` commands (cli_validate.c,
+ * cli_calibrate.c, and the fit in study/calibrate.c).
  * Engine layer plus stats: no JSON, PDF or printing here.
  *
  * THE MISSION RULE (validate_mission_from_row), applied identically to every
@@ -75,9 +76,9 @@
 #include <stddef.h>
 
 #include "input/cohort.h"
-#include "core/model.h"
-#include "core/result.h"
-#include "core/spec.h"
+#include "spec/model.h"
+#include "result/result.h"
+#include "spec/spec.h"
 #include "util/stats.h"
 
 #define VALIDATE_PITCH_RATIO     0.45  /* pitch/diameter when only D is known */

@@ -6,9 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "output/doc.h"
-#include "output/plot.h"
-#include "core/template.h"
+#include "pdf/doc.h"
+#include "pdf/plot.h"
+#include "template/template.h"
 #include "util/xalloc.h"
 
 const char *const valreport_rule_text[] = {

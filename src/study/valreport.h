@@ -3,8 +3,9 @@
  * Cover with the headline numbers, the predicted-vs-actual log-log scatter
  * (identity line, ±10 % and ±25 % bands), the error-by-class bar figure, the
  * per-row table (rows not in the statistics listed with why), and the
- * mission rule in words.  Output layer: uses doc.h/plot.h; the date is
- * given by the caller (never the clock), so the file is reproducible.
+ * mission rule in words.  A renderer over pdf/doc.h and pdf/plot.h; the
+ * date is given by the caller (never the clock), so the file is
+ * reproducible.
  */
 #ifndef AEROEVAL_VALREPORT_H
 #define AEROEVAL_VALREPORT_H
@@ -12,7 +13,7 @@
 #include <stddef.h>
 
 #include "input/cohort.h"
-#include "core/model.h"
+#include "spec/model.h"
 #include "study/validate.h"
 
 /* The rule of validate.h in words, NULL-terminated: one bullet each (the

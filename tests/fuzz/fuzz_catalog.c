@@ -15,8 +15,8 @@
 
 #include <cjson/cJSON.h>
 
-#include "core/catalog.h"
-#include "core/diag.h"
+#include "catalog/catalog.h"
+#include "diag/diag.h"
 #include "input/catalog_io.h"
 #include "util/file.h"
 

@@ -9,8 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "core/catalog.h"
-#include "core/diag.h"
+#include "catalog/catalog.h"
+#include "diag/diag.h"
 #include "input/mission_io.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);

@@ -20,7 +20,7 @@
 #include <cjson/cJSON.h>
 
 #include "../solve_check.h"
-#include "core/spec.h"
+#include "spec/spec.h"
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
