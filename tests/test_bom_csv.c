@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* PRODUCT.md's columns in their order, then the procurement columns. */
+/* The eleven bill columns in their order, then the procurement columns. */
 #define HEADER "item,qty,category,manufacturer,part_number,description," \
 	"unit_mass_g,total_mass_g,unit_price_usd,total_price_usd,catalogue_id," \
 	"currency,price_date,supplier_url,source,orderable,order_note\r\n"

@@ -1,5 +1,5 @@
 /* bom_csv.h — bom.csv and bom_totals.csv, the bill of materials as a
- * procurement team orders from it (PRODUCT.md §4, issue 34).
+ * procurement team orders from it.
  *
  * Who may include it: the formats, the dossier and the command drivers.
  * It reads a const struct solve_result (and the catalogue the parts came
@@ -7,8 +7,8 @@
  *
  * bom.csv (RFC 4180): CRLF after every record, including the last; a field
  * is quoted when it holds a comma, a double quote, CR or LF, and an inner
- * quote is doubled.  Header: PRODUCT.md's columns, then the procurement
- * columns:
+ * quote is doubled.  Header: the product's eleven bill columns, then the
+ * procurement columns:
  *   item,qty,category,manufacturer,part_number,description,unit_mass_g,
  *   total_mass_g,unit_price_usd,total_price_usd,catalogue_id,
  *   currency,price_date,supplier_url,source,orderable,order_note

@@ -432,7 +432,7 @@ put_run_fields(struct jsonw *w, const struct res_run *run,
 	jsonw_number(w, "peak_current_a", run->peak_current_a);
 	jsonw_number(w, "peak_c_rate", run->peak_c_rate);
 	/* The run's own propeller and motor: for the baseline and the custom
-	 * run their continuous optimum (PRODUCT.md §4), for the design of
+	 * run their continuous optimum, for the design of
 	 * record its propulsion (real parts; the continuous optimum it was
 	 * aimed at is the top-level "continuous_optimum"). */
 	put_optimum(w, prop_key, &run->opt);

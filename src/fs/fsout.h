@@ -43,8 +43,8 @@ int fsout_write_atomic(const char *path, const void *data, size_t n,
 int fsout_mkdirs(const char *dir, char *err, size_t errlen);
 
 
-/* Where fsout_resolve_date found the date (issue 34 replaces PRODUCT.md
- * §2's last fallback, the mission file's mtime, by none). */
+/* Where fsout_resolve_date found the date (never a file time: touching a
+ * mission changes no output byte). */
 enum fsout_date_source {
 	FSOUT_DATE_REPORT,      /* the mission's report.date */
 	FSOUT_DATE_EPOCH_ENV,   /* the SOURCE_DATE_EPOCH environment variable */

@@ -160,7 +160,7 @@ cover_status(struct rep *rp)
 }
 
 /* Every way the design shown flies less than the mission asks, on the
- * cover (PRODUCT.md "never relaxed without the cover saying so"): a
+ * cover (a requirement is never relaxed without the cover saying so): a
  * shorter flight, a climb or a forward speed the thrust cannot reach
  * flown slower.  The ceiling of a mission beyond reach has its own
  * callout (cover_status()). */
