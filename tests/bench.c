@@ -293,8 +293,12 @@ closure_record(struct closure *c, const char *text, const char *name,
 {
 	cJSON *r = text != NULL ? cJSON_Parse(text) : NULL;
 	const cJSON *custom = cJSON_GetObjectItemCaseSensitive(r, "custom");
+	/* A mission beyond reach ("ceiling" set) does not size as asked,
+	 * whatever design its custom run shows. */
+	const cJSON *ceiling = cJSON_GetObjectItemCaseSensitive(r, "ceiling");
 	if (!cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(custom, "ran"))
-	    || !cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(custom, "converged"))) {
+	    || !cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(custom, "converged"))
+	    || cJSON_IsObject(ceiling)) {
 		if (r == NULL)
 			closure_count(c, "(no result)");
 		cJSON_Delete(r);
@@ -617,10 +621,14 @@ aircraft_report(const char *cohort_path, const char *db)
 		memset(r, 0, sizeof *r);
 		engine_solve(&spec, &env.model, env.cat, r);
 		char codes[512];
-		if (!r->custom.ran || !r->custom.converged) {
+		/* Beyond reach: the mission as asked does not size (the custom
+		 * run may hold the ceiling design, the longest flight that
+		 * does). */
+		if (!r->custom.ran || !r->custom.converged || r->ceiling.valid) {
 			run_codes(r, "custom", codes, sizeof codes);
-			printf("%-32.32s %9.3f %11s %9s  not sized (%s)\n",
-			    co.rows[i].name, co.rows[i].takeoff_mass_kg, "-", "-", codes);
+			printf("%-32.32s %9.3f %11s %9s  %s (%s)\n",
+			    co.rows[i].name, co.rows[i].takeoff_mass_kg, "-", "-",
+			    r->ceiling.valid ? "beyond reach" : "not sized", codes);
 			continue;
 		}
 		n_sized++;
