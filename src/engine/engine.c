@@ -554,10 +554,12 @@ note_largest(struct res_run *t, bool ok, const struct solve_result *scratch)
  * over its design variables, so every share is tried (the minimum over a
  * fixed set of designs cannot rise when a requirement falls).  Fills *best
  * (the largest share's run when none passes), *best_frac and *passes;
- * returns that run's status. */
+ * returns that run's status.  With `any`, only *passes is asked: the
+ * shares stop at the first that passes (*best is then that one). */
 static enum sizing_status
 lightest_share(struct sizing_params *p, const char *name, struct res_run *best,
-               double *best_frac, bool *passes, struct solve_result *scratch)
+               double *best_frac, bool *passes, struct solve_result *scratch,
+               bool any)
 {
 	struct res_run *t = &scratch->custom;
 	enum sizing_status best_st = SIZING_RUNAWAY;
@@ -582,6 +584,8 @@ lightest_share(struct sizing_params *p, const char *name, struct res_run *best,
 			best_st = st;
 			*passes = ok;
 		}
+		if (any && *passes)
+			break;
 	}
 	return best_st;
 }
@@ -611,14 +615,14 @@ prop_search(struct sizing_params *p, const char *name, struct res_run *o,
 	if (p->capacity_locked) {
 		struct sizing_params sized = *p;
 		sized.capacity_locked = false;
-		lightest_share(&sized, name, best, &frac, &passes, scratch);
+		lightest_share(&sized, name, best, &frac, &passes, scratch, false);
 		if (!passes)
 			frac = 1.0;
 		p->prop_frac = frac;
 		*best = *o;
 		st = sizing_run(p, best);
 	} else {
-		st = lightest_share(p, name, best, &frac, &passes, scratch);
+		st = lightest_share(p, name, best, &frac, &passes, scratch, false);
 	}
 	*o = *best;
 	p->prop_frac = frac;
@@ -635,10 +639,11 @@ prop_search(struct sizing_params *p, const char *name, struct res_run *o,
 /* Does a continuous design that passes every check exist for the custom
  * parameters p with every phase at share gamma of its request and the
  * payload (and the largest payload) at share payload_scale?  The design
- * into *out (scratch holds its checks). */
+ * into *out (scratch holds its checks): the lightest that passes, or, with
+ * `any` (the answer only, for a bisection step), the first found. */
 static bool
 reachable(const struct sizing_params *p0, double gamma, double payload_scale,
-          struct res_run *out, struct solve_result *scratch)
+          struct res_run *out, struct solve_result *scratch, bool any)
 {
 	struct sizing_params p = *p0;
 	p.time_scale = gamma;
@@ -657,7 +662,7 @@ reachable(const struct sizing_params *p0, double gamma, double payload_scale,
 	bool passes;
 	struct solve_result *inner = xcalloc(1, sizeof *inner);
 	inner->mission = scratch->mission;
-	lightest_share(&p, "custom", out, &frac, &passes, inner);
+	lightest_share(&p, "custom", out, &frac, &passes, inner, any);
 	out->prop_frac = frac;
 	p.prop_frac = frac;
 	if (passes) {
@@ -702,17 +707,20 @@ ceiling(const struct sizing_params *p, struct solve_result *r)
 
 	/* The longest flight at the asked payload. */
 	double lo = SIZING_GAMMA_MIN, hi = 1.0;
-	if (reachable(p, lo, 1.0, best, scratch)) {
+	if (reachable(p, lo, 1.0, best, scratch, false)) {
 		c->endurance_found = true;
+		/* The steps ask only whether some design passes; the lightest
+		 * is sized once, at the share found (the same design: reachable()
+		 * is a function of its arguments). */
 		for (int k = 0; k < CEILING_BISECT; k++) {
 			double mid = 0.5 * (lo + hi);
-			if (reachable(p, mid, 1.0, t, scratch)) {
+			if (reachable(p, mid, 1.0, t, scratch, true))
 				lo = mid;
-				*best = *t;
-			} else {
+			else
 				hi = mid;
-			}
 		}
+		if (lo > SIZING_GAMMA_MIN)
+			reachable(p, lo, 1.0, best, scratch, false);
 		c->time_scale = lo;
 		/* What binds there: a check the longest flight meets with
 		 * (almost) no margin, else what stopped the mission as asked. */
@@ -736,18 +744,18 @@ ceiling(const struct sizing_params *p, struct solve_result *r)
 	}
 
 	/* The largest payload that flies the whole mission. */
-	if (r->mission.payload_kg > 0.0 && reachable(p, 1.0, 0.0, t, scratch)) {
+	if (r->mission.payload_kg > 0.0 && reachable(p, 1.0, 0.0, t, scratch, false)) {
 		c->payload_found = true;
 		double plo = 0.0, phi = 1.0, m = t->mass.total_kg;
 		for (int k = 0; k < CEILING_BISECT; k++) {
 			double mid = 0.5 * (plo + phi);
-			if (reachable(p, 1.0, mid, t, scratch)) {
+			if (reachable(p, 1.0, mid, t, scratch, true))
 				plo = mid;
-				m = t->mass.total_kg;
-			} else {
+			else
 				phi = mid;
-			}
 		}
+		if (plo > 0.0 && reachable(p, 1.0, plo, t, scratch, false))
+			m = t->mass.total_kg;
 		c->max_payload_kg = plo * r->mission.payload_kg;
 		c->mass_at_payload_kg = m;
 	}
