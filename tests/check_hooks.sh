@@ -6,7 +6,7 @@
 # Prints "ok NAME" / "not ok NAME" lines; run by tests/run_all.sh.
 build=$(dirname "${AEROEVAL:-build/aeroeval-test}")
 release="$build/aeroeval" test="$build/aeroeval-test"
-hooks='AEROEVAL_FAIL_ALLOC AEROEVAL_FAIL_WRITE AEROEVAL_TEST_WORKER AEROEVAL_TEST_WRITE_DELAY_MS AEROEVAL_TEST_NO_EXCHANGE AEROEVAL_PROGRESS_S'
+hooks='AEROEVAL_FAIL_ALLOC AEROEVAL_FAIL_WRITE AEROEVAL_TEST_WORKER AEROEVAL_TEST_WRITE_DELAY_MS AEROEVAL_TEST_NO_EXCHANGE AEROEVAL_TEST_EXHAUSTIVE AEROEVAL_PROGRESS_S'
 in_release="" missing_in_test=""
 for h in $hooks; do
 	grep -q -a "$h" "$release" && in_release="$in_release $h"

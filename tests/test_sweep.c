@@ -19,6 +19,9 @@
  *
  * No hang: every solve must finish within SWEEP_MAX_SOLVE_S.
  *
+ * The search's shortcuts give the exhaustive result on SWEEP_SAME
+ * missions (100; 12 under ASan).
+ *
  * Counts: SWEEP_N missions (800) and SWEEP_PAIRS pairs per property (30):
  * about 1400 solves.  Under ASan (make test runs both builds) 100 missions
  * and 8 pairs: there the sweep looks for memory errors and undefined
@@ -46,6 +49,14 @@
 #else
 #define SWEEP_N 800
 #define SWEEP_PAIRS 30
+#endif
+#endif
+/* Missions solved twice, with and without the search's shortcuts. */
+#ifndef SWEEP_SAME
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define SWEEP_SAME 12
+#else
+#define SWEEP_SAME 100
 #endif
 #endif
 #ifndef SWEEP_MAX_SOLVE_S
@@ -402,6 +413,45 @@ sweep_warmer_day_should_raise_peak_battery_temperature(void **state)
 	    NULL, peak_battery_c, warmer_day, rises);
 }
 
+/* The search's shortcuts (a closing already made is not made again; a
+ * ceiling's bisection steps ask only whether some propeller share passes)
+ * give what the exhaustive search gives (AEROEVAL_TEST_EXHAUSTIVE),
+ * result.json byte for byte. */
+static void
+sweep_shortcuts_should_give_the_exhaustive_result(void **state)
+{
+	(void)state;
+	struct stats_rng g;
+	stats_rng_seed(&g, SWEEP_SEED + 7);
+	int n_parts = 0, n_ceiling = 0;
+	for (int i = 0; i < SWEEP_SAME; i++) {
+		struct sweep_mission m;
+		draw(&g, &m);
+		const struct solve_result *r = solve(&m);
+		n_parts += r->parts_selected;
+		n_ceiling += r->ceiling.valid;
+		char *fast = result_json_render(r, "sweep");
+		setenv("AEROEVAL_TEST_EXHAUSTIVE", "1", 1);
+		r = solve(&m);
+		unsetenv("AEROEVAL_TEST_EXHAUSTIVE");
+		char *full = result_json_render(r, "sweep");
+		assert_non_null(fast);
+		assert_non_null(full);
+		if (strcmp(fast, full) != 0) {
+			char text[2048];
+			mission_text(&m, text, sizeof text);
+			print_error("mission %d differs with the shortcuts:\n%s\n", i, text);
+			fail();
+		}
+		free(fast);
+		free(full);
+	}
+	printf("sweep: %d missions the same exhaustively, %d with parts, %d "
+	    "beyond reach\n", SWEEP_SAME, n_parts, n_ceiling);
+	assert_true(n_parts > 0);
+	assert_true(n_ceiling > 0);
+}
+
 int
 main(void)
 {
@@ -411,6 +461,7 @@ main(void)
 		cmocka_unit_test(sweep_more_payload_should_raise_mtow),
 		cmocka_unit_test(sweep_high_altitude_should_not_lower_mtow),
 		cmocka_unit_test(sweep_warmer_day_should_raise_peak_battery_temperature),
+		cmocka_unit_test(sweep_shortcuts_should_give_the_exhaustive_result),
 	};
 	return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -636,6 +636,18 @@ prop_search(struct sizing_params *p, const char *name, struct res_run *o,
 #define CEILING_BISECT 10   /* bisection steps: 1/1024 of the range */
 #define CEILING_TIGHT  0.02 /* a check within 2 % of its limit binds */
 
+/* May a bisection step ask reachable() for its answer only?  (Test
+ * builds: not with AEROEVAL_TEST_EXHAUSTIVE, which sizes every share.) */
+static bool
+answer_only(void)
+{
+#ifdef AEROEVAL_TEST_HOOKS
+	return getenv("AEROEVAL_TEST_EXHAUSTIVE") == NULL;
+#else
+	return true;
+#endif
+}
+
 /* Does a continuous design that passes every check exist for the custom
  * parameters p with every phase at share gamma of its request and the
  * payload (and the largest payload) at share payload_scale?  The design
@@ -714,7 +726,7 @@ ceiling(const struct sizing_params *p, struct solve_result *r)
 		 * is a function of its arguments). */
 		for (int k = 0; k < CEILING_BISECT; k++) {
 			double mid = 0.5 * (lo + hi);
-			if (reachable(p, mid, 1.0, t, scratch, true))
+			if (reachable(p, mid, 1.0, t, scratch, answer_only()))
 				lo = mid;
 			else
 				hi = mid;
@@ -749,7 +761,7 @@ ceiling(const struct sizing_params *p, struct solve_result *r)
 		double plo = 0.0, phi = 1.0, m = t->mass.total_kg;
 		for (int k = 0; k < CEILING_BISECT; k++) {
 			double mid = 0.5 * (plo + phi);
-			if (reachable(p, 1.0, mid, t, scratch, true))
+			if (reachable(p, 1.0, mid, t, scratch, answer_only()))
 				plo = mid;
 			else
 				phi = mid;

@@ -199,14 +199,99 @@ pack_check(const char *code)
 	return false;
 }
 
-/* Close option o on pack pk, keep it in *pick when better; true when it
+/* A closing made: parts_close() reads the option, the pack, the ESCs and
+ * the aim and nothing else that changes during a search, so the same
+ * closing closes the same.  The rounds and the wider-bank search rank the
+ * same options again and try the same packs (on the FPV racer 70 % of the
+ * closings were repeats): a repeat is answered from here.  It cannot
+ * displace the pick: better() is a fixed order (the T/W requirement does
+ * not change with the aim), the closing was compared with the pick of its
+ * time and the pick has only got better since. */
+struct seen {
+	const struct catalog_motor *motor;
+	const struct catalog_prop *prop;
+	int cells;
+	const struct catalog_esc *esc;
+	int n_esc;
+	struct parts_aim aim;
+	struct pack_try t;
+	bool passed;
+	int next;                      /* the next closing on its pack, or -1 */
+};
+
+/* One search's trial buffers, its best closing, the closings made and its
+ * tallies. */
+struct search {
+	struct parts_closed cur, pick;
+	struct solve_result *spare;
+	int n_closed, n_ranked;
+	struct seen *seen;
+	int n_seen, cap_seen;
+	int *seen_by_pack;             /* first closing on x->packs[i], or -1 */
+	bool exhaustive;               /* every closing made again (test builds:
+	                                  AEROEVAL_TEST_EXHAUSTIVE) */
+};
+
+static bool
+aim_same(const struct parts_aim *a, const struct parts_aim *b)
+{
+	return a->mass_kg == b->mass_kg && a->lightest == b->lightest
+	    && a->drive_kg == b->drive_kg && a->battery_kg == b->battery_kg
+	    && a->energy_wh == b->energy_wh && a->hover_power_w == b->hover_power_w
+	    && a->growth == b->growth && a->tw_required == b->tw_required
+	    && a->extra_payload_kg == b->extra_payload_kg
+	    && a->downwash_cap_ms == b->downwash_cap_ms
+	    && a->prop_diameter_in == b->prop_diameter_in
+	    && a->prop_pitch_in == b->prop_pitch_in && a->motor_kv == b->motor_kv
+	    && a->cells == b->cells && a->overlap_limit_in == b->overlap_limit_in
+	    && a->install_factor == b->install_factor;
+}
+
+/* The closing of o on x->packs[k] with esc at the aim, if made. */
+static const struct seen *
+seen_find(const struct parts_ctx *x, const struct search *s,
+          const struct parts_option *o, int k, const struct catalog_esc *esc,
+          int n_esc)
+{
+	for (int i = s->seen_by_pack[k]; i >= 0; i = s->seen[i].next) {
+		const struct seen *e = &s->seen[i];
+		if (e->motor == o->motor && e->prop == o->prop && e->cells == o->cells
+		    && e->esc == esc && e->n_esc == n_esc && aim_same(&e->aim, &x->aim))
+			return e;
+	}
+	return NULL;
+}
+
+static void
+seen_add(const struct parts_ctx *x, struct search *s,
+         const struct parts_option *o, int k, const struct catalog_esc *esc,
+         int n_esc, const struct pack_try *t, bool passed)
+{
+	if (s->n_seen == s->cap_seen) {
+		s->cap_seen = s->cap_seen > 0 ? 2 * s->cap_seen : 64;
+		s->seen = xrealloc(s->seen, (size_t)s->cap_seen * sizeof *s->seen);
+	}
+	struct seen *e = &s->seen[s->n_seen];
+	*e = (struct seen){ o->motor, o->prop, o->cells, esc, n_esc, x->aim, *t,
+		passed, s->seen_by_pack[k] };
+	s->seen_by_pack[k] = s->n_seen++;
+}
+
+/* Close option o on pack pk, keep it in s->pick when better; true when it
  * passes every check. */
 static bool
 close_on(const struct parts_ctx *x, const struct parts_option *o,
          const struct parts_pack *pk, const struct catalog_esc *esc,
-         int n_esc, struct parts_closed *cur, struct parts_closed *pick,
-         struct solve_result **spare, struct pack_try *t)
+         int n_esc, struct search *s, struct pack_try *t)
 {
+	int k = (int)(pk - x->packs);
+	const struct seen *e = s->exhaustive ? NULL
+	    : seen_find(x, s, o, k, esc, n_esc);
+	if (e != NULL) {
+		*t = e->t;
+		return e->passed;
+	}
+	struct parts_closed *cur = &s->cur, *pick = &s->pick;
 	parts_close(x, o, pk, esc, n_esc, cur);
 	bool passed = cur->finite && cur->failed == 0;
 	t->end_soc = cur->r->closed.end_soc;
@@ -216,10 +301,11 @@ close_on(const struct parts_ctx *x, const struct parts_option *o,
 	t->pack_failed = !passed && cur->finite;
 	for (int i = 0; i < cur->r->n_violations && t->pack_failed; i++)
 		t->pack_failed = pack_check(cur->r->violations[i].code);
+	seen_add(x, s, o, k, esc, n_esc, t, passed);
 	if (better(x, cur, pick)) {
 		if (pick->r == NULL) {
-			pick->r = *spare;
-			*spare = NULL;
+			pick->r = s->spare;
+			s->spare = NULL;
 		}
 		swap_closed(cur, pick);
 	}
@@ -230,8 +316,7 @@ close_on(const struct parts_ctx *x, const struct parts_option *o,
  * below the reserve, on larger ones. */
 static int
 close_option(const struct parts_ctx *x, const struct parts_option *o,
-             const struct catalog_esc *esc, int n_esc, struct parts_closed *cur,
-             struct parts_closed *pick, struct solve_result **spare)
+             const struct catalog_esc *esc, int n_esc, struct search *s)
 {
 	int n_pk, n_closed = 0;
 	const struct parts_pack *pk = parts_packs_for(x, o, &n_pk);
@@ -255,7 +340,7 @@ close_option(const struct parts_ctx *x, const struct parts_option *o,
 				break;
 			last = at;
 			struct pack_try t;
-			passed |= close_on(x, o, &pk[at], esc, n_esc, cur, pick, spare, &t);
+			passed |= close_on(x, o, &pk[at], esc, n_esc, s, &t);
 			n_closed++;
 			double used = 1.0 - t.end_soc;
 			/* The pack a mission flown whole asks for by its charge
@@ -270,8 +355,8 @@ close_option(const struct parts_ctx *x, const struct parts_option *o,
 			 * need. */
 			if (t.end_soc >= t.reserve_soc && t.pack_failed) {
 				if (fit >= 0 && pk[fit].mass_kg < pk[at].mass_kg) {
-					passed |= close_on(x, o, &pk[fit], esc, n_esc, cur,
-					    pick, spare, &t);
+					passed |= close_on(x, o, &pk[fit], esc, n_esc, s,
+					    &t);
 					n_closed++;
 				}
 				above_kg = pk[at].mass_kg;
@@ -287,8 +372,7 @@ close_option(const struct parts_ctx *x, const struct parts_option *o,
 			need = pk[at].energy_wh * PARTS_PACK_STEP;
 			if (fit >= 0 && fit != at
 			    && fit != pick_pack(x, o, pk, n_pk, need, max_sag[tier], 0.0)) {
-				passed |= close_on(x, o, &pk[fit], esc, n_esc, cur, pick,
-				    spare, &t);
+				passed |= close_on(x, o, &pk[fit], esc, n_esc, s, &t);
 				n_closed++;
 			}
 		}
@@ -297,13 +381,6 @@ close_option(const struct parts_ctx *x, const struct parts_option *o,
 	}
 	return n_closed;
 }
-
-/* One search's trial buffers, its best closing and its tallies. */
-struct search {
-	struct parts_closed cur, pick;
-	struct solve_result *spare;
-	int n_closed, n_ranked;
-};
 
 /* Rank and close at the continuous design's mass; when no closing passes
  * every check and the closest came out heavier, or landed short of the
@@ -359,8 +436,7 @@ search_rounds(struct parts_ctx *x, struct solve_result *r, struct search *s)
 				x->n_census[PARTS_NO_ESC]++;
 				continue;
 			}
-			s->n_closed += close_option(x, &best[i], esc, n_esc, &s->cur,
-			    &s->pick, &s->spare);
+			s->n_closed += close_option(x, &best[i], esc, n_esc, s);
 		}
 		if (s->pick.r != NULL && !s->pick.finite)
 			break;
@@ -421,6 +497,13 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 	s.cur.r = xmalloc(sizeof *s.cur.r);
 	s.spare = xmalloc(sizeof *s.spare);
 	s.cur.r->terse = s.spare->terse = true;
+	s.seen_by_pack = xmalloc((size_t)(x.n_packs > 0 ? x.n_packs : 1)
+	    * sizeof *s.seen_by_pack);
+	for (int i = 0; i < x.n_packs; i++)
+		s.seen_by_pack[i] = -1;
+#ifdef AEROEVAL_TEST_HOOKS
+	s.exhaustive = getenv("AEROEVAL_TEST_EXHAUSTIVE") != NULL;
+#endif
 	const struct parts_aim aim = x.aim;
 	x.max_parallel = PARTS_BANK_PARALLEL;
 	search_rounds(&x, r, &s);
@@ -431,6 +514,8 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 	}
 	free(s.spare);
 	free(s.cur.r);
+	free(s.seen);
+	free(s.seen_by_pack);
 	struct parts_closed pick = s.pick;
 	int n_closed = s.n_closed, n_ranked = s.n_ranked;
 	if (n_ranked == 0 || pick.r == NULL || !pick.finite) {
