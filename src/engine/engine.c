@@ -724,14 +724,18 @@ ceiling(const struct sizing_params *p, struct solve_result *r)
 		/* The steps ask only whether some design passes; the lightest
 		 * is sized once, at the share found (the same design: reachable()
 		 * is a function of its arguments). */
+		bool any = answer_only();
 		for (int k = 0; k < CEILING_BISECT; k++) {
 			double mid = 0.5 * (lo + hi);
-			if (reachable(p, mid, 1.0, t, scratch, answer_only()))
+			if (reachable(p, mid, 1.0, t, scratch, any)) {
 				lo = mid;
-			else
+				if (!any)
+					*best = *t;
+			} else {
 				hi = mid;
+			}
 		}
-		if (lo > SIZING_GAMMA_MIN)
+		if (any && lo > SIZING_GAMMA_MIN)
 			reachable(p, lo, 1.0, best, scratch, false);
 		c->time_scale = lo;
 		/* What binds there: a check the longest flight meets with
@@ -759,14 +763,18 @@ ceiling(const struct sizing_params *p, struct solve_result *r)
 	if (r->mission.payload_kg > 0.0 && reachable(p, 1.0, 0.0, t, scratch, false)) {
 		c->payload_found = true;
 		double plo = 0.0, phi = 1.0, m = t->mass.total_kg;
+		bool any = answer_only();
 		for (int k = 0; k < CEILING_BISECT; k++) {
 			double mid = 0.5 * (plo + phi);
-			if (reachable(p, 1.0, mid, t, scratch, answer_only()))
+			if (reachable(p, 1.0, mid, t, scratch, any)) {
 				plo = mid;
-			else
+				if (!any)
+					m = t->mass.total_kg;
+			} else {
 				phi = mid;
+			}
 		}
-		if (plo > 0.0 && reachable(p, 1.0, plo, t, scratch, false))
+		if (any && plo > 0.0 && reachable(p, 1.0, plo, t, scratch, false))
 			m = t->mass.total_kg;
 		c->max_payload_kg = plo * r->mission.payload_kg;
 		c->mass_at_payload_kg = m;
