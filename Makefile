@@ -154,24 +154,26 @@ $(BUILD)/tests:
 
 # ---- tests ------------------------------------------------------------------
 # `make test` builds, $(JOBS) jobs at once, the program and its test build
-# (aeroeval-test) in $(BUILD)/, with the random-mission sweep as it ships
-# (-O2, where it runs eight times the missions) and the two unit programs
-# whose dossiers the scripts read.  tests/run_all.sh then runs the
-# whole-compiler scripts (tests/cli_*.sh, on aeroeval-test), the checks
-# (tests/check_*.sh) and that sweep, $(JOBS) at a time, while the unit
+# (aeroeval-test) in $(BUILD)/, with the random-mission sweep and the
+# monotonicity test as they ship (-O2, where they run their full counts:
+# 800 and 500 missions) and the two unit programs whose dossiers the
+# scripts read.  tests/run_all.sh then runs the whole-compiler scripts
+# (tests/cli_*.sh, on aeroeval-test), the checks (tests/check_*.sh), that
+# sweep and that test, $(JOBS) at a time, while the unit
 # programs (one cmocka program per module) are built under AddressSanitizer
 # + UndefinedBehaviorSanitizer in $(ASAN)/; they run as soon as that build
 # ends.  It closes with one line "N passed, N failed".  `make unit` builds
 # and runs the unit programs without the sanitizers, `make asan` with them.
-# The unit programs built as they ship: the sweep, and the two whose
-# dossiers tests/cli_doc.sh and tests/cli_report.sh read.
-SCRIPT_UNITS := $(BUILD)/tests/test_sweep $(BUILD)/tests/test_doc $(BUILD)/tests/test_report
+# The unit programs built as they ship: the sweep, the monotonicity test,
+# and the two whose dossiers tests/cli_doc.sh and tests/cli_report.sh read.
+SCRIPT_UNITS := $(BUILD)/tests/test_sweep $(BUILD)/tests/test_monotone \
+  $(BUILD)/tests/test_doc $(BUILD)/tests/test_report
 
 test: deps
 	@$(MAKE) --no-print-directory -j$(JOBS) all $(TEST_BIN) $(SCRIPT_UNITS)
 	@sh tests/run_all.sh -j $(JOBS) --scripts $(BUILD) \
 	  --meanwhile '$(MAKE) --no-print-directory -j$(JOBS) asan-build' $(ASAN) \
-	  $(BUILD)/tests/test_sweep $(ASAN)
+	  $(BUILD)/tests/test_sweep $(BUILD)/tests/test_monotone $(ASAN)
 
 unit: $(TEST_BINS)
 	sh tests/run_all.sh -j $(JOBS) $(BUILD)

@@ -76,7 +76,7 @@ n=$(wc -l <"$dir/jobs")
 
 # Start the slowest first, so that the last to end is a short one; the
 # programs that wait for the build running meanwhile come after the rest.
-slow='test_sweep cli_hostile cli_batch cli_shard cli_dossier test_catalog_io test_report'
+slow='test_sweep test_monotone cli_hostile cli_batch cli_shard cli_dossier test_catalog_io test_report'
 later=$(cat "$dir/meanwhile.dir" 2>/dev/null)
 {
 	for s in $slow; do grep -n "/$s[ .]" "$dir/jobs" | grep -v " ${later:-/}\$" | cut -d: -f1; done

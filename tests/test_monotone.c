@@ -28,7 +28,7 @@
 
 #if defined(__SANITIZE_ADDRESS__)
 #define MONO_N 150  /* the sanitizer pass runs ~3x slower; the full count
-                       runs in the plain pass */
+                       runs in the plain pass (make test runs both) */
 #else
 #define MONO_N 500
 #endif
