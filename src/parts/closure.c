@@ -99,6 +99,8 @@ parts_packs_init(struct parts_ctx *x)
 				pk->series = s;
 				pk->parallel = q;
 				pk->chem = chem;
+				pk->plug = NULL;      /* parts_kit_init() finds it */
+				pk->plug_name = NULL;
 				/* Single cells need a pack built around them
 				 * (README: 10-15 % for pack hardware). */
 				pk->mass_kg = (double)(s * q) * b->mass_kg

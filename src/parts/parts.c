@@ -232,6 +232,11 @@ struct search {
 	                                  AEROEVAL_TEST_EXHAUSTIVE) */
 };
 
+/* Every field of the aim, compared: a field added to struct parts_aim
+ * must be added here too, or a closing at another aim would be taken for
+ * this one (the assert trips on a new field). */
+_Static_assert(sizeof(struct parts_aim) == 16 * sizeof(double),
+    "aim_same() must compare every field of struct parts_aim");
 static bool
 aim_same(const struct parts_aim *a, const struct parts_aim *b)
 {
