@@ -64,11 +64,13 @@ LINK         = $(CC) $(AE_CFLAGS) $(CFLAGS) $(LDFLAGS)
 # (diag, spec, catalog, template, result); the engine (physics, sizing,
 # parts, engine); the files read (input); the files written: their text
 # (formats), atomic files and folders (fs), the PDF documents (pdf); the
-# studies (study); and cli on top.  `make check-layers` (part of `make
-# test`) keeps every include pointing down this list.
+# studies (study); cli; and tools, the build-time programs (catsnap), on
+# top.  `make check-layers` (part of `make test`) keeps every include
+# pointing down this list.  The programs' own sources (cli/main.c, tools/)
+# stay out of the library.
 LAYERS   := util diag spec catalog template result physics sizing parts engine \
-            input formats fs pdf study cli
-LIB_SRCS := $(filter-out src/cli/main.c,$(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)))
+            input formats fs pdf study cli tools
+LIB_SRCS := $(filter-out src/cli/main.c src/tools/%.c,$(foreach l,$(LAYERS),$(wildcard src/$(l)/*.c)))
 LIB_OBJS := $(LIB_SRCS:src/%.c=$(BUILD)/obj/%.o)
 LIB      := $(BUILD)/libaeroeval.a
 BIN      := $(BUILD)/aeroeval
@@ -136,11 +138,30 @@ $(TEST_LIB): $(filter-out $(HOOK_SRCS:src/%.c=$(BUILD)/obj/%.o),$(LIB_OBJS)) $(H
 	rm -f $@
 	ar rcs $@ $^
 
-$(BIN): $(BUILD)/obj/cli/main.o $(LIB)
+$(BIN): $(BUILD)/obj/cli/main.o $(BUILD)/obj/cli/snapshot.o $(LIB)
 	$(LINK) -o $@ $^ $(PKG_LIBS) $(LDLIBS)
 
-$(TEST_BIN): $(BUILD)/obj/cli/main.o $(TEST_LIB)
+$(TEST_BIN): $(BUILD)/obj/cli/main.o $(BUILD)/obj/cli/snapshot.o $(TEST_LIB)
 	$(LINK) -o $@ $^ $(PKG_LIBS) $(LDLIBS)
+
+# The shipped catalogue, loaded and checked once here and carried inside the
+# program (src/input/catalog_snap.h): catsnap (src/tools/) writes the
+# snapshot, and snapshot.S includes its bytes.  At start-up aeroeval uses it
+# only when the catalogue files hold exactly the bytes it was made from,
+# else it reads their JSON.
+CATALOG_FILES := $(wildcard data/catalog/*.json) data/chemistries.json
+SNAP          := $(BUILD)/gen/catalog.snap
+
+$(BUILD)/catsnap: $(BUILD)/obj/tools/catsnap.o $(LIB)
+	$(LINK) -o $@ $^ $(PKG_LIBS) $(LDLIBS)
+
+$(SNAP): $(BUILD)/catsnap $(CATALOG_FILES)
+	@mkdir -p $(@D)
+	$(BUILD)/catsnap data $@
+
+$(BUILD)/obj/cli/snapshot.o: src/cli/snapshot.S $(SNAP)
+	@mkdir -p $(@D)
+	$(CC) -c -I$(BUILD)/gen -o $@ $<
 
 # TEST_OPT (after OPT, so it wins) compiles the test sources themselves.
 $(BUILD)/tests/%: tests/%.c $(TEST_LIB) | $(BUILD)/tests

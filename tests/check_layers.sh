@@ -33,6 +33,7 @@ BEGIN {
 	ok["pdf"] = "util spec catalog template result formats"
 	ok["study"] = "util spec catalog template result physics sizing parts engine input pdf"
 	ok["cli"] = "util diag spec catalog template result physics sizing parts engine input formats fs pdf study"
+	ok["tools"] = "util diag spec catalog template result physics sizing parts engine input formats fs pdf study cli"
 	n_layers = split(layers, order, " ")
 	for (i = 1; i <= n_layers; i++) {
 		pos[order[i]] = i

@@ -92,6 +92,18 @@ item_at(const struct catalog *c, enum catalog_category k, size_t i)
 	return (const char *)c->items[k] + i * entry_size[k];
 }
 
+size_t
+catalog_count(const struct catalog *c, enum catalog_category k)
+{
+	return c != NULL ? c->n[k] : 0;
+}
+
+const void *
+catalog_item(const struct catalog *c, enum catalog_category k, size_t i)
+{
+	return item_at(c, k, i);
+}
+
 /* A propeller's sort key: diameter, then file order, a total order so
  * qsort's instability cannot show. */
 struct prop_key {

@@ -184,6 +184,12 @@ void catalog_finish(struct catalog *c);
 /* sizeof the entry struct of category k. */
 size_t catalog_entry_size(enum catalog_category k);
 
+/* The number of entries of category k, and entry i of it (NULL past the
+ * end) as raw bytes, for code that handles every category alike (the
+ * snapshot, input/catalog_snap.h). */
+size_t catalog_count(const struct catalog *c, enum catalog_category k);
+const void *catalog_item(const struct catalog *c, enum catalog_category k, size_t i);
+
 /* Frees a catalogue; NULL is a no-op.  Pointers into it die with it. */
 void catalog_free(struct catalog *c);
 

@@ -15,6 +15,7 @@
 #include "pdf/assets.h"
 #include "fs/fsout.h"
 #include "input/catalog_io.h"
+#include "input/catalog_snap.h"
 #include "input/cohort.h"
 #include "input/json_in.h"
 #include "input/model_io.h"
@@ -64,6 +65,17 @@ cli_hash_file(struct sha256_ctx *c, const char *path, char *err, size_t errlen)
 	return 0;
 }
 
+/* The snapshot of the shipped catalogue that main() hands over, if any. */
+static const unsigned char *snapshot;
+static size_t snapshot_bytes;
+
+void
+cli_use_snapshot(const unsigned char *blob, size_t n)
+{
+	snapshot = blob;
+	snapshot_bytes = n;
+}
+
 int
 cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
              FILE *err)
@@ -82,7 +94,13 @@ cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
 	struct diag *dg = diag_alloc(err);
 	int n_err = model_io_load(env->data_dir, &env->model, dg);
 	diag_flush(dg);
-	if (n_err == 0 && want_catalog) {
+	/* The catalogue from the program's own snapshot when the folder's
+	 * files are byte for byte the ones it was made from
+	 * (input/catalog_snap.h), else from its JSON. */
+	if (n_err == 0 && want_catalog)
+		env->cat = catalog_snap_read(snapshot, snapshot_bytes, env->db_dir,
+		                             env->model.chem_names, env->catalogue_sha256);
+	if (n_err == 0 && want_catalog && env->cat == NULL) {
 		env->cat = catalog_io_load(env->db_dir, env->model.chem_names, dg,
 		                           env->catalogue_sha256);
 		diag_flush(dg);

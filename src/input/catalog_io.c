@@ -265,6 +265,18 @@ _Static_assert(N_OF(motor_fields) < MAX_FIELDS && N_OF(prop_fields) < MAX_FIELDS
                N_OF(frame_fields) < MAX_FIELDS && N_OF(avionics_fields) < MAX_FIELDS,
                "raise MAX_FIELDS");
 
+size_t
+catalog_io_text_fields(enum catalog_category k, size_t *offsets, size_t max)
+{
+	size_t n = 0;
+	for (size_t i = 0; i < categories[k].n_fields; i++) {
+		const struct field *f = &categories[k].fields[i];
+		if ((f->kind == K_STR || f->kind == K_LIST) && n < max)
+			offsets[n++] = f->off;
+	}
+	return n;
+}
+
 /* ---- the load ------------------------------------------------------------ */
 
 /* Where an id was first given, for "duplicate id" messages. */
@@ -789,19 +801,31 @@ parse_entry(struct load *ld, enum catalog_category k, struct json_in *ji,
 
 /* ---- one file ------------------------------------------------------------- */
 
-/* Reads category k's file into the catalogue; all errors go to ld->dg. */
-static void
-load_file(struct load *ld, const char *dir, enum catalog_category k)
+char *
+catalog_io_path(const char *dir, enum catalog_category k)
 {
 	size_t dl = strlen(dir);
 	char *path = xmalloc(dl + strlen(catalog_io_files[k]) + 2);
 	sprintf(path, "%s%s%s", dir, dl > 0 && dir[dl - 1] == '/' ? "" : "/",
 	        catalog_io_files[k]);
-	ld->path[k] = path;
+	return path;
+}
 
+bool
+catalog_io_absent(const char *path, enum catalog_category k)
+{
 	struct stat st;
-	if (!catalog_io_required(k) && lstat(path, &st) != 0 && errno == ENOENT)
-		return;   /* an optional category that is simply not there */
+	return !catalog_io_required(k) && lstat(path, &st) != 0 && errno == ENOENT;
+}
+
+/* Reads category k's file into the catalogue; all errors go to ld->dg. */
+static void
+load_file(struct load *ld, const char *dir, enum catalog_category k)
+{
+	char *path = catalog_io_path(dir, k);
+	ld->path[k] = path;
+	if (catalog_io_absent(path, k))
+		return;
 	struct json_in *ji = json_in_load(path, JSON_IN_CATALOG_MAX, ld->dg);
 	if (ji == NULL)
 		return;
@@ -829,27 +853,38 @@ load_file(struct load *ld, const char *dir, enum catalog_category k)
 
 /* ---- public --------------------------------------------------------------- */
 
-/* The fingerprint of the files ld read (catalog_io.h) into hex. */
-static void
-hash_files(const struct load *ld, char *hex)
+void
+catalog_io_fingerprint(const char *const text[CATALOG_N_CATEGORIES],
+                       const size_t len[CATALOG_N_CATEGORIES], char *hex)
 {
 	struct sha256_ctx c;
 	unsigned char digest[SHA256_DIGEST_LEN];
 	sha256_init(&c);
 	for (int k = 0; k < CATALOG_N_CATEGORIES; k++) {
-		if (ld->ji[k] == NULL)
+		if (text[k] == NULL)
 			continue;
-		size_t n;
-		const char *text = json_in_text(ld->ji[k], &n);
+		size_t n = len[k];
 		unsigned char len8[8];
 		for (int i = 0; i < 8; i++)
 			len8[i] = (unsigned char)((uint64_t)n >> (8 * i));
 		sha256_update(&c, catalog_io_files[k], strlen(catalog_io_files[k]) + 1);
 		sha256_update(&c, len8, sizeof len8);
-		sha256_update(&c, text, n);
+		sha256_update(&c, text[k], n);
 	}
 	sha256_final(&c, digest);
 	sha256_to_hex(digest, hex);
+}
+
+/* The fingerprint of the files ld read into hex. */
+static void
+hash_files(const struct load *ld, char *hex)
+{
+	const char *text[CATALOG_N_CATEGORIES] = { NULL };
+	size_t len[CATALOG_N_CATEGORIES] = { 0 };
+	for (int k = 0; k < CATALOG_N_CATEGORIES; k++)
+		if (ld->ji[k] != NULL)
+			text[k] = json_in_text(ld->ji[k], &len[k]);
+	catalog_io_fingerprint(text, len, hex);
 }
 
 struct catalog *

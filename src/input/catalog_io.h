@@ -34,6 +34,24 @@ extern const char *const catalog_io_files[CATALOG_N_CATEGORIES];
 /* True when the category's file must exist (false: absent = no entries). */
 bool catalog_io_required(enum catalog_category k);
 
+/* The path of category k's file in folder dir (a trailing '/' is fine);
+ * free() it. */
+char *catalog_io_path(const char *dir, enum catalog_category k);
+
+/* True when path, category k's file, is optional and simply not there. */
+bool catalog_io_absent(const char *path, enum catalog_category k);
+
+/* The offsets of category k's text fields (every `const char *` of its
+ * entry struct), written into offsets (room for max); returns how many.
+ * The snapshot (input/catalog_snap.h) stores these as text offsets. */
+size_t catalog_io_text_fields(enum catalog_category k, size_t *offsets, size_t max);
+
+/* The catalogue fingerprint (see catalog_io_load()) of the files whose
+ * bytes are text[k] (len[k] of them; NULL: absent), as 64 hex digits and a
+ * NUL into hex. */
+void catalog_io_fingerprint(const char *const text[CATALOG_N_CATEGORIES],
+                            const size_t len[CATALOG_N_CATEGORIES], char *hex);
+
 /* Loads the catalogue directory dir (a trailing '/' is fine).
  * known_chemistries is the NULL-terminated list of accepted battery
  * chemistries; NULL means catalog_default_chemistries.  Every problem of
