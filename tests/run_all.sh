@@ -27,12 +27,14 @@ if [ "$1" = "--job" ]; then
 	if [ "$build" = "$(cat "$dir/meanwhile.dir" 2>/dev/null)" ]; then
 		while [ ! -e "$dir/meanwhile.rc" ]; do sleep 0.2; done
 	fi
+	t0=$(date +%s%N)
 	if [ "$kind" = unit ]; then
 		AEROEVAL_TEST_OUT="$build" "$path" >"$dir/$id.log" 2>&1
 	else
 		AEROEVAL="$build/aeroeval-test" sh "$path" >"$dir/$id.log" 2>&1
 	fi
 	echo $? >"$dir/$id.rc"
+	echo "$(( ($(date +%s%N) - t0) / 1000000 )) $path" >"$dir/$id.ms"
 	exit 0
 fi
 
@@ -123,5 +125,9 @@ while read -r kind path jbuild; do
 	failed=$((failed + f))
 done <"$dir/jobs"
 
+# The slowest jobs, for whoever wants the whole run quicker.
+echo "== the slowest (wall seconds, while the others ran beside them)"
+cat "$dir"/*.ms 2>/dev/null | sort -rn | head -n 8 |
+	awk '{ printf "  %6.1f  %s\n", $1 / 1000, $2 }'
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
