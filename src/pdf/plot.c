@@ -1439,9 +1439,34 @@ segment_meets_box(double ax, double ay, double bx, double by, double x0, double 
  * reference lines, the labels placed before it and the legend.  Two labels
  * on top of each other, or a label leaving the plot, cost most; a label
  * over the data costs per segment it hides. */
+/* The page points of a panel's series, mapped once for all the places a
+ * label is tried at (label_cost): mapping a point on a log scale takes
+ * three logarithms. */
+struct mapped_points {
+	double *X, *Y;           /* per item: its points, NULL for other items */
+};
+
+static void
+map_series(const struct plot_panel *pp, const struct layout *L, struct mapped_points *mp)
+{
+	for (int k = 0; k < pp->n_items; k++) {
+		const struct item *it = &pp->items[k];
+		mp[k].X = mp[k].Y = NULL;
+		if (it->kind != IT_SERIES || it->n == 0)
+			continue;
+		mp[k].X = xmalloc(2 * it->n * sizeof *mp[k].X);
+		mp[k].Y = mp[k].X + it->n;
+		for (size_t i = 0; i < it->n; i++) {
+			mp[k].X[i] = plot_scale_map(&L->sx, it->x[i]);
+			mp[k].Y[i] = plot_scale_map(&L->sy, it->y[i]);
+		}
+	}
+}
+
 static double
 label_cost(const struct plot_panel *pp, const struct layout *L, const struct item *self,
-           double x0, double y0, double x1, double y1, int *data_hits)
+           const struct mapped_points *mp, double x0, double y0, double x1, double y1,
+           int *data_hits)
 {
 	double cost = 0.0;
 	int hits = 0;
@@ -1465,7 +1490,7 @@ label_cost(const struct plot_panel *pp, const struct layout *L, const struct ite
 		if (it->kind == IT_SERIES) {
 			double qx = NAN, qy = NAN, r = it->marker != PLOT_MARKER_NONE ? 0.5 * it->marker_pt : 0.0;
 			for (size_t i = 0; i < it->n; i++) {
-				double X = plot_scale_map(&L->sx, it->x[i]), Y = plot_scale_map(&L->sy, it->y[i]);
+				double X = mp[k].X[i], Y = mp[k].Y[i];
 				if (!isfinite(X) || !isfinite(Y)) {
 					qx = NAN;
 					continue;
@@ -1576,16 +1601,22 @@ draw_annotation_text(struct rctx *c, const struct plot_panel *pp, struct layout 
 	struct label_spot spot[12];
 	int n = label_spots(L, it, w, spot), best = -1, best_hits = 0;
 	double best_cost = INFINITY;
+	struct mapped_points *mp = xcalloc((size_t)(pp->n_items > 0 ? pp->n_items : 1), sizeof *mp);
+	if (n > 0)
+		map_series(pp, L, mp);
 	for (int i = 0; i < n; i++) {
 		int hits;
-		double cost = label_cost(pp, L, it, spot[i].x0, spot[i].y0, spot[i].x1, spot[i].y1, &hits)
-		              + 0.5 * i;
+		double cost = label_cost(pp, L, it, mp, spot[i].x0, spot[i].y0, spot[i].x1, spot[i].y1,
+		                         &hits) + 0.5 * i;
 		if (cost < best_cost) {
 			best_cost = cost;
 			best = i;
 			best_hits = hits;
 		}
 	}
+	for (int k = 0; k < pp->n_items; k++)
+		free(mp[k].X);
+	free(mp);
 	if (best < 0)
 		return;
 	const struct label_spot *b = &spot[best];
