@@ -10,6 +10,9 @@
 #include <string.h>
 
 #include <hpdf.h>
+#include <hpdf_doc.h>        /* internals: a loaded font's definition */
+#include <hpdf_encoder.h>    /* internals: the UTF-8 encoder's code map */
+#include <hpdf_fontdef.h>    /* internals: a TrueType font's cmap */
 #include <hpdf_namedict.h>   /* internals: the attachment's name tree */
 #include <hpdf_objects.h>    /* internals: the fonts' ToUnicode maps */
 #include <hpdf_streams.h>
@@ -437,6 +440,14 @@ fix_to_unicode(struct doc *d, HPDF_Font font)
 	}
 	HPDF_Stream s = map->stream;
 	HPDF_MemStream_FreeData(s);
+	if (d->to_unicode != NULL) {
+		/* The map is the same for every font: the fonts after the first
+		 * name the first's, and their own is left empty (written, but
+		 * nothing refers to it), which saves deflating it again. */
+		HPDF_Dict_Add(font, "ToUnicode", d->to_unicode);
+		return;
+	}
+	d->to_unicode = map;
 	HPDF_Stream_WriteStr(s, "/CIDInit /ProcSet findresource begin\n"
 	    "12 dict begin\nbegincmap\n"
 	    "/CIDSystemInfo << /Registry (Adobe) /Ordering (UCS) /Supplement 0 >> def\n"
@@ -506,6 +517,70 @@ trim_cid_map(struct doc *d, HPDF_Font font)
 	free(bytes);
 }
 
+/* The encoder's tables as they were before narrow_codes(). */
+struct code_tables {
+	HPDF_Encoder_ToUnicode_Func to_unicode_fn;
+	HPDF_UNICODE unicode_map[256][256];
+	HPDF_UINT16 cid_map[256][256];
+};
+
+/* Makes HPDF_GetFont map only the codes the font has glyphs for, keeping
+ * the encoder as it was in *keep (restore_codes() puts it back).  For the
+ * UTF-8 encoder libharu 2.3.0 builds a font's CID-to-glyph map and widths
+ * by looking up all 65 536 codes in the font's cmap, each a walk over its
+ * segments (~30 M instructions for three fonts); for an encoder whose
+ * to_unicode_fn is the generic table lookup it looks up only the codes
+ * its tables list.  So for this one call the tables list each code of the
+ * font's segments as itself.  A code left out has no glyph, so it maps to
+ * glyph 0 and the default width either way: the font comes out byte for
+ * byte the same.  The code after the last segment is listed too, because
+ * libharu writes the map up to, not including, the highest code listed.
+ * Returns 0, having changed nothing, when the font's cmap is not one this
+ * can read. */
+static int
+narrow_codes(HPDF_Encoder enc, HPDF_FontDef def, struct code_tables *keep)
+{
+	if (enc == NULL || enc->type != HPDF_ENCODER_TYPE_DOUBLE_BYTE || def == NULL ||
+	    def->type != HPDF_FONTDEF_TYPE_TRUETYPE)
+		return 0;
+	const HPDF_TTF_CmapRange *cm = &((HPDF_TTFontDefAttr)def->attr)->cmap;
+	if (cm->format != 4 || cm->seg_count_x2 == 0)
+		return 0;
+	HPDF_CMapEncoderAttr ea = enc->attr;
+	keep->to_unicode_fn = enc->to_unicode_fn;
+	memcpy(keep->unicode_map, ea->unicode_map, sizeof keep->unicode_map);
+	memcpy(keep->cid_map, ea->cid_map, sizeof keep->cid_map);
+	memset(ea->cid_map, 0, sizeof ea->cid_map);
+	long last = -1;
+	for (int i = 0; i < cm->seg_count_x2 / 2; i++) {
+		long lo = cm->start_count[i], hi = cm->end_count[i];
+		if (lo == 0xffff || hi < lo)
+			continue;      /* the closing segment, or a broken one */
+		for (long c = lo; c <= hi; c++) {
+			ea->cid_map[c >> 8][c & 0xff] = (HPDF_UINT16)c;
+			ea->unicode_map[c >> 8][c & 0xff] = (HPDF_UNICODE)c;
+		}
+		if (hi > last)
+			last = hi;
+	}
+	if (last >= 0 && last < 0xffff) {
+		last++;
+		ea->cid_map[last >> 8][last & 0xff] = (HPDF_UINT16)last;
+		ea->unicode_map[last >> 8][last & 0xff] = (HPDF_UNICODE)last;
+	}
+	enc->to_unicode_fn = HPDF_CMapEncoder_ToUnicode;
+	return 1;
+}
+
+static void
+restore_codes(HPDF_Encoder enc, const struct code_tables *keep)
+{
+	HPDF_CMapEncoderAttr ea = enc->attr;
+	enc->to_unicode_fn = keep->to_unicode_fn;
+	memcpy(ea->unicode_map, keep->unicode_map, sizeof ea->unicode_map);
+	memcpy(ea->cid_map, keep->cid_map, sizeof ea->cid_map);
+}
+
 static HPDF_Font
 load_font(struct doc *d, const char *path)
 {
@@ -514,7 +589,12 @@ load_font(struct doc *d, const char *path)
 		doc_fail(d, "cannot load font %s", path);
 		return NULL;
 	}
+	struct code_tables *keep = xmalloc(sizeof *keep);
+	int narrowed = narrow_codes(d->utf8, HPDF_GetFontDef(d->pdf, name), keep);
 	HPDF_Font f = HPDF_GetFont(d->pdf, name, "UTF-8");
+	if (narrowed)
+		restore_codes(d->utf8, keep);
+	free(keep);
 	if (f != NULL)
 		fix_to_unicode(d, f);
 	if (f != NULL)
@@ -602,13 +682,12 @@ doc_alloc(const struct template *tpl, const struct doc_info *info)
 		doc_fail(d, "cannot create a PDF document");
 		return d;
 	}
-	/* Deflate everything (libharu's zlib level is fixed at the default).
-	 * Measured on the SAR example (instructions of the whole build, PDF
-	 * size): none 147 M, 773 KB; page text only 175 M, 557 KB; fonts and
-	 * their maps only 171 M, 344 KB; all 199 M, 128 KB.  Each embedded
-	 * UTF-8 font carries a 128 KB CID-to-glyph map, mostly zeros, and the
-	 * pages ~240 KB of operators: a dossier is mailed and archived, so the
-	 * 28 M instructions (~10 ms) that save 216 KB on the pages are spent. */
+	/* Deflate everything (libharu's zlib level is fixed at the default;
+	 * PDF/A-3b leaves only the XMP metadata unfiltered, doc_pdfa.c).
+	 * Measured on the SAR example: leaving the page content undeflated
+	 * saves 48 M instructions of the dossier's 157 M and makes the PDF
+	 * 519 KB instead of 175 KB.  A dossier is mailed and archived, so
+	 * the ~15 ms are spent. */
 	HPDF_SetCompressionMode(d->pdf, HPDF_COMP_ALL);
 	HPDF_UseUTFEncodings(d->pdf);
 	HPDF_SetCurrentEncoder(d->pdf, "UTF-8");

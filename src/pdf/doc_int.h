@@ -39,6 +39,7 @@ struct doc {
 	struct template tpl;        /* copy: the caller's may go away */
 	HPDF_Font font, bold, mono; /* mono loaded on first use */
 	HPDF_Encoder utf8;          /* for outline titles */
+	HPDF_Dict to_unicode;       /* the fonts' shared ToUnicode map, once made */
 	HPDF_Page *pages;           /* every page, for header/footer at save */
 	int n_pages, cap_pages;
 	HPDF_Page page;             /* current page */

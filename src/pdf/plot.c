@@ -10,6 +10,9 @@
 #include "pdf/plot.h"
 
 #include <cairo.h>
+#include <hpdf.h>
+#include <hpdf_pages.h>      /* internals: a page's content stream and mode */
+#include <hpdf_utils.h>      /* HPDF_FToA: numbers as libharu writes them */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -591,6 +594,66 @@ enum rp_op { RP_STROKE, RP_FILL, RP_CLIP };
 static double px_(const struct rctx *c, double x) { return c->r->x_pt + x; }
 static double py_(const struct rctx *c, double y) { return c->r->y_top_pt - y; }
 
+/* Writes cairo's path as the page's path construction operators (m l c h),
+ * in one piece into the page's content stream, and leaves the page
+ * holding a path as libharu's own path calls would, so that libharu's
+ * paint operator follows.  The bytes are the ones libharu's calls write
+ * (its number format, one operator a line), but each of its path calls
+ * costs ~3000 instructions of bookkeeping (it clears a 512-byte buffer
+ * byte by byte) and a figure replays thousands of them.  Returns -1, having written
+ * nothing, when the page is not between paths, for libharu's own calls
+ * to raise the error. */
+static int
+write_path(struct rctx *c, const cairo_path_t *path)
+{
+	HPDF_Page pg = c->r->page;
+	if (HPDF_Page_GetGMode(pg) != HPDF_GMODE_PAGE_DESCRIPTION)
+		return -1;
+	/* A number takes at most 12 bytes and its space 1: a curve (four
+	 * path data) writes 6 numbers and "c\n". */
+	char *buf = xmalloc((size_t)path->num_data * 24 + 16), *p = buf;
+	HPDF_Point start = { 0, 0 }, at = { 0, 0 };
+	for (int i = 0; i < path->num_data; i += path->data[i].header.length) {
+		const cairo_path_data_t *d = &path->data[i];
+		int n_pts = d->header.type == CAIRO_PATH_CURVE_TO ? 3
+		          : d->header.type == CAIRO_PATH_CLOSE_PATH ? 0 : 1;
+		for (int k = 1; k <= n_pts; k++) {
+			at.x = (HPDF_REAL)px_(c, d[k].point.x);
+			at.y = (HPDF_REAL)py_(c, d[k].point.y);
+			p = HPDF_FToA(p, at.x, p + 13);
+			*p++ = ' ';
+			p = HPDF_FToA(p, at.y, p + 13);
+			*p++ = ' ';
+		}
+		switch (d->header.type) {
+		case CAIRO_PATH_MOVE_TO:
+			*p++ = 'm';
+			start = at;
+			break;
+		case CAIRO_PATH_LINE_TO:
+			*p++ = 'l';
+			break;
+		case CAIRO_PATH_CURVE_TO:
+			*p++ = 'c';
+			break;
+		case CAIRO_PATH_CLOSE_PATH:
+			*p++ = 'h';
+			at = start;
+			break;
+		}
+		*p++ = '\n';
+	}
+	HPDF_PageAttr attr = pg->attr;
+	HPDF_STATUS st = HPDF_Stream_Write(attr->stream, (const HPDF_BYTE *)buf, (HPDF_UINT)(p - buf));
+	free(buf);
+	attr->gmode = HPDF_GMODE_PATH_OBJECT;
+	attr->str_pos = start;
+	attr->cur_pos = at;
+	if (st != HPDF_OK)
+		c->failed = 1;
+	return 0;
+}
+
 /* Replays cairo's current path into the page with the cairo state's colour,
  * line width and dash, then applies op.  An empty path emits nothing
  * (libharu raises an error for a paint operator without a path). */
@@ -634,7 +697,8 @@ rp_apply(struct rctx *c, enum rp_op op)
 	} else if (op == RP_FILL) {
 		HPDF_Page_SetRGBFill(pg, (HPDF_REAL)r, (HPDF_REAL)g, (HPDF_REAL)b);
 	}
-	for (int i = 0; i < path->num_data; i += path->data[i].header.length) {
+	for (int i = write_path(c, path) == 0 ? path->num_data : 0; i < path->num_data;
+	     i += path->data[i].header.length) {
 		const cairo_path_data_t *d = &path->data[i];
 		switch (d->header.type) {
 		case CAIRO_PATH_MOVE_TO:
@@ -1439,9 +1503,34 @@ segment_meets_box(double ax, double ay, double bx, double by, double x0, double 
  * reference lines, the labels placed before it and the legend.  Two labels
  * on top of each other, or a label leaving the plot, cost most; a label
  * over the data costs per segment it hides. */
+/* The page points of a panel's series, mapped once for all the places a
+ * label is tried at (label_cost): mapping a point on a log scale takes
+ * three logarithms. */
+struct mapped_points {
+	double *X, *Y;           /* per item: its points, NULL for other items */
+};
+
+static void
+map_series(const struct plot_panel *pp, const struct layout *L, struct mapped_points *mp)
+{
+	for (int k = 0; k < pp->n_items; k++) {
+		const struct item *it = &pp->items[k];
+		mp[k].X = mp[k].Y = NULL;
+		if (it->kind != IT_SERIES || it->n == 0)
+			continue;
+		mp[k].X = xmalloc(2 * it->n * sizeof *mp[k].X);
+		mp[k].Y = mp[k].X + it->n;
+		for (size_t i = 0; i < it->n; i++) {
+			mp[k].X[i] = plot_scale_map(&L->sx, it->x[i]);
+			mp[k].Y[i] = plot_scale_map(&L->sy, it->y[i]);
+		}
+	}
+}
+
 static double
 label_cost(const struct plot_panel *pp, const struct layout *L, const struct item *self,
-           double x0, double y0, double x1, double y1, int *data_hits)
+           const struct mapped_points *mp, double x0, double y0, double x1, double y1,
+           int *data_hits)
 {
 	double cost = 0.0;
 	int hits = 0;
@@ -1465,7 +1554,7 @@ label_cost(const struct plot_panel *pp, const struct layout *L, const struct ite
 		if (it->kind == IT_SERIES) {
 			double qx = NAN, qy = NAN, r = it->marker != PLOT_MARKER_NONE ? 0.5 * it->marker_pt : 0.0;
 			for (size_t i = 0; i < it->n; i++) {
-				double X = plot_scale_map(&L->sx, it->x[i]), Y = plot_scale_map(&L->sy, it->y[i]);
+				double X = mp[k].X[i], Y = mp[k].Y[i];
 				if (!isfinite(X) || !isfinite(Y)) {
 					qx = NAN;
 					continue;
@@ -1576,16 +1665,22 @@ draw_annotation_text(struct rctx *c, const struct plot_panel *pp, struct layout 
 	struct label_spot spot[12];
 	int n = label_spots(L, it, w, spot), best = -1, best_hits = 0;
 	double best_cost = INFINITY;
+	struct mapped_points *mp = xcalloc((size_t)(pp->n_items > 0 ? pp->n_items : 1), sizeof *mp);
+	if (n > 0)
+		map_series(pp, L, mp);
 	for (int i = 0; i < n; i++) {
 		int hits;
-		double cost = label_cost(pp, L, it, spot[i].x0, spot[i].y0, spot[i].x1, spot[i].y1, &hits)
-		              + 0.5 * i;
+		double cost = label_cost(pp, L, it, mp, spot[i].x0, spot[i].y0, spot[i].x1, spot[i].y1,
+		                         &hits) + 0.5 * i;
 		if (cost < best_cost) {
 			best_cost = cost;
 			best = i;
 			best_hits = hits;
 		}
 	}
+	for (int k = 0; k < pp->n_items; k++)
+		free(mp[k].X);
+	free(mp);
 	if (best < 0)
 		return;
 	const struct label_spot *b = &spot[best];
