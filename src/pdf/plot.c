@@ -1499,10 +1499,6 @@ segment_meets_box(double ax, double ay, double bx, double by, double x0, double 
 	return 1;
 }
 
-/* What a label at the box would cover: data lines and markers, other
- * reference lines, the labels placed before it and the legend.  Two labels
- * on top of each other, or a label leaving the plot, cost most; a label
- * over the data costs per segment it hides. */
 /* The page points of a panel's series, mapped once for all the places a
  * label is tried at (label_cost): mapping a point on a log scale takes
  * three logarithms. */
@@ -1527,6 +1523,10 @@ map_series(const struct plot_panel *pp, const struct layout *L, struct mapped_po
 	}
 }
 
+/* What a label at the box would cover: data lines and markers, other
+ * reference lines, the labels placed before it and the legend.  Two labels
+ * on top of each other, or a label leaving the plot, cost most; a label
+ * over the data costs per segment it hides. */
 static double
 label_cost(const struct plot_panel *pp, const struct layout *L, const struct item *self,
            const struct mapped_points *mp, double x0, double y0, double x1, double y1,
