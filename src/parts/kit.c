@@ -266,6 +266,13 @@ item_part(const struct parts_ctx *x, int slot, const char *kind,
 	return lightest(x, kind, need, cells, load);
 }
 
+/* Two texts alike, NULL only like NULL. */
+static bool
+same_text(const char *a, const char *b)
+{
+	return a == b || (a != NULL && b != NULL && strcmp(a, b) == 0);
+}
+
 void
 parts_kit_init(struct parts_ctx *x)
 {
@@ -302,12 +309,25 @@ parts_kit_init(struct parts_ctx *x)
 	pick_by_bus(x);
 	video_pair(x, &x->video_tx, &x->video_cam);
 	/* Each pack's own plug, found once (a pack is tried on many
-	 * closings, and its plug's row by its name). */
+	 * closings, and its plug's row by its name): once per name, which
+	 * the packs of a battery and most batteries of a maker share. */
+	const struct parts_pack **named = xmalloc((size_t)(x->n_packs > 0
+	    ? x->n_packs : 1) * sizeof *named);
+	int n_named = 0;
 	for (int i = 0; i < x->n_packs; i++) {
 		struct parts_pack *pk = &x->packs[i];
 		pk->plug_name = pk->b != NULL ? pk->b->connector : NULL;
+		int j = 0;
+		while (j < n_named && !same_text(named[j]->plug_name, pk->plug_name))
+			j++;
+		if (j < n_named) {
+			pk->plug = named[j]->plug;
+			continue;
+		}
 		pk->plug = own_plug(x, pk->plug_name);
+		named[n_named++] = pk;
 	}
+	free(named);
 }
 
 void

@@ -154,15 +154,21 @@ pick_pack(const struct parts_ctx *x, const struct parts_option *o,
 	int best = -1;
 	for (int i = 0; i < n; i++) {
 		const struct parts_pack *q = &pk[i];
+		if (!(q->energy_wh >= need_wh && q->max_burst_a >= i_full
+		    && q->max_continuous_a >= i_hover && q->mass_kg > above_kg
+		    && q->parallel <= x->max_parallel
+		    && (best < 0 || q->mass_kg < pk[best].mass_kg)))
+			continue;
 		double r_pack = (double)o->cells * batt_rated_cell_ohm(q->chem,
 		    q->capacity_ah, q->b->continuous_c);
-		if (q->energy_wh >= need_wh && q->max_burst_a >= i_full
-		    && q->max_continuous_a >= i_hover
-		    && r_pack * i_full <= max_sag * v && q->mass_kg > above_kg
-		    && q->parallel <= x->max_parallel
-		    && (best < 0 || q->mass_kg < pk[best].mass_kg)
-		    && parts_kit_plug(x, q, i_hover, i_full, NULL, 0) == NULL)
+		if (r_pack * i_full <= max_sag * v
+		    && parts_kit_plug(x, q, i_hover, i_full, NULL, 0) == NULL) {
 			best = i;
+			/* The packs of a bus come by mass (parts_packs_init()):
+			 * none after the first that fits is strictly lighter. */
+			if (!x->exhaustive)
+				break;
+		}
 	}
 	return best;
 }
@@ -509,6 +515,7 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 #ifdef AEROEVAL_TEST_HOOKS
 	s.exhaustive = getenv("AEROEVAL_TEST_EXHAUSTIVE") != NULL;
 #endif
+	x.exhaustive = s.exhaustive;
 	const struct parts_aim aim = x.aim;
 	x.max_parallel = PARTS_BANK_PARALLEL;
 	search_rounds(&x, r, &s);

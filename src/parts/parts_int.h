@@ -188,6 +188,8 @@ struct parts_ctx {
 	int n_kit_frames;
 	int n_census[PARTS_REASON_MAX];
 	int n_examined;
+	bool exhaustive;                   /* no shortcut taken (test builds:
+	                                      AEROEVAL_TEST_EXHAUSTIVE) */
 };
 
 /* What a kit is sized for (parts_kit_pick()): the currents of the

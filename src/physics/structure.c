@@ -124,9 +124,13 @@ structure_size_arm(const struct structure_arm_loads *in,
 	if (thin.alpha_w < STRUCT_STIFF_ALPHA_W)
 		thin.alpha_w = STRUCT_STIFF_ALPHA_W;
 	structure_size_for(in, out);
+	/* A tube the strength sizes keeps its wall: the thin one is not
+	 * needed to say so. */
+	if (out->sized_by == ARM_BY_STRENGTH)
+		return;
 	struct structure_arm t;
 	structure_size_for(&thin, &t);
-	if (out->sized_by != ARM_BY_STRENGTH && t.sized_by != ARM_BY_STRENGTH
+	if (t.sized_by != ARM_BY_STRENGTH
 	    && t.stress_pa <= structure_sigma_allow_pa() && t.mass_kg < out->mass_kg)
 		*out = t;
 }

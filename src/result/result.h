@@ -546,8 +546,10 @@ struct solve_result {
 	struct res_candidate candidates[RES_MAX_CANDIDATES];
 
 	bool feasible;
-	/* violations keep run, stage and code only, no text: the parts
-	 * search's trial closings, of which one is kept (and re-checked) */
+	/* violations keep run, stage and code only, no text, and the
+	 * closed run no figure the search does not compare (perf_fly()'s
+	 * trial): the parts search's trial closings, of which one is kept
+	 * (and closed again) */
 	bool terse;
 	int n_violations;
 	struct res_violation violations[RES_MAX_VIOLATIONS];

@@ -30,8 +30,8 @@ airframe_s_scale(double m_ref_kg)
 }
 
 void
-airframe_masses(const struct sizing_params *p, const struct airframe_loads *in,
-                struct airframe_masses *out)
+airframe_structure(const struct sizing_params *p,
+                   const struct airframe_loads *in, struct airframe_masses *out)
 {
 	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
 	double arm_len = 0.5 * p->wheelbase_m;
@@ -85,14 +85,29 @@ airframe_masses(const struct sizing_params *p, const struct airframe_loads *in,
 	out->frame_kg = unit * (p->c_body - 1.0);
 	out->other_kg = unit * p->c_body * p->gamma;
 
-	/* The harness scales with the current it carries (paper §VI-E). */
-	double scale = airframe_s_scale(frame_total + p->payload_kg);
-	out->wiring_kg = p->wire_coef * in->peak_current_a * p->wheelbase_m * scale;
+	out->wiring_kg = 0.0; /* airframe_harness() */
 	double equip = airframe_equipment_kg(p, in->mass_kg);
 	out->avionics_kg = p->avionics_share * equip;
 	out->shell_kg = equip - out->avionics_kg;
 	out->other_kg += out->shell_kg;
 	out->role_aux_kg = p->role_aux_kg;
+}
+
+void
+airframe_harness(const struct sizing_params *p, double peak_current_a,
+                 struct airframe_masses *out)
+{
+	/* The harness scales with the current it carries (paper §VI-E). */
+	double scale = airframe_s_scale(out->frame_total_kg + p->payload_kg);
+	out->wiring_kg = p->wire_coef * peak_current_a * p->wheelbase_m * scale;
+}
+
+void
+airframe_masses(const struct sizing_params *p, const struct airframe_loads *in,
+                struct airframe_masses *out)
+{
+	airframe_structure(p, in, out);
+	airframe_harness(p, in->peak_current_a, out);
 }
 
 void

@@ -45,10 +45,23 @@ struct airframe_masses {
 	double role_aux_kg;          /* role hardware */
 };
 
-/* The airframe of the mission p carrying these loads. */
+/* The airframe of the mission p carrying these loads:
+ * airframe_structure() then airframe_harness(). */
 void airframe_masses(const struct sizing_params *p,
                      const struct airframe_loads *in,
                      struct airframe_masses *out);
+
+/* Everything of airframe_masses() but the harness (wiring_kg 0), which
+ * reads neither in->peak_current_a nor in->battery_kg: a design that tries
+ * several battery buses on the same propulsion sizes it once. */
+void airframe_structure(const struct sizing_params *p,
+                        const struct airframe_loads *in,
+                        struct airframe_masses *out);
+
+/* The harness of an airframe_structure() result for the battery current
+ * at full throttle, into out->wiring_kg. */
+void airframe_harness(const struct sizing_params *p, double peak_current_a,
+                      struct airframe_masses *out);
 
 /* Equipment: avionics, body shell, landing gear, gimbal, sensors and
  * mounts, everything the physics above does not size, as one law of the

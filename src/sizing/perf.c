@@ -705,7 +705,7 @@ record_phases(struct perf_ctx *x, double gamma, double v_fwd_ms,
 
 bool
 perf_fly(const struct sizing_params *p, const struct perf_craft *c,
-         struct res_run *run)
+         bool trial, struct res_run *run)
 {
 	struct perf_ctx x;
 	build(p, c, &x);
@@ -742,8 +742,9 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 	 * propeller at the inflow through the tilted disk. */
 	set_thrust_scale(&x);
 	double v_top_search_ms; /* the model's own, at a held rotor speed: unused */
-	mission_speed_search(&x.model, mass, full->thrust_n,
-	    &run->v_min_power_ms, &v_top_search_ms);
+	if (p->v_auto || !trial)
+		mission_speed_search(&x.model, mass, full->thrust_n,
+		    &run->v_min_power_ms, &v_top_search_ms);
 	run->v_max_ms = max_level_ms(&x, mass, &run->v_max_limit);
 	double v_fwd = p->v_auto ? run->v_min_power_ms : p->v_forward_ms;
 	run->optimal_speed_ms = v_fwd;

@@ -58,10 +58,12 @@ struct perf_craft {
  * masses, battery, phases, trace, operating points, structure and thermal
  * fields (run->checks are left to the caller).  Flies the whole mission,
  * or with p->allow_relax the largest fraction of it (goal relaxation,
- * γ >= 0.05) that lands at the reserve.  Returns true when every number
- * came out finite. */
+ * γ >= 0.05) that lands at the reserve.  A trial (a closing the parts
+ * search only compares) leaves out what no check reads: the minimum-power
+ * speed of a mission that flies at its own speed (run->v_min_power_ms).
+ * Returns true when every number came out finite. */
 bool perf_fly(const struct sizing_params *p, const struct perf_craft *c,
-              struct res_run *run);
+              bool trial, struct res_run *run);
 
 /* The performance figures beyond the mission (hover and full-throttle
  * endurance, the mission's mix to the reserve, maximum climb and tilt,

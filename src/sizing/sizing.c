@@ -213,13 +213,49 @@ eval_phases(const struct sizing_params *p, struct eval *e)
 	e->phases_done = true;
 }
 
+/* What the masses of an evaluation share whatever its series cells
+ * (evaluate_masses() may try several): the motors and propellers, sized by
+ * shaft power and speed, and the airframe their loads size, its harness
+ * aside (that carries the bus current). */
+struct drive_masses {
+	double motor_total_kg;         /* all motors */
+	double prop_each_kg;           /* one propeller */
+	struct airframe_masses am;     /* wiring_kg unset: airframe_harness() */
+};
+
+/* The drive_masses of evaluation e (rotor, powers and thrusts set by
+ * evaluate_masses()) on propellers of diameter d. */
+static void
+drive_masses(const struct sizing_params *p, const struct eval *e, double d,
+             struct drive_masses *dv)
+{
+	int nr = p->n_rotors;
+	double p_motor_w = e->peak.shaft_w / (double)nr / p->eta_drive;
+	dv->motor_total_kg = p->parts.active && p->parts.motor_kg_each > 0.0
+	    ? p->parts.motor_kg_each * (double)nr
+	    : fmax(SIZING_MOTOR_MIN_KG, (double)nr * p->c_motor
+	        * sizing_motor_kg(p_motor_w, 2.0 * M_PI * e->rps_peak));
+	dv->prop_each_kg = p->parts.active && p->parts.prop_kg_each > 0.0
+	    ? p->parts.prop_kg_each
+	    : p->prop_kg_per_m22 * pow(d, SIZING_PROP_EXPONENT)
+	        * (double)p->n_blades / 2.0;
+	double torque_nm = e->rps_peak > 0.0
+	    ? e->peak.shaft_w / (double)nr / (2.0 * M_PI * e->rps_peak) : 0.0;
+	/* Neither the current nor the pack enters the structure. */
+	struct airframe_loads al = { e->design_mass_kg, e->t_peak_n,
+		dv->motor_total_kg / (double)nr + dv->prop_each_kg, 0.0, 0.0,
+		torque_nm, d };
+	airframe_structure(p, &al, &dv->am);
+}
+
 /* The masses of evaluation e (rotor, powers and thrusts already set by
  * evaluate_masses()) that depend on its series cells: the bus, the KV, the
  * currents, the battery storing energy_wh (unless locked or a real part),
- * motors and propellers (diameter d_m), airframe, harness and ESCs. */
+ * and with the drive dv's motors, propellers and airframe, the harness
+ * and ESCs. */
 static void
 cells_masses(const struct sizing_params *p, int cells, double energy_wh,
-             double d, struct eval *e)
+             const struct drive_masses *dv, struct eval *e)
 {
 	int nr = p->n_rotors;
 	e->cells = cells < 1 ? 1 : cells;
@@ -281,27 +317,13 @@ cells_masses(const struct sizing_params *p, int cells, double energy_wh,
 		e->mass.battery_kg = m_energy;
 	}
 
-	/* Motors and propellers (per unit), needed for the arm tip mass. */
-	double p_motor_w = e->peak.shaft_w / (double)nr / p->eta_drive;
-	double motor_total = p->parts.active && p->parts.motor_kg_each > 0.0
-	    ? p->parts.motor_kg_each * (double)nr
-	    : fmax(SIZING_MOTOR_MIN_KG, (double)nr * p->c_motor
-	        * sizing_motor_kg(p_motor_w, 2.0 * M_PI * e->rps_peak));
-	double prop_each = p->parts.active && p->parts.prop_kg_each > 0.0
-	    ? p->parts.prop_kg_each
-	    : p->prop_kg_per_m22 * pow(d, SIZING_PROP_EXPONENT)
-	        * (double)p->n_blades / 2.0;
-	e->mass.motor_kg = motor_total;
-	e->mass.prop_kg = prop_each * (double)nr;
+	e->mass.motor_kg = dv->motor_total_kg;
+	e->mass.prop_kg = dv->prop_each_kg * (double)nr;
 
-	/* Arms, frame, body, harness and avionics for these loads. */
-	double torque_nm = e->rps_peak > 0.0
-	    ? e->peak.shaft_w / (double)nr / (2.0 * M_PI * e->rps_peak) : 0.0;
-	struct airframe_loads al = { e->design_mass_kg, e->t_peak_n,
-		motor_total / (double)nr + prop_each, e->peak_current_a,
-		e->mass.battery_kg, torque_nm, d };
-	struct airframe_masses am;
-	airframe_masses(p, &al, &am);
+	/* Arms, frame, body and avionics of the drive; the harness for this
+	 * bus's current. */
+	struct airframe_masses am = dv->am;
+	airframe_harness(p, e->peak_current_a, &am);
 	e->arm = am.arm;
 	e->cg_ok = am.cg_ok;
 	e->min_fraction_binds = am.min_fraction_binds;
@@ -430,8 +452,10 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 		fixed = p->cells_fixed;
 	else if (p->kv_locked)
 		fixed = (int)ceil(60.0 * e->rps_peak / (p->kv * p->chem->v_full));
+	struct drive_masses dv;
+	drive_masses(p, e, d, &dv);
 	if (fixed > 0 || p->cells_lo >= p->cells_hi) {
-		cells_masses(p, fixed > 0 ? fixed : p->cells_lo, energy_wh, d, e);
+		cells_masses(p, fixed > 0 ? fixed : p->cells_lo, energy_wh, &dv, e);
 		return;
 	}
 	/* The series count is a design variable: the lightest aircraft whose
@@ -446,7 +470,7 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 	bool found = false;
 	for (int cells = p->cells_lo; cells <= p->cells_hi; cells++) {
 		t = *e;
-		cells_masses(p, cells, energy_wh, d, &t);
+		cells_masses(p, cells, energy_wh, &dv, &t);
 		if (t.peak_current_a > budget_a)
 			continue;
 		if (!found || t.mass.total_kg < best.mass.total_kg) {
@@ -456,7 +480,7 @@ evaluate_masses(const struct sizing_params *p, const struct loop_state *ls,
 	}
 	if (!found) {
 		best = *e;
-		cells_masses(p, p->cells_hi, energy_wh, d, &best);
+		cells_masses(p, p->cells_hi, energy_wh, &dv, &best);
 	}
 	*e = best;
 }
