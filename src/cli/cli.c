@@ -65,16 +65,12 @@ cli_hash_file(struct sha256_ctx *c, const char *path, char *err, size_t errlen)
 	return 0;
 }
 
-/* The snapshot of the shipped catalogue that main() hands over, if any. */
-static const unsigned char *snapshot;
-static size_t snapshot_bytes;
-
-void
-cli_use_snapshot(const unsigned char *blob, size_t n)
-{
-	snapshot = blob;
-	snapshot_bytes = n;
-}
+/* The shipped catalogue's snapshot and its length in bytes (snapshot.S),
+ * in a program linked with it: the program and the test programs.  Weak,
+ * so that a program linked without it (bench, the fuzzers) has none: both
+ * are then NULL and the JSON is always read. */
+extern const unsigned char aeroeval_snapshot[] __attribute__((weak));
+extern const uint64_t aeroeval_snapshot_bytes __attribute__((weak));
 
 int
 cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
@@ -98,7 +94,8 @@ cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
 	 * files are byte for byte the ones it was made from
 	 * (input/catalog_snap.h), else from its JSON. */
 	if (n_err == 0 && want_catalog)
-		env->cat = catalog_snap_read(snapshot, snapshot_bytes, env->db_dir,
+		env->cat = catalog_snap_read(aeroeval_snapshot, &aeroeval_snapshot_bytes != NULL
+		                             ? (size_t)aeroeval_snapshot_bytes : 0, env->db_dir,
 		                             env->model.chem_names, env->catalogue_sha256);
 	if (n_err == 0 && want_catalog && env->cat == NULL) {
 		env->cat = catalog_io_load(env->db_dir, env->model.chem_names, dg,

@@ -34,10 +34,6 @@ int cli_env_load(struct cli_env *env, const char *db_dir, int want_catalog,
 
 void cli_env_free(struct cli_env *env);
 
-/* Hands cli_env_load() the program's snapshot of the shipped catalogue
- * (input/catalog_snap.h): n bytes at blob, which stay valid to exit. */
-void cli_use_snapshot(const unsigned char *blob, size_t n);
-
 struct sha256_ctx;
 
 /* Adds the regular file at path to c as its length (8 bytes, little

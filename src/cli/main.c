@@ -1,5 +1,4 @@
 /* main.c — argv, subcommand dispatch, exit status.  Drives; computes nothing. */
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -72,14 +71,9 @@ run(int argc, char **argv)
 	return 2;
 }
 
-/* The shipped catalogue's snapshot and its length, from snapshot.S. */
-extern const unsigned char aeroeval_snapshot[];
-extern const uint64_t aeroeval_snapshot_bytes;
-
 int
 main(int argc, char **argv)
 {
-	cli_use_snapshot(aeroeval_snapshot, (size_t)aeroeval_snapshot_bytes);
 	atexit(doc_global_cleanup); /* cairo's static data: a valgrind-clean exit */
 	/* Every command's output is checked once here, after its last write. */
 	return cli_close_stdout(run(argc, argv));
