@@ -225,6 +225,21 @@ struct seen {
 	int next;                      /* the next closing on its pack, or -1 */
 };
 
+/* A ranking made: parts_rank() reads the aim and nothing else that
+ * changes during a search (not the bank's width), so the wider-bank
+ * search, which ranks again at the aims the first one ranked at, is
+ * answered from here: the options, the census and the candidates. */
+#define PARTS_RANKED (PARTS_KEEP + PARTS_KEEP_SHORT + PARTS_KEEP_MARGINAL)
+struct ranked {
+	struct parts_aim aim;
+	struct parts_option best[PARTS_RANKED];
+	int n_best;
+	int n_census[PARTS_REASON_MAX];
+	int n_examined;
+	struct res_candidate cand[RES_MAX_CANDIDATES];
+	int n_cand;
+};
+
 /* One search's trial buffers, its best closing, the closings made and its
  * tallies. */
 struct search {
@@ -234,6 +249,8 @@ struct search {
 	struct seen *seen;
 	int n_seen, cap_seen;
 	int *seen_by_pack;             /* first closing on x->packs[i], or -1 */
+	struct ranked *ranked;         /* the rankings made, n_ranked_at of */
+	int n_ranked_at;               /* at most 2 PARTS_ROUNDS */
 	bool exhaustive;               /* every closing made again (test builds:
 	                                  AEROEVAL_TEST_EXHAUSTIVE) */
 };
@@ -286,6 +303,38 @@ seen_add(const struct parts_ctx *x, struct search *s,
 	*e = (struct seen){ o->motor, o->prop, o->cells, esc, n_esc, x->aim, *t,
 		passed, s->seen_by_pack[k] };
 	s->seen_by_pack[k] = s->n_seen++;
+}
+
+/* parts_rank() at x->aim into best (r's candidates), or the ranking made
+ * at the same aim before; returns the options ranked. */
+static int
+rank_at_aim(struct parts_ctx *x, struct search *s, struct parts_option *best,
+            struct solve_result *r)
+{
+	for (int i = 0; i < s->n_ranked_at && !s->exhaustive; i++) {
+		const struct ranked *e = &s->ranked[i];
+		if (!aim_same(&e->aim, &x->aim))
+			continue;
+		memcpy(best, e->best, (size_t)e->n_best * sizeof *best);
+		memcpy(x->n_census, e->n_census, sizeof x->n_census);
+		x->n_examined = e->n_examined;
+		memcpy(r->candidates, e->cand, (size_t)e->n_cand * sizeof *e->cand);
+		r->n_candidates = e->n_cand;
+		return e->n_best;
+	}
+	int n_best = parts_rank(x, best, PARTS_RANKED, r->candidates,
+	    &r->n_candidates);
+	if (s->n_ranked_at < 2 * PARTS_ROUNDS) {
+		struct ranked *e = &s->ranked[s->n_ranked_at++];
+		e->aim = x->aim;
+		memcpy(e->best, best, (size_t)n_best * sizeof *best);
+		e->n_best = n_best;
+		memcpy(e->n_census, x->n_census, sizeof e->n_census);
+		e->n_examined = x->n_examined;
+		memcpy(e->cand, r->candidates, (size_t)r->n_candidates * sizeof *e->cand);
+		e->n_cand = r->n_candidates;
+	}
+	return n_best;
 }
 
 /* Close option o on pack pk, keep it in s->pick when better; true when it
@@ -432,11 +481,8 @@ search_rounds(struct parts_ctx *x, struct solve_result *r, struct search *s)
 		/* The census the report gives is the last ranking's. */
 		memset(x->n_census, 0, sizeof x->n_census);
 		x->n_examined = 0;
-		struct parts_option best[PARTS_KEEP + PARTS_KEEP_SHORT
-		    + PARTS_KEEP_MARGINAL];
-		int n_best = parts_rank(x, best, PARTS_KEEP + PARTS_KEEP_SHORT
-		    + PARTS_KEEP_MARGINAL,
-		    r->candidates, &r->n_candidates);
+		struct parts_option best[PARTS_RANKED];
+		int n_best = rank_at_aim(x, s, best, r);
 		s->n_ranked += n_best;
 		/* Each on the lightest pack arrangement that fits it; the best
 		 * closing is kept. */
@@ -512,6 +558,7 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 	    * sizeof *s.seen_by_pack);
 	for (int i = 0; i < x.n_packs; i++)
 		s.seen_by_pack[i] = -1;
+	s.ranked = xmalloc(2 * PARTS_ROUNDS * sizeof *s.ranked);
 #ifdef AEROEVAL_TEST_HOOKS
 	s.exhaustive = getenv("AEROEVAL_TEST_EXHAUSTIVE") != NULL;
 #endif
@@ -528,6 +575,7 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 	free(s.cur.r);
 	free(s.seen);
 	free(s.seen_by_pack);
+	free(s.ranked);
 	struct parts_closed pick = s.pick;
 	int n_closed = s.n_closed, n_ranked = s.n_ranked;
 	if (n_ranked == 0 || pick.r == NULL || !pick.finite) {

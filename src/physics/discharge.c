@@ -30,7 +30,7 @@ struct cell_state {
 
 /* What every step of one time step dt_s shares: the pack's fixed part of
  * R_sys and the thermal decay over dt_s, computed once (each costs an exp)
- * instead of per step. */
+ * instead of per step: step_init() the pack's, step_dt() the decay's. */
 struct step_ctx {
 	const struct discharge_pack *p;
 	double ambient_c;
@@ -40,17 +40,21 @@ struct step_ctx {
 };
 
 static void
-step_init(const struct discharge_pack *p, double hac_w_k, double ambient_c,
-          double dt_s, struct step_ctx *sc)
+step_init(const struct discharge_pack *p, double ambient_c, struct step_ctx *sc)
 {
 	sc->p = p;
 	sc->ambient_c = ambient_c;
-	sc->dt_s = dt_s;
 	batt_r_sys_init(p->chem, p->cells, p->capacity_ah, p->cycles, p->n_rotors,
 	    &sc->rs);
 	if (p->r_cells_ohm > 0.0)
 		sc->rs.r_cells_ohm = p->r_cells_ohm;
-	therm_step_init(hac_w_k, p->mass_kg, dt_s, &sc->ts);
+}
+
+static void
+step_dt(double hac_w_k, double dt_s, struct step_ctx *sc)
+{
+	sc->dt_s = dt_s;
+	therm_step_init(hac_w_k, sc->p->mass_kg, dt_s, &sc->ts);
 }
 
 /* What one step gives: the mean current over it (the charge and the heat
@@ -210,11 +214,29 @@ struct seg_power {
 	double shaft_w;        /* all rotors */
 };
 
+/* The hover power at one mass, remembered for the next call: every
+ * piece of a race and every turn of a survey asks it, whatever its own
+ * fraction or speeds. */
+struct hover_memo {
+	double mass_kg;        /* -1: none yet */
+	struct mission_power mp;
+};
+
+static const struct mission_power *
+hover_at(const struct mission_model *m, struct hover_memo *hm, double mass_kg)
+{
+	if (hm->mass_kg != mass_kg) {
+		hm->mass_kg = mass_kg;
+		mission_power(m, mass_kg, 0.0, 0.0, &hm->mp);
+	}
+	return &hm->mp;
+}
+
 /* The power segment s draws at mass_kg (duty.h's laws). */
 static void
 segment_power(const struct discharge_mission *mis,
               const struct duty_segment *s, double mass_kg,
-              struct seg_power *out)
+              struct hover_memo *hm, struct seg_power *out)
 {
 	const struct mission_model *m = mis->model;
 	struct mission_power mp;
@@ -222,18 +244,18 @@ segment_power(const struct discharge_mission *mis,
 	case DUTY_LAW_THROTTLE: {
 		/* A fraction of full throttle, and never less than the hover
 		 * power: a racer that drew less would be sinking. */
-		mission_power(m, mass_kg, 0.0, 0.0, &mp);
+		const struct mission_power *hv = hover_at(m, hm, mass_kg);
 		double p = s->fraction * mis->full_throttle_w;
-		if (p > mp.electrical_w) {
+		if (p > hv->electrical_w) {
 			out->power_w = p;
 			out->shaft_w = s->fraction * mis->full_throttle_shaft_w;
-			if (out->shaft_w < mp.shaft_w)
-				out->shaft_w = mp.shaft_w;
+			if (out->shaft_w < hv->shaft_w)
+				out->shaft_w = hv->shaft_w;
 			if (out->shaft_w > out->power_w)
 				out->shaft_w = out->power_w;
 		} else {
-			out->power_w = mp.electrical_w;
-			out->shaft_w = mp.shaft_w;
+			out->power_w = hv->electrical_w;
+			out->shaft_w = hv->shaft_w;
 		}
 		return;
 	}
@@ -248,8 +270,8 @@ segment_power(const struct discharge_mission *mis,
 		double t_b = 0.5 * (s->dur_s - s->yaw_s);
 		if (t_b < 0.0)
 			t_b = 0.0;
-		struct mission_power hv, tilt;
-		mission_power(m, mass_kg, 0.0, 0.0, &hv);
+		const struct mission_power *hv = hover_at(m, hm, mass_kg);
+		struct mission_power tilt;
 		mission_power(m, mass_kg * sqrt(1.0 + (a / G0_M_S2) * (a / G0_M_S2)),
 		    0.0, 0.0, &tilt);
 		double drive_w = tilt.electrical_w - tilt.switching_w - m->aux_w;
@@ -258,12 +280,12 @@ segment_power(const struct discharge_mission *mis,
 		if (eta > 1.0)
 			eta = 1.0;
 		double kin_w = mass_kg * a * 0.5 * v;
-		double e_j = tilt.electrical_w * 2.0 * t_b + hv.electrical_w * s->yaw_s
+		double e_j = tilt.electrical_w * 2.0 * t_b + hv->electrical_w * s->yaw_s
 		    + kin_w / eta * t_b;
-		double es_j = tilt.shaft_w * 2.0 * t_b + hv.shaft_w * s->yaw_s
+		double es_j = tilt.shaft_w * 2.0 * t_b + hv->shaft_w * s->yaw_s
 		    + kin_w * t_b;
-		out->power_w = s->dur_s > 0.0 ? e_j / s->dur_s : hv.electrical_w;
-		out->shaft_w = s->dur_s > 0.0 ? es_j / s->dur_s : hv.shaft_w;
+		out->power_w = s->dur_s > 0.0 ? e_j / s->dur_s : hv->electrical_w;
+		out->shaft_w = s->dur_s > 0.0 ? es_j / s->dur_s : hv->shaft_w;
 		return;
 	}
 	case DUTY_LAW_FLIGHT:
@@ -275,21 +297,55 @@ segment_power(const struct discharge_mission *mis,
 	}
 }
 
-/* The power at one mass, remembered for the next call (the power is a
- * pure function of the mass within a segment). */
+/* The power at one mass, remembered for the next call.  segment_power()
+ * is a pure function of the mass and of the few fields of the segment its
+ * law reads, so the memo holds across segments that share them: a race's
+ * laps repeat the same pieces, a survey its passes and turns. */
 struct power_memo {
 	double mass_kg;        /* -1: none yet */
+	const struct duty_segment *s; /* the segment it was worked out for */
 	struct seg_power p;
+	struct hover_memo hover;
 };
+
+/* The same bits: a signed zero is not taken for the other. */
+static bool
+same_bits(double a, double b)
+{
+	return memcmp(&a, &b, sizeof a) == 0;
+}
+
+/* Does segment_power() give a at every mass what it gives b?  The fields
+ * its law reads hold the same bits. */
+static bool
+same_law(const struct duty_segment *a, const struct duty_segment *b)
+{
+	if (a->law != b->law)
+		return false;
+	switch (a->law) {
+	case DUTY_LAW_THROTTLE:
+		return same_bits(a->fraction, b->fraction);
+	case DUTY_LAW_TURN:
+		return same_bits(a->accel_m_s2, b->accel_m_s2)
+		    && same_bits(a->v_fwd_ms, b->v_fwd_ms)
+		    && same_bits(a->dur_s, b->dur_s) && same_bits(a->yaw_s, b->yaw_s);
+	case DUTY_LAW_FLIGHT:
+	default:
+		return same_bits(a->v_climb_ms, b->v_climb_ms)
+		    && same_bits(a->v_fwd_ms, b->v_fwd_ms);
+	}
+}
 
 static const struct seg_power *
 memo_power(const struct discharge_mission *mis, const struct duty_segment *s,
            struct power_memo *pm, double mass_kg)
 {
-	if (pm->mass_kg != mass_kg) {
+	if (pm->mass_kg != mass_kg || pm->s == NULL
+	    || (pm->s != s && !same_law(pm->s, s))) {
 		pm->mass_kg = mass_kg;
-		segment_power(mis, s, mass_kg, &pm->p);
+		segment_power(mis, s, mass_kg, &pm->hover, &pm->p);
 	}
+	pm->s = s;
 	return &pm->p;
 }
 
@@ -320,12 +376,13 @@ discharge_plan_energy_wh(const struct discharge_mission *mis)
 {
 	struct duty_plan buf;
 	const struct duty_plan *pl = mission_plan(mis, &buf);
+	struct hover_memo hm = { .mass_kg = -1.0 };
 	double wh = 0.0;
 	for (int i = 0; i < pl->n_seg; i++) {
 		const struct duty_segment *s = &pl->seg[i];
 		struct seg_power sp;
 		segment_power(mis, s, mis->dry_mass_kg
-		    + duty_payload_mean(s, 0.0, s->dur_s), &sp);
+		    + duty_payload_mean(s, 0.0, s->dur_s), &hm, &sp);
 		wh += sp.power_w * s->dur_s / S_PER_H;
 	}
 	return wh;
@@ -368,13 +425,18 @@ discharge_run(const struct discharge_pack *pack,
 	double ph_q[PHASE_MAX] = { 0 }, ph_t[PHASE_MAX] = { 0 };
 	bool first = true;
 	int k_all = 0;
+	/* The pack's part of the steps is the same in every segment. */
+	struct step_ctx sc;
+	step_init(pack, mis->ambient_c, &sc);
+	struct power_memo pm = { .mass_kg = -1.0, .hover.mass_kg = -1.0 };
 	for (int i = 0; i < pl->n_seg && out->end == DIS_COMPLETED; i++) {
 		const struct duty_segment *sg = &pl->seg[i];
 		int n = segment_steps(sg, steps, total_s);
 		double dt = sg->dur_s / (double)n;
-		struct step_ctx sc;
-		step_init(pack, hac, mis->ambient_c, dt, &sc);
-		struct power_memo pm = { -1.0, { 0.0, 0.0 } };
+		/* The thermal decay over dt: the same as the last segment's
+		 * when their steps are (it costs an exp). */
+		if (i == 0 || !same_bits(sc.dt_s, dt))
+			step_dt(hac, dt, &sc);
 		double e_wh = 0.0, es_wh = 0.0, q_ah = 0.0;
 		int flown = 0;
 		for (int k = 0; k < n; k++) {
@@ -564,8 +626,8 @@ discharge_power_endurance_s(const struct discharge_pack *pack, double power_w,
 		return 0.0;
 	struct cell_state st = { 1.0, ambient_c, 0.0 };
 	struct step_ctx sc;
-	step_init(pack, therm_hac_w_k(pack->mass_kg, pack->h_conv_w_m2k), ambient_c,
-	    dt, &sc);
+	step_init(pack, ambient_c, &sc);
+	step_dt(therm_hac_w_k(pack->mass_kg, pack->h_conv_w_m2k), dt, &sc);
 	double t = 0.0;
 	for (int k = 0; k < ENDURANCE_MAX_STEPS; k++) {
 		struct step_out so;
