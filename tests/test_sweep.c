@@ -39,6 +39,7 @@
 
 #include "cli/cli.h"
 #include "solve_check.h"
+#include "util/file.h"
 #include "util/stats.h"
 #include "util/xalloc.h"
 
@@ -456,7 +457,8 @@ sweep_warmer_day_should_raise_peak_battery_temperature(void **state)
 }
 
 /* The search's shortcuts (a closing already made is not made again; a
- * pack pick stops at the first pack of its bus that fits; a ceiling's
+ * ranking at an aim already ranked at is not made again; a pack pick
+ * stops at the first pack of its bus that fits; a ceiling's
  * bisection steps ask only whether some propeller share passes) give
  * what the exhaustive search gives (AEROEVAL_TEST_EXHAUSTIVE), result.json
  * byte for byte, on the missions of the second draw that take them (kept
@@ -491,6 +493,40 @@ sweep_shortcuts_should_give_the_exhaustive_result(void **state)
 	    n_kept_parts, n_kept_ceiling);
 }
 
+/* The FPV racer example's search fails every closing on its first banks of
+ * packs and goes on to wider ones, ranking again at the aims it ranked at
+ * before, which the search answers from the rankings it made: the same
+ * result.json as the exhaustive search (where the random draws seldom
+ * reach that far). */
+static void
+sweep_wider_bank_search_should_give_the_exhaustive_result(void **state)
+{
+	(void)state;
+	const char *path = "examples/fpv_racing_quad.json";
+	unsigned char *text;
+	size_t len;
+	char err[256], detail[RESULT_JSON_PATH_MAX];
+	assert_int_equal(file_read(path, (size_t)1 << 20, &text, &len, err, sizeof err), 0);
+	char *json[2];
+	for (int exhaustive = 0; exhaustive < 2; exhaustive++) {
+		if (exhaustive)
+			setenv("AEROEVAL_TEST_EXHAUSTIVE", "1", 1);
+		const char *why = solve_text(env, path, (const char *)text, len, stderr,
+		    res, detail, sizeof detail);
+		unsetenv("AEROEVAL_TEST_EXHAUSTIVE");
+		if (why != NULL && why != solve_rejected)
+			print_error("%s (%s)\n", why, detail);
+		assert_null(why);
+		assert_true(res->parts_selected);
+		json[exhaustive] = result_json_render(res, "fpv_racing_quad");
+		assert_non_null(json[exhaustive]);
+	}
+	assert_string_equal(json[0], json[1]);
+	free(json[0]);
+	free(json[1]);
+	free(text);
+}
+
 int
 main(void)
 {
@@ -498,6 +534,7 @@ main(void)
 		cmocka_unit_test(sweep_random_missions_should_give_finite_consistent_results),
 		cmocka_unit_test(sweep_violations_should_come_run_by_run),
 		cmocka_unit_test(sweep_shortcuts_should_give_the_exhaustive_result),
+		cmocka_unit_test(sweep_wider_bank_search_should_give_the_exhaustive_result),
 		cmocka_unit_test(sweep_more_payload_should_raise_mtow),
 		cmocka_unit_test(sweep_high_altitude_should_not_lower_mtow),
 		cmocka_unit_test(sweep_warmer_day_should_raise_peak_battery_temperature),
