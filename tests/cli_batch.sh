@@ -126,11 +126,14 @@ AEROEVAL_BUILD_TIMEOUT_S=3 AEROEVAL_TEST_WORKER=hang:fpv_racing_quad \
 	&& [ -s "$T/h/sar_imaging_quad/result.json" ]
 check $? "hung_worker_is_stopped_by_the_timeout"
 
-# ---- 99 missions: one call, then an interrupted one -------------------------------
+# ---- 90 missions: one call, then an interrupted one -------------------------------
+# Nine variants of each example but the FPV racer (its search alone costs
+# as much as three other missions, and what is tested here is the count).
 M="$T/many"
 mkdir -p "$M"
 for f in examples/*.json; do
 	n=$(basename "$f" .json)
+	[ "$n" = fpv_racing_quad ] && continue
 	for k in 1 2 3 4 5 6 7 8 9; do
 		sed -e 's/"payload_kg": \([0-9]*\)\(\.[0-9]*\)\{0,1\}/"payload_kg": \1.1'"$k"'/' \
 		    -e 's/"t_hover_s": [0-9]*/"t_hover_s": '"$((50 + 10 * k))"'/' \

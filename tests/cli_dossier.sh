@@ -57,21 +57,25 @@ for f in examples/*.json; do
 	n=$(basename "$f" .json)
 	d="$T/out/$n"
 	pdf="$d/dossier.pdf"
+	# poppler reads each dossier once (about 0.4 s a dossier): its pages
+	# are split out of the whole text at the form feeds, and what pdfinfo
+	# says is kept.
 	pdftotext -layout "$pdf" "$d/all.txt" 2>"$d/warn.txt"
-	pdftotext -layout -f 1 -l 1 "$pdf" "$d/cover.txt" 2>/dev/null
-	pdftotext -layout -f 2 -l 2 "$pdf" "$d/page2.txt" 2>/dev/null
+	awk 'BEGIN { RS = "\f" } NR == 1' "$d/all.txt" >"$d/cover.txt"
+	awk 'BEGIN { RS = "\f" } NR == 2' "$d/all.txt" >"$d/page2.txt"
+	pdfinfo -meta "$pdf" >"$d/meta.txt" 2>/dev/null
+	pdfinfo "$pdf" >"$d/info.txt" 2>/dev/null
 
 	check "dossier_${n}_text_extracts_without_tounicode_warning" \
-		sh -c "[ ! -s '$d/warn.txt' ] && ! pdftotext '$pdf' - 2>&1 >/dev/null | grep -q ."
+		sh -c "[ -s '$d/cover.txt' ] && [ ! -s '$d/warn.txt' ]"
 
 	# PDF/A-3b as poppler reads it (tests/test_pdfa.c checks the objects):
 	# the XMP stream declares it, every font is embedded, no encryption,
 	# the mission is attached.
-	check "dossier_${n}_declares_pdfa_3b" sh -c "pdfinfo -meta '$pdf' \
-		| grep -q '<pdfaid:part>3</pdfaid:part>' && pdfinfo -meta '$pdf' \
-		| grep -q '<pdfaid:conformance>B</pdfaid:conformance>'"
-	check "dossier_${n}_has_metadata_and_no_encryption" sh -c "pdfinfo '$pdf' \
-		| grep -q '^Metadata Stream: *yes' && pdfinfo '$pdf' | grep -q '^Encrypted: *no'"
+	check "dossier_${n}_declares_pdfa_3b" sh -c "grep -q '<pdfaid:part>3</pdfaid:part>' \
+		'$d/meta.txt' && grep -q '<pdfaid:conformance>B</pdfaid:conformance>' '$d/meta.txt'"
+	check "dossier_${n}_has_metadata_and_no_encryption" sh -c "grep -q \
+		'^Metadata Stream: *yes' '$d/info.txt' && grep -q '^Encrypted: *no' '$d/info.txt'"
 	check "dossier_${n}_embeds_every_font" sh -c "pdffonts '$pdf' | awk 'NR > 2 { n++; \
 		if (\$(NF - 4) != \"yes\") bad++ } END { exit !(n > 0 && bad == 0) }'"
 	check "dossier_${n}_attaches_its_mission" sh -c "pdfdetach -list '$pdf' | grep -q '$n.json'"
