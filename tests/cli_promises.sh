@@ -153,7 +153,14 @@ set_o=$(set_of fbo/m5) set_n=$(set_of fbn/m5)
 # tmp_files: files in the new set being written (-1 before it exists).
 tmp_files() {
 	for d in fb/.m5.tmp.*; do
-		[ -d "$d" ] && { ls -A "$d" | grep -c .; return; }
+		# Counted with the shell's own globs: this runs every 20 ms.
+		[ -d "$d" ] || continue
+		n=0
+		for f in "$d"/* "$d"/.[!.]* "$d"/..?*; do
+			[ -e "$f" ] && n=$((n + 1))
+		done
+		echo "$n"
+		return
 	done
 	echo -1
 }
