@@ -216,9 +216,10 @@ craft_masses(const struct sizing_params *q, const struct parts_option *o,
 	double d_m = c->prop_diameter_m;
 	double torque_nm = c->prop.ct > 0.0
 	    ? o->full_thrust_n * d_m * c->prop.cp / (2.0 * M_PI * c->prop.ct) : 0.0;
-	struct airframe_loads al = { mass_kg + q->extra_payload_kg,
-		o->full_thrust_n, tip, n * o->full_current_a, c->battery_kg,
-		torque_nm, d_m };
+	struct airframe_loads al = { .mass_kg = mass_kg + q->extra_payload_kg,
+		.peak_thrust_n = o->full_thrust_n, .tip_mass_kg = tip,
+		.peak_current_a = n * o->full_current_a, .peak_torque_nm = torque_nm,
+		.prop_diameter_m = d_m };
 	struct airframe_masses am;
 	airframe_masses(q, &al, &am);
 	c->arm = am.arm;

@@ -23,7 +23,6 @@ struct airframe_loads {
 	double peak_thrust_n;        /* one rotor at full throttle */
 	double tip_mass_kg;          /* motor + propeller of one rotor */
 	double peak_current_a;       /* battery current at full throttle */
-	double battery_kg;           /* the pack, for the body around it */
 	double peak_torque_nm;       /* one motor's reaction torque at full throttle */
 	double prop_diameter_m;      /* for the rate-loop bandwidth the arm's mode clears */
 };
@@ -51,9 +50,9 @@ void airframe_masses(const struct sizing_params *p,
                      const struct airframe_loads *in,
                      struct airframe_masses *out);
 
-/* Everything of airframe_masses() but the harness (wiring_kg 0), which
- * reads neither in->peak_current_a nor in->battery_kg: a design that tries
- * several battery buses on the same propulsion sizes it once. */
+/* Everything of airframe_masses() but the harness (wiring_kg 0); it does
+ * not read in->peak_current_a: a design that tries several battery buses
+ * on the same propulsion sizes it once. */
 void airframe_structure(const struct sizing_params *p,
                         const struct airframe_loads *in,
                         struct airframe_masses *out);

@@ -241,10 +241,11 @@ drive_masses(const struct sizing_params *p, const struct eval *e, double d,
 	        * (double)p->n_blades / 2.0;
 	double torque_nm = e->rps_peak > 0.0
 	    ? e->peak.shaft_w / (double)nr / (2.0 * M_PI * e->rps_peak) : 0.0;
-	/* Neither the current nor the pack enters the structure. */
-	struct airframe_loads al = { e->design_mass_kg, e->t_peak_n,
-		dv->motor_total_kg / (double)nr + dv->prop_each_kg, 0.0, 0.0,
-		torque_nm, d };
+	/* The bus current does not enter the structure. */
+	struct airframe_loads al = { .mass_kg = e->design_mass_kg,
+		.peak_thrust_n = e->t_peak_n,
+		.tip_mass_kg = dv->motor_total_kg / (double)nr + dv->prop_each_kg,
+		.peak_torque_nm = torque_nm, .prop_diameter_m = d };
 	airframe_structure(p, &al, &dv->am);
 }
 
