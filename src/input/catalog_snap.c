@@ -34,30 +34,21 @@ struct snap_header {
 	char sha256[72];                 /* hex, NUL-terminated, zero-padded */
 };
 
-/* The files of folder dir as they are now: bytes[k] (heap, free()) and
- * len[k], bytes[k] NULL for an absent optional file.  -1 when a file that
- * is there cannot be read (then nothing is left allocated). */
+/* Category k's file of folder dir as it is now: *bytes (heap, free()) and
+ * *len, *bytes NULL for an absent optional file.  -1 when a file that is
+ * there cannot be read. */
 static int
-read_files(const char *dir, unsigned char *bytes[CATALOG_N_CATEGORIES],
-           size_t len[CATALOG_N_CATEGORIES])
+read_file(const char *dir, enum catalog_category k, unsigned char **bytes,
+          size_t *len)
 {
 	char msg[256];
-	int rc = 0;
-	for (int k = 0; k < CATALOG_N_CATEGORIES; k++) {
-		enum catalog_category cat = (enum catalog_category)k;
-		char *path = catalog_io_path(dir, cat);
-		bytes[k] = NULL;
-		len[k] = 0;
-		if (rc == 0 && !catalog_io_absent(path, cat)
-		    && file_read(path, JSON_IN_CATALOG_MAX, &bytes[k], &len[k], msg,
-		                 sizeof msg) != 0)
-			rc = -1;
-		free(path);
-	}
-	if (rc != 0)
-		for (int k = 0; k < CATALOG_N_CATEGORIES; k++)
-			free(bytes[k]);
-	return rc;
+	char *path = catalog_io_path(dir, k);
+	*bytes = NULL;
+	*len = 0;
+	int rc = catalog_io_absent(path, k) ? 0
+	    : file_read(path, JSON_IN_CATALOG_MAX, bytes, len, msg, sizeof msg);
+	free(path);
+	return rc != 0 ? -1 : 0;
 }
 
 static void
@@ -65,6 +56,23 @@ free_files(unsigned char *bytes[CATALOG_N_CATEGORIES])
 {
 	for (int k = 0; k < CATALOG_N_CATEGORIES; k++)
 		free(bytes[k]);
+}
+
+/* Every file of folder dir (read_file()); -1, nothing left allocated,
+ * when one cannot be read. */
+static int
+read_files(const char *dir, unsigned char *bytes[CATALOG_N_CATEGORIES],
+           size_t len[CATALOG_N_CATEGORIES])
+{
+	int rc = 0;
+	for (int k = 0; k < CATALOG_N_CATEGORIES; k++) {
+		bytes[k] = NULL;
+		if (rc == 0)
+			rc = read_file(dir, (enum catalog_category)k, &bytes[k], &len[k]);
+	}
+	if (rc != 0)
+		free_files(bytes);
+	return rc;
 }
 
 static const char *const *
@@ -199,25 +207,26 @@ same_chems(const char *names, size_t n, const char *const *chems)
 	return at == n;
 }
 
-/* Are the files of dir now exactly the recorded ones (files at blob)? */
+/* Are the files of dir now exactly the recorded ones (files at blob)?
+ * Read one at a time, up to the first that differs. */
 static int
 same_files(const struct snap_header *h, const unsigned char *files, const char *dir)
 {
-	unsigned char *bytes[CATALOG_N_CATEGORIES];
-	size_t len[CATALOG_N_CATEGORIES];
-	if (read_files(dir, bytes, len) != 0)
-		return 0;
 	int same = 1;
 	for (int k = 0; k < CATALOG_N_CATEGORIES && same; k++) {
+		unsigned char *bytes;
+		size_t len;
+		if (read_file(dir, (enum catalog_category)k, &bytes, &len) != 0)
+			return 0;
 		if (h->file_bytes[k] < 0) {
-			same = bytes[k] == NULL;
-			continue;
+			same = bytes == NULL;
+		} else {
+			same = bytes != NULL && len == (uint64_t)h->file_bytes[k]
+			    && memcmp(bytes, files, len) == 0;
+			files += h->file_bytes[k];
 		}
-		same = bytes[k] != NULL && len[k] == (uint64_t)h->file_bytes[k]
-		    && memcmp(bytes[k], files, len[k]) == 0;
-		files += h->file_bytes[k];
+		free(bytes);
 	}
-	free_files(bytes);
 	return same;
 }
 
