@@ -259,14 +259,25 @@ motor_pre(const struct catalog_motor *m, struct motor_pre *mp)
 	mp->decay_full = motor_temp_decay(m->mass_kg, PERF_FULL_THROTTLE_S);
 }
 
+/* The motor points of an option a ranking works out, each only when a
+ * check first reads it (most options fail the thrust or a current rating
+ * long before their hover is needed): the torque factor and winding
+ * temperature they share, and full throttle on the ranking's bus. */
+struct drive_pts {
+	const struct motor_pre *mp;
+	double kq, t_w;
+	struct motor_point full;
+	bool hover_done;
+};
+
 /* Option m (with its motor_pre mp) on propeller pr (with its prop_pre
  * pp), or an integrated system (pr and pp NULL), on a bus of cells: its
- * full-throttle point and its hover power at the continuous design's mass.
- * False when the motor cannot turn the propeller. */
+ * full-throttle point.  False when the motor cannot turn the propeller. */
 static bool
-parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
-            const struct motor_pre *mp, const struct catalog_prop *pr,
-            const struct prop_pre *pp, int cells, struct parts_option *o)
+drive_full(const struct parts_ctx *x, const struct catalog_motor *m,
+           const struct motor_pre *mp, const struct catalog_prop *pr,
+           const struct prop_pre *pp, int cells, struct parts_option *o,
+           struct drive_pts *d)
 {
 	const struct sizing_params *p = x->p;
 	const struct parts_aim *aim = &x->aim;
@@ -296,15 +307,17 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 	o->d4_m4 = pp->d4_m4;
 	c->cells = cells;
 
-	double kq = aim->install_factor * pp->kq_nm_s2;
-	double t_w = p->ambient_c + RANK_WINDING_RISE_K;
+	d->mp = mp;
+	d->hover_done = false;
+	d->kq = aim->install_factor * pp->kq_nm_s2;
+	d->t_w = p->ambient_c + RANK_WINDING_RISE_K;
 	double v = (double)cells * p->chem->v_nom * PARTS_LOADED_BUS;
-	struct motor_point full;
-	if (!motor_at_voltage(&c->motor, t_w, v, kq, &full))
+	struct motor_point *full = &d->full;
+	if (!motor_at_voltage(&c->motor, d->t_w, v, d->kq, full))
 		return false;
-	o->full_thrust_n = prop_thrust_d4_n(&c->prop, rho, full.rps, o->d4_m4);
-	o->full_current_a = full.current_a;
-	o->full_power_w = full.power_in_w;
+	o->full_thrust_n = prop_thrust_d4_n(&c->prop, rho, full->rps, o->d4_m4);
+	o->full_current_a = full->current_a;
+	o->full_power_w = full->power_in_w;
 	/* An integrated system is flown up to the thrust its maker publishes
 	 * and no further: where the model of its motor and propeller promises
 	 * more, the point at that thrust (on the same rotor) is full throttle.
@@ -314,116 +327,72 @@ parts_drive(const struct parts_ctx *x, const struct catalog_motor *m,
 	c->max_thrust_n = parts_published_thrust_n(x, m, cells);
 	if (m->integrated && m->integrated_esc_current_a > mp->i0_a) {
 		double n_esc = sqrt(motor_k_nm_a(m->kv_rpm_per_v)
-		    * (m->integrated_esc_current_a - mp->i0_a) / kq);
+		    * (m->integrated_esc_current_a - mp->i0_a) / d->kq);
 		double t_esc = prop_thrust_d4_n(&c->prop, rho, n_esc, o->d4_m4);
 		if (!(c->max_thrust_n > 0.0) || t_esc < c->max_thrust_n)
 			c->max_thrust_n = t_esc;
 	}
 	if (c->max_thrust_n > 0.0 && o->full_thrust_n > c->max_thrust_n) {
 		double n_c = sqrt(c->max_thrust_n / (c->prop.ct * rho * o->d4_m4));
-		motor_at_shaft(&c->motor, t_w, kq * 2.0 * M_PI * n_c * n_c * n_c,
-		    n_c, &full);
+		motor_at_shaft(&c->motor, d->t_w, d->kq * 2.0 * M_PI * n_c * n_c * n_c,
+		    n_c, full);
 		o->full_thrust_n = c->max_thrust_n;
-		o->full_current_a = full.current_a;
-		o->full_power_w = full.power_in_w;
+		o->full_current_a = full->current_a;
+		o->full_power_w = full->power_in_w;
 	}
-	/* Hover of the continuous design's mass on this rotor. */
-	double t_h = aim->mass_kg * G0_M_S2 / (double)p->n_rotors;
-	double n_h = sqrt(t_h / (c->prop.ct * rho * o->d4_m4));
+	/* Until drive_sag() finds a sagged point: the ranking bus's. */
+	o->sagged_current_a = o->full_current_a;
+	o->sagged_power_w = o->full_power_w;
+	return true;
+}
+
+/* Full throttle on the most-sagged bus a kept pack may give.  The ratings
+ * are pruned where a real pack is kindest to them: the record flies full
+ * throttle on its pack's own sag (up to PARTS_MAX_SAG, closure.c), which
+ * lowers the current; an option pruned at the ranking's bus would be lost
+ * though the record would pass it.  An integrated system capped at its
+ * published thrust draws that point's current on any bus.  False (the
+ * ranking bus's values kept) where there is no such point. */
+static bool
+drive_sag(const struct parts_ctx *x, struct parts_option *o,
+          const struct drive_pts *d, struct motor_point *sag)
+{
+	const struct perf_craft *c = &o->craft;
+	if ((c->max_thrust_n > 0.0 && o->full_thrust_n >= c->max_thrust_n)
+	    || !motor_at_voltage(&c->motor, d->t_w, (double)o->cells
+	    * x->p->chem->v_nom * (1.0 - PARTS_MAX_SAG), d->kq, sag))
+		return false;
+	o->sagged_current_a = sag->current_a;
+	o->sagged_power_w = sag->power_in_w;
+	return true;
+}
+
+/* The hover of the continuous design's mass on this rotor, and the
+ * winding as the record's checks heat it (perf.c): steady in hover, then
+ * the full-throttle burst from there, on both buses (sag NULL: there is
+ * no sagged point, the ranking bus's stands). */
+static void
+drive_hover(const struct parts_ctx *x, struct parts_option *o,
+            struct drive_pts *d, const struct motor_point *sag)
+{
+	const struct sizing_params *p = x->p;
+	const struct motor_pre *mp = d->mp;
+	const struct perf_craft *c = &o->craft;
+	double t_h = x->aim.mass_kg * G0_M_S2 / (double)p->n_rotors;
+	double n_h = sqrt(t_h / (c->prop.ct * p->air.rho_kg_m3 * o->d4_m4));
 	struct motor_point hov;
-	motor_at_shaft(&c->motor, t_w, kq * 2.0 * M_PI * n_h * n_h * n_h, n_h,
-	    &hov);
+	motor_at_shaft(&c->motor, d->t_w, d->kq * 2.0 * M_PI * n_h * n_h * n_h,
+	    n_h, &hov);
 	o->hover_power_w = hov.power_in_w * (double)p->n_rotors;
-	/* The winding as the record's checks heat it (perf.c): steady in
-	 * hover, then the full-throttle burst from there. */
 	double hover_c = p->ambient_c + (hov.copper_loss_w + hov.no_load_loss_w)
 	    * mp->rth_k_w;
 	o->full_winding_c = fmax(hover_c, motor_temp_step_from(mp->rth_k_w,
 	    mp->decay_full, hover_c, p->ambient_c,
-	    full.copper_loss_w + full.no_load_loss_w));
-	/* The ratings are pruned where a real pack is kindest to them: the
-	 * record flies full throttle on its pack's own sag (up to
-	 * PARTS_MAX_SAG, closure.c), which lowers the current; an option
-	 * pruned at the ranking's bus would be lost though the record would
-	 * pass it.  An integrated system capped at its published thrust draws
-	 * that point's current on any bus. */
-	o->sagged_current_a = o->full_current_a;
-	o->sagged_power_w = o->full_power_w;
-	o->sagged_winding_c = o->full_winding_c;
-	struct motor_point sag;
-	if (!(c->max_thrust_n > 0.0 && o->full_thrust_n >= c->max_thrust_n)
-	    && motor_at_voltage(&c->motor, t_w, (double)cells * p->chem->v_nom
-	    * (1.0 - PARTS_MAX_SAG), kq, &sag)) {
-		o->sagged_current_a = sag.current_a;
-		o->sagged_power_w = sag.power_in_w;
-		o->sagged_winding_c = fmax(hover_c, motor_temp_step_from(
-		    mp->rth_k_w, mp->decay_full, hover_c, p->ambient_c,
-		    sag.copper_loss_w + sag.no_load_loss_w));
-	}
-	return true;
-}
-
-/* The first reason the option fails a hard limit, or PARTS_OK; o->parity
- * says whether it reaches the required T/W at its estimated mass. */
-static enum parts_reason
-option_limits(const struct parts_ctx *x, struct parts_option *o)
-{
-	const struct sizing_params *p = x->p;
-	const struct perf_craft *c = &o->craft;
-	const struct catalog_motor *m = o->motor;
-	bool locked = x->lock_motor != NULL;
-	/* The thrust to lift the design at the required T/W with the largest
-	 * payload aboard, with a little to spare, at the lightest mass the
-	 * option may close at: its J estimate, trusted below the continuous
-	 * design's only down to aim.lightest (at first not at all).  The
-	 * closing finds the real mass, and checks the real T/W there. */
-	double est = 1.0 + o->j / 100.0;
-	double screen = fmax(x->aim.lightest, fmin(1.0, est));
-	double mass = x->aim.mass_kg * screen;
-	double thrust = (double)p->n_rotors * o->full_thrust_n;
-	/* The screen lets an option 2 % short through (the closing flies it
-	 * on its own masses); the record's check holds the requirement. */
-	double need_per_kg_n = PARTS_TW_SPARE * PARTS_TW_TOL * x->aim.tw_required
-	    * G0_M_S2;
-	if (thrust < need_per_kg_n * (mass + p->extra_payload_kg))
-		return PARTS_THRUST;
-	/* Parity: the T/W is still reached at the option's own estimate. */
-	double mass_est = x->aim.mass_kg * fmax(est, x->aim.lightest);
-	o->parity = thrust >= need_per_kg_n * (mass_est + p->extra_payload_kg);
-	/* The motor's ratings on the ranking's bus; an option within them
-	 * only on the most-sagged bus is marginal (kept apart, see above). */
-	struct parts_motor_limits lim;
-	parts_motor_limits(m, &lim);
-	bool cur_full = lim.full_a > 0.0 && o->full_current_a > lim.full_a;
-	bool pow_full = !m->integrated && m->max_power_w > 0.0
-	    && o->full_power_w > m->max_power_w;
-	bool hot_full = !m->integrated && o->full_winding_c > MOTOR_WINDING_MAX_C;
-	o->marginal = !locked && (cur_full || pow_full || hot_full);
-	if (!locked && lim.full_a > 0.0 && o->sagged_current_a > lim.full_a)
-		return PARTS_MOTOR_CURRENT;
-	if (!locked && !m->integrated && m->max_power_w > 0.0
-	    && o->sagged_power_w > m->max_power_w)
-		return PARTS_MOTOR_POWER;
-	double rps_full = sqrt(o->full_thrust_n / (c->prop.ct * p->air.rho_kg_m3
-	    * o->d4_m4));
-	if (M_PI * c->prop_diameter_m * rps_full / p->air.sound_m_s > AERO_TIP_MACH_MAX)
-		return PARTS_TIP_MACH;
-	if (c->prop_max_rpm > 0.0 && rps_full * S_PER_MIN > c->prop_max_rpm)
-		return PARTS_PROP_RPM;
-	/* An integrated system's losses are not modelled apart from its ESC
-	 * and propeller (its mass holds all three): the record checks it. */
-	if (!locked && !m->integrated && o->sagged_winding_c > MOTOR_WINDING_MAX_C)
-		return PARTS_WINDING;
-	/* The wake of the continuous design's mass on this rotor, with the
-	 * slack of a design that closes up to 10 % lighter (the wake goes as
-	 * the square root of the mass; the record checks its own). */
-	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
-	double area = 0.25 * M_PI * c->prop_diameter_m * c->prop_diameter_m;
-	if (x->aim.downwash_cap_ms > 0.0 && aero_downwash_ms(mass,
-	    p->air.rho_kg_m3, arms, area) > PARTS_DOWNWASH_SLACK
-	    * x->aim.downwash_cap_ms)
-		return PARTS_DOWNWASH;
-	return PARTS_OK;
+	    d->full.copper_loss_w + d->full.no_load_loss_w));
+	o->sagged_winding_c = sag == NULL ? o->full_winding_c
+	    : fmax(hover_c, motor_temp_step_from(mp->rth_k_w, mp->decay_full,
+	    hover_c, p->ambient_c, sag->copper_loss_w + sag->no_load_loss_w));
+	d->hover_done = true;
 }
 
 static double
@@ -440,6 +409,92 @@ option_j(const struct parts_ctx *x, const struct parts_option *o)
 	    ? aim->battery_kg * (o->hover_power_w / aim->hover_power_w - 1.0) : 0.0;
 	return 100.0 * aim->growth * (drive - aim->drive_kg + d_battery)
 	    / aim->mass_kg;
+}
+
+/* The first reason the option fails a hard limit, or PARTS_OK; once it
+ * passes, o->j is its score, o->parity says whether it reaches the
+ * required T/W at its estimated mass and o->marginal whether it is within
+ * the motor's ratings only on the most-sagged bus.  The checks run in one
+ * fixed order (the census counts the first that fails); each motor point
+ * is worked out when the first check that reads it comes. */
+static enum parts_reason
+option_limits(const struct parts_ctx *x, struct parts_option *o,
+              struct drive_pts *d)
+{
+	const struct sizing_params *p = x->p;
+	const struct perf_craft *c = &o->craft;
+	const struct catalog_motor *m = o->motor;
+	bool locked = x->lock_motor != NULL;
+	struct motor_point sag;
+	bool has_sag = false;
+	/* The screen below trusts J only once aim.lightest is below 1 (at
+	 * first the screen's mass is the continuous design's whatever J
+	 * says): only then is the score needed before the checks. */
+	if (x->aim.lightest < 1.0) {
+		has_sag = drive_sag(x, o, d, &sag);
+		drive_hover(x, o, d, has_sag ? &sag : NULL);
+		o->j = option_j(x, o);
+	}
+	/* The thrust to lift the design at the required T/W with the largest
+	 * payload aboard, with a little to spare, at the lightest mass the
+	 * option may close at: its J estimate, trusted below the continuous
+	 * design's only down to aim.lightest.  The closing finds the real
+	 * mass, and checks the real T/W there. */
+	double screen = d->hover_done
+	    ? fmax(x->aim.lightest, fmin(1.0, 1.0 + o->j / 100.0)) : 1.0;
+	double mass = x->aim.mass_kg * screen;
+	double thrust = (double)p->n_rotors * o->full_thrust_n;
+	/* The screen lets an option 2 % short through (the closing flies it
+	 * on its own masses); the record's check holds the requirement. */
+	double need_per_kg_n = PARTS_TW_SPARE * PARTS_TW_TOL * x->aim.tw_required
+	    * G0_M_S2;
+	if (thrust < need_per_kg_n * (mass + p->extra_payload_kg))
+		return PARTS_THRUST;
+	/* The motor's ratings, pruned on the most-sagged bus. */
+	if (!d->hover_done)
+		has_sag = drive_sag(x, o, d, &sag);
+	struct parts_motor_limits lim;
+	parts_motor_limits(m, &lim);
+	if (!locked && lim.full_a > 0.0 && o->sagged_current_a > lim.full_a)
+		return PARTS_MOTOR_CURRENT;
+	if (!locked && !m->integrated && m->max_power_w > 0.0
+	    && o->sagged_power_w > m->max_power_w)
+		return PARTS_MOTOR_POWER;
+	double rps_full = sqrt(o->full_thrust_n / (c->prop.ct * p->air.rho_kg_m3
+	    * o->d4_m4));
+	if (M_PI * c->prop_diameter_m * rps_full / p->air.sound_m_s > AERO_TIP_MACH_MAX)
+		return PARTS_TIP_MACH;
+	if (c->prop_max_rpm > 0.0 && rps_full * S_PER_MIN > c->prop_max_rpm)
+		return PARTS_PROP_RPM;
+	if (!d->hover_done) {
+		drive_hover(x, o, d, has_sag ? &sag : NULL);
+		o->j = option_j(x, o);
+	}
+	/* An integrated system's losses are not modelled apart from its ESC
+	 * and propeller (its mass holds all three): the record checks it. */
+	if (!locked && !m->integrated && o->sagged_winding_c > MOTOR_WINDING_MAX_C)
+		return PARTS_WINDING;
+	/* The wake of the continuous design's mass on this rotor, with the
+	 * slack of a design that closes up to 10 % lighter (the wake goes as
+	 * the square root of the mass; the record checks its own). */
+	int arms = p->coaxial ? p->n_rotors / 2 : p->n_rotors;
+	double area = 0.25 * M_PI * c->prop_diameter_m * c->prop_diameter_m;
+	if (x->aim.downwash_cap_ms > 0.0 && aero_downwash_ms(mass,
+	    p->air.rho_kg_m3, arms, area) > PARTS_DOWNWASH_SLACK
+	    * x->aim.downwash_cap_ms)
+		return PARTS_DOWNWASH;
+	/* Parity: the T/W is still reached at the option's own estimate. */
+	double mass_est = x->aim.mass_kg
+	    * fmax(1.0 + o->j / 100.0, x->aim.lightest);
+	o->parity = thrust >= need_per_kg_n * (mass_est + p->extra_payload_kg);
+	/* Within the ratings on the ranking's bus too?  One within them only
+	 * on the most-sagged bus is marginal (kept apart, see above). */
+	bool cur_full = lim.full_a > 0.0 && o->full_current_a > lim.full_a;
+	bool pow_full = !m->integrated && m->max_power_w > 0.0
+	    && o->full_power_w > m->max_power_w;
+	bool hot_full = !m->integrated && o->full_winding_c > MOTOR_WINDING_MAX_C;
+	o->marginal = !locked && (cur_full || pow_full || hot_full);
+	return PARTS_OK;
 }
 
 /* Keep o among the best max_best, best J first (ties: fewer cells nearer
@@ -527,13 +582,13 @@ try_option(struct parts_ctx *x, const struct catalog_motor *m,
            double *motor_best_j)
 {
 	struct parts_option o;
+	struct drive_pts d;
 	x->n_examined++;
-	if (!parts_drive(x, m, mp, pr, pp, cells, &o)) {
+	if (!drive_full(x, m, mp, pr, pp, cells, &o, &d)) {
 		x->n_census[PARTS_THRUST]++;
 		return;
 	}
-	o.j = option_j(x, &o);
-	enum parts_reason why = option_limits(x, &o);
+	enum parts_reason why = option_limits(x, &o, &d);
 	if (why != PARTS_OK) {
 		x->n_census[why]++;
 		return;

@@ -548,9 +548,15 @@ level_within(const struct perf_ctx *x, double mass_kg, double v_ms,
  * speed where it no longer does, by bisection to 1 mm/s.  Past the pitch
  * limit's speed the pitch alone is beyond it, so the search's bound is a
  * physical limit (MISSION_SPEED_CAP_MS only for a body without drag,
- * reported as the bound).  0 when full throttle does not even hover. */
+ * reported as the bound).  0 when full throttle does not even hover.
+ * With enough_ms > 0 the bisection stops once the speed is known to be at
+ * least enough_ms (the result is then a lower bound at or above it): a
+ * trial closing asks only whether its mission's speed is reached, and
+ * every use of the top speed (the clamp of the speed flown, the
+ * FORWARD_SPEED check) then reads the same as with the exact one. */
 static double
-max_level_ms(const struct perf_ctx *x, double mass_kg, enum res_limit *limit)
+max_level_ms(const struct perf_ctx *x, double mass_kg, enum res_limit *limit,
+             double enough_ms)
 {
 	bool pitch_over;
 	*limit = RES_LIMIT_INFLOW;
@@ -567,6 +573,8 @@ max_level_ms(const struct perf_ctx *x, double mass_kg, enum res_limit *limit)
 		double mid = 0.5 * (lo + hi);
 		if (level_within(x, mass_kg, mid, &pitch_over)) {
 			lo = mid;
+			if (enough_ms > 0.0 && lo >= enough_ms)
+				break;
 		} else {
 			hi = mid;
 			hi_pitch = pitch_over;
@@ -745,8 +753,9 @@ perf_fly(const struct sizing_params *p, const struct perf_craft *c,
 	if (p->v_auto || !trial)
 		mission_speed_search(&x.model, mass, full->thrust_n,
 		    &run->v_min_power_ms, &v_top_search_ms);
-	run->v_max_ms = max_level_ms(&x, mass, &run->v_max_limit);
 	double v_fwd = p->v_auto ? run->v_min_power_ms : p->v_forward_ms;
+	run->v_max_ms = max_level_ms(&x, mass, &run->v_max_limit,
+	    trial ? v_fwd : 0.0);
 	run->optimal_speed_ms = v_fwd;
 	/* What full thrust (or the pitch limit) does not reach is flown at the
 	 * fastest it does (FORWARD_SPEED, CLIMB_SPEED report the shortfall). */
