@@ -149,6 +149,26 @@ parts_packs_for(const struct parts_ctx *x, const struct parts_option *o, int *n)
 
 /* ---- ESC ------------------------------------------------------------------ */
 
+void
+parts_escs_init(struct parts_ctx *x)
+{
+	size_t n = catalog_n_escs(x->cat);
+	x->esc_offered = xcalloc(n > 0 ? n : 1, sizeof *x->esc_offered);
+	for (size_t i = 0; i < n; i++) {
+		const struct catalog_esc *e = catalog_esc(x->cat, i);
+		char why[256];
+		x->esc_offered[i] = e->usable && screen_esc(e, why, sizeof why) == NULL
+		    && screen_doubt_esc(e, why, sizeof why) == NULL;
+	}
+}
+
+void
+parts_escs_free(struct parts_ctx *x)
+{
+	free(x->esc_offered);
+	x->esc_offered = NULL;
+}
+
 bool
 parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
                const struct catalog_esc **esc, int *n)
@@ -168,9 +188,7 @@ parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
 		if (!e->usable || (x->lock_esc != NULL && e != x->lock_esc))
 			continue;
 		bool locked = e == x->lock_esc;
-		char why[256];
-		if (!locked && (screen_esc(e, why, sizeof why) != NULL
-		    || screen_doubt_esc(e, why, sizeof why) != NULL))
+		if (!locked && !x->esc_offered[i])
 			continue;
 		/* The ESC class against the motor and the bus (compat.c). */
 		if (!locked && compat_esc(e, o->motor, o->cells, hover_a,

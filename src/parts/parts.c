@@ -500,11 +500,13 @@ search_rounds(struct parts_ctx *x, struct solve_result *r, struct search *s)
 	}
 }
 
-/* Frees the lists parts_packs_init() and parts_kit_init() built. */
+/* Frees the lists parts_packs_init(), parts_escs_init() and
+ * parts_kit_init() built. */
 static void
 ctx_free(struct parts_ctx *x)
 {
 	parts_packs_free(x);
+	parts_escs_free(x);
 	parts_kit_free(x);
 }
 
@@ -544,6 +546,7 @@ parts_select(const struct mission_spec *spec, const struct sizing_params *p,
 		x.cells_hi = p->cells_hi < PARTS_MAX_CELLS ? p->cells_hi : PARTS_MAX_CELLS;
 	}
 	parts_packs_init(&x);
+	parts_escs_init(&x);
 	parts_kit_init(&x);
 
 	/* The trial buffers keep their violations' codes only.  Banks of at

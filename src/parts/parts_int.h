@@ -184,6 +184,8 @@ struct parts_ctx {
 	/* The lightest transmitter and camera that work together, when the
 	 * ESC board carries none (the same for every closing; kit.c). */
 	const struct catalog_avionics *video_tx, *video_cam;
+	bool *esc_offered;                 /* by catalogue ESC: usable and past
+	                                      the screens (parts_escs_init()) */
 	const struct catalog_frame **kit_frames; /* the frame kits offered */
 	int n_kit_frames;
 	int n_census[PARTS_REASON_MAX];
@@ -314,6 +316,9 @@ int parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 /* closure.c */
 void parts_packs_init(struct parts_ctx *x);
 void parts_packs_free(struct parts_ctx *x);
+/* Screens every catalogue ESC once per search (x->esc_offered). */
+void parts_escs_init(struct parts_ctx *x);
+void parts_escs_free(struct parts_ctx *x);
 bool parts_pick_esc(const struct parts_ctx *x, const struct parts_option *o,
                     const struct catalog_esc **esc, int *n);
 bool parts_close(const struct parts_ctx *x, const struct parts_option *o,

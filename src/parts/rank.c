@@ -239,12 +239,14 @@ prop_pre(const struct catalog_motor *m, const struct catalog_prop *pr,
 
 /* What a motor brings to every propeller and bus it is tried on, worked
  * out once per solve: its winding resistance and no-load current
- * (published, else estimated), its thermal resistance and the decay of
- * its winding's temperature over the full-throttle burst. */
+ * (published, else estimated), its thermal resistance, the decay of its
+ * winding's temperature over the full-throttle burst and its current
+ * ratings. */
 struct motor_pre {
 	double r_ohm, i0_a;
 	bool estimated;
 	double rth_k_w, decay_full;
+	struct parts_motor_limits lim;
 };
 
 static void
@@ -257,6 +259,7 @@ motor_pre(const struct catalog_motor *m, struct motor_pre *mp)
 	mp->estimated = !(m->resistance_ohm > 0.0 && m->no_load_current_a > 0.0);
 	mp->rth_k_w = motor_thermal_resistance_k_w(m->mass_kg);
 	mp->decay_full = motor_temp_decay(m->mass_kg, PERF_FULL_THROTTLE_S);
+	parts_motor_limits(m, &mp->lim);
 }
 
 /* The motor points of an option a ranking works out, each only when a
@@ -270,14 +273,51 @@ struct drive_pts {
 	bool hover_done;
 };
 
+/* Motor m's model with its motor_pre mp's values. */
+static struct motor_model
+motor_of(const struct catalog_motor *m, const struct motor_pre *mp)
+{
+	return (struct motor_model){ .kv_rpm_per_v = m->kv_rpm_per_v,
+		.resistance_ohm = mp->r_ohm, .no_load_current_a = mp->i0_a,
+		.mass_kg = m->mass_kg };
+}
+
+/* Full throttle of motor mm on propeller pp (the ranking's bus of cells,
+ * the ranking's winding temperature) into d.  False when the motor cannot
+ * turn the propeller. */
+static bool
+full_point(const struct parts_ctx *x, const struct motor_model *mm,
+           const struct prop_pre *pp, int cells, struct drive_pts *d)
+{
+	d->kq = x->aim.install_factor * pp->kq_nm_s2;
+	d->t_w = x->p->ambient_c + RANK_WINDING_RISE_K;
+	double v = (double)cells * x->p->chem->v_nom * PARTS_LOADED_BUS;
+	return motor_at_voltage(mm, d->t_w, v, d->kq, &d->full);
+}
+
+/* Is full thrust short of lifting the design at the required T/W, with
+ * the largest payload aboard and a little to spare, at mass_kg?  The
+ * screen lets an option 2 % short through (the closing flies it on its
+ * own masses); the record's check holds the requirement. */
+static bool
+thrust_short(const struct parts_ctx *x, double full_thrust_n, double mass_kg)
+{
+	const struct sizing_params *p = x->p;
+	double thrust = (double)p->n_rotors * full_thrust_n;
+	double need_per_kg_n = PARTS_TW_SPARE * PARTS_TW_TOL * x->aim.tw_required
+	    * G0_M_S2;
+	return thrust < need_per_kg_n * (mass_kg + p->extra_payload_kg);
+}
+
 /* Option m (with its motor_pre mp) on propeller pr (with its prop_pre
  * pp), or an integrated system (pr and pp NULL), on a bus of cells: its
- * full-throttle point.  False when the motor cannot turn the propeller. */
+ * full-throttle point, already in d when have_full.  False when the motor
+ * cannot turn the propeller. */
 static bool
 drive_full(const struct parts_ctx *x, const struct catalog_motor *m,
            const struct motor_pre *mp, const struct catalog_prop *pr,
-           const struct prop_pre *pp, int cells, struct parts_option *o,
-           struct drive_pts *d)
+           const struct prop_pre *pp, int cells, bool have_full,
+           struct parts_option *o, struct drive_pts *d)
 {
 	const struct sizing_params *p = x->p;
 	const struct parts_aim *aim = &x->aim;
@@ -286,10 +326,7 @@ drive_full(const struct parts_ctx *x, const struct catalog_motor *m,
 	o->motor = m;
 	o->prop = pr;
 	struct perf_craft *c = &o->craft;
-	c->motor.kv_rpm_per_v = m->kv_rpm_per_v;
-	c->motor.mass_kg = m->mass_kg;
-	c->motor.resistance_ohm = mp->r_ohm;
-	c->motor.no_load_current_a = mp->i0_a;
+	c->motor = motor_of(m, mp);
 	c->motor_r_estimated = mp->estimated;
 	c->motor_max_current_a = m->max_current_a;
 	c->motor_max_power_w = m->max_power_w;
@@ -309,11 +346,8 @@ drive_full(const struct parts_ctx *x, const struct catalog_motor *m,
 
 	d->mp = mp;
 	d->hover_done = false;
-	d->kq = aim->install_factor * pp->kq_nm_s2;
-	d->t_w = p->ambient_c + RANK_WINDING_RISE_K;
-	double v = (double)cells * p->chem->v_nom * PARTS_LOADED_BUS;
 	struct motor_point *full = &d->full;
-	if (!motor_at_voltage(&c->motor, d->t_w, v, d->kq, full))
+	if (!have_full && !full_point(x, &c->motor, pp, cells, d))
 		return false;
 	o->full_thrust_n = prop_thrust_d4_n(&c->prop, rho, full->rps, o->d4_m4);
 	o->full_current_a = full->current_a;
@@ -443,19 +477,13 @@ option_limits(const struct parts_ctx *x, struct parts_option *o,
 	double screen = d->hover_done
 	    ? fmax(x->aim.lightest, fmin(1.0, 1.0 + o->j / 100.0)) : 1.0;
 	double mass = x->aim.mass_kg * screen;
-	double thrust = (double)p->n_rotors * o->full_thrust_n;
-	/* The screen lets an option 2 % short through (the closing flies it
-	 * on its own masses); the record's check holds the requirement. */
-	double need_per_kg_n = PARTS_TW_SPARE * PARTS_TW_TOL * x->aim.tw_required
-	    * G0_M_S2;
-	if (thrust < need_per_kg_n * (mass + p->extra_payload_kg))
+	if (thrust_short(x, o->full_thrust_n, mass))
 		return PARTS_THRUST;
 	/* The motor's ratings, pruned on the most-sagged bus. */
 	if (!d->hover_done)
 		has_sag = drive_sag(x, o, d, &sag);
-	struct parts_motor_limits lim;
-	parts_motor_limits(m, &lim);
-	if (!locked && lim.full_a > 0.0 && o->sagged_current_a > lim.full_a)
+	const struct parts_motor_limits *lim = &d->mp->lim;
+	if (!locked && lim->full_a > 0.0 && o->sagged_current_a > lim->full_a)
 		return PARTS_MOTOR_CURRENT;
 	if (!locked && !m->integrated && m->max_power_w > 0.0
 	    && o->sagged_power_w > m->max_power_w)
@@ -486,10 +514,10 @@ option_limits(const struct parts_ctx *x, struct parts_option *o,
 	/* Parity: the T/W is still reached at the option's own estimate. */
 	double mass_est = x->aim.mass_kg
 	    * fmax(1.0 + o->j / 100.0, x->aim.lightest);
-	o->parity = thrust >= need_per_kg_n * (mass_est + p->extra_payload_kg);
+	o->parity = !thrust_short(x, o->full_thrust_n, mass_est);
 	/* Within the ratings on the ranking's bus too?  One within them only
 	 * on the most-sagged bus is marginal (kept apart, see above). */
-	bool cur_full = lim.full_a > 0.0 && o->full_current_a > lim.full_a;
+	bool cur_full = lim->full_a > 0.0 && o->full_current_a > lim->full_a;
 	bool pow_full = !m->integrated && m->max_power_w > 0.0
 	    && o->full_power_w > m->max_power_w;
 	bool hot_full = !m->integrated && o->full_winding_c > MOTOR_WINDING_MAX_C;
@@ -584,7 +612,21 @@ try_option(struct parts_ctx *x, const struct catalog_motor *m,
 	struct parts_option o;
 	struct drive_pts d;
 	x->n_examined++;
-	if (!drive_full(x, m, mp, pr, pp, cells, &o, &d)) {
+	/* Most options cannot lift the design at full throttle: that is told
+	 * before the option is filled in, where it can be (a catalogue
+	 * propeller: no published thrust caps the point; and the screen's
+	 * mass still the continuous design's, see option_limits()). */
+	bool have_full = pp != NULL && x->aim.lightest >= 1.0;
+	if (have_full) {
+		struct motor_model mm = motor_of(m, mp);
+		if (!full_point(x, &mm, pp, cells, &d)
+		    || thrust_short(x, prop_thrust_d4_n(&pp->craft.prop,
+		    x->p->air.rho_kg_m3, d.full.rps, pp->d4_m4), x->aim.mass_kg)) {
+			x->n_census[PARTS_THRUST]++;
+			return;
+		}
+	}
+	if (!drive_full(x, m, mp, pr, pp, cells, have_full, &o, &d)) {
 		x->n_census[PARTS_THRUST]++;
 		return;
 	}
