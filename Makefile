@@ -37,6 +37,11 @@ PKGS       := cairo libcjson libcrypto
 PKG_CFLAGS := $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
 PKG_LIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lhpdf -lm
 TEST_LIBS  := $(shell pkg-config --libs cmocka 2>/dev/null)
+# The test programs link with gold where binutils has it (it comes with
+# gcc on Debian): 0.12 s a link against bfd's 0.28 s, some 60 links in a
+# fresh `make test`.  The program itself keeps the default linker; LDFLAGS
+# comes after, so a linker chosen there wins.
+TEST_LD    := $(shell command -v ld.gold >/dev/null 2>&1 && echo -fuse-ld=gold)
 
 WARN := -Wall
 WARN += -Wextra
@@ -167,8 +172,8 @@ $(BUILD)/obj/cli/snapshot.o: src/cli/snapshot.S $(SNAP)
 # The test programs carry the catalogue snapshot too: those that load the
 # shipped catalogue then skip its parse (half a second each under ASan).
 $(BUILD)/tests/%: tests/%.c $(BUILD)/obj/cli/snapshot.o $(TEST_LIB) | $(BUILD)/tests
-	$(COMPILE) $(TEST_OPT) -DAEROEVAL_TEST_HOOKS -Itests -MMD -MP -o $@ $< $(LDFLAGS) \
-	  $(BUILD)/obj/cli/snapshot.o $(TEST_LIB) $(PKG_LIBS) $(TEST_LIBS) $(LDLIBS)
+	$(COMPILE) $(TEST_OPT) -DAEROEVAL_TEST_HOOKS -Itests -MMD -MP -o $@ $< $(TEST_LD) \
+	  $(LDFLAGS) $(BUILD)/obj/cli/snapshot.o $(TEST_LIB) $(PKG_LIBS) $(TEST_LIBS) $(LDLIBS)
 
 $(BUILD)/tests:
 	mkdir -p $@
