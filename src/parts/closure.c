@@ -131,20 +131,27 @@ parts_packs_free(struct parts_ctx *x)
 	x->n_packs = 0;
 }
 
-const struct parts_pack *
-parts_packs_for(const struct parts_ctx *x, const struct parts_option *o, int *n)
+/* The first of x->packs (sorted by bus) on a bus of at least cells. */
+static int
+first_on_bus(const struct parts_ctx *x, int cells)
 {
-	int first = -1;
-	*n = 0;
-	for (int i = 0; i < x->n_packs; i++) {
-		const struct parts_pack *pk = &x->packs[i];
-		if (pk->b->cells_series * pk->series != o->cells)
-			continue;
-		if (first < 0)
-			first = i;
-		(*n)++;
+	int lo = 0, hi = x->n_packs;
+	while (lo < hi) {
+		int mid = lo + (hi - lo) / 2;
+		if (x->packs[mid].b->cells_series * x->packs[mid].series < cells)
+			lo = mid + 1;
+		else
+			hi = mid;
 	}
-	return first >= 0 ? &x->packs[first] : NULL;
+	return lo;
+}
+
+const struct parts_pack *
+parts_packs_on(const struct parts_ctx *x, int cells, int *n)
+{
+	int first = first_on_bus(x, cells);
+	*n = first_on_bus(x, cells + 1) - first;
+	return *n > 0 ? &x->packs[first] : NULL;
 }
 
 /* ---- ESC ------------------------------------------------------------------ */

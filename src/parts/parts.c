@@ -379,7 +379,7 @@ close_option(const struct parts_ctx *x, const struct parts_option *o,
              const struct catalog_esc *esc, int n_esc, struct search *s)
 {
 	int n_pk, n_closed = 0;
-	const struct parts_pack *pk = parts_packs_for(x, o, &n_pk);
+	const struct parts_pack *pk = parts_packs_on(x, o->cells, &n_pk);
 	if (pk == NULL)
 		return 0;
 	/* Packs allowed to sag more first (lighter); when none of those

@@ -327,9 +327,10 @@ bool parts_close(const struct parts_ctx *x, const struct parts_option *o,
 /* The performance figures beyond the mission (sizing/perf.h) of a closing
  * parts_close() made: the design of record's.  False if not finite. */
 bool parts_close_figures(const struct parts_ctx *x, struct parts_closed *cl);
-const struct parts_pack *parts_packs_for(const struct parts_ctx *x,
-                                         const struct parts_option *o,
-                                         int *n);
+/* The pack arrangements of a bus of cells (*n of them, by mass), NULL
+ * when it has none. */
+const struct parts_pack *parts_packs_on(const struct parts_ctx *x, int cells,
+                                        int *n);
 void parts_record_checks(const struct parts_ctx *x, const struct parts_closed *c,
                          struct solve_result *r);
 
