@@ -561,6 +561,18 @@ motor_on_bus(const struct catalog_motor *m, int cells)
 	    && !(m->cells_max > 0 && cells > m->cells_max);
 }
 
+/* Has the bus of cells any pack arrangement?  A scan rather than
+ * closure.c's parts_packs_on(): closure.c calls into this file, and no two
+ * files may call each other (tests/check_layers.sh). */
+static bool
+bus_has_pack(const struct parts_ctx *x, int cells)
+{
+	for (int i = 0; i < x->n_packs; i++)
+		if (x->packs[i].b->cells_series * x->packs[i].series == cells)
+			return true;
+	return false;
+}
+
 /* The mission's locks on values (paper §II-C) on a motor or propeller. */
 static bool
 motor_locked_out(const struct parts_ctx *x, const struct catalog_motor *m)
@@ -691,8 +703,7 @@ parts_rank(struct parts_ctx *x, struct parts_option *best, int max_best,
 	    * G0_M_S2 / (double)p->n_rotors;
 	double d_min_in = MIN_DIAMETER_FRAC * x->aim.prop_diameter_in;
 	for (int s = x->cells_lo; s <= x->cells_hi; s++) {
-		int n_on_bus;
-		if (parts_packs_on(x, s, &n_on_bus) == NULL) {
+		if (!bus_has_pack(x, s)) {
 			x->n_census[PARTS_NO_BATTERY]++;
 			continue;
 		}
