@@ -86,9 +86,13 @@ BIN      := $(BUILD)/aeroeval
 # installs has none.  The few sources that hold a hook (or include a header
 # that does) are compiled a second time with it, into obj-hooks/; the test
 # library is the library with those objects swapped in, and aeroeval-test
-# the program over it, which the whole-compiler tests run.
-HOOK_HDRS := $(shell grep -l AEROEVAL_TEST_HOOKS src/*/*.h)
-HOOK_SRCS := $(shell grep -l -e AEROEVAL_TEST_HOOKS $(foreach h,$(HOOK_HDRS),-e '$(notdir $(h))') $(LIB_SRCS))
+# the program over it, which the whole-compiler tests run.  A file holds a
+# hook when a preprocessor condition names the macro (HOOK_IF: the "#" of
+# the directive is any punctuation here, a "#" would start a make comment
+# in older makes); one that only mentions it in a comment is compiled once.
+HOOK_IF   := '^[[:space:]]*[[:punct:]][[:space:]]*(if|ifdef|ifndef|elif)[[:space:]].*AEROEVAL_TEST_HOOKS'
+HOOK_HDRS := $(shell grep -lE $(HOOK_IF) src/*/*.h)
+HOOK_SRCS := $(shell grep -lE -e $(HOOK_IF) $(foreach h,$(HOOK_HDRS),-e '$(notdir $(h))') $(LIB_SRCS))
 HOOK_OBJS := $(HOOK_SRCS:src/%.c=$(BUILD)/obj-hooks/%.o)
 TEST_LIB  := $(BUILD)/libaeroeval-test.a
 TEST_BIN  := $(BUILD)/aeroeval-test
