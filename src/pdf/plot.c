@@ -697,8 +697,10 @@ rp_apply(struct rctx *c, enum rp_op op)
 	} else if (op == RP_FILL) {
 		HPDF_Page_SetRGBFill(pg, (HPDF_REAL)r, (HPDF_REAL)g, (HPDF_REAL)b);
 	}
-	for (int i = write_path(c, path) == 0 ? path->num_data : 0; i < path->num_data;
-	     i += path->data[i].header.length) {
+	/* The path in one piece; libharu's own path calls only where that
+	 * cannot be (they then raise the error). */
+	int from = write_path(c, path) == 0 ? path->num_data : 0;
+	for (int i = from; i < path->num_data; i += path->data[i].header.length) {
 		const cairo_path_data_t *d = &path->data[i];
 		switch (d->header.type) {
 		case CAIRO_PATH_MOVE_TO:

@@ -60,8 +60,10 @@ struct perf_craft {
  * or with p->allow_relax the largest fraction of it (goal relaxation,
  * γ >= 0.05) that lands at the reserve.  A trial (a closing the parts
  * search only compares) leaves out what no check reads: the minimum-power
- * speed of a mission that flies at its own speed (run->v_min_power_ms).
- * Returns true when every number came out finite. */
+ * speed of a mission that flies at its own speed (run->v_min_power_ms),
+ * and the top speed beyond the mission's own (run->v_max_ms is then a
+ * lower bound at or above it).  Returns true when every number came out
+ * finite. */
 bool perf_fly(const struct sizing_params *p, const struct perf_craft *c,
               bool trial, struct res_run *run);
 

@@ -8,8 +8,10 @@
  * temporary file and a rename.  Any catalogue error is printed as aeroeval
  * prints it and the exit status is 2: a catalogue that does not load does
  * not build. */
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "diag/diag.h"
 #include "input/catalog_snap.h"
@@ -34,17 +36,21 @@ main(int argc, char **argv)
 	FILE *f = NULL;
 	err[0] = '\0';
 	if (rc == 0 && (f = fopen(tmp, "wb")) == NULL) {
-		snprintf(err, sizeof err, "cannot open the temporary file");
+		snprintf(err, sizeof err, "cannot open the temporary file: %s", strerror(errno));
 		rc = -1;
 	}
 	if (rc == 0)
 		rc = catalog_snap_write(db_dir, model.chem_names, dg, f, err, sizeof err);
 	diag_flush(dg);
 	diag_free(dg);
-	if (f != NULL && fclose(f) != 0)
+	if (f != NULL && fclose(f) != 0 && rc == 0) {
+		snprintf(err, sizeof err, "writing the temporary file: %s", strerror(errno));
 		rc = -1;
-	if (rc == 0 && rename(tmp, out_path) != 0)
+	}
+	if (rc == 0 && rename(tmp, out_path) != 0) {
+		snprintf(err, sizeof err, "cannot rename the temporary file: %s", strerror(errno));
 		rc = -1;
+	}
 	if (rc != 0) {
 		if (err[0] != '\0')
 			fprintf(stderr, "catsnap: %s: %s\n", out_path, err);
